@@ -1,0 +1,23 @@
+// Dynamic validity of a dense map against its model (002 Def. 9-10):
+// I(D), O(N), C(E), and the variants' relaxed I and loop ban.
+#pragma once
+
+#include "checkers/violation.hpp"
+#include "core/map.hpp"
+
+namespace dartcheck {
+
+/// Checks every dart of `map` and lists every violation.
+///
+/// One pass reads, for each dart, the records of its neighbours and decides
+/// all constraints with identities that hold when every link array is a
+/// bijection (C(i,j) at v  <=>  s_j(s_i(v)) = p_i(p_j(v))). If some dart
+/// breaks I or O, those identities no longer describe the graph, and an
+/// exact pass over the arc sets recomputes every violation.
+ValidityReport check_map(const Map& map);
+
+/// The exact pass alone (used by the fast pass, and by tests as a second
+/// implementation to compare against).
+ValidityReport check_map_exact(const Map& map);
+
+}  // namespace dartcheck

@@ -1,0 +1,77 @@
+#include "core/orbit.hpp"
+
+namespace dartcheck {
+
+std::vector<Word> dims_generators(const std::vector<Dim>& dims) {
+  std::vector<Word> g;
+  for (Dim i : dims) g.push_back({i});
+  return g;
+}
+
+std::vector<Word> cell_generators(const Model& model, int k) {
+  if (!model.is_generalized() && k == 0) {
+    std::vector<Word> g;
+    for (Dim j : model.dims)
+      if (j >= 2) g.push_back({j, 1});
+    return g;
+  }
+  std::vector<Dim> others;
+  for (Dim i : model.dims)
+    if (i != k) others.push_back(i);
+  return dims_generators(others);
+}
+
+OrbitWalker::OrbitWalker(const Map& map) : map_(map), marks_((map.size() + 63) / 64, 0) {}
+
+void OrbitWalker::traverse(Dart d, std::span<const Word> generators) {
+  const std::size_t first = visited_.size();
+  visited_.push_back(d);
+  mark(d);
+  for (std::size_t k = first; k < visited_.size(); ++k) {
+    const Dart x = visited_[k];
+    for (const Word& w : generators) {
+      const Dart y = follow(map_, x, w);
+      if (y != no_dart && !marked(y)) {
+        mark(y);
+        visited_.push_back(y);
+      }
+    }
+  }
+}
+
+const std::vector<Dart>& OrbitWalker::orbit(Dart d, std::span<const Word> generators) {
+  visited_.clear();
+  traverse(d, generators);
+  for (Dart x : visited_) unmark(x);
+  return visited_;
+}
+
+std::size_t OrbitWalker::count_orbits(std::span<const Word> generators) {
+  std::size_t count = 0;
+  visited_.clear();
+  for (Dart d = 0; d < map_.size(); ++d)
+    if (!marked(d)) {
+      ++count;
+      traverse(d, generators);
+    }
+  for (Dart x : visited_) unmark(x);
+  visited_.clear();
+  return count;
+}
+
+long long CellCounts::euler() const {
+  long long chi = 0;
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    chi += (k % 2 == 0 ? 1 : -1) * static_cast<long long>(cells[k]);
+  return chi;
+}
+
+CellCounts count_cells(const Map& map) {
+  CellCounts c;
+  OrbitWalker walker(map);
+  for (int k = 0; k <= map.model().dimension(); ++k) c.cells.push_back(walker.count_orbits(cell_generators(map.model(), k)));
+  c.components = walker.count_orbits(dims_generators(map.model().dims));
+  return c;
+}
+
+}  // namespace dartcheck

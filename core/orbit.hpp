@@ -1,0 +1,73 @@
+// Orbits <o>(d) (000 Def. 3.2) and cells.
+//
+// An orbit is the set of darts reachable from d along the generators of an
+// orbit type. For G-maps the generators are single dimensions; for O-maps a
+// vertex needs composed links (002 Sec. 3.3: "orbits in O-maps require
+// considering paths"), so a generator is a word: the dart reached by the
+// word's path. Forward reachability is the whole orbit here because every
+// generator of a valid map is a permutation of a finite set.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/map.hpp"
+
+namespace dartcheck {
+
+using Word = std::vector<Dim>;
+
+/// Target of the w-path from d, or no_dart if an arc is missing.
+inline Dart follow(const Map& map, Dart d, std::span<const Dim> w) {
+  for (Dim i : w) {
+    if (d == no_dart) break;
+    d = map.link(i, d);
+  }
+  return d;
+}
+
+/// The generators of the orbit type of the k-cells of the map's model:
+/// <D \ {k}> for G-maps and for k >= 1 in O-maps; {j1 : 2 <= j <= n} for the
+/// vertices of O-maps (both letters keep the dart's origin vertex).
+std::vector<Word> cell_generators(const Model& model, int k);
+/// Generators of an orbit type given as a set of dimensions.
+std::vector<Word> dims_generators(const std::vector<Dim>& dims);
+
+/// Traverses orbits with a reusable visited mark: one bit per dart,
+/// allocated once; each traversal clears only the darts it marked, so a call
+/// costs time proportional to the orbit, not to the map.
+class OrbitWalker {
+ public:
+  explicit OrbitWalker(const Map& map);
+
+  /// The darts of the orbit of d under `generators`, in BFS order.
+  const std::vector<Dart>& orbit(Dart d, std::span<const Word> generators);
+
+  /// Number of distinct orbits of `generators` over the whole map.
+  std::size_t count_orbits(std::span<const Word> generators);
+
+ private:
+  bool marked(Dart d) const { return (marks_[d >> 6] >> (d & 63)) & 1U; }
+  void mark(Dart d) { marks_[d >> 6] |= std::uint64_t{1} << (d & 63); }
+  void unmark(Dart d) { marks_[d >> 6] &= ~(std::uint64_t{1} << (d & 63)); }
+  void traverse(Dart d, std::span<const Word> generators);
+
+  const Map& map_;
+  std::vector<std::uint64_t> marks_;
+  std::vector<Dart> visited_;
+};
+
+/// Cell counts of a map: cells[k] is the number of k-cells, k = 0..n;
+/// components is the number of connected components.
+struct CellCounts {
+  std::vector<std::size_t> cells;
+  std::size_t components = 0;
+  /// Alternating sum of the cell counts (the Euler characteristic of a
+  /// closed surface for n = 2).
+  long long euler() const;
+};
+
+CellCounts count_cells(const Map& map);
+
+}  // namespace dartcheck

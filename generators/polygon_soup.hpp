@@ -1,0 +1,46 @@
+// Building maps from cells given as vertex cycles: the common ground of the
+// shape builders and of the OFF/OBJ importer.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/map.hpp"
+
+namespace dartcheck {
+
+/// A face as the cycle of its vertex indices.
+using Polygon = std::vector<std::uint32_t>;
+/// A volume as the faces that bound it.
+using Polyhedron = std::vector<Polygon>;
+
+/// A cell complex that cannot become a map of the requested model: the
+/// message says which face, edge or vertex and why.
+class BuildError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Sews the faces along shared edges into a surface.
+///
+/// G-maps (n >= 2): each face corner-side becomes a dart; faces sharing an
+/// edge are 2-sewn; a boundary edge gets 2-loops; dimensions above 2 get
+/// loops. Works for non-orientable surfaces.
+/// 2-O-maps: each face side becomes a dart (a half-edge), 2-links pair
+/// opposite half-edges, and the boundary is closed by outer faces (002
+/// Example 5); faces must be consistently oriented.
+/// Throws BuildError on a face with fewer than 3 vertices or a repeated
+/// vertex, an edge shared by more than two faces, or (O-maps) two faces
+/// traversing an edge in the same direction.
+Map build_surface(const Model& model, const std::vector<Polygon>& faces);
+
+/// Builds each volume as a surface of an n-G-map (n >= 3) and 3-sews faces
+/// of different volumes that have the same vertex set; faces met by no
+/// other volume get 3-loops. Throws BuildError when a face is shared by more
+/// than two volumes or two faces have the same vertices but not the same
+/// edges.
+Map build_volumes(const Model& model, const std::vector<Polyhedron>& volumes);
+
+}  // namespace dartcheck

@@ -1,0 +1,148 @@
+#include "generators/random_maps.hpp"
+
+#include <stdexcept>
+
+namespace dartcheck {
+namespace {
+
+// Darts of the G-map face `first`.. of k sides: side e is 2e (start) and
+// 2e+1 (end); 0-links inside a side, 1-links between consecutive sides.
+void add_gmap_face(Map& m, std::size_t k) {
+  const Dart b = m.add_darts(2 * k);
+  for (std::size_t e = 0; e < k; ++e) {
+    m.sew(0, b + 2 * e, b + 2 * e + 1);
+    m.sew(1, b + 2 * e + 1, b + 2 * ((e + 1) % k));
+  }
+}
+
+void loop_all(Map& m, Dim i) {
+  for (Dart d = 0; d < m.size(); ++d)
+    if (m.link(i, d) == no_dart) m.sew(i, d, d);
+}
+
+// The darts of a <0,1>-orbit in walking order d, a0 d, a1 a0 d, ...
+std::vector<Dart> face_walk(const Map& m, Dart d) {
+  std::vector<Dart> w;
+  Dart x = d;
+  do {
+    w.push_back(x);
+    x = m.link(w.size() % 2 == 1 ? 0 : 1, x);
+  } while (x != d);
+  return w;
+}
+
+void sew_gmap(Map& m, const SewStep& s) {
+  const Dim n = m.model().dimension();
+  if (s.dim == 2 || n < 3) {
+    // Free edges: one representative dart d < a0(d) with both darts 2-free.
+    std::vector<Dart> free;
+    for (Dart d = 0; d < m.size(); ++d) {
+      const Dart e = m.link(0, d);
+      if (d < e && m.link(2, d) == d && m.link(2, e) == e) free.push_back(d);
+    }
+    if (free.size() < 2) return;
+    const Dart x = free[s.a % free.size()], y = free[s.b % free.size()];
+    if (x == y) return;
+    const Dart y0 = s.twist % 2 ? m.link(0, y) : y;
+    m.sew(2, x, y0);
+    m.sew(2, m.link(0, x), m.link(0, y0));
+  } else {
+    // 3-free faces: walks whose darts all carry 3-loops.
+    std::vector<Dart> seen(m.size(), 0), free;
+    for (Dart d = 0; d < m.size(); ++d) {
+      if (seen[d]) continue;
+      bool loose = true;
+      for (Dart x : face_walk(m, d)) {
+        seen[x] = 1;
+        loose &= m.link(3, x) == x;
+      }
+      if (loose) free.push_back(d);
+    }
+    if (free.size() < 2) return;
+    const Dart x = free[s.a % free.size()], y = free[s.b % free.size()];
+    if (x == y) return;
+    const auto wx = face_walk(m, x), wy = face_walk(m, y);
+    if (wx.size() != wy.size()) return;
+    // Start y's walk at any of its darts with a matching parity of links:
+    // an offset by an even step keeps 0-sides on 0-sides.
+    const std::size_t k = wy.size();
+    const std::size_t start = 2 * (s.twist % (k / 2));
+    const bool reflect = (s.twist / (k / 2)) % 2;
+    for (std::size_t t = 0; t < k; ++t) {
+      // Reflection walks y's face backwards from a dart whose 0-link is
+      // first: wy[start + 1] then wy[start], wy[start - 1], ...
+      const std::size_t idx = reflect ? (start + 1 + k - t) % k : (start + t) % k;
+      m.sew(3, wx[t], wy[idx]);
+    }
+  }
+}
+
+}  // namespace
+
+Map build_random_map(const Model& model, const MapRecipe& recipe) {
+  const Dim n = model.dimension();
+  Map m(model);
+  if (model.is_generalized()) {
+    if (n < 1 || n > 3) throw std::invalid_argument("random G-maps are built for dimensions 1 to 3");
+    for (auto k : recipe.face_sizes) add_gmap_face(m, k);
+    if (n >= 2) loop_all(m, 2);
+    if (n >= 3) loop_all(m, 3);
+    if (n >= 2)
+      for (const SewStep& s : recipe.sewings) sew_gmap(m, s);
+    return m;
+  }
+  if (n < 2 || n > 3) throw std::invalid_argument("random O-maps are built for dimensions 2 and 3");
+  const int copies = n == 3 ? 2 : 1;
+  std::vector<std::pair<Dart, std::size_t>> faces;
+  for (auto k : recipe.face_sizes)
+    for (int c = 0; c < copies; ++c) {
+      const Dart b = m.add_darts(k);
+      for (Dart e = 0; e < k; ++e) m.sew(1, b + e, b + (e + 1) % k);
+      faces.emplace_back(b, k);
+    }
+  if (n == 3)
+    for (std::size_t f = 0; f < faces.size(); f += 2) {
+      auto [b1, k] = faces[f];
+      const Dart b2 = faces[f + 1].first;
+      const std::size_t r = recipe.sewings.empty() ? 0 : recipe.sewings[(f / 2) % recipe.sewings.size()].twist % k;
+      for (std::size_t i = 0; i < k; ++i) m.sew(3, b1 + static_cast<Dart>(i), b2 + static_cast<Dart>((r + k - i) % k));
+    }
+  for (const SewStep& s : recipe.sewings) {
+    std::vector<Dart> free;
+    for (Dart d = 0; d < m.size(); ++d)
+      if (m.link(2, d) == no_dart) free.push_back(d);
+    if (free.empty()) break;
+    m.sew(2, free[s.a % free.size()], free[s.b % free.size()]);
+  }
+  loop_all(m, 2);
+  return m;
+}
+
+rc::Gen<MapRecipe> gen_map_recipe(int min_faces, int max_faces) {
+  return rc::gen::mapcat(rc::gen::inRange(min_faces, max_faces + 1), [](int faces) {
+    return rc::gen::build<MapRecipe>(
+        rc::gen::set(&MapRecipe::face_sizes,
+                     rc::gen::container<std::vector<std::uint8_t>>(static_cast<std::size_t>(faces), rc::gen::inRange<std::uint8_t>(1, 7))),
+        rc::gen::set(&MapRecipe::sewings,
+                     rc::gen::container<std::vector<SewStep>>(
+                         static_cast<std::size_t>(2 * faces),
+                         rc::gen::build<SewStep>(rc::gen::set(&SewStep::dim, rc::gen::element<std::uint8_t>(2, 3)),
+                                                 rc::gen::set(&SewStep::a, rc::gen::inRange<std::uint32_t>(0, 1000)),
+                                                 rc::gen::set(&SewStep::b, rc::gen::inRange<std::uint32_t>(0, 1000)),
+                                                 rc::gen::set(&SewStep::twist, rc::gen::inRange<std::uint32_t>(0, 1000))))));
+  });
+}
+
+void apply_corruption(Map& map, const LinkCorruption& c) {
+  const std::size_t n = map.size();
+  if (n == 0) return;
+  const Dart d = static_cast<Dart>(c.dart % n);
+  const Dim i = map.model().dims[c.dim % map.model().dims.size()];
+  const Dart t = c.target % (n + 1) == n ? no_dart : static_cast<Dart>(c.target % (n + 1));
+  if (c.inverse && map.model().is_oriented(i))
+    map.set_inverse_link_raw(i, d, t);
+  else
+    map.set_link_raw(i, d, t);
+}
+
+}  // namespace dartcheck

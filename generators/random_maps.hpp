@@ -1,0 +1,65 @@
+// Random valid maps from recipes, and random link corruptions.
+//
+// A recipe lists the cells to create and the sewings to perform, with
+// indices taken modulo what exists when the step runs. Every recipe builds
+// a valid map, so RapidCheck can shrink a recipe (fewer faces, fewer
+// sewings) and every shrunk value is still a valid map: no discards.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <rapidcheck.h>
+
+#include "core/map.hpp"
+
+namespace dartcheck {
+
+/// One sewing step: join the `a`-th and `b`-th free cells (modulo their
+/// number) of dimension `dim`; `twist` picks one of the ways to align them.
+struct SewStep {
+  std::uint8_t dim;
+  std::uint32_t a, b, twist;
+};
+
+struct MapRecipe {
+  std::vector<std::uint8_t> face_sizes;  // 1..6 edges each
+  std::vector<SewStep> sewings;
+};
+
+/// Builds the map of a recipe; valid for 1- to 3-G-maps and 2- and 3-O-maps.
+///  - G-maps: faces are <0,1>-cycles of 2k darts; 2-sewing joins two free
+///    edges, 3-sewing two 3-free faces of the same size with a rotation
+///    and reflection, so C(0,3), C(1,3) hold by construction.
+///  - 2-O-maps: faces are 1-cycles; 2-sewing pairs two 2-free darts, the
+///    rest gets 2-loops.
+///  - 3-O-maps: each face size is created twice and every face is 3-sewn
+///    to its twin by d_i <-> e_{(r-i) mod k}, which makes every 1313-path a
+///    cycle; 2-sewing as in 2-O-maps.
+Map build_random_map(const Model& model, const MapRecipe& recipe);
+
+/// Recipes with `min_faces`..`max_faces` faces and up to twice as many
+/// sewings.
+rc::Gen<MapRecipe> gen_map_recipe(int min_faces, int max_faces);
+
+/// Overwrite one link array entry: the link (or, with `inverse`, the
+/// recorded predecessor) of dart `dart % n` in dimension `dims[dim % |D|]`
+/// becomes `target % (n + 1)`, where n means no_dart.
+struct LinkCorruption {
+  std::uint32_t dart, dim, target;
+  bool inverse;
+};
+void apply_corruption(Map& map, const LinkCorruption& c);
+
+}  // namespace dartcheck
+
+namespace rc {
+template <>
+struct Arbitrary<dartcheck::LinkCorruption> {
+  static Gen<dartcheck::LinkCorruption> arbitrary() {
+    return gen::build<dartcheck::LinkCorruption>(
+        gen::set(&dartcheck::LinkCorruption::dart), gen::set(&dartcheck::LinkCorruption::dim),
+        gen::set(&dartcheck::LinkCorruption::target), gen::set(&dartcheck::LinkCorruption::inverse));
+  }
+};
+}  // namespace rc
