@@ -139,6 +139,21 @@ void apply_corruption(Map& map, const LinkCorruption& c) {
   const Dart d = static_cast<Dart>(c.dart % n);
   const Dim i = map.model().dims[c.dim % map.model().dims.size()];
   const Dart t = c.target % (n + 1) == n ? no_dart : static_cast<Dart>(c.target % (n + 1));
+  if (c.resew) {
+    const Dart e = static_cast<Dart>(c.target % n);
+    const Dart sd = map.link(i, d), se = map.link(i, e);
+    if (sd == no_dart || se == no_dart || d == e) return;
+    if (map.model().is_oriented(i)) {
+      map.set_link(i, d, se);
+      map.set_link(i, e, sd);
+    } else if (sd != e) {
+      // d-sd and e-se become d-se and e-sd (loops stay loops of the other).
+      const Dart pd = sd == d ? e : sd, pe = se == e ? d : se;
+      map.sew(i, d, pe);
+      map.sew(i, e, pd);
+    }
+    return;
+  }
   if (c.inverse && map.model().is_oriented(i))
     map.set_inverse_link_raw(i, d, t);
   else

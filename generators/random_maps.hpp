@@ -44,10 +44,14 @@ rc::Gen<MapRecipe> gen_map_recipe(int min_faces, int max_faces);
 
 /// Overwrite one link array entry: the link (or, with `inverse`, the
 /// recorded predecessor) of dart `dart % n` in dimension `dims[dim % |D|]`
-/// becomes `target % (n + 1)`, where n means no_dart.
+/// becomes `target % (n + 1)`, where n means no_dart. With `resew`, the
+/// i-links of the two darts are exchanged instead, which keeps every link
+/// array a bijection (an involution for a non-oriented dimension) and so
+/// breaks only cycle constraints.
 struct LinkCorruption {
   std::uint32_t dart, dim, target;
   bool inverse;
+  bool resew;
 };
 void apply_corruption(Map& map, const LinkCorruption& c);
 
@@ -59,7 +63,8 @@ struct Arbitrary<dartcheck::LinkCorruption> {
   static Gen<dartcheck::LinkCorruption> arbitrary() {
     return gen::build<dartcheck::LinkCorruption>(
         gen::set(&dartcheck::LinkCorruption::dart), gen::set(&dartcheck::LinkCorruption::dim),
-        gen::set(&dartcheck::LinkCorruption::target), gen::set(&dartcheck::LinkCorruption::inverse));
+        gen::set(&dartcheck::LinkCorruption::target), gen::set(&dartcheck::LinkCorruption::inverse),
+        gen::set(&dartcheck::LinkCorruption::resew));
   }
 };
 }  // namespace rc
