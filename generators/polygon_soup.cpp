@@ -12,11 +12,12 @@ using Key = std::uint64_t;
 Key edge_key(std::uint32_t u, std::uint32_t w) { return (Key{u} << 32) | w; }
 
 void check_face(const Polygon& f, std::size_t index) {
-  if (f.size() < 3) throw BuildError(fmt::format("face {} has {} vertices (at least 3 expected)", index, f.size()));
+  const long face = static_cast<long>(index);
+  if (f.size() < 3) throw BuildError(fmt::format("face {} has {} vertices (at least 3 expected)", index, f.size()), face);
   Polygon sorted = f;
   std::sort(sorted.begin(), sorted.end());
   if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
-    throw BuildError(fmt::format("face {} visits vertex {} twice", index, *it));
+    throw BuildError(fmt::format("face {} visits vertex {} twice", index, *it), face);
 }
 
 void loop_dims_above(Map& m, Dim above, Dart first, Dart end) {
@@ -51,7 +52,8 @@ GSurface sew_gmap_surface(Map& m, const std::vector<Polygon>& faces, std::size_t
   for (auto& [key, uses] : edges) {
     if (uses.size() > 2)
       throw BuildError(fmt::format("edge ({}, {}) is shared by {} faces (a non-manifold edge; at most 2 expected)", key >> 32,
-                                   key & 0xffffffffU, uses.size()));
+                                   key & 0xffffffffU, uses.size()),
+                       static_cast<long>(face_base + uses[2].first));
     auto dart_at = [&](std::size_t fi, std::size_t e, std::uint32_t vertex) {
       return s.first[fi] + 2 * e + (faces[fi][e] == vertex ? 0 : 1);
     };
@@ -89,7 +91,8 @@ Map build_omap_surface(const Model& model, const std::vector<Polygon>& faces) {
         const bool three = half_edges.count(edge_key(w, u)) > 0;
         throw BuildError(three ? fmt::format("edge ({}, {}) is shared by more than two faces (a non-manifold edge)", u, w)
                                : fmt::format("faces {} and {} both traverse edge ({}, {}) from {} to {}: inconsistent orientation",
-                                             face_of[edge_key(u, w)], fi, u, w, u, w));
+                                             face_of[edge_key(u, w)], fi, u, w, u, w),
+                         static_cast<long>(fi));
       }
       face_of[edge_key(u, w)] = fi;
     }

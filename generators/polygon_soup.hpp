@@ -20,7 +20,12 @@ using Polyhedron = std::vector<Polygon>;
 /// message says which face, edge or vertex and why.
 class BuildError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  /// `face` is the index of the face at fault, or -1.
+  explicit BuildError(const std::string& message, long face = -1) : std::runtime_error(message), face_(face) {}
+  long face() const { return face_; }
+
+ private:
+  long face_;
 };
 
 /// Sews the faces along shared edges into a surface.

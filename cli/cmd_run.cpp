@@ -1,0 +1,59 @@
+// `dartcheck run`: builds every map of a catalog, applies every rule to its
+// worked examples and compares each outcome with the recorded expectation.
+#include <fmt/format.h>
+
+#include "checkers/map_validity.hpp"
+#include "cli/commands.hpp"
+#include "cli/resolve.hpp"
+#include "core/catalog.hpp"
+#include "core/derivation.hpp"
+#include "core/orbit.hpp"
+
+namespace dartcheck::cli {
+
+int run(const RunOptions& o) {
+  const Catalog catalog = read_catalog(o.catalog);
+  fmt::print("catalog {}: {} maps, {} rules\n\nmaps\n", o.catalog, catalog.maps.size(), catalog.rules.size());
+  std::vector<Map> built;
+  for (const auto& s : catalog.maps) {
+    built.push_back(build_source(s));
+    const auto report = check_map(built.back());
+    fmt::print("  {:<24} {:<14} {:>8} darts  {}\n", s.name, s.model.name, built.back().size(),
+               report.valid() ? "valid" : fmt::format("INVALID ({} violations)", report.violations.size()));
+  }
+  int failures = 0, examples = 0;
+  fmt::print("\nrules (example: expected -> got)\n");
+  for (const auto& r : catalog.rules) {
+    fmt::print("  {} ({}): L {} nodes / {} arcs, R {} nodes / {} arcs\n", r.rule.name(), r.rule.model().name, r.rule.left().node_count(),
+               r.rule.left().arc_count(), r.rule.right().node_count(), r.rule.right().arc_count());
+    for (const auto& e : r.examples) {
+      ++examples;
+      std::size_t index = 0;
+      while (catalog.maps[index].name != e.map) ++index;
+      Map host = built[index];
+      auto result = apply_rule(r.rule, host, e.hooks);
+      std::string got, detail;
+      if (!result.ok()) {
+        got = std::string(refusal_name(result.refusal));
+        detail = result.why;
+      } else {
+        const auto report = check_map(host);
+        got = report.valid() ? "valid" : "invalid";
+        detail = report.valid() ? fmt::format("{} darts", host.size())
+                                : fmt::format("{} violations, first: dart {} {}", report.violations.size(), report.violations[0].element,
+                                              constraint_name(report.violations[0]));
+        if (e.cells && report.valid() && count_cells(host).cells != *e.cells) {
+          got = "wrong cells";
+          detail = fmt::format("cells {} expected {}", fmt::join(count_cells(host).cells, ","), fmt::join(*e.cells, ","));
+        }
+      }
+      const bool pass = got == e.expect;
+      failures += !pass;
+      fmt::print("    {} {} at {}: {} -> {}  ({})\n", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got, detail);
+    }
+  }
+  fmt::print("\n{} examples, {} passed, {} failed\n", examples, examples - failures, failures);
+  return failures ? violation : ok;
+}
+
+}  // namespace dartcheck::cli

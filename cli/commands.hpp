@@ -1,0 +1,33 @@
+// The dartcheck subcommands. Each returns the process exit status:
+// 0 success, 1 a violation or a failed expectation, 2 bad input.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/map.hpp"
+
+namespace dartcheck::cli {
+
+enum Exit : int { ok = 0, violation = 1, bad_input = 2 };
+
+struct ValidateOptions {
+  std::string target;
+  std::string model = "2-gmap";
+  std::size_t limit = 50;
+};
+int validate_map(const ValidateOptions& o);
+
+struct ApplyOptions {
+  std::string catalog, rule, map, output;
+  std::vector<Dart> hooks;
+  std::size_t limit = 50;
+};
+int apply(const ApplyOptions& o);
+
+struct RunOptions {
+  std::string catalog;
+};
+int run(const RunOptions& o);
+
+}  // namespace dartcheck::cli

@@ -1,0 +1,56 @@
+// dartcheck: checks modeling operations on G-maps and O-maps.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <yaml-cpp/exceptions.h>
+
+#include "cli/commands.hpp"
+#include "core/input_error.hpp"
+#include "generators/shapes.hpp"
+
+using namespace dartcheck;
+
+int main(int argc, char** argv) {
+  CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps"};
+  app.require_subcommand(1);
+
+  cli::ValidateOptions validate;
+  auto* v = app.add_subcommand("validate-map", "Check a map against its model: cells and every violation");
+  v->add_option("map", validate.target, fmt::format("a map file (.yaml, .off, .obj) or a shape ({})", shape_usage()))->required();
+  v->add_option("--model", validate.model, "model for meshes and shapes (2-gmap, 3-gmap, 2-omap, ...)")->capture_default_str();
+  v->add_option("--limit", validate.limit, "violations to print (0 = all)")->capture_default_str();
+
+  cli::ApplyOptions apply;
+  auto* a = app.add_subcommand("apply", "Apply a DPO rule at hook darts, validate and write the result");
+  a->add_option("catalog", apply.catalog, "YAML catalog")->required();
+  a->add_option("--rule", apply.rule, "rule name")->required();
+  a->add_option("--map", apply.map, "catalog map name, map file, mesh or shape")->required();
+  a->add_option("--hook", apply.hooks, "hook dart, one per hook of the rule (repeat)")->required();
+  a->add_option("-o,--output", apply.output, "write the result map (YAML) here");
+  a->add_option("--limit", apply.limit, "violations to print (0 = all)")->capture_default_str();
+
+  cli::RunOptions run;
+  auto* r = app.add_subcommand("run", "Build every catalog map and check every rule example against its expected outcome");
+  r->add_option("catalog", run.catalog, "YAML catalog")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : cli::bad_input;
+  }
+  try {
+    if (*v) return cli::validate_map(validate);
+    if (*a) return cli::apply(apply);
+    if (*r) return cli::run(run);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return cli::bad_input;
+  } catch (const YAML::Exception& e) {
+    fmt::print(stderr, "error: {}:{}:{}: {}\n", "<yaml>", e.mark.line + 1, e.mark.column + 1, e.msg);
+    return cli::bad_input;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return cli::bad_input;
+  }
+  return cli::bad_input;
+}

@@ -1,0 +1,47 @@
+#include "cli/report_text.hpp"
+
+#include <fmt/format.h>
+
+#include "core/orbit.hpp"
+
+namespace dartcheck::cli {
+
+std::string cells_sentence(const Map& map) {
+  static const char* names[] = {"vertices", "edges", "faces", "volumes"};
+  const CellCounts c = count_cells(map);
+  std::string s;
+  for (std::size_t k = 0; k < c.cells.size(); ++k)
+    s += fmt::format("{}{} {}", k ? ", " : "", c.cells[k], k < 4 ? std::string(names[k]) : fmt::format("{}-cells", k));
+  s += fmt::format("; {} connected component{}", c.components, c.components == 1 ? "" : "s");
+  if (c.cells.size() == 3) s += fmt::format("; Euler characteristic {}", c.euler());
+  return s;
+}
+
+void print_validity(std::FILE* out, const Map& map, const ValidityReport& r, std::size_t limit) {
+  std::string links;
+  for (Dim i : map.model().dims) {
+    std::size_t loops = 0, arcs = 0;
+    for (Dart d = 0; d < map.size(); ++d) {
+      const Dart e = map.link(i, d);
+      if (e == no_dart) continue;
+      ++arcs;
+      loops += e == d;
+    }
+    links += fmt::format("{}{}: {} arcs ({} loops)", links.empty() ? "" : ", ", i, arcs, loops);
+  }
+  fmt::print(out, "links: {}\n", links);
+  if (r.valid()) {
+    fmt::print(out, "cells: {}\n", cells_sentence(map));
+    fmt::print(out, "valid {}: 0 violations\n", map.model().name);
+    return;
+  }
+  fmt::print(out, "INVALID {}: {} violation{}\n", map.model().name, r.violations.size(), r.violations.size() == 1 ? "" : "s");
+  const std::size_t shown = limit == 0 ? r.violations.size() : std::min(limit, r.violations.size());
+  for (std::size_t k = 0; k < shown; ++k) {
+    const auto& v = r.violations[k];
+    fmt::print(out, "  dart {}: {}\n", v.element, describe(v, fmt::format("dart {}", v.element)));
+  }
+  if (shown < r.violations.size()) fmt::print(out, "  ... and {} more (use --limit 0 to list all)\n", r.violations.size() - shown);
+}
+
+}  // namespace dartcheck::cli

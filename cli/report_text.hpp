@@ -1,0 +1,19 @@
+// Plain-text rendering of validity reports and cell counts for the CLI.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "checkers/violation.hpp"
+#include "core/map.hpp"
+
+namespace dartcheck::cli {
+
+/// Prints cells and every violation (up to `limit`, 0 = all, saying how
+/// many were left out).
+void print_validity(std::FILE* out, const Map& map, const ValidityReport& report, std::size_t limit);
+
+/// "8 vertices, 12 edges, 6 faces"
+std::string cells_sentence(const Map& map);
+
+}  // namespace dartcheck::cli

@@ -1,0 +1,222 @@
+#include "core/catalog.hpp"
+
+#include <fmt/format.h>
+#include <regex>
+#include <stdexcept>
+
+#include "core/map_io.hpp"
+#include "core/yaml_util.hpp"
+
+namespace dartcheck {
+
+std::string SourceLocation::str() const { return fmt::format("{}:{}:{}", file, line, column); }
+
+const MapSource* Catalog::find_map(const std::string& name) const {
+  for (const auto& m : maps)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+const CatalogRule* Catalog::find_rule(const std::string& name) const {
+  for (const auto& r : rules)
+    if (r.rule.name() == name) return &r;
+  return nullptr;
+}
+
+namespace {
+
+SourceLocation where(const std::string& file, const YAML::Node& n) { return {file, n.Mark().line + 1, n.Mark().column + 1}; }
+
+std::vector<Dim> read_dims(const std::string& file, const YAML::Node& n, const char* what) {
+  yaml::expect_sequence(file, n, what);
+  std::vector<Dim> dims;
+  for (const auto& d : n) dims.push_back(static_cast<Dim>(yaml::as_int(file, d, what, 0, max_dimension)));
+  return dims;
+}
+
+}  // namespace
+
+Model read_model(const std::string& file, const YAML::Node& node, const std::vector<Model>& custom) {
+  const std::string name = yaml::as_string(file, node, "model");
+  for (const auto& m : custom)
+    if (m.name == name) return m;
+  if (auto m = Model::by_name(name)) return *m;
+  fail_at(file, node, fmt::format("unknown model '{}' (expected {}, or a model declared under 'models')", name, Model::known_names()));
+}
+
+static Model read_custom_model(const std::string& file, const std::string& name, const YAML::Node& n) {
+  yaml::expect_map(file, n, "model");
+  yaml::allow_keys(file, n, {"dims", "non_oriented", "exchangeable", "partial", "loop_free"});
+  Model m;
+  m.name = name;
+  m.dims = read_dims(file, yaml::require(file, n, "dims"), "dims");
+  std::sort(m.dims.begin(), m.dims.end());
+  if (m.dims.empty() || std::adjacent_find(m.dims.begin(), m.dims.end()) != m.dims.end())
+    fail_at(file, n["dims"], "dims: expected a non-empty list of distinct dimensions");
+  auto subset = [&](const char* key) {
+    DimSet s = 0;
+    if (auto v = n[key])
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        const Dim i = read_dims(file, v, key)[k];
+        if (!m.contains(i)) fail_at(file, v[k], fmt::format("{}: {} is not in dims", key, i));
+        s |= dim_bit(i);
+      }
+    return s;
+  };
+  m.non_oriented = subset("non_oriented");
+  m.partial = subset("partial");
+  if (auto e = n["exchangeable"]) {
+    yaml::expect_sequence(file, e, "exchangeable");
+    for (const auto& p : e) {
+      const auto pair = read_dims(file, p, "exchangeable pair");
+      if (pair.size() != 2 || !m.contains(pair[0]) || !m.contains(pair[1])) fail_at(file, p, "exchangeable: expected a pair [i, j] of dims");
+      m.exchangeable.emplace_back(pair[0], pair[1]);
+    }
+  }
+  if (auto l = n["loop_free"]) m.loop_free = l.as<bool>(false);
+  return m;
+}
+
+TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which) {
+  yaml::expect_map(file, side, which);
+  yaml::allow_keys(file, side, {"nodes", "arcs"});
+  TopoGraph g;
+  const auto nodes = yaml::require(file, side, "nodes");
+  yaml::expect_sequence(file, nodes, fmt::format("{}.nodes", which));
+  for (const auto& n : nodes) {
+    const auto name = yaml::as_string(file, n, "node name");
+    if (g.find(name)) fail_at(file, n, fmt::format("{} declares node '{}' twice", which, name));
+    g.add_node(name);
+  }
+  if (const auto arcs = side["arcs"]) {
+    yaml::expect_sequence(file, arcs, fmt::format("{}.arcs", which));
+    static const std::regex arc_re(R"(^\s*([^\s<>-][^\s]*)\s+(<?)-(\d+)-(>?)\s+([^\s<>-][^\s]*)\s*$)");
+    for (const auto& a : arcs) {
+      const auto text = yaml::as_string(file, a, "arc");
+      std::smatch s;
+      if (!std::regex_match(text, s, arc_re) || (s[2].length() && s[4].length()))
+        fail_at(file, a, fmt::format("arc '{}': expected 'x -i- y' (non-oriented pair), 'x -i-> y' or 'x <-i- y' (one oriented arc)", text));
+      auto node = [&](const std::string& name) {
+        auto v = g.find(name);
+        if (!v) fail_at(file, a, fmt::format("arc '{}': node '{}' is not declared in {}.nodes", text, name, which));
+        return *v;
+      };
+      NodeId x = node(s[1]), y = node(s[5]);
+      const int label = std::stoi(s[3].str().substr(0, 3));
+      if (label > max_dimension) fail_at(file, a, fmt::format("arc '{}': dimension {} is above {}", text, label, max_dimension));
+      if (s[2].length()) std::swap(x, y);
+      g.add_arc(x, y, label);
+      if (!s[2].length() && !s[4].length() && x != y) g.add_arc(y, x, label);
+    }
+  }
+  return g;
+}
+
+namespace {
+
+Example read_example(const std::string& file, const YAML::Node& n) {
+  yaml::expect_map(file, n, "example");
+  yaml::allow_keys(file, n, {"map", "hooks", "expect", "cells"});
+  Example e;
+  e.location = where(file, n);
+  e.map = yaml::as_string(file, yaml::require(file, n, "map"), "map");
+  const auto hooks = yaml::require(file, n, "hooks");
+  yaml::expect_sequence(file, hooks, "hooks");
+  for (const auto& h : hooks) e.hooks.push_back(static_cast<Dart>(yaml::as_int(file, h, "hook dart", 0, (1LL << 31))));
+  const auto expect = yaml::require(file, n, "expect");
+  e.expect = yaml::as_string(file, expect, "expect");
+  static const std::vector<std::string> allowed{"valid", "invalid", "no-match", "not-injective", "dangling", "not-representable", "not-combinatorial", "bad-hooks"};
+  if (std::find(allowed.begin(), allowed.end(), e.expect) == allowed.end())
+    fail_at(file, expect, fmt::format("expect: '{}' is not one of {}", e.expect, fmt::join(allowed, ", ")));
+  if (const auto cells = n["cells"]) {
+    yaml::expect_sequence(file, cells, "cells");
+    std::vector<std::size_t> c;
+    for (const auto& x : cells) c.push_back(static_cast<std::size_t>(yaml::as_int(file, x, "cell count", 0, 1LL << 40)));
+    e.cells = c;
+  }
+  return e;
+}
+
+}  // namespace
+
+Catalog read_catalog(const std::string& file) {
+  const YAML::Node root = load_yaml_file(file);
+  Catalog c;
+  c.file = file;
+  if (!root.IsMap()) throw InputError(file, 1, 1, "a catalog is a mapping with keys models, maps, rules");
+  yaml::allow_keys(file, root, {"models", "maps", "rules", "model", "description"});
+
+  std::vector<Model> custom;
+  if (const auto models = root["models"]) {
+    yaml::expect_map(file, models, "models");
+    for (const auto& kv : models) custom.push_back(read_custom_model(file, kv.first.Scalar(), kv.second));
+  }
+  std::optional<Model> default_model;
+  if (root["model"]) default_model = read_model(file, root["model"], custom);
+  auto model_of = [&](const YAML::Node& n) {
+    if (n["model"]) return read_model(file, n["model"], custom);
+    if (!default_model) fail_at(file, n, "missing key 'model' (and the catalog sets no default model)");
+    return *default_model;
+  };
+
+  if (const auto maps = root["maps"]) {
+    yaml::expect_map(file, maps, "maps");
+    for (const auto& kv : maps) {
+      const YAML::Node& n = kv.second;
+      yaml::expect_map(file, n, "map");
+      yaml::allow_keys(file, n, {"model", "darts", "links", "pred", "shape", "file"});
+      MapSource m{kv.first.Scalar(), model_of(n), std::nullopt, {}, {}, where(file, kv.first)};
+      if (c.find_map(m.name)) fail_at(file, kv.first, fmt::format("map '{}' is declared twice", m.name));
+      const int forms = (n["darts"] ? 1 : 0) + (n["shape"] ? 1 : 0) + (n["file"] ? 1 : 0);
+      if (forms != 1) fail_at(file, n, "a map needs exactly one of 'darts' + 'links', 'shape', 'file'");
+      if (n["shape"]) m.shape = yaml::as_string(file, n["shape"], "shape");
+      if (n["file"]) {
+        m.mesh = yaml::as_string(file, n["file"], "file");
+        if (!m.mesh.empty() && m.mesh.front() != '/') {
+          const auto slash = file.rfind('/');
+          if (slash != std::string::npos) m.mesh = file.substr(0, slash + 1) + m.mesh;
+        }
+      }
+      if (n["darts"]) m.map = read_map_links(file, n, m.model);
+      c.maps.push_back(std::move(m));
+    }
+  }
+
+  if (const auto rules = root["rules"]) {
+    yaml::expect_sequence(file, rules, "rules");
+    for (const auto& n : rules) {
+      yaml::expect_map(file, n, "rule");
+      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples"});
+      const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
+      if (c.find_rule(name)) fail_at(file, n["name"], fmt::format("rule '{}' is declared twice", name));
+      const Model model = model_of(n);
+      TopoGraph left = read_side(file, yaml::require(file, n, "left"), "left");
+      TopoGraph right = read_side(file, yaml::require(file, n, "right"), "right");
+      std::vector<std::string> hooks;
+      const auto hn = n["hooks"];
+      if (hn) {
+        yaml::expect_sequence(file, hn, "hooks");
+        for (const auto& h : hn) hooks.push_back(yaml::as_string(file, h, "hook"));
+      }
+      std::optional<Rule> rule;
+      try {
+        rule.emplace(name, model, std::move(left), std::move(right), std::move(hooks));
+      } catch (const std::invalid_argument& e) {
+        fail_at(file, hn ? hn : n, fmt::format("rule '{}': {}", name, e.what()));
+      }
+      CatalogRule cr{std::move(*rule), n["note"] ? yaml::as_string(file, n["note"], "note") : "", {}, where(file, n)};
+      if (const auto ex = n["examples"]) {
+        yaml::expect_sequence(file, ex, "examples");
+        for (const auto& e : ex) {
+          cr.examples.push_back(read_example(file, e));
+          if (!c.find_map(cr.examples.back().map))
+            fail_at(file, e["map"], fmt::format("example of rule '{}': no map named '{}' under 'maps'", name, cr.examples.back().map));
+        }
+      }
+      c.rules.push_back(std::move(cr));
+    }
+  }
+  return c;
+}
+
+}  // namespace dartcheck

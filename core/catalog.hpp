@@ -1,0 +1,67 @@
+// YAML rule catalogs (format: docs/catalog-format.md).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+#include <yaml-cpp/yaml.h>
+
+#include "core/map.hpp"
+#include "core/rule.hpp"
+
+namespace dartcheck {
+
+struct SourceLocation {
+  std::string file;
+  int line = 0, column = 0;
+  std::string str() const;
+};
+
+/// Where a map comes from. Shapes and meshes are built by the caller (the
+/// builders live in generators/, a layer below core).
+struct MapSource {
+  std::string name;
+  Model model;
+  std::optional<Map> map;  // explicit darts and links
+  std::string shape;       // e.g. "grid:3x4"
+  std::string mesh;        // path, resolved against the catalog's folder
+  SourceLocation location;
+};
+
+/// A worked application: rule at `hooks` on `map`, and what must happen.
+struct Example {
+  std::string map;
+  std::vector<Dart> hooks;
+  std::string expect;  // "valid", "invalid", or a refusal name (no-match, dangling, ...)
+  std::optional<std::vector<std::size_t>> cells;  // expected cell counts of H
+  SourceLocation location;
+};
+
+struct CatalogRule {
+  Rule rule;
+  std::string note;
+  std::vector<Example> examples;
+  SourceLocation location;
+};
+
+struct Catalog {
+  std::string file;
+  std::vector<MapSource> maps;
+  std::vector<CatalogRule> rules;
+  const MapSource* find_map(const std::string& name) const;
+  const CatalogRule* find_rule(const std::string& name) const;
+};
+
+/// Reads a catalog; every error is an InputError with file:line:column.
+Catalog read_catalog(const std::string& file);
+
+/// Reads one side of a rule: {nodes: [...], arcs: ["a -0- b", ...]}.
+/// Arc notation: "a -i- b" is the non-oriented pair a -i-> b, b -i-> a
+/// (one loop arc when a == b); "a -i-> b" and "a <-i- b" one oriented arc.
+TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which);
+
+/// Reads a model: a preset name, or {dims, non_oriented, exchangeable,
+/// partial, loop_free} for a custom one.
+Model read_model(const std::string& file, const YAML::Node& node, const std::vector<Model>& custom);
+
+}  // namespace dartcheck

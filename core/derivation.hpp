@@ -1,0 +1,26 @@
+// The direct derivation G =>(r,m) H on a dense map (002 Def. 4): delete
+// m(L \ K), add R \ K, glue along K.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/match.hpp"
+
+namespace dartcheck {
+
+struct Derivation {
+  Match match;                // L -> G, in G's dart numbering
+  std::vector<Dart> comatch;  // R -> H, in H's dart numbering
+  /// Darts of G that H renumbered to fill the slots of deleted darts
+  /// (H keeps its darts dense): (old, new).
+  std::vector<std::pair<Dart, Dart>> moved;
+};
+
+/// Rewrites `g` into H in place. Costs O((|L| + |R|) * |D|) plus O(|D|)
+/// per renumbered dart: independent of the size of `g`. On refusal (no
+/// match, dangling condition, or an H that would give a dart two i-arcs)
+/// `g` is left unchanged and the outcome says why.
+Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> hook_darts);
+
+}  // namespace dartcheck

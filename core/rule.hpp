@@ -1,0 +1,57 @@
+// DPO rules L ⊇ K ⊆ R with K = L ∩ R (002 Def. 2, Assumption 2).
+//
+// Nodes are identified across the two sides by name. Arcs are identified by
+// (source name, target name, label) counted with multiplicity: if L has two
+// a -0-> b arcs and R one, one is preserved and one deleted.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/graph.hpp"
+#include "core/model.hpp"
+
+namespace dartcheck {
+
+inline constexpr NodeId no_node = static_cast<NodeId>(-1);
+
+class Rule {
+ public:
+  /// Builds a rule and its interface. Throws std::invalid_argument when an
+  /// arc label is not a dimension of the model, a side repeats a node name,
+  /// a hook is not a node of L, or a connected component of L has no hook
+  /// or several (002 Sec. 6.3: one hook per component).
+  Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks);
+
+  const std::string& name() const { return name_; }
+  const Model& model() const { return model_; }
+  const TopoGraph& left() const { return left_; }
+  const TopoGraph& right() const { return right_; }
+  /// Hooks as nodes of L, one per connected component.
+  const std::vector<NodeId>& hooks() const { return hooks_; }
+
+  /// The R node with the same name as L node v (no_node: v is deleted).
+  NodeId to_right(NodeId v) const { return left_to_right_[v]; }
+  /// The L node with the same name as R node v (no_node: v is added).
+  NodeId to_left(NodeId v) const { return right_to_left_[v]; }
+  bool preserved_left_arc(ArcId e) const { return left_arc_kept_[e]; }
+  bool preserved_right_arc(ArcId e) const { return right_arc_kept_[e]; }
+
+  /// The inverse rule R ⊇ K ⊆ L with the given hooks (nodes of R by name).
+  Rule inverse(std::vector<std::string> hooks) const;
+
+  /// Connected components of L (arcs taken in both directions), as a
+  /// component index per node.
+  static std::vector<int> components(const TopoGraph& g, int* count);
+
+ private:
+  std::string name_;
+  Model model_;
+  TopoGraph left_, right_;
+  std::vector<NodeId> hooks_;
+  std::vector<NodeId> left_to_right_, right_to_left_;
+  std::vector<bool> left_arc_kept_, right_arc_kept_;
+};
+
+}  // namespace dartcheck

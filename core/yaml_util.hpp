@@ -1,0 +1,25 @@
+// Typed access to YAML nodes that reports the file position on any error.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+#include <yaml-cpp/yaml.h>
+
+#include "core/input_error.hpp"
+#include "core/model.hpp"
+
+namespace dartcheck::yaml {
+
+/// The value at `key` of a mapping, or an error naming the missing key.
+YAML::Node require(const std::string& file, const YAML::Node& map, const char* key);
+void expect_map(const std::string& file, const YAML::Node& n, std::string_view what);
+void expect_sequence(const std::string& file, const YAML::Node& n, std::string_view what);
+/// Rejects keys other than `allowed` (typos must not be silently ignored).
+void allow_keys(const std::string& file, const YAML::Node& map, std::initializer_list<std::string_view> allowed);
+long long as_int(const std::string& file, const YAML::Node& n, std::string_view what, long long lo, long long hi);
+std::string as_string(const std::string& file, const YAML::Node& n, std::string_view what);
+/// A model name, resolved against the presets.
+Model as_model(const std::string& file, const YAML::Node& n);
+
+}  // namespace dartcheck::yaml
