@@ -1,5 +1,8 @@
 #include "checkers/map_validity.hpp"
 
+#include <array>
+#include "core/orbit.hpp"
+
 #include <algorithm>
 #include <tuple>
 #include <utility>
@@ -76,76 +79,45 @@ ValidityReport check_map_exact(const Map& map) {
   const Dart n = static_cast<Dart>(map.size());
   ValidityReport report = make_report(map);
 
-  // The i-arcs of the map: (d, link(d)) plus, for an oriented dimension,
-  // (inverse(e), e) when the successor array does not record it. `extra`
-  // holds the latter, sorted by source.
-  struct Arcs {
-    std::vector<std::pair<Dart, Dart>> extra;
-    std::vector<std::uint32_t> out, in;
-  };
-  std::vector<Arcs> arcs(max_dimension + 1);
-  auto successors = [&](Dim i, Dart x, auto&& f) {
-    if (Dart y = map.link(i, x); y != no_dart) f(y);
-    const auto& ex = arcs[i].extra;
-    for (auto it = std::lower_bound(ex.begin(), ex.end(), std::pair<Dart, Dart>{x, 0}); it != ex.end() && it->first == x; ++it)
-      f(it->second);
-  };
-
+  // The i-arcs of the map are (d, link(d)). For an oriented dimension the
+  // recorded predecessors must name the sources of those arcs.
+  std::vector<std::uint32_t> out(n), in(n);
+  std::vector<Dart> source(n);
   for (Dim i : model.dims) {
-    Arcs& a = arcs[i];
-    a.out.assign(n, 0);
-    a.in.assign(n, 0);
+    std::fill(out.begin(), out.end(), 0);
+    std::fill(in.begin(), in.end(), 0);
     for (Dart d = 0; d < n; ++d)
       if (Dart e = map.link(i, d); e != no_dart) {
-        ++a.out[d];
-        ++a.in[e];
+        ++out[d];
+        ++in[e];
+        source[e] = d;
       }
-    if (model.is_oriented(i)) {
-      for (Dart e = 0; e < n; ++e)
-        if (Dart p = map.inverse_link(i, e); p != no_dart && map.link(i, p) != e) {
-          a.extra.emplace_back(p, e);
-          ++a.out[p];
-          ++a.in[e];
-        }
-      std::sort(a.extra.begin(), a.extra.end());
-    }
     const bool partial = has_dim(model.partial, i);
     for (Dart d = 0; d < n; ++d) {
-      if (a.out[d] > 1 || (a.out[d] == 0 && !partial)) report.violations.push_back({Constraint::incident_out, i, -1, d, a.out[d]});
-      if (a.in[d] > 1 || (a.in[d] == 0 && !partial)) report.violations.push_back({Constraint::incident_in, i, -1, d, a.in[d]});
+      if (out[d] > 1 || (out[d] == 0 && !partial)) report.violations.push_back({Constraint::incident_out, i, -1, d, out[d]});
+      if (in[d] > 1 || (in[d] == 0 && !partial)) report.violations.push_back({Constraint::incident_in, i, -1, d, in[d]});
+      if (model.is_oriented(i) && in[d] <= 1) {
+        const Dart recorded = map.inverse_link(i, d), actual = in[d] ? source[d] : no_dart;
+        if (recorded != actual)
+          report.violations.push_back({Constraint::predecessor, i, actual == no_dart ? -1 : static_cast<Dim>(actual), d, recorded});
+      }
+      if (model.loop_free && map.link(i, d) == d) report.violations.push_back({Constraint::loop, i, -1, d});
     }
     if (!model.is_oriented(i)) {
-      // Non-oriented dimensions have no extra arcs: x -> y has a reverse iff
-      // link(y) == x, and a missing reverse breaks O(i) at both ends.
+      // x -> y has a reverse iff link(y) == x; a missing reverse breaks O(i)
+      // at both ends.
       for (Dart x = 0; x < n; ++x)
         if (Dart y = map.link(i, x); y != no_dart && map.link(i, y) != x) {
           report.violations.push_back({Constraint::non_orientation, i, -1, x});
           report.violations.push_back({Constraint::non_orientation, i, -1, y});
         }
     }
-    if (model.loop_free)
-      for (Dart x = 0; x < n; ++x) {
-        bool loop = false;
-        successors(i, x, [&](Dart y) { loop |= y == x; });
-        if (loop) report.violations.push_back({Constraint::loop, i, -1, x});
-      }
   }
 
-  // C(i,j) at v: some ijij-path from v ends at v (paths may branch where
-  // I fails, so follow every arc).
-  std::vector<Dart> frontier, next;
+  // C(i,j) at v: the ijij-path from v (unique: one arc per label) ends at v.
   for (auto [i, j] : model.exchangeable)
-    for (Dart v = 0; v < n; ++v) {
-      frontier.assign(1, v);
-      for (Dim letter : {i, j, i, j}) {
-        next.clear();
-        for (Dart x : frontier) successors(letter, x, [&](Dart y) { next.push_back(y); });
-        std::sort(next.begin(), next.end());
-        next.erase(std::unique(next.begin(), next.end()), next.end());
-        std::swap(frontier, next);
-      }
-      if (!std::binary_search(frontier.begin(), frontier.end(), v)) report.violations.push_back({Constraint::cycle, i, j, v});
-    }
+    for (Dart v = 0; v < n; ++v)
+      if (follow(map, v, std::array<Dim, 4>{i, j, i, j}) != v) report.violations.push_back({Constraint::cycle, i, j, v});
 
   std::sort(report.violations.begin(), report.violations.end(),
             [](const Violation& a, const Violation& b) { return std::tie(a.element, a.constraint, a.i, a.j) < std::tie(b.element, b.constraint, b.i, b.j); });

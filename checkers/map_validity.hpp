@@ -9,15 +9,20 @@ namespace dartcheck {
 
 /// Checks every dart of `map` and lists every violation.
 ///
+/// The i-arcs of the map are the pairs (d, link_i(d)); for an oriented
+/// dimension the recorded predecessors must be the sources of those arcs,
+/// and a dart whose record disagrees breaks I(i) as stored.
+///
 /// One pass reads, for each dart, the records of its neighbours and decides
 /// all constraints with identities that hold when every link array is a
 /// bijection (C(i,j) at v  <=>  s_j(s_i(v)) = p_i(p_j(v))). If some dart
 /// breaks I or O, those identities no longer describe the graph, and an
-/// exact pass over the arc sets recomputes every violation.
+/// exact pass (degree counts, explicit ijij-paths) recomputes every
+/// violation.
 ValidityReport check_map(const Map& map);
 
 /// The exact pass alone (used by the fast pass, and by tests as a second
-/// implementation to compare against).
+/// implementation of the definition to compare against).
 ValidityReport check_map_exact(const Map& map);
 
 }  // namespace dartcheck

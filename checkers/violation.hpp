@@ -17,10 +17,15 @@ enum class Constraint : std::uint8_t {
   cycle,            // C(i,j): not the source of an ijij-cycle
   loop,             // closed G-maps: the i-arc is a loop
   foreign_label,    // an arc labeled i, with i not in D
+  predecessor,      // I(i), as stored: the recorded i-predecessor is not the source of the arc in
 };
 
+inline constexpr std::uint32_t no_element = 0xffffffffU;
+
 /// One failing element. `element` is a dart of a map or a node of a graph;
-/// `count` is the number of arcs found for the incident-arcs constraint.
+/// `count` is the number of arcs found for the incident-arcs constraint,
+/// or the recorded predecessor for `predecessor` (whose `j` is then the
+/// true source of the arc in, or -1 when no arc comes in).
 struct Violation {
   Constraint constraint;
   Dim i;

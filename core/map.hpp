@@ -2,13 +2,13 @@
 // millions of darts.
 //
 // Darts are the indices 0..size()-1. For each dimension i a dart stores the
-// target of its i-arc (`link`), or `no_dart`. An oriented dimension also
-// stores the source of the i-arc into the dart (`inverse_link`), so both
-// directions are O(1). The i-arcs of the map are the pairs that either array
-// records; a well-formed map has the two arrays mutually inverse, which is
-// what the validity checker verifies (CGAL's beta0/beta1 pair has the same
-// meaning). A dart can thus have at most one outgoing i-arc: a graph that
-// needs two is not a dense map and must stay a small LabeledGraph.
+// target of its i-arc (`link`), or `no_dart`: the i-arcs of the map are
+// the pairs (d, link_i(d)). An oriented dimension also records the source
+// of the i-arc into each dart (`inverse_link`), so both directions are O(1);
+// the validity checker reports a record that is not the inverse of the
+// links (CGAL's beta0 must likewise be the inverse of beta1). A dart thus
+// has at most one outgoing i-arc: a graph that needs two is not a dense map
+// and must stay a small LabeledGraph.
 //
 // The links of one dart are stored next to each other (dart-major), not one
 // array per dimension: every constraint check reads several dimensions of
