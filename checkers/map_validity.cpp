@@ -31,23 +31,61 @@ ValidityReport make_report(const Map& map) {
 
 }  // namespace
 
-ValidityReport check_map(const Map& map) {
+namespace {
+
+// The slot layout of a model's records: which slots hold each dimension's
+// link and recorded predecessor, and the exchangeable pairs.
+struct Layout {
+  std::size_t nd = 0, np = 0, stride = 0;
+  bool loop_free = false;
+  std::array<DimSlots, max_dimension + 1> dims{};
+  std::array<Pair, (max_dimension + 1) * (max_dimension + 1)> pairs{};
+};
+
+Layout layout_of(const Map& map) {
   const Model& model = map.model();
-  const std::size_t stride = map.stride();
-  const Dart* base = map.raw().data();
-  const Dart n = static_cast<Dart>(map.size());
+  Layout l;
+  l.stride = map.stride();
+  l.loop_free = model.loop_free;
+  for (Dim i : model.dims) l.dims[l.nd++] = {i, map.succ_slot(i), map.pred_slot(i), model.is_oriented(i), has_dim(model.partial, i)};
+  for (auto [i, j] : model.exchangeable) l.pairs[l.np++] = {map.succ_slot(i), map.succ_slot(j), map.pred_slot(i), map.pred_slot(j), i, j};
+  return l;
+}
 
-  std::vector<DimSlots> dims;
-  for (Dim i : model.dims)
-    dims.push_back({i, map.succ_slot(i), map.pred_slot(i), model.is_oriented(i), has_dim(model.partial, i)});
-  std::vector<Pair> pairs;
-  for (auto [i, j] : model.exchangeable) pairs.push_back({map.succ_slot(i), map.succ_slot(j), map.pred_slot(i), map.pred_slot(j), i, j});
+bool same_layout(const Layout& a, const Layout& b) {
+  if (a.nd != b.nd || a.np != b.np || a.stride != b.stride || a.loop_free != b.loop_free) return false;
+  for (std::size_t x = 0; x < a.nd; ++x) {
+    const DimSlots &p = a.dims[x], &q = b.dims[x];
+    if (p.i != q.i || p.s != q.s || p.p != q.p || p.oriented != q.oriented || p.partial != q.partial) return false;
+  }
+  for (std::size_t y = 0; y < a.np; ++y) {
+    const Pair &p = a.pairs[y], &q = b.pairs[y];
+    if (p.si != q.si || p.sj != q.sj || p.pi != q.pi || p.pj != q.pj || p.i != q.i || p.j != q.j) return false;
+  }
+  return true;
+}
 
-  ValidityReport report = make_report(map);
-  bool broken = false;  // some dart breaks I, O or the loop ban
-  for (Dart d = 0; d < n && !broken; ++d) {
+// The fast pass. When the layout is a compile-time constant (the preset
+// models), loops unroll and every offset is a constant. Returns false as
+// soon as some dart breaks I, O or the loop ban; cycle failures go to `out`.
+template <class GetLayout>
+bool fast_pass(const Dart* base, Dart n, GetLayout layout, std::vector<Violation>& out) {
+  const Layout& L = layout();
+  const std::size_t stride = L.stride;
+  // Each dart reads the records of its neighbours, which are anywhere in
+  // memory when darts are shuffled: request them a few darts ahead so the
+  // cache misses overlap.
+  constexpr Dart ahead = 16;
+  bool broken = false;
+  for (Dart d = 0; d < n; ++d) {
+    if (d + ahead < n) {
+      const Dart* f = base + (d + ahead) * stride;
+      for (std::size_t k = 0; k < stride; ++k)
+        if (f[k] != no_dart) __builtin_prefetch(base + f[k] * stride);
+    }
     const Dart* r = base + d * stride;
-    for (const DimSlots& k : dims) {
+    for (std::size_t x = 0; x < L.nd; ++x) {
+      const DimSlots& k = L.dims[x];
       const Dart s = r[k.s];
       if (k.oriented) {
         const Dart p = r[k.p];
@@ -57,21 +95,53 @@ ValidityReport check_map(const Map& map) {
       } else {
         broken |= s == no_dart ? !k.partial : base[s * stride + k.s] != d;
       }
-      broken |= model.loop_free && s == d;
+      if (L.loop_free) broken |= s == d;
     }
-    for (const Pair& q : pairs) {
+    for (std::size_t y = 0; y < L.np; ++y) {
+      const Pair& q = L.pairs[y];
       // Both sides of the identity need every intermediate dart.
       const Dart a = r[q.si], b = r[q.pj];
-      if (a == no_dart || b == no_dart) {
-        report.violations.push_back({Constraint::cycle, q.i, q.j, d});
-        continue;
-      }
-      const Dart lhs = base[a * stride + q.sj], rhs = base[b * stride + q.pi];
-      if (lhs != rhs || lhs == no_dart) report.violations.push_back({Constraint::cycle, q.i, q.j, d});
+      if (a == no_dart || b == no_dart || base[a * stride + q.sj] != base[b * stride + q.pi] || base[a * stride + q.sj] == no_dart)
+        out.push_back({Constraint::cycle, q.i, q.j, d});
     }
+    if (broken) return false;
   }
-  if (broken) return check_map_exact(map);
-  return report;
+  return true;
+}
+
+// Layouts of the preset models, as Map lays them out: links in dimension
+// order, then the predecessors of oriented dimensions.
+constexpr Layout preset(int n, bool generalized) {
+  Layout l;
+  const Dim lo = generalized ? 0 : 1;
+  for (Dim i = lo; i <= n; ++i) l.dims[l.nd++] = {i, i - lo, i - lo, !generalized && i == 1, false};
+  l.stride = l.nd + (generalized ? 0 : 1);
+  if (!generalized) l.dims[0].p = static_cast<int>(l.nd);
+  for (Dim i = lo; i <= n; ++i)
+    for (Dim j = i + 2; j <= n; ++j) l.pairs[l.np++] = {l.dims[i - lo].s, l.dims[j - lo].s, l.dims[i - lo].p, l.dims[j - lo].p, i, j};
+  return l;
+}
+constexpr Layout gmap2 = preset(2, true), gmap3 = preset(3, true), omap2 = preset(2, false), omap3 = preset(3, false);
+
+}  // namespace
+
+ValidityReport check_map(const Map& map) {
+  ValidityReport report = make_report(map);
+  const Dart* base = map.raw().data();
+  const Dart n = static_cast<Dart>(map.size());
+  const Layout mine = layout_of(map);
+  bool ok;
+  if (same_layout(mine, gmap2))
+    ok = fast_pass(base, n, [] () -> const Layout& { return gmap2; }, report.violations);
+  else if (same_layout(mine, omap2))
+    ok = fast_pass(base, n, [] () -> const Layout& { return omap2; }, report.violations);
+  else if (same_layout(mine, gmap3))
+    ok = fast_pass(base, n, [] () -> const Layout& { return gmap3; }, report.violations);
+  else if (same_layout(mine, omap3))
+    ok = fast_pass(base, n, [] () -> const Layout& { return omap3; }, report.violations);
+  else
+    ok = fast_pass(base, n, [&mine]() -> const Layout& { return mine; }, report.violations);
+  return ok ? report : check_map_exact(map);
 }
 
 ValidityReport check_map_exact(const Map& map) {
