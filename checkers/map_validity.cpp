@@ -79,18 +79,27 @@ bool fast_pass(const Dart* base, Dart n, GetLayout layout, std::vector<Violation
   bool broken = false;
   for (Dart d = 0; d < n; ++d) {
     if (d + ahead < n) {
+      // The records read below: those of the link targets, and of the
+      // recorded predecessors where a partial dimension needs them.
       const Dart* f = base + (d + ahead) * stride;
-      for (std::size_t k = 0; k < stride; ++k)
-        if (f[k] != no_dart) __builtin_prefetch(base + f[k] * stride);
+      for (std::size_t x = 0; x < L.nd; ++x) {
+        if (f[L.dims[x].s] != no_dart) __builtin_prefetch(base + f[L.dims[x].s] * stride);
+        if (L.dims[x].oriented && L.dims[x].partial && f[L.dims[x].p] != no_dart) __builtin_prefetch(base + f[L.dims[x].p] * stride);
+      }
     }
     const Dart* r = base + d * stride;
     for (std::size_t x = 0; x < L.nd; ++x) {
       const DimSlots& k = L.dims[x];
       const Dart s = r[k.s];
-      if (k.oriented) {
+      if (k.oriented && !k.partial) {
+        // pred(succ(d)) = d for every d makes succ injective, hence a
+        // bijection of the finite dart set, and pred its inverse: the
+        // converse check succ(pred(d)) = d would read one more random record.
+        broken |= s == no_dart || base[s * stride + k.p] != d;
+      } else if (k.oriented) {
         const Dart p = r[k.p];
-        const bool ok_s = s == no_dart ? k.partial : base[s * stride + k.p] == d;
-        const bool ok_p = p == no_dart ? k.partial : base[p * stride + k.s] == d;
+        const bool ok_s = s == no_dart || base[s * stride + k.p] == d;
+        const bool ok_p = p == no_dart || base[p * stride + k.s] == d;
         broken |= !(ok_s && ok_p);
       } else {
         broken |= s == no_dart ? !k.partial : base[s * stride + k.s] != d;

@@ -21,6 +21,7 @@
 #include <span>
 #include <vector>
 
+#include "core/huge_page_allocator.hpp"
 #include "core/model.hpp"
 
 namespace dartcheck {
@@ -86,7 +87,7 @@ class Map {
   std::size_t stride_ = 0;
   int succ_slot_[max_dimension + 1] = {};
   int pred_slot_[max_dimension + 1] = {};
-  std::vector<Dart> links_;
+  std::vector<Dart, HugePageAllocator<Dart>> links_;
 };
 
 }  // namespace dartcheck
