@@ -1,7 +1,8 @@
 #include "core/catalog.hpp"
 
 #include <fmt/format.h>
-#include <regex>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/map_io.hpp"
@@ -26,6 +27,45 @@ const CatalogRule* Catalog::find_rule(const std::string& name) const {
 namespace {
 
 SourceLocation where(const std::string& file, const YAML::Node& n) { return {file, n.Mark().line + 1, n.Mark().column + 1}; }
+
+// "x -i- y", "x -i-> y" or "x <-i- y": three whitespace-separated words.
+struct ArcText {
+  std::string source, target;
+  int label = 0;
+  bool oriented = false, backwards = false;
+};
+
+std::optional<ArcText> parse_arc(const std::string& text) {
+  std::istringstream in(text);
+  ArcText a;
+  std::string word, extra;
+  if (!(in >> a.source >> word >> a.target) || (in >> extra)) return std::nullopt;
+  std::string_view link = word;
+  bool forwards = false;
+  if (link.starts_with("<-")) {
+    a.backwards = true;
+    link.remove_prefix(2);
+  } else if (link.starts_with("-")) {
+    link.remove_prefix(1);
+  } else {
+    return std::nullopt;
+  }
+  if (link.ends_with("->")) {
+    forwards = true;
+    link.remove_suffix(2);
+  } else if (link.ends_with("-")) {
+    link.remove_suffix(1);
+  } else {
+    return std::nullopt;
+  }
+  if ((a.backwards && forwards) || link.empty() || link.size() > 3) return std::nullopt;
+  for (char c : link) {
+    if (c < '0' || c > '9') return std::nullopt;
+    a.label = a.label * 10 + (c - '0');
+  }
+  a.oriented = a.backwards || forwards;
+  return a;
+}
 
 std::vector<Dim> read_dims(const std::string& file, const YAML::Node& n, const char* what) {
   yaml::expect_sequence(file, n, what);
@@ -55,12 +95,13 @@ static Model read_custom_model(const std::string& file, const std::string& name,
     fail_at(file, n["dims"], "dims: expected a non-empty list of distinct dimensions");
   auto subset = [&](const char* key) {
     DimSet s = 0;
-    if (auto v = n[key])
-      for (std::size_t k = 0; k < v.size(); ++k) {
-        const Dim i = read_dims(file, v, key)[k];
-        if (!m.contains(i)) fail_at(file, v[k], fmt::format("{}: {} is not in dims", key, i));
-        s |= dim_bit(i);
+    if (auto v = n[key]) {
+      const auto dims = read_dims(file, v, key);
+      for (std::size_t k = 0; k < dims.size(); ++k) {
+        if (!m.contains(dims[k])) fail_at(file, v[k], fmt::format("{}: {} is not in dims", key, dims[k]));
+        s |= dim_bit(dims[k]);
       }
+    }
     return s;
   };
   m.non_oriented = subset("non_oriented");
@@ -90,23 +131,20 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
   }
   if (const auto arcs = side["arcs"]) {
     yaml::expect_sequence(file, arcs, fmt::format("{}.arcs", which));
-    static const std::regex arc_re(R"(^\s*([^\s<>-][^\s]*)\s+(<?)-(\d+)-(>?)\s+([^\s<>-][^\s]*)\s*$)");
     for (const auto& a : arcs) {
       const auto text = yaml::as_string(file, a, "arc");
-      std::smatch s;
-      if (!std::regex_match(text, s, arc_re) || (s[2].length() && s[4].length()))
-        fail_at(file, a, fmt::format("arc '{}': expected 'x -i- y' (non-oriented pair), 'x -i-> y' or 'x <-i- y' (one oriented arc)", text));
+      const auto arc = parse_arc(text);
+      if (!arc) fail_at(file, a, fmt::format("arc '{}': expected 'x -i- y' (non-oriented pair), 'x -i-> y' or 'x <-i- y' (one oriented arc)", text));
       auto node = [&](const std::string& name) {
         auto v = g.find(name);
         if (!v) fail_at(file, a, fmt::format("arc '{}': node '{}' is not declared in {}.nodes", text, name, which));
         return *v;
       };
-      NodeId x = node(s[1]), y = node(s[5]);
-      const int label = std::stoi(s[3].str().substr(0, 3));
-      if (label > max_dimension) fail_at(file, a, fmt::format("arc '{}': dimension {} is above {}", text, label, max_dimension));
-      if (s[2].length()) std::swap(x, y);
-      g.add_arc(x, y, label);
-      if (!s[2].length() && !s[4].length() && x != y) g.add_arc(y, x, label);
+      NodeId x = node(arc->source), y = node(arc->target);
+      if (arc->label > max_dimension) fail_at(file, a, fmt::format("arc '{}': dimension {} is above {}", text, arc->label, max_dimension));
+      if (arc->backwards) std::swap(x, y);
+      g.add_arc(x, y, arc->label);
+      if (!arc->oriented && x != y) g.add_arc(y, x, arc->label);
     }
   }
   return g;
