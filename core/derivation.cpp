@@ -67,16 +67,19 @@ Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> h
   for (ArcId e = 0; e < R.arc_count(); ++e)
     if (!rule.preserved_right_arc(e)) g.set_link(R.arc(e).label, d.comatch[R.arc(e).source], d.comatch[R.arc(e).target]);
 
-  // Keep H dense: move the last darts into the remaining holes.
+  // Keep H dense: while holes remain, drop the last dart if it is a hole,
+  // otherwise move it into the smallest hole. holes[lo, hi) are unfilled.
   std::sort(holes.begin(), holes.end());
-  std::size_t size = g.size();
-  auto is_hole = [&](std::size_t x) { return std::binary_search(holes.begin(), holes.end(), static_cast<Dart>(x)); };
-  for (Dart hole : holes) {
-    while (size > 0 && is_hole(size - 1)) --size;  // trailing holes just go
-    if (hole >= size) break;
-    const Dart last = static_cast<Dart>(size - 1);
-    g.relocate(last, hole);
-    d.moved.emplace_back(last, hole);
+  std::size_t size = g.size(), lo = 0, hi = holes.size();
+  while (lo < hi) {
+    if (holes[hi - 1] == size - 1) {
+      --hi;
+    } else {
+      const Dart last = static_cast<Dart>(size - 1);
+      g.relocate(last, holes[lo]);
+      d.moved.emplace_back(last, holes[lo]);
+      ++lo;
+    }
     --size;
   }
   g.truncate(size);

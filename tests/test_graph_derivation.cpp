@@ -7,6 +7,7 @@
 #include "core/catalog.hpp"
 #include "core/derivation.hpp"
 #include "core/graph_derivation.hpp"
+#include "core/map_io.hpp"
 #include "generators/random_maps.hpp"
 
 using namespace dartcheck;
@@ -84,6 +85,7 @@ RC_GTEST_PROP(GraphDerivation, AgreesWithDenseEngine, ()) {
     auto out = apply_rule(rule, g, std::span(&hook, 1));
     if (!out.ok()) continue;
     ++applied;
+    RC_LOG() << rule.name() << " at " << hook << " on\n" << map_to_yaml(host) << "gives\n" << map_to_yaml(g);
     const Derivation& d = *out.value;
     // The same match on the graph: L arc x -i-> y goes to the i-arc of m(x).
     GraphMatch m{std::vector<NodeId>(d.match.node.begin(), d.match.node.end()), {}};

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+#include <utility>
 
 #include "checkers/map_validity.hpp"
 #include "core/catalog.hpp"
@@ -102,6 +103,27 @@ TEST(Derivation, DeletionKeepsTheMapDense) {
   EXPECT_EQ(out.value->moved.size(), 2u);
   EXPECT_TRUE(check_map(g).valid());
   EXPECT_TRUE(isomorphic(g, square));
+}
+
+// Regression (found by GraphDerivation.AgreesWithDenseEngine): deleting
+// four darts whose slots interleave with the last darts once dropped a live
+// dart. Two digons sewn into a sphere (V = 2, E = 2, F = 2); removing one
+// degree-2 vertex leaves one vertex, one loop edge and two faces on 4 darts.
+TEST(Derivation, DeletionWithInterleavedHoles) {
+  Map sphere(Model::gmap(2), 8);
+  for (auto [a, b] : {std::pair{0, 1}, {2, 3}, {4, 5}, {6, 7}}) sphere.sew(0, a, b);
+  for (auto [a, b] : {std::pair{0, 3}, {1, 2}, {4, 7}, {5, 6}}) sphere.sew(1, a, b);
+  for (auto [a, b] : {std::pair{0, 5}, {1, 4}, {2, 7}, {3, 6}}) sphere.sew(2, a, b);
+  ASSERT_TRUE(check_map(sphere).valid());
+  ASSERT_EQ(count_cells(sphere).cells, (std::vector<std::size_t>{2, 2, 2}));
+  for (Dart hook : {0u, 1u}) {
+    Map g = sphere;
+    auto out = apply_rule(seed_rule("remove-vertex-sewn-edge"), g, std::span(&hook, 1));
+    ASSERT_TRUE(out.ok()) << out.why;
+    EXPECT_EQ(g.size(), 4u);
+    EXPECT_TRUE(check_map(g).valid());
+    EXPECT_EQ(count_cells(g).cells, (std::vector<std::size_t>{1, 1, 2}));
+  }
 }
 
 // Property (issue 2): on random valid maps, a rule followed by its inverse
