@@ -42,14 +42,18 @@ int run(const RunOptions& o) {
         detail = report.valid() ? fmt::format("{} darts", host.size())
                                 : fmt::format("{} violations, first: dart {} {}", report.violations.size(), report.violations[0].element,
                                               constraint_name(report.violations[0]));
-        if (e.cells && report.valid() && count_cells(host).cells != *e.cells) {
-          got = "wrong cells";
-          detail = fmt::format("cells {} expected {}", fmt::join(count_cells(host).cells, ","), fmt::join(*e.cells, ","));
+        if (e.cells && report.valid()) {
+          const auto cells = count_cells(host).cells;
+          if (cells != *e.cells) {
+            got = "wrong cells";
+            detail = fmt::format("cells {} expected {}", fmt::join(cells, ","), fmt::join(*e.cells, ","));
+          }
         }
       }
       const bool pass = got == e.expect;
       failures += !pass;
-      fmt::print("    {} {} at {}: {} -> {}  ({})\n", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got, detail);
+      fmt::print("    {} {} at {}: {} -> {}  ({}){}\n", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got, detail,
+                 pass ? "" : "  at " + e.location.str());
     }
   }
   fmt::print("\n{} examples, {} passed, {} failed\n", examples, examples - failures, failures);

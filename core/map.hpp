@@ -74,7 +74,6 @@ class Map {
   int succ_slot(Dim i) const { return succ_slot_[i]; }
   int pred_slot(Dim i) const { return pred_slot_[i]; }
   std::span<const Dart> raw() const { return links_; }
-  std::size_t bytes() const { return links_.capacity() * sizeof(Dart); }
 
   friend bool operator==(const Map& a, const Map& b) {
     return a.model_ == b.model_ && a.size() == b.size() && a.links_ == b.links_;

@@ -39,7 +39,6 @@ struct Model {
   bool contains(Dim i) const { return i >= 0 && i <= max_dimension && has_dim(dim_set(), i); }
   bool is_oriented(Dim i) const { return !has_dim(non_oriented, i); }
   DimSet dim_set() const;
-  Dim top() const { return dims.back(); }
   /// n for an n-G-map or n-O-map: the largest dimension.
   int dimension() const { return dims.back(); }
   /// True for G-map-like models, whose dimensions start at 0.
