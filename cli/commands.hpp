@@ -2,6 +2,7 @@
 // 0 success, 1 a violation or a failed expectation, 2 bad input.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,5 +30,13 @@ struct RunOptions {
   std::string catalog;
 };
 int run(const RunOptions& o);
+
+struct WordsOptions {
+  std::string model, word;
+  std::optional<std::string> other;
+};
+/// Exit 0 for normal forms or congruent words, 1 for words not shown
+/// congruent.
+int words(const WordsOptions& o);
 
 }  // namespace dartcheck::cli

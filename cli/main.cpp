@@ -32,6 +32,12 @@ int main(int argc, char** argv) {
   auto* r = app.add_subcommand("run", "Build every catalog map and check every rule example against its expected outcome");
   r->add_option("catalog", run.catalog, "YAML catalog")->required();
 
+  cli::WordsOptions words;
+  auto* w = app.add_subcommand("words", "Normal forms of a word in R_{N,E} (002 Sec. 9.2), or whether two words are congruent");
+  w->add_option("model", words.model, "model giving N and E (2-gmap, 3-omap, ...)")->required();
+  w->add_option("word", words.word, "a word: digits are dimensions, ~d is the conjugate of d, ε the empty word")->required();
+  w->add_option("word2", words.other, "a second word: test w <->* w2 instead");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -42,6 +48,7 @@ int main(int argc, char** argv) {
     if (*v) return cli::validate_map(validate);
     if (*a) return cli::apply(apply);
     if (*r) return cli::run(run);
+    if (*w) return cli::words(words);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;
