@@ -1,0 +1,383 @@
+#include "checkers/rule_conditions.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include <fmt/format.h>
+
+namespace dartcheck {
+
+std::string condition_name(RuleCondition c, Dim i, Dim j) {
+  switch (c) {
+    case RuleCondition::incident_arcs: return fmt::format("I({})", i);
+    case RuleCondition::dangling: return fmt::format("dangling({})", i);
+    case RuleCondition::non_orientation: return fmt::format("O({})", i);
+    case RuleCondition::cycle: return fmt::format("C({},{})", i, j);
+    case RuleCondition::no_loop: return fmt::format("no-loop({})", i);
+  }
+  return "?";
+}
+
+bool RuleVerdict::consistent() const {
+  return std::all_of(conditions.begin(), conditions.end(), [](const ConditionVerdict& c) { return c.holds; });
+}
+
+const ConditionVerdict* RuleVerdict::find(const std::string& name) const {
+  for (const auto& c : conditions)
+    if (c.name() == name) return &c;
+  return nullptr;
+}
+
+namespace {
+
+const ConjWord& word_of(const std::vector<ConjWord>& words, ArcId e) {
+  static const ConjWord eps;
+  return words.empty() ? eps : words[e];
+}
+
+std::string label_text(Dim d, const ConjWord& w, bool scheme) {
+  return scheme ? fmt::format("({},{})", w.str(), d) : std::to_string(d);
+}
+
+std::string arc_text(const TopoGraph& g, ArcId e, const std::vector<ConjWord>& words, bool scheme) {
+  const auto& a = g.arc(e);
+  return fmt::format("{} -{}-> {}", g.name(a.source), label_text(a.label, word_of(words, e), scheme), g.name(a.target));
+}
+
+std::size_t count_arcs(const TopoGraph& g, NodeId v, Dim i, bool out) {
+  std::size_t n = 0;
+  for (const auto& a : g.arcs()) n += a.label == i && (out ? a.source : a.target) == v;
+  return n;
+}
+
+ConditionVerdict verdict(RuleCondition c, Dim i, Dim j = -1) { return ConditionVerdict{c, i, j, true, {}, {}}; }
+
+void fail(ConditionVerdict& v, RuleWitness w) {
+  v.holds = false;
+  v.witnesses.push_back(std::move(w));
+}
+
+}  // namespace
+
+ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords&) {
+  auto v = verdict(RuleCondition::incident_arcs, i);
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  for (NodeId x = 0; x < L.node_count(); ++x) {
+    const NodeId y = rule.to_right(x);
+    if (y == no_node) continue;
+    for (bool out : {true, false}) {
+      const std::size_t nl = count_arcs(L, x, i, out), nr = count_arcs(R, y, i, out);
+      // Def. 11 says "an i-arc in L iff an i-arc in R"; the count matters:
+      // with one arc in L and two in R the host's arc is kept and a second
+      // added (found by the Theorem 1 brute force). Algorithm 1's test.
+      if (nl > 1)
+        fail(v, {1, 'L', {L.name(x)}, {}, {},
+                 fmt::format("preserved node {} is the {} of {} {}-arcs in L: no host satisfying I({}) contains L", L.name(x),
+                             out ? "source" : "target", nl, i, i)});
+      else if (nl != nr)
+        fail(v, {1, 'L', {L.name(x)}, {}, {},
+                 fmt::format("preserved node {} is the {} of {} {}-arc{} in L and {} in R", L.name(x), out ? "source" : "target", nl, i,
+                             nl == 1 ? "" : "s", nr)});
+    }
+  }
+  for (NodeId y = 0; y < R.node_count(); ++y) {
+    if (rule.to_left(y) != no_node) continue;
+    for (bool out : {true, false}) {
+      const std::size_t nr = count_arcs(R, y, i, out);
+      if (nr != 1)
+        fail(v, {2, 'R', {R.name(y)}, {}, {},
+                 fmt::format("added node {} is the {} of {} {}-arcs in R (exactly one needed)", R.name(y), out ? "source" : "target", nr, i)});
+    }
+  }
+  return v;
+}
+
+ConditionVerdict check_dangling(const Rule& rule, Dim i, const ArcWords&) {
+  auto v = verdict(RuleCondition::dangling, i);
+  const TopoGraph& L = rule.left();
+  for (NodeId x = 0; x < L.node_count(); ++x) {
+    if (rule.to_right(x) != no_node) continue;
+    for (bool out : {true, false}) {
+      const std::size_t nl = count_arcs(L, x, i, out);
+      if (nl != 1)
+        fail(v, {0, 'L', {L.name(x)}, {}, {},
+                 fmt::format("deleted node {} is the {} of {} {}-arcs in L: {}", L.name(x), out ? "source" : "target", nl, i,
+                             nl == 0 ? "the host's arc would dangle" : "no combinatorial host matches it")});
+    }
+  }
+  return v;
+}
+
+ConditionVerdict check_non_orientation(const Rule& rule, Dim i, const ArcWords& words) {
+  auto v = verdict(RuleCondition::non_orientation, i);
+  ConjugateRewriting rw(rule.model());
+  for (const char side : {'L', 'R'}) {
+    const TopoGraph& g = side == 'L' ? rule.left() : rule.right();
+    const auto& ws = side == 'L' ? words.left : words.right;
+    auto kept = [&](ArcId e) { return side == 'L' ? rule.preserved_left_arc(e) : rule.preserved_right_arc(e); };
+    for (ArcId e = 0; e < g.arc_count(); ++e) {
+      const auto& a = g.arc(e);
+      if (a.label != i || kept(e)) continue;
+      // The reverse of (w, i): t -> s labeled (conj(w), i); a loop whose
+      // word is its own conjugate is its own reverse.
+      const ConjWord back = rw.conjugate(word_of(ws, e));
+      std::vector<ArcId> reverse;
+      for (ArcId f = 0; f < g.arc_count(); ++f) {
+        const auto& b = g.arc(f);
+        if (b.label == i && b.source == a.target && b.target == a.source && word_of(ws, f) == back) reverse.push_back(f);
+      }
+      const char* what = side == 'L' ? "deleted" : "added";
+      if (reverse.size() != 1) {
+        fail(v, {0, side, {g.name(a.source), g.name(a.target)}, {arc_text(g, e, ws, words.scheme)}, {},
+                 fmt::format("{} arc {} has {} reverse arcs {} -{}-> {} in {} (exactly one needed)", what, arc_text(g, e, ws, words.scheme),
+                             reverse.size(), g.name(a.target), label_text(i, back, words.scheme), g.name(a.source), side)});
+      } else if (kept(reverse[0])) {
+        fail(v, {0, side, {g.name(a.source), g.name(a.target)},
+                 {arc_text(g, e, ws, words.scheme), arc_text(g, reverse[0], ws, words.scheme)}, {},
+                 fmt::format("{} arc {} has its reverse {} in the interface", what, arc_text(g, e, ws, words.scheme),
+                             arc_text(g, reverse[0], ws, words.scheme))});
+      }
+    }
+  }
+  return v;
+}
+
+namespace {
+
+// One side of a rule restricted to the i- and j-arcs, after ij-completion.
+struct CycleArc {
+  NodeId source, target;
+  Dim label;
+  bool changed;  // deleted (L) or added (R)
+  ConjWord word;
+  std::string text;
+};
+
+struct CycleSide {
+  char name;
+  const TopoGraph* graph;
+  std::vector<CycleArc> arcs;
+  std::vector<std::array<int, 4>> cycles;  // ijij-walks that close
+  std::vector<std::vector<int>> optimal;   // (i,j)-optimal paths
+};
+
+std::string path_text(const CycleSide& s, const std::vector<int>& p) {
+  std::string t = s.graph->name(s.arcs[static_cast<std::size_t>(p.front())].source);
+  for (int e : p) {
+    const auto& a = s.arcs[static_cast<std::size_t>(e)];
+    t += fmt::format(" -{}-> {}", a.word.empty() ? std::to_string(a.label) : fmt::format("({},{})", a.word.str(), a.label),
+                     s.graph->name(a.target));
+  }
+  return t;
+}
+
+ConjWord path_word(const CycleSide& s, const std::vector<int>& p) {
+  ConjWord w;
+  for (int e : p) w += s.arcs[static_cast<std::size_t>(e)].word;
+  return w;
+}
+
+std::vector<Dim> path_labels(const CycleSide& s, const std::vector<int>& p) {
+  std::vector<Dim> l;
+  for (int e : p) l.push_back(s.arcs[static_cast<std::size_t>(e)].label);
+  return l;
+}
+
+void find_cycles(CycleSide& s) {
+  const int n = static_cast<int>(s.arcs.size());
+  auto at = [&](int e) -> const CycleArc& { return s.arcs[static_cast<std::size_t>(e)]; };
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      if (at(b).source != at(a).target || at(b).label == at(a).label) continue;
+      for (int c = 0; c < n; ++c) {
+        if (at(c).source != at(b).target || at(c).label != at(a).label) continue;
+        for (int d = 0; d < n; ++d)
+          if (at(d).source == at(c).target && at(d).label == at(b).label && at(d).target == at(a).source) s.cycles.push_back({a, b, c, d});
+      }
+    }
+}
+
+bool in_some_cycle(const CycleSide& s, const std::vector<int>& p) {
+  for (const auto& c : s.cycles)
+    if (std::all_of(p.begin(), p.end(), [&](int e) { return std::find(c.begin(), c.end(), e) != c.end(); })) return true;
+  return false;
+}
+
+// Def. 14: alternating, all arcs changed, no arc twice, maximal, not in a
+// cycle of the side.
+void find_optimal_paths(CycleSide& s) {
+  std::vector<std::vector<int>> paths;
+  std::vector<int> cur;
+  auto extend = [&](auto&& self) -> void {
+    paths.push_back(cur);
+    const auto& last = s.arcs[static_cast<std::size_t>(cur.back())];
+    for (int e = 0; e < static_cast<int>(s.arcs.size()); ++e) {
+      const auto& a = s.arcs[static_cast<std::size_t>(e)];
+      if (!a.changed || a.source != last.target || a.label == last.label) continue;
+      if (std::find(cur.begin(), cur.end(), e) != cur.end()) continue;
+      cur.push_back(e);
+      self(self);
+      cur.pop_back();
+    }
+  };
+  for (int e = 0; e < static_cast<int>(s.arcs.size()); ++e) {
+    if (!s.arcs[static_cast<std::size_t>(e)].changed) continue;
+    cur = {e};
+    extend(extend);
+  }
+  auto contained = [](const std::vector<int>& p, const std::vector<int>& q) {
+    return q.size() > p.size() && std::search(q.begin(), q.end(), p.begin(), p.end()) != q.end();
+  };
+  for (const auto& p : paths) {
+    if (std::any_of(paths.begin(), paths.end(), [&](const std::vector<int>& q) { return contained(p, q); })) continue;
+    if (in_some_cycle(s, p)) continue;
+    s.optimal.push_back(p);
+  }
+}
+
+}  // namespace
+
+ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& words) {
+  auto v = verdict(RuleCondition::cycle, i, j);
+  for (Dim d : {i, j})
+    if (!check_incident_arcs(rule, d, words).holds || !check_dangling(rule, d, words).holds) {
+      v.skipped = fmt::format("the rule fails I({}) or dangling({}): the cycle condition assumes a combinatorial rule", d, d);
+      return v;
+    }
+  ConjugateRewriting rw(rule.model());
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  CycleSide left{'L', &L, {}, {}, {}}, right{'R', &R, {}, {}, {}};
+  for (ArcId e = 0; e < L.arc_count(); ++e)
+    if (L.arc(e).label == i || L.arc(e).label == j)
+      left.arcs.push_back({L.arc(e).source, L.arc(e).target, L.arc(e).label, !rule.preserved_left_arc(e), word_of(words.left, e), ""});
+  for (ArcId e = 0; e < R.arc_count(); ++e)
+    if (R.arc(e).label == i || R.arc(e).label == j)
+      right.arcs.push_back({R.arc(e).source, R.arc(e).target, R.arc(e).label, !rule.preserved_right_arc(e), word_of(words.right, e), ""});
+
+  // ij-completion (Sec. 5.2.1): an iji-path s ~> t of L closes with a
+  // j-arc t -> s in every host satisfying C(i,j); add it to L, and to the
+  // interface when both ends are preserved. Its word closes the cycle: the
+  // conjugate of the path's word. Completing R would restrict the matches,
+  // so only L is completed.
+  for (bool grew = true; grew;) {
+    grew = false;
+    const std::size_t n = left.arcs.size();
+    for (std::size_t a = 0; a < n && !grew; ++a)
+      for (std::size_t b = 0; b < n && !grew; ++b) {
+        if (left.arcs[b].source != left.arcs[a].target || left.arcs[b].label == left.arcs[a].label) continue;
+        for (std::size_t c = 0; c < n && !grew; ++c) {
+          if (left.arcs[c].source != left.arcs[b].target || left.arcs[c].label != left.arcs[a].label) continue;
+          const NodeId s = left.arcs[a].source, t = left.arcs[c].target;
+          const Dim y = left.arcs[b].label;
+          const bool closed = std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& x) {
+            return x.source == t && x.target == s && x.label == y;
+          });
+          if (closed) continue;
+          const ConjWord w = rw.conjugate(left.arcs[a].word + left.arcs[b].word + left.arcs[c].word);
+          const bool interface = rule.to_right(s) != no_node && rule.to_right(t) != no_node;
+          left.arcs.push_back({t, s, y, !interface, w, "completion"});
+          if (interface) right.arcs.push_back({rule.to_right(t), rule.to_right(s), y, false, w, "completion"});
+          grew = true;
+        }
+      }
+  }
+  for (CycleSide* s : {&left, &right}) {
+    find_cycles(*s);
+    find_optimal_paths(*s);
+  }
+
+  // Sub-condition 1 (Def. 15, 26): every optimal path has exactly one
+  // coherent optimal path on the other side, with a congruent W-label.
+  for (const CycleSide* s : {&left, &right}) {
+    const CycleSide* o = s == &left ? &right : &left;
+    auto across = [&](NodeId x) { return s == &left ? rule.to_right(x) : rule.to_left(x); };
+    for (const auto& p : s->optimal) {
+      const NodeId src = across(s->arcs[static_cast<std::size_t>(p.front())].source);
+      const NodeId tgt = across(s->arcs[static_cast<std::size_t>(p.back())].target);
+      std::vector<const std::vector<int>*> coherent;
+      for (const auto& q : o->optimal)
+        if (src != no_node && tgt != no_node && o->arcs[static_cast<std::size_t>(q.front())].source == src &&
+            o->arcs[static_cast<std::size_t>(q.back())].target == tgt && path_labels(*s, p) == path_labels(*o, q))
+          coherent.push_back(&q);
+      if (coherent.size() != 1) {
+        std::vector<std::string> shown{path_text(*s, p)};
+        for (auto* q : coherent) shown.push_back(path_text(*o, *q));
+        fail(v, {1, s->name, {}, shown, {},
+                 fmt::format("({},{})-optimal path {} in {} has {} coherent optimal paths in {} (exactly one needed)", i, j,
+                             path_text(*s, p), s->name, coherent.size(), o->name)});
+      } else if (!rw.congruent(path_word(*s, p), path_word(*o, *coherent[0]))) {
+        fail(v, {1, s->name, {}, {path_text(*s, p), path_text(*o, *coherent[0])},
+                 {path_word(*s, p).str(), path_word(*o, *coherent[0]).str()},
+                 fmt::format("coherent optimal paths {} in {} and {} in {} have W-labels {} and {}, not congruent in R_{{N,E}}",
+                             path_text(*s, p), s->name, path_text(*o, *coherent[0]), o->name, path_word(*s, p).str(),
+                             path_word(*o, *coherent[0]).str())});
+      }
+    }
+  }
+
+  // Def. 27: the W-label of every ijij-cycle reduces to ε.
+  for (const CycleSide* s : {&left, &right})
+    for (const auto& c : s->cycles) {
+      const std::vector<int> p(c.begin(), c.end());
+      const ConjWord w = path_word(*s, p);
+      if (!rw.reduces_to_empty(w))
+        fail(v, {0, s->name, {}, {path_text(*s, p)}, {w.str()},
+                 fmt::format("({},{})-cycle {} in {} has W-label {}, which does not reduce to ε", i, j, path_text(*s, p), s->name, w.str())});
+    }
+
+  // Sub-conditions 2 and 3: a preserved node losing an i-arc, and an added
+  // node, must be the source of an i-arc in R on a cycle or optimal path.
+  auto on_cycle_or_path = [&](int e) {
+    for (const auto& c : right.cycles)
+      if (std::find(c.begin(), c.end(), e) != c.end()) return true;
+    for (const auto& p : right.optimal)
+      if (std::find(p.begin(), p.end(), e) != p.end()) return true;
+    return false;
+  };
+  for (NodeId y = 0; y < R.node_count(); ++y) {
+    const NodeId x = rule.to_left(y);
+    for (Dim d : {i, j}) {
+      if (x != no_node) {
+        const bool loses = std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& a) {
+          return a.source == x && a.label == d && a.changed;
+        });
+        if (!loses) continue;
+      }
+      bool ok = false;
+      for (int e = 0; e < static_cast<int>(right.arcs.size()); ++e) {
+        const auto& a = right.arcs[static_cast<std::size_t>(e)];
+        if (a.source == y && a.label == d && on_cycle_or_path(e)) ok = true;
+      }
+      if (!ok)
+        fail(v, {x != no_node ? 2 : 3, 'R', {R.name(y)}, {}, {},
+                 x != no_node ? fmt::format("preserved node {} loses a {}-arc but is the source of no {}-arc in R on a ({},{})-cycle "
+                                            "or optimal path", R.name(y), d, d, i, j)
+                              : fmt::format("added node {} is the source of no {}-arc in R on a ({},{})-cycle or optimal path",
+                                            R.name(y), d, i, j)});
+    }
+  }
+  return v;
+}
+
+RuleVerdict check_rule(const Rule& rule, const ArcWords& words) {
+  RuleVerdict r;
+  const Model& m = rule.model();
+  for (Dim i : m.dims) r.conditions.push_back(check_incident_arcs(rule, i, words));
+  for (Dim i : m.dims) r.conditions.push_back(check_dangling(rule, i, words));
+  for (Dim i : m.dims)
+    if (!m.is_oriented(i)) r.conditions.push_back(check_non_orientation(rule, i, words));
+  for (auto [i, j] : m.exchangeable) r.conditions.push_back(check_cycle(rule, i, j, words));
+  if (m.loop_free)
+    for (Dim i : m.dims) {
+      auto v = verdict(RuleCondition::no_loop, i);
+      const TopoGraph& R = rule.right();
+      for (ArcId e = 0; e < R.arc_count(); ++e)
+        if (R.arc(e).label == i && R.arc(e).source == R.arc(e).target && !rule.preserved_right_arc(e))
+          fail(v, {0, 'R', {R.name(R.arc(e).source)}, {arc_text(R, e, words.right, words.scheme)}, {},
+                   fmt::format("added arc {} is a loop", arc_text(R, e, words.right, words.scheme))});
+      r.conditions.push_back(std::move(v));
+    }
+  return r;
+}
+
+}  // namespace dartcheck

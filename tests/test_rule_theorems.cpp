@@ -1,0 +1,384 @@
+// 002 Theorems 1-3 are "if and only if": the static condition holds exactly
+// when every derivation on every host of the theorem's class preserves the
+// constraint. This test draws random small DPO rules and compares the
+// static verdict with a brute-force semantic answer: every host of the
+// class on the nodes of L plus up to `extra` more nodes, every match (by
+// symmetry, the identity on L's nodes), derive, check the constraint on H.
+//
+// A rule whose L matches no host of the class is vacuously preserving; the
+// theorems do not speak of such rules, so they are counted apart and not
+// compared. Set DARTCHECK_BRUTE_RULES to raise the number of rules.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <functional>
+#include <numeric>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "checkers/graph_constraints.hpp"
+#include "checkers/rule_conditions.hpp"
+#include "core/graph_derivation.hpp"
+
+using namespace dartcheck;
+
+namespace {
+
+int rule_count() {
+  const char* env = std::getenv("DARTCHECK_BRUTE_RULES");
+  return env ? std::atoi(env) : 5000;
+}
+
+// D = {0, 1}; the theorems are stated for one dimension i = 0 (resp. the
+// pair (0, 1)), and the other label makes matching and dangling non-trivial.
+Model two_dims() {
+  Model m;
+  m.name = "D={0,1}";
+  m.dims = {0, 1};
+  m.non_oriented = dim_bit(0) | dim_bit(1);
+  m.exchangeable = {{0, 1}};
+  return m;
+}
+
+enum class Host { incident_0, combinatorial_o0, combinatorial_c01 };
+
+// A host: one permutation per dimension (sigma[d][v] = target of v's d-arc),
+// except that for Theorem 1 the 1-arcs are exactly L's (see host_graph).
+using Perms = std::array<std::vector<NodeId>, 2>;
+
+bool in_class(Host h, const Perms& s) {
+  const std::size_t n = s[0].size();
+  for (NodeId v = 0; v < n; ++v) {
+    if (h == Host::combinatorial_o0 && s[0][s[0][v]] != v) return false;
+    if (h == Host::combinatorial_c01 && s[1][s[0][s[1][s[0][v]]]] != v) return false;
+  }
+  return true;
+}
+
+// Every permutation of n nodes extending the partial map `fixed` (no_node
+// = free), by backtracking.
+void extensions(std::size_t n, const std::vector<NodeId>& fixed, const std::function<void(const std::vector<NodeId>&)>& f) {
+  std::vector<NodeId> p(fixed);
+  p.resize(n, no_node);
+  std::vector<bool> used(n, false);
+  for (NodeId v = 0; v < fixed.size(); ++v)
+    if (fixed[v] != no_node) used[fixed[v]] = true;
+  std::function<void(NodeId)> go = [&](NodeId v) {
+    if (v == n) return f(p);
+    if (v < fixed.size() && fixed[v] != no_node) return go(v + 1);
+    for (NodeId w = 0; w < n; ++w) {
+      if (used[w]) continue;
+      used[w] = true;
+      p[v] = w;
+      go(v + 1);
+      used[w] = false;
+      p[v] = no_node;
+    }
+  };
+  go(0);
+}
+
+struct Semantic {
+  bool matched = false;    // some host of the class, some match satisfying dangling
+  bool violated = false;   // some derived H breaks the constraint
+  std::string counterexample;
+};
+
+bool constraint_holds(Host h, const TopoGraph& H) {
+  std::vector<Violation> v;
+  for (NodeId x = 0; x < H.node_count(); ++x) {
+    switch (h) {
+      case Host::incident_0:
+        check_incidence(H, x, 0, false, v);
+        if (!v.empty()) return false;
+        break;
+      case Host::combinatorial_o0:
+        if (!non_oriented_at(H, x, 0)) return false;
+        break;
+      case Host::combinatorial_c01:
+        if (!cycle_at(H, x, 0, 1)) return false;
+        break;
+    }
+  }
+  return true;
+}
+
+std::string graph_text(const TopoGraph& g) {
+  std::string s;
+  for (const auto& a : g.arcs()) s += fmt::format("{}-{}->{} ", g.name(a.source), a.label, g.name(a.target));
+  return s;
+}
+
+Semantic brute_force(const Rule& rule, Host h, std::size_t extra) {
+  Semantic out;
+  const TopoGraph& L = rule.left();
+  const std::size_t nl = L.node_count();
+  // L's arcs of a label must form a partial injection, or no host with
+  // unique arcs per label contains an injective image of them.
+  std::array<std::vector<NodeId>, 2> fixed{std::vector<NodeId>(nl, no_node), std::vector<NodeId>(nl, no_node)};
+  const bool free_label1 = h == Host::incident_0;  // Theorem 1: hosts are any D-graphs satisfying I(0)
+  for (const auto& a : L.arcs()) {
+    if (free_label1 && a.label == 1) continue;
+    auto& f = fixed[static_cast<std::size_t>(a.label)];
+    if (f[a.source] != no_node) return out;
+    for (NodeId v = 0; v < nl; ++v)
+      if (f[v] == a.target) return out;
+    f[a.source] = a.target;
+  }
+  for (std::size_t n = nl; n <= nl + extra; ++n) {
+    auto try_host = [&](const Perms& s) {
+      if (!in_class(h, s)) return;
+      TopoGraph G;
+      for (NodeId v = 0; v < n; ++v) G.add_node(v < nl ? L.name(v) : fmt::format("x{}", v));
+      GraphMatch m{std::vector<NodeId>(nl), std::vector<ArcId>(L.arc_count())};
+      std::iota(m.node.begin(), m.node.end(), 0);
+      for (NodeId v = 0; v < n; ++v) G.add_arc(v, s[0][v], 0);  // arc v is v's 0-arc
+      if (free_label1) {
+        // Minimal hosts suffice for Theorem 1: extra 1-arcs leave I(0)
+        // alone and can only break the dangling condition.
+        for (ArcId e = 0; e < L.arc_count(); ++e)
+          if (L.arc(e).label == 1) m.arc[e] = G.add_arc(L.arc(e).source, L.arc(e).target, 1);
+      } else {
+        for (NodeId v = 0; v < n; ++v) G.add_arc(v, s[1][v], 1);  // arc n + v is v's 1-arc
+      }
+      for (ArcId e = 0; e < L.arc_count(); ++e) {
+        const auto& a = L.arc(e);
+        if (a.label == 0) m.arc[e] = a.source;
+        else if (!free_label1) m.arc[e] = static_cast<ArcId>(n + a.source);
+      }
+      if (!satisfies_dangling(rule, G, m)) return;
+      out.matched = true;
+      if (out.violated) return;
+      const TopoGraph H = derive(rule, G, m);
+      if (!constraint_holds(h, H)) {
+        out.violated = true;
+        out.counterexample = fmt::format("G: {}\nH: {}", graph_text(G), graph_text(H));
+      }
+    };
+    auto fix = [&](std::size_t d) {
+      std::vector<NodeId> f = fixed[d];
+      f.resize(n, no_node);
+      return f;
+    };
+    extensions(n, fix(0), [&](const std::vector<NodeId>& s0) {
+      if (free_label1) return try_host({s0, s0});
+      extensions(n, fix(1), [&](const std::vector<NodeId>& s1) { try_host({s0, s1}); });
+    });
+    if (out.violated) break;
+  }
+  return out;
+}
+
+// Random small rules: L on 1-3 nodes, often a subset of the arcs of a host
+// of the class (so that matches exist), sometimes arbitrary arcs; R keeps a
+// random part of L and adds nodes and arcs, biased towards repairing the
+// incidences it removed so that many rules are combinatorial.
+Rule random_rule(std::mt19937& rng, Host h, const Model& model) {
+  auto coin = [&](int percent) { return static_cast<int>(rng() % 100) < percent; };
+  auto pick = [&](std::size_t n) { return static_cast<NodeId>(rng() % n); };
+  const std::size_t nl = 1 + rng() % 3;
+  std::vector<std::tuple<NodeId, NodeId, Dim>> larcs;
+  if (coin(75)) {
+    Perms s;
+    do {
+      for (auto& p : s) {
+        p.resize(nl);
+        std::iota(p.begin(), p.end(), 0);
+        std::shuffle(p.begin(), p.end(), rng);
+      }
+    } while (!in_class(h == Host::incident_0 ? Host::combinatorial_o0 : h, s) && !(h == Host::incident_0 && coin(50)));
+    for (Dim d : {0, 1})
+      for (NodeId v = 0; v < nl; ++v)
+        if (coin(70)) larcs.emplace_back(v, s[static_cast<std::size_t>(d)][v], d);
+  } else {
+    for (int k = static_cast<int>(rng() % 5); k > 0; --k) larcs.emplace_back(pick(nl), pick(nl), static_cast<Dim>(rng() % 2));
+  }
+  TopoGraph L, R;
+  for (NodeId v = 0; v < nl; ++v) L.add_node(fmt::format("n{}", v));
+  for (auto [s, t, d] : larcs) L.add_arc(s, t, d);
+  std::vector<NodeId> keep;  // L node -> R node
+  for (NodeId v = 0; v < nl; ++v) keep.push_back(coin(75) ? static_cast<NodeId>(R.add_node(L.name(v))) : no_node);
+  for (int k = static_cast<int>(rng() % 3); k > 0; --k) R.add_node(fmt::format("a{}", R.node_count()));
+  if (R.node_count() == 0) R.add_node("a0");
+  for (auto [s, t, d] : larcs)
+    if (keep[s] != no_node && keep[t] != no_node && coin(60)) R.add_arc(keep[s], keep[t], d);
+  // Repair: give nodes missing an out-arc one, often with its reverse.
+  for (NodeId v = 0; v < R.node_count(); ++v)
+    for (Dim d : {0, 1})
+      if (R.out_arcs(v, d).empty() && coin(70)) {
+        const NodeId t = pick(R.node_count());
+        R.add_arc(v, t, d);
+        if (t != v && coin(50)) R.add_arc(t, v, d);
+      }
+  for (int k = static_cast<int>(rng() % 2); k > 0; --k) R.add_arc(pick(R.node_count()), pick(R.node_count()), static_cast<Dim>(rng() % 2));
+  int comps = 0;
+  const auto comp = Rule::components(L, &comps);
+  std::vector<std::string> hooks;
+  std::vector<bool> seen(static_cast<std::size_t>(comps), false);
+  for (NodeId v = 0; v < nl; ++v)
+    if (!seen[static_cast<std::size_t>(comp[v])]) {
+      seen[static_cast<std::size_t>(comp[v])] = true;
+      hooks.push_back(L.name(v));
+    }
+  return Rule("random", model, L, R, hooks);
+}
+
+// Random D-combinatorial rules (Def. 12) by construction, so that Theorems
+// 2 and 3 see many rules that do change the host: L is part of a host of
+// the class; a node may be deleted only if L gives it every incidence; per
+// dimension, R joins the out-slots of its nodes (as many as in L for a
+// preserved node, one for an added node) to the in-slots by a random
+// bijection, half of the time pairing slots two by two into reverse arcs.
+Rule random_combinatorial_rule(std::mt19937& rng, Host h, const Model& model) {
+  auto coin = [&](int percent) { return static_cast<int>(rng() % 100) < percent; };
+  const std::size_t nl = 1 + rng() % 3;
+  Perms s;
+  do {
+    for (auto& p : s) {
+      p.resize(nl);
+      std::iota(p.begin(), p.end(), 0);
+      std::shuffle(p.begin(), p.end(), rng);
+    }
+  } while (!in_class(h, s));
+  TopoGraph L, R;
+  for (NodeId v = 0; v < nl; ++v) L.add_node(fmt::format("n{}", v));
+  for (Dim d : {0, 1})
+    for (NodeId v = 0; v < nl; ++v)
+      if (coin(75)) L.add_arc(v, s[static_cast<std::size_t>(d)][v], d);
+  std::vector<NodeId> keep;
+  for (NodeId v = 0; v < nl; ++v) {
+    bool full = true;
+    for (Dim d : {0, 1}) full = full && L.out_arcs(v, d).size() == 1 && L.in_arcs(v, d).size() == 1;
+    keep.push_back(full && coin(35) ? no_node : static_cast<NodeId>(R.add_node(L.name(v))));
+  }
+  const std::size_t added = rng() % 3;
+  for (std::size_t k = 0; k < added; ++k) R.add_node(fmt::format("a{}", k));
+  const bool symmetric = coin(50);
+  for (Dim d : {0, 1}) {
+    std::vector<NodeId> outs, ins;
+    for (NodeId v = 0; v < nl; ++v) {
+      if (keep[v] == no_node) continue;
+      if (!L.out_arcs(v, d).empty()) outs.push_back(keep[v]);
+      if (!L.in_arcs(v, d).empty()) ins.push_back(keep[v]);
+    }
+    for (NodeId v = static_cast<NodeId>(R.node_count() - added); v < R.node_count(); ++v) {
+      outs.push_back(v);
+      ins.push_back(v);
+    }
+    std::shuffle(ins.begin(), ins.end(), rng);
+    if (symmetric) {
+      // Pair an out-slot with the in-slot of a node whose own out-slot can
+      // come back: v -> w and w -> v, or a loop v -> v.
+      std::vector<bool> out_used(outs.size(), false), in_used(ins.size(), false);
+      for (std::size_t a = 0; a < outs.size(); ++a) {
+        if (out_used[a]) continue;
+        for (std::size_t b = 0; b < ins.size(); ++b) {
+          if (in_used[b]) continue;
+          const NodeId v = outs[a], w = ins[b];
+          if (v == w) {
+            out_used[a] = in_used[b] = true;
+            R.add_arc(v, v, d);
+            break;
+          }
+          auto back_out = std::find_if(outs.begin(), outs.end(), [&, k = std::size_t{0}](NodeId x) mutable {
+            return !out_used[k++] && x == w;
+          });
+          auto back_in = std::find_if(ins.begin(), ins.end(), [&, k = std::size_t{0}](NodeId x) mutable { return !in_used[k++] && x == v; });
+          if (back_out == outs.end() || back_in == ins.end()) continue;
+          out_used[a] = in_used[b] = true;
+          out_used[static_cast<std::size_t>(back_out - outs.begin())] = true;
+          in_used[static_cast<std::size_t>(back_in - ins.begin())] = true;
+          R.add_arc(v, w, d);
+          R.add_arc(w, v, d);
+          break;
+        }
+      }
+      // Leftovers (no partner found) are joined one way.
+      std::vector<NodeId> lo, li;
+      for (std::size_t a = 0; a < outs.size(); ++a)
+        if (!out_used[a]) lo.push_back(outs[a]);
+      for (std::size_t b = 0; b < ins.size(); ++b)
+        if (!in_used[b]) li.push_back(ins[b]);
+      for (std::size_t k = 0; k < lo.size(); ++k) R.add_arc(lo[k], li[k], d);
+    } else {
+      for (std::size_t k = 0; k < outs.size(); ++k) R.add_arc(outs[k], ins[k], d);
+    }
+  }
+  if (R.node_count() == 0) R.add_node("a0");
+  int comps = 0;
+  const auto comp = Rule::components(L, &comps);
+  std::vector<std::string> hooks;
+  std::vector<bool> seen(static_cast<std::size_t>(comps), false);
+  for (NodeId v = 0; v < nl; ++v)
+    if (!seen[static_cast<std::size_t>(comp[v])]) {
+      seen[static_cast<std::size_t>(comp[v])] = true;
+      hooks.push_back(L.name(v));
+    }
+  return Rule("random", model, L, R, hooks);
+}
+
+bool combinatorial(const Rule& r) {
+  for (Dim d : {0, 1})
+    if (!check_incident_arcs(r, d).holds || !check_dangling(r, d).holds) return false;
+  return true;
+}
+
+struct Tally {
+  int compared = 0, vacuous = 0, consistent = 0, disagreements = 0;
+};
+
+Tally agreement(Host h, std::uint32_t seed, std::size_t extra, const std::function<ConditionVerdict(const Rule&)>& check,
+                bool need_combinatorial) {
+  std::mt19937 rng(seed);
+  const Model model = two_dims();
+  Tally t;
+  for (int attempts = 0; t.compared < rule_count() && attempts < 50 * rule_count(); ++attempts) {
+    const Rule rule = need_combinatorial && attempts % 4 != 0 ? random_combinatorial_rule(rng, h, model) : random_rule(rng, h, model);
+    if (need_combinatorial && !combinatorial(rule)) continue;
+    const Semantic sem = brute_force(rule, h, extra);
+    if (!sem.matched) {
+      ++t.vacuous;
+      continue;
+    }
+    ++t.compared;
+    const ConditionVerdict v = check(rule);
+    t.consistent += v.holds;
+    if (v.holds == sem.violated) {
+      ++t.disagreements;
+      ADD_FAILURE() << "static " << (v.holds ? "holds" : "fails") << ", brute force " << (sem.violated ? "violated" : "preserved")
+                    << "\nL: " << graph_text(rule.left()) << "\nR: " << graph_text(rule.right()) << "\n"
+                    << sem.counterexample << (v.witnesses.empty() ? "" : "\nwitness: " + v.witnesses[0].text);
+      if (t.disagreements > 5) break;
+    }
+  }
+  std::cout << fmt::format("{} rules compared ({} consistent), {} vacuous skipped, hosts up to |V_L| + {} nodes, {} disagreements\n",
+                           t.compared, t.consistent, t.vacuous, extra, t.disagreements);
+  return t;
+}
+
+}  // namespace
+
+// Theorem 1: I_r(0)-weak iff every derivation on a D-graph satisfying I(0)
+// yields H satisfying I(0).
+TEST(Theorem1, WeakIncidentArcsIffPreservation) {
+  const Tally t = agreement(Host::incident_0, 1, 2, [](const Rule& r) { return check_incident_arcs(r, 0); }, false);
+  EXPECT_EQ(t.disagreements, 0);
+  EXPECT_EQ(t.compared, rule_count());
+}
+
+// Theorem 2: for D-combinatorial rules, O_r(0) iff every derivation on a
+// D-combinatorial graph satisfying O(0) yields H satisfying O(0).
+TEST(Theorem2, NonOrientationIffPreservation) {
+  const Tally t = agreement(Host::combinatorial_o0, 2, 2, [](const Rule& r) { return check_non_orientation(r, 0); }, true);
+  EXPECT_EQ(t.disagreements, 0);
+  EXPECT_EQ(t.compared, rule_count());
+}
+
+// Theorem 3: for D-combinatorial rules, C_r(0,1) iff every derivation on a
+// D-combinatorial graph satisfying C(0,1) yields H satisfying C(0,1).
+TEST(Theorem3, CycleConditionIffPreservation) {
+  const Tally t = agreement(Host::combinatorial_c01, 3, 2, [](const Rule& r) { return check_cycle(r, 0, 1); }, true);
+  EXPECT_EQ(t.disagreements, 0);
+  EXPECT_EQ(t.compared, rule_count());
+}
