@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "checkers/graph_constraints.hpp"
+#include "checkers/host_search.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "core/graph_derivation.hpp"
 
@@ -43,18 +44,33 @@ Model two_dims() {
 
 enum class Host { incident_0, combinatorial_o0, combinatorial_c01 };
 
-// A host: one permutation per dimension (sigma[d][v] = target of v's d-arc),
-// except that for Theorem 1 the 1-arcs are exactly L's (see host_graph).
-using Perms = std::array<std::vector<NodeId>, 2>;
+// One permutation per dimension of the model, by index in model.dims
+// (sigma[k][v] = target of v's arc).
+using Perms = std::vector<std::vector<NodeId>>;
 
-bool in_class(Host h, const Perms& s) {
+// The host class of each theorem as a model: D-combinatorial graphs with
+// O on N and C on E.
+Model class_model(Host h) {
+  Model m = two_dims();
+  m.non_oriented = h == Host::combinatorial_o0 ? dim_bit(0) : 0;
+  if (h != Host::combinatorial_c01) m.exchangeable.clear();
+  return m;
+}
+
+bool in_class(const Model& m, const Perms& s) {
   const std::size_t n = s[0].size();
+  auto at = [&](Dim d) -> const std::vector<NodeId>& {
+    return s[static_cast<std::size_t>(std::find(m.dims.begin(), m.dims.end(), d) - m.dims.begin())];
+  };
   for (NodeId v = 0; v < n; ++v) {
-    if (h == Host::combinatorial_o0 && s[0][s[0][v]] != v) return false;
-    if (h == Host::combinatorial_c01 && s[1][s[0][s[1][s[0][v]]]] != v) return false;
+    for (Dim d : m.dims)
+      if ((!m.is_oriented(d) && at(d)[at(d)[v]] != v) || (m.loop_free && at(d)[v] == v)) return false;
+    for (auto [i, j] : m.exchangeable)
+      if (at(j)[at(i)[at(j)[at(i)[v]]]] != v) return false;
   }
   return true;
 }
+bool in_class(Host h, const Perms& s) { return in_class(class_model(h), s); }
 
 // Every permutation of n nodes extending the partial map `fixed` (no_node
 // = free), by backtracking.
@@ -116,7 +132,7 @@ Semantic brute_force(const Rule& rule, Host h, std::size_t extra) {
   const std::size_t nl = L.node_count();
   // L's arcs of a label must form a partial injection, or no host with
   // unique arcs per label contains an injective image of them.
-  std::array<std::vector<NodeId>, 2> fixed{std::vector<NodeId>(nl, no_node), std::vector<NodeId>(nl, no_node)};
+  Perms fixed{std::vector<NodeId>(nl, no_node), std::vector<NodeId>(nl, no_node)};
   const bool free_label1 = h == Host::incident_0;  // Theorem 1: hosts are any D-graphs satisfying I(0)
   for (const auto& a : L.arcs()) {
     if (free_label1 && a.label == 1) continue;
@@ -162,11 +178,21 @@ Semantic brute_force(const Rule& rule, Host h, std::size_t extra) {
       return f;
     };
     extensions(n, fix(0), [&](const std::vector<NodeId>& s0) {
-      if (free_label1) return try_host({s0, s0});
-      extensions(n, fix(1), [&](const std::vector<NodeId>& s1) { try_host({s0, s1}); });
+      if (free_label1) return try_host(Perms{s0, s0});
+      extensions(n, fix(1), [&](const std::vector<NodeId>& s1) { try_host(Perms{s0, s1}); });
     });
     if (out.violated) break;
   }
+  return out;
+}
+
+// Theorems 2 and 3: the library's exhaustive host search over the class,
+// counting only violations of the theorem's constraint.
+Semantic search_semantic(const Rule& rule, Host h, std::size_t extra) {
+  const Constraint c = h == Host::combinatorial_o0 ? Constraint::non_orientation : Constraint::cycle;
+  const HostSearch hs = search_hosts(rule, class_model(h), extra, [c](const Violation& v) { return v.constraint == c; });
+  Semantic out{hs.matched, hs.host.has_value(), ""};
+  if (hs.host) out.counterexample = fmt::format("G: {}\nH: {}", graph_text(*hs.host), graph_text(*hs.result));
   return out;
 }
 
@@ -180,7 +206,7 @@ Rule random_rule(std::mt19937& rng, Host h, const Model& model) {
   const std::size_t nl = 1 + rng() % 3;
   std::vector<std::tuple<NodeId, NodeId, Dim>> larcs;
   if (coin(75)) {
-    Perms s;
+    Perms s(2);
     do {
       for (auto& p : s) {
         p.resize(nl);
@@ -230,32 +256,32 @@ Rule random_rule(std::mt19937& rng, Host h, const Model& model) {
 // dimension, R joins the out-slots of its nodes (as many as in L for a
 // preserved node, one for an added node) to the in-slots by a random
 // bijection, half of the time pairing slots two by two into reverse arcs.
-Rule random_combinatorial_rule(std::mt19937& rng, Host h, const Model& model) {
+Rule random_combinatorial_rule(std::mt19937& rng, const Model& host_class, const Model& model) {
   auto coin = [&](int percent) { return static_cast<int>(rng() % 100) < percent; };
   const std::size_t nl = 1 + rng() % 3;
-  Perms s;
+  Perms s(model.dims.size());
   do {
     for (auto& p : s) {
       p.resize(nl);
       std::iota(p.begin(), p.end(), 0);
       std::shuffle(p.begin(), p.end(), rng);
     }
-  } while (!in_class(h, s));
+  } while (!in_class(host_class, s));
   TopoGraph L, R;
   for (NodeId v = 0; v < nl; ++v) L.add_node(fmt::format("n{}", v));
-  for (Dim d : {0, 1})
+  for (std::size_t k = 0; k < model.dims.size(); ++k)
     for (NodeId v = 0; v < nl; ++v)
-      if (coin(75)) L.add_arc(v, s[static_cast<std::size_t>(d)][v], d);
+      if (coin(75)) L.add_arc(v, s[k][v], model.dims[k]);
   std::vector<NodeId> keep;
   for (NodeId v = 0; v < nl; ++v) {
     bool full = true;
-    for (Dim d : {0, 1}) full = full && L.out_arcs(v, d).size() == 1 && L.in_arcs(v, d).size() == 1;
+    for (Dim d : model.dims) full = full && L.out_arcs(v, d).size() == 1 && L.in_arcs(v, d).size() == 1;
     keep.push_back(full && coin(35) ? no_node : static_cast<NodeId>(R.add_node(L.name(v))));
   }
   const std::size_t added = rng() % 3;
   for (std::size_t k = 0; k < added; ++k) R.add_node(fmt::format("a{}", k));
   const bool symmetric = coin(50);
-  for (Dim d : {0, 1}) {
+  for (Dim d : model.dims) {
     std::vector<NodeId> outs, ins;
     for (NodeId v = 0; v < nl; ++v) {
       if (keep[v] == no_node) continue;
@@ -318,8 +344,33 @@ Rule random_combinatorial_rule(std::mt19937& rng, Host h, const Model& model) {
   return Rule("random", model, L, R, hooks);
 }
 
+// Arbitrary arcs over the model's dimensions, for rules far from valid.
+Rule random_rule_for(std::mt19937& rng, const Model& model) {
+  auto pick = [&](std::size_t n) { return static_cast<NodeId>(rng() % n); };
+  TopoGraph L, R;
+  const std::size_t nl = 1 + rng() % 3;
+  for (NodeId v = 0; v < nl; ++v) L.add_node(fmt::format("n{}", v));
+  for (int k = static_cast<int>(rng() % 6); k > 0; --k) L.add_arc(pick(nl), pick(nl), model.dims[rng() % model.dims.size()]);
+  for (NodeId v = 0; v < nl; ++v)
+    if (rng() % 4) R.add_node(L.name(v));
+  for (int k = static_cast<int>(rng() % 3); k > 0; --k) R.add_node(fmt::format("a{}", k));
+  if (R.node_count() == 0) R.add_node("a0");
+  for (int k = static_cast<int>(rng() % 8); k > 0; --k)
+    R.add_arc(pick(R.node_count()), pick(R.node_count()), model.dims[rng() % model.dims.size()]);
+  int comps = 0;
+  const auto comp = Rule::components(L, &comps);
+  std::vector<std::string> hooks;
+  std::vector<bool> seen(static_cast<std::size_t>(comps), false);
+  for (NodeId v = 0; v < nl; ++v)
+    if (!seen[static_cast<std::size_t>(comp[v])]) {
+      seen[static_cast<std::size_t>(comp[v])] = true;
+      hooks.push_back(L.name(v));
+    }
+  return Rule("random", model, L, R, hooks);
+}
+
 bool combinatorial(const Rule& r) {
-  for (Dim d : {0, 1})
+  for (Dim d : r.model().dims)
     if (!check_incident_arcs(r, d).holds || !check_dangling(r, d).holds) return false;
   return true;
 }
@@ -334,9 +385,10 @@ Tally agreement(Host h, std::uint32_t seed, std::size_t extra, const std::functi
   const Model model = two_dims();
   Tally t;
   for (int attempts = 0; t.compared < rule_count() && attempts < 50 * rule_count(); ++attempts) {
-    const Rule rule = need_combinatorial && attempts % 4 != 0 ? random_combinatorial_rule(rng, h, model) : random_rule(rng, h, model);
+    const Rule rule = need_combinatorial && attempts % 4 != 0 ? random_combinatorial_rule(rng, class_model(h), model)
+                                                              : random_rule(rng, h, model);
     if (need_combinatorial && !combinatorial(rule)) continue;
-    const Semantic sem = brute_force(rule, h, extra);
+    const Semantic sem = h == Host::incident_0 ? brute_force(rule, h, extra) : search_semantic(rule, h, extra);
     if (!sem.matched) {
       ++t.vacuous;
       continue;
@@ -370,7 +422,7 @@ TEST(Theorem1, WeakIncidentArcsIffPreservation) {
 // Theorem 2: for D-combinatorial rules, O_r(0) iff every derivation on a
 // D-combinatorial graph satisfying O(0) yields H satisfying O(0).
 TEST(Theorem2, NonOrientationIffPreservation) {
-  const Tally t = agreement(Host::combinatorial_o0, 2, 2, [](const Rule& r) { return check_non_orientation(r, 0); }, true);
+  const Tally t = agreement(Host::combinatorial_o0, 2, 3, [](const Rule& r) { return check_non_orientation(r, 0); }, true);
   EXPECT_EQ(t.disagreements, 0);
   EXPECT_EQ(t.compared, rule_count());
 }
@@ -378,7 +430,57 @@ TEST(Theorem2, NonOrientationIffPreservation) {
 // Theorem 3: for D-combinatorial rules, C_r(0,1) iff every derivation on a
 // D-combinatorial graph satisfying C(0,1) yields H satisfying C(0,1).
 TEST(Theorem3, CycleConditionIffPreservation) {
-  const Tally t = agreement(Host::combinatorial_c01, 3, 2, [](const Rule& r) { return check_cycle(r, 0, 1); }, true);
+  const Tally t = agreement(Host::combinatorial_c01, 3, 3, [](const Rule& r) { return check_cycle(r, 0, 1); }, true);
   EXPECT_EQ(t.disagreements, 0);
+  EXPECT_EQ(t.compared, rule_count());
+}
+
+namespace {
+struct ModelTally {
+  int compared = 0, consistent = 0, unsound = 0, confirmed = 0, gap = 0, vacuous = 0;
+};
+
+// The question users ask: rules of a model against hosts that are maps of
+// the model. Soundness (Theorems 1-3 together, 002 Sec. 10.1): a rule
+// whose every condition holds never yields an invalid map. The converse
+// fails per constraint: a rule may break C(0,2) per Theorem 3 and still
+// preserve every G-map, because hosts that are G-maps are a smaller class.
+ModelTally model_level(const Model& model, std::uint32_t seed, std::size_t extra) {
+  std::mt19937 rng(seed);
+  ModelTally t;
+  for (int attempts = 0; t.compared < rule_count() && attempts < 50 * rule_count(); ++attempts) {
+    const Rule rule = attempts % 4 != 0 ? random_combinatorial_rule(rng, model, model) : random_rule_for(rng, model);
+    const HostSearch hs = search_hosts(rule, model, extra);
+    if (!hs.matched) {
+      ++t.vacuous;
+      continue;
+    }
+    ++t.compared;
+    const RuleVerdict v = check_rule(rule);
+    const bool ok = v.consistent();
+    t.consistent += ok;
+    if (ok && hs.host) {
+      ++t.unsound;
+      ADD_FAILURE() << "SOUNDNESS: all conditions hold but a " << model.name << " host breaks\nL: " << graph_text(rule.left())
+                    << "\nR: " << graph_text(rule.right()) << "\nG: " << graph_text(*hs.host) << "\nH: " << graph_text(*hs.result);
+    }
+    if (!ok) (hs.host ? t.confirmed : t.gap) += 1;
+  }
+  std::cout << fmt::format("{}: {} rules ({} consistent, {} inconsistent and confirmed on a map, {} inconsistent with no model-level "
+                           "counterexample), {} vacuous skipped, hosts up to |V_L| + {} darts, {} soundness exceptions\n",
+                           model.name, t.compared, t.consistent, t.confirmed, t.gap, t.vacuous, extra, t.unsound);
+  return t;
+}
+}  // namespace
+
+TEST(ModelLevel, ConsistentRulesPreserve2Gmaps) {
+  const ModelTally t = model_level(Model::gmap(2), 4, 3);
+  EXPECT_EQ(t.unsound, 0);
+  EXPECT_EQ(t.compared, rule_count());
+}
+
+TEST(ModelLevel, ConsistentRulesPreserve2Omaps) {
+  const ModelTally t = model_level(Model::omap(2), 5, 3);
+  EXPECT_EQ(t.unsound, 0);
   EXPECT_EQ(t.compared, rule_count());
 }

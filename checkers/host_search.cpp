@@ -1,0 +1,145 @@
+#include "checkers/host_search.hpp"
+
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "checkers/graph_constraints.hpp"
+#include "core/graph_derivation.hpp"
+
+namespace dartcheck {
+namespace {
+
+struct Search {
+  const Rule& rule;
+  const Model& model;
+  const std::function<bool(const Violation&)>& relevant;
+  std::size_t budget;
+  std::size_t n = 0;                          // host size
+  std::vector<std::vector<NodeId>> sigma;     // per dimension index
+  std::vector<std::vector<bool>> used;        // targets taken, per dimension index
+  HostSearch out;
+  bool stop = false;
+
+  // Partial checks as soon as the permutations they read are complete.
+  bool consistent_so_far(std::size_t k) const {
+    const Dim d = model.dims[k];
+    for (NodeId v = 0; v < n; ++v) {
+      if (!model.is_oriented(d) && sigma[k][sigma[k][v]] != v) return false;
+      if (model.loop_free && sigma[k][v] == v) return false;
+    }
+    for (auto [i, j] : model.exchangeable) {
+      const std::size_t a = index(i), b = index(j);
+      if (std::max(a, b) != k) continue;
+      for (NodeId v = 0; v < n; ++v)
+        if (sigma[b][sigma[a][sigma[b][sigma[a][v]]]] != v) return false;
+    }
+    return true;
+  }
+  std::size_t index(Dim d) const {
+    return static_cast<std::size_t>(std::find(model.dims.begin(), model.dims.end(), d) - model.dims.begin());
+  }
+
+  void host_ready() {
+    if (++out.hosts > budget) {
+      out.exhausted = false;
+      stop = true;
+      return;
+    }
+    const TopoGraph& L = rule.left();
+    TopoGraph G;
+    for (NodeId v = 0; v < n; ++v) G.add_node(v < L.node_count() ? L.name(v) : fmt::format("x{}", v));
+    for (std::size_t k = 0; k < model.dims.size(); ++k)
+      for (NodeId v = 0; v < n; ++v) G.add_arc(v, sigma[k][v], model.dims[k]);  // arc k*n + v
+    GraphMatch m{std::vector<NodeId>(L.node_count()), std::vector<ArcId>(L.arc_count())};
+    std::iota(m.node.begin(), m.node.end(), 0);
+    for (ArcId e = 0; e < L.arc_count(); ++e) m.arc[e] = static_cast<ArcId>(index(L.arc(e).label) * n + L.arc(e).source);
+    if (!satisfies_dangling(rule, G, m)) return;
+    out.matched = true;
+    ++out.derivations;
+    TopoGraph H = derive(rule, G, m);
+    auto report = check_graph(H, model);
+    std::vector<Violation> bad;
+    for (const auto& v : report.violations)
+      if (!relevant || relevant(v)) bad.push_back(v);
+    if (!bad.empty()) {
+      out.host = std::move(G);
+      out.result = std::move(H);
+      out.violations = std::move(bad);
+      stop = true;
+    }
+  }
+
+  void assign(std::size_t k, NodeId v) {
+    if (stop) return;
+    if (k == model.dims.size()) return host_ready();
+    if (v == n) {
+      if (consistent_so_far(k)) assign(k + 1, 0);
+      return;
+    }
+    if (sigma[k][v] != no_node) return assign(k, v + 1);
+    const bool involution = !model.is_oriented(model.dims[k]);
+    auto place = [&](NodeId w, bool pair) {
+      used[k][w] = true;
+      sigma[k][v] = w;
+      if (pair) {
+        sigma[k][w] = v;
+        used[k][v] = true;
+      }
+      assign(k, v + 1);
+      if (pair) {
+        sigma[k][w] = no_node;
+        used[k][v] = false;
+      }
+      sigma[k][v] = no_node;
+      used[k][w] = false;
+    };
+    if (involution && used[k][v]) {
+      // Some u already goes to v: an involution sends v back to u.
+      for (NodeId u = 0; u < n; ++u)
+        if (sigma[k][u] == v && !used[k][u] && !(model.loop_free && u == v)) place(u, false);
+      return;
+    }
+    for (NodeId w = 0; w < n && !stop; ++w) {
+      if (used[k][w] || (model.loop_free && w == v)) continue;
+      if (involution && w != v && sigma[k][w] != no_node) continue;
+      place(w, involution && w != v);
+    }
+  }
+};
+
+}  // namespace
+
+HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra,
+                        const std::function<bool(const Violation&)>& relevant, std::size_t budget) {
+  Search s{rule, host_model, relevant, budget, 0, {}, {}, {}, false};
+  const TopoGraph& L = rule.left();
+  const std::size_t nl = L.node_count();
+  for (std::size_t n = nl; n <= nl + extra && !s.stop; ++n) {
+    s.n = n;
+    s.out.largest_host = n;
+    s.sigma.assign(host_model.dims.size(), std::vector<NodeId>(n, no_node));
+    s.used.assign(host_model.dims.size(), std::vector<bool>(n, false));
+    // L's arcs fix entries of the permutations; a clash means no host of
+    // this class contains an injective image of L.
+    bool clash = false;
+    for (const auto& a : L.arcs()) {
+      if (!host_model.contains(a.label)) {
+        clash = true;
+        break;
+      }
+      const std::size_t k = s.index(a.label);
+      if (s.sigma[k][a.source] != no_node || s.used[k][a.target]) {
+        clash = true;
+        break;
+      }
+      s.sigma[k][a.source] = a.target;
+      s.used[k][a.target] = true;
+    }
+    if (clash) break;
+    s.assign(0, 0);
+  }
+  return std::move(s.out);
+}
+
+}  // namespace dartcheck

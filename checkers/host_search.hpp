@@ -1,0 +1,35 @@
+// Exhaustive dynamic check of a DPO rule on small hosts: every map of a
+// model whose darts are the nodes of L plus up to `extra` more, matched by
+// the identity on L's nodes (every match is one of these up to renaming).
+// Each derivation is checked against the model; the first failing one is a
+// counterexample. This is the semantic side of Theorems 1-3 and what
+// `dartcheck check` runs to confirm a failing condition on real maps.
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include "checkers/violation.hpp"
+#include "core/rule.hpp"
+
+namespace dartcheck {
+
+struct HostSearch {
+  bool matched = false;           // some host admits the match with the dangling condition
+  bool exhausted = true;          // false if the host budget stopped the search
+  std::size_t hosts = 0;          // hosts of the class enumerated
+  std::size_t derivations = 0;    // matches that satisfied the dangling condition
+  std::size_t largest_host = 0;   // nodes of the largest host tried
+  std::optional<TopoGraph> host;  // first counterexample: G, H and what H breaks
+  std::optional<TopoGraph> result;
+  std::vector<Violation> violations;
+};
+
+/// Hosts: D-combinatorial graphs (one permutation per dimension of
+/// `host_model`) satisfying O on its N, C on its E, and no loops if it is
+/// loop-free. `relevant` selects the violations of H that count (all by
+/// default). Stops after `budget` hosts.
+HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra,
+                        const std::function<bool(const Violation&)>& relevant = {}, std::size_t budget = 2'000'000);
+
+}  // namespace dartcheck
