@@ -237,7 +237,7 @@ void find_optimal_paths(CycleSide& s) {
 
 }  // namespace
 
-ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& words) {
+ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& words, bool complete) {
   auto v = verdict(RuleCondition::cycle, i, j);
   for (Dim d : {i, j})
     if (!check_incident_arcs(rule, d, words).holds || !check_dangling(rule, d, words).holds) {
@@ -259,7 +259,7 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
   // interface when both ends are preserved. Its word closes the cycle: the
   // conjugate of the path's word. Completing R would restrict the matches,
   // so only L is completed.
-  for (bool grew = true; grew;) {
+  for (bool grew = complete; grew;) {
     grew = false;
     const std::size_t n = left.arcs.size();
     for (std::size_t a = 0; a < n && !grew; ++a)

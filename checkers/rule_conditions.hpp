@@ -65,7 +65,10 @@ struct ArcWords {
 ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords& words = {});
 ConditionVerdict check_dangling(const Rule& rule, Dim i, const ArcWords& words = {});
 ConditionVerdict check_non_orientation(const Rule& rule, Dim i, const ArcWords& words = {});
-ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& words = {});
+/// `complete` applies the ij-completion of Sec. 5.2.1 first (Assumption 4);
+/// without it the optimal paths are those of the rule as written, which is
+/// what Example 10 describes.
+ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& words = {}, bool complete = true);
 
 /// Every condition the rule's model requires: I and dangling on D, O on N,
 /// C on E, no-loop on D for loop-free models.

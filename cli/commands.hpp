@@ -31,6 +31,15 @@ struct RunOptions {
 };
 int run(const RunOptions& o);
 
+struct CheckOptions {
+  std::string catalog, rule, format = "text";
+  bool explain = false;
+  std::size_t confirm_darts = 2;  // extra darts beyond L for the model-level search (0: none)
+};
+/// Exit 0 iff every rule's failing conditions equal the recorded verdict
+/// (all conditions hold where none is recorded), 1 otherwise.
+int check(const CheckOptions& o);
+
 struct WordsOptions {
   std::string model, word;
   std::optional<std::string> other;

@@ -32,6 +32,16 @@ int main(int argc, char** argv) {
   auto* r = app.add_subcommand("run", "Build every catalog map and check every rule example against its expected outcome");
   r->add_option("catalog", run.catalog, "YAML catalog")->required();
 
+  cli::CheckOptions check;
+  auto* c = app.add_subcommand("check", "Static consistency conditions of every rule (002 Def. 11-16), against the catalog's verdicts");
+  c->add_option("catalog", check.catalog, "YAML catalog")->required();
+  c->add_option("--rule", check.rule, "check only this rule");
+  c->add_option("--format", check.format, "text or json")->capture_default_str();
+  c->add_flag("--explain", check.explain, "print the witnesses of every failing condition and the counterexample map");
+  c->add_option("--confirm-darts", check.confirm_darts,
+                "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
+      ->capture_default_str();
+
   cli::WordsOptions words;
   auto* w = app.add_subcommand("words", "Normal forms of a word in R_{N,E} (002 Sec. 9.2), or whether two words are congruent");
   w->add_option("model", words.model, "model giving N and E (2-gmap, 3-omap, ...)")->required();
@@ -49,6 +59,7 @@ int main(int argc, char** argv) {
     if (*a) return cli::apply(apply);
     if (*r) return cli::run(run);
     if (*w) return cli::words(words);
+    if (*c) return cli::check(check);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;

@@ -224,7 +224,7 @@ Catalog read_catalog(const std::string& file) {
     yaml::expect_sequence(file, rules, "rules");
     for (const auto& n : rules) {
       yaml::expect_map(file, n, "rule");
-      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples"});
+      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict"});
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
       if (c.find_rule(name)) fail_at(file, n["name"], fmt::format("rule '{}' is declared twice", name));
       const Model model = model_of(n);
@@ -242,7 +242,18 @@ Catalog read_catalog(const std::string& file) {
       } catch (const std::invalid_argument& e) {
         fail_at(file, hn ? hn : n, fmt::format("rule '{}': {}", name, e.what()));
       }
-      CatalogRule cr{std::move(*rule), n["note"] ? yaml::as_string(file, n["note"], "note") : "", {}, where(file, n)};
+      CatalogRule cr{std::move(*rule), n["note"] ? yaml::as_string(file, n["note"], "note") : "", {}, where(file, n), {}, {}};
+      if (const auto vn = n["verdict"]) {
+        // "consistent", or the list of the conditions that must fail.
+        cr.verdict_location = where(file, vn);
+        if (vn.IsScalar() && vn.Scalar() == "consistent") {
+          cr.expected_failures.emplace();
+        } else {
+          if (!vn.IsSequence()) fail_at(file, vn, "verdict: expected 'consistent' or a list of failing conditions such as [\"C(0,2)\"]");
+          cr.expected_failures.emplace();
+          for (const auto& f : vn) cr.expected_failures->push_back(yaml::as_string(file, f, "failing condition"));
+        }
+      }
       if (const auto ex = n["examples"]) {
         yaml::expect_sequence(file, ex, "examples");
         for (const auto& e : ex) {

@@ -42,6 +42,10 @@ struct CatalogRule {
   std::string note;
   std::vector<Example> examples;
   SourceLocation location;
+  /// The recorded static verdict: the names of the conditions that fail
+  /// ("I(0)", "C(0,2)", ...), empty for "consistent"; unset if none.
+  std::optional<std::vector<std::string>> expected_failures;
+  SourceLocation verdict_location;
 };
 
 struct Catalog {

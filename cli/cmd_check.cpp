@@ -1,0 +1,184 @@
+// `dartcheck check`: the static conditions of every rule of a catalog, as a
+// table of rules x conditions, compared with the verdicts the catalog
+// records. A failing rule is also run on every small map of its model
+// that contains L (checkers/host_search), so the report says whether the
+// failure is confirmed on a real map or only per constraint.
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "checkers/host_search.hpp"
+#include "checkers/rule_conditions.hpp"
+#include "cli/commands.hpp"
+#include "core/catalog.hpp"
+#include "core/input_error.hpp"
+
+namespace dartcheck::cli {
+namespace {
+
+struct Checked {
+  const CatalogRule* entry;
+  RuleVerdict verdict;
+  std::vector<std::string> failures;
+  std::optional<HostSearch> search;  // failing rules only
+  double millis = 0;
+  bool matches_record = true;
+};
+
+std::string json_escape(std::string_view s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '"': o += "\\\""; break;
+      case '\\': o += "\\\\"; break;
+      case '\n': o += "\\n"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+
+std::string json_strings(const std::vector<std::string>& v) {
+  std::string o = "[";
+  for (std::size_t k = 0; k < v.size(); ++k) o += fmt::format("{}\"{}\"", k ? ", " : "", json_escape(v[k]));
+  return o + "]";
+}
+
+std::string arcs_text(const TopoGraph& g) {
+  std::string s;
+  for (const auto& a : g.arcs()) s += fmt::format("{}{} -{}-> {}", s.empty() ? "" : ", ", g.name(a.source), a.label, g.name(a.target));
+  return s;
+}
+
+// Conditions of one kind, as a table cell: "ok", or the failing dimensions.
+std::string cell(const RuleVerdict& v, RuleCondition kind) {
+  std::vector<std::string> bad;
+  bool any = false, skipped = false;
+  for (const auto& c : v.conditions) {
+    if (c.condition != kind) continue;
+    any = true;
+    if (!c.skipped.empty()) skipped = true;
+    if (!c.holds) bad.push_back(c.j >= 0 ? fmt::format("{}{}", c.i, c.j) : std::to_string(c.i));
+  }
+  if (!any) return "-";
+  if (!bad.empty()) return "fails " + fmt::format("{}", fmt::join(bad, ","));
+  return skipped ? "skipped" : "ok";
+}
+
+std::string model_level(const Checked& c) {
+  if (!c.search) return "";
+  const auto& s = *c.search;
+  if (s.host) {
+    std::vector<std::string> what;
+    for (const auto& v : s.violations) what.push_back(constraint_name(v));
+    std::sort(what.begin(), what.end());
+    what.erase(std::unique(what.begin(), what.end()), what.end());
+    return fmt::format("confirmed: a {}-dart {} breaks ({})", s.host->node_count(), c.entry->rule.model().name, fmt::join(what, ", "));
+  }
+  if (!s.matched) return fmt::format("L matches no {} of up to {} darts", c.entry->rule.model().name, s.largest_host);
+  return fmt::format("no model-level counterexample up to {} darts{}", s.largest_host, s.exhausted ? "" : " (search budget reached)");
+}
+
+}  // namespace
+
+int check(const CheckOptions& o) {
+  if (o.format != "text" && o.format != "json")
+    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", o.format));
+  const Catalog catalog = read_catalog(o.catalog);
+  if (!o.rule.empty() && !catalog.find_rule(o.rule))
+    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", o.rule, o.catalog));
+
+  std::vector<Checked> rows;
+  for (const auto& entry : catalog.rules) {
+    if (!o.rule.empty() && entry.rule.name() != o.rule) continue;
+    Checked c{&entry, {}, {}, {}, 0, true};
+    const auto t0 = std::chrono::steady_clock::now();
+    c.verdict = check_rule(entry.rule);
+    c.millis = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    for (const auto& v : c.verdict.conditions)
+      if (!v.holds) c.failures.push_back(v.name());
+    if (entry.expected_failures) {
+      for (const auto& name : *entry.expected_failures)
+        if (!c.verdict.find(name)) {
+          const auto& at = entry.verdict_location;
+          throw InputError(at.file, at.line, at.column,
+                           fmt::format("rule '{}': verdict names '{}', which is not a condition of {}", entry.rule.name(), name,
+                                       entry.rule.model().name));
+        }
+      auto want = *entry.expected_failures, got = c.failures;
+      std::sort(want.begin(), want.end());
+      std::sort(got.begin(), got.end());
+      c.matches_record = want == got;
+    } else {
+      c.matches_record = c.failures.empty();
+    }
+    if (!c.failures.empty() && o.confirm_darts > 0) c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
+    rows.push_back(std::move(c));
+  }
+  const auto mismatches = std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.matches_record; });
+
+  if (o.format == "json") {
+    fmt::print("{{\"catalog\": \"{}\", \"rules\": [\n", json_escape(o.catalog));
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const auto& c = rows[k];
+      fmt::print("  {{\"name\": \"{}\", \"model\": \"{}\", \"consistent\": {}, \"failures\": {}, \"expected\": {}, \"matches_record\": {},",
+                 json_escape(c.entry->rule.name()), c.entry->rule.model().name, c.failures.empty() ? "true" : "false",
+                 json_strings(c.failures), c.entry->expected_failures ? json_strings(*c.entry->expected_failures) : "null",
+                 c.matches_record ? "true" : "false");
+      fmt::print(" \"model_level\": \"{}\", \"conditions\": [", json_escape(model_level(c)));
+      for (std::size_t m = 0; m < c.verdict.conditions.size(); ++m) {
+        const auto& v = c.verdict.conditions[m];
+        fmt::print("{}\n    {{\"condition\": \"{}\", \"holds\": {}, \"skipped\": \"{}\", \"witnesses\": [", m ? "," : "", v.name(),
+                   v.holds ? "true" : "false", json_escape(v.skipped));
+        for (std::size_t w = 0; w < v.witnesses.size(); ++w) {
+          const auto& x = v.witnesses[w];
+          fmt::print("{}{{\"subcondition\": {}, \"side\": \"{}\", \"nodes\": {}, \"arcs\": {}, \"words\": {}, \"text\": \"{}\"}}",
+                     w ? ", " : "", x.subcondition, x.side, json_strings(x.nodes), json_strings(x.arcs), json_strings(x.words),
+                     json_escape(x.text));
+        }
+        fmt::print("]}}");
+      }
+      fmt::print("]}}{}\n", k + 1 < rows.size() ? "," : "");
+    }
+    fmt::print("], \"mismatches\": {}}}\n", mismatches);
+    return mismatches ? violation : ok;
+  }
+
+  std::size_t width = 4;
+  for (const auto& c : rows) width = std::max(width, c.entry->rule.name().size());
+  fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {:>7}  {}\n", "rule", width, "model", "I", "dangling", "O", "C", "ms", "verdict");
+  for (const auto& c : rows) {
+    const auto& v = c.verdict;
+    const std::string verdict = c.failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(c.failures, " "));
+    std::string record;
+    if (!c.matches_record)
+      record = c.entry->expected_failures
+                   ? fmt::format("   MISMATCH: catalog records {}",
+                                 c.entry->expected_failures->empty() ? "consistent" : fmt::format("{}", fmt::join(*c.entry->expected_failures, " ")))
+                   : "   MISMATCH: no verdict recorded, so every condition must hold";
+    fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {:>7.2f}  {}{}\n", c.entry->rule.name(), width, c.entry->rule.model().name,
+               cell(v, RuleCondition::incident_arcs), cell(v, RuleCondition::dangling), cell(v, RuleCondition::non_orientation),
+               cell(v, RuleCondition::cycle), c.millis, verdict, record);
+    if (c.search) fmt::print("{:<{}}  {}\n", "", width, model_level(c));
+    if (o.explain && !c.failures.empty()) {
+      for (const auto& cond : v.conditions) {
+        if (cond.holds) continue;
+        for (const auto& w : cond.witnesses)
+          fmt::print("{:<{}}    {}{}: {}\n", "", width, cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
+                     w.text);
+      }
+      if (c.search && c.search->host)
+        fmt::print("{:<{}}    host G: {}\n{:<{}}    result H: {}\n", "", width, arcs_text(*c.search->host), "", width,
+                   arcs_text(*c.search->result));
+    }
+  }
+  fmt::print("\n{} rules, {} consistent, {} with failing conditions; {} verdict{} differ{} from the catalog\n", rows.size(),
+             std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return c.failures.empty(); }),
+             std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.failures.empty(); }), mismatches,
+             mismatches == 1 ? "" : "s", mismatches == 1 ? "s" : "");
+  return mismatches ? violation : ok;
+}
+
+}  // namespace dartcheck::cli
