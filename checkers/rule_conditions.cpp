@@ -316,14 +316,20 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
   }
 
   // Def. 27: the W-label of every ijij-cycle reduces to ε.
-  for (const CycleSide* s : {&left, &right})
+  for (const CycleSide* s : {&left, &right}) {
+    std::vector<std::array<int, 4>> reported;  // a cycle once, not once per rotation
     for (const auto& c : s->cycles) {
+      std::array<int, 4> key = c;
+      std::sort(key.begin(), key.end());
+      if (std::find(reported.begin(), reported.end(), key) != reported.end()) continue;
       const std::vector<int> p(c.begin(), c.end());
       const ConjWord w = path_word(*s, p);
       if (!rw.reduces_to_empty(w))
         fail(v, {0, s->name, {}, {path_text(*s, p)}, {w.str()},
                  fmt::format("({},{})-cycle {} in {} has W-label {}, which does not reduce to ε", i, j, path_text(*s, p), s->name, w.str())});
+      reported.push_back(key);
     }
+  }
 
   // Sub-conditions 2 and 3: a preserved node losing an i-arc, and an added
   // node, must be the source of an i-arc in R on a cycle or optimal path.

@@ -54,12 +54,6 @@ struct RuleVerdict {
   const ConditionVerdict* find(const std::string& name) const;
 };
 
-/// The W-labels of the arcs of both sides, in arc order. For a DPO rule
-/// (`scheme` false) the vectors are empty and every word is ε.
-struct ArcWords {
-  bool scheme = false;
-  std::vector<ConjWord> left, right;
-};
 
 /// The conditions of one kind for one dimension (or pair).
 ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords& words = {});

@@ -95,7 +95,7 @@ int check(const CheckOptions& o) {
     if (!o.rule.empty() && entry.rule.name() != o.rule) continue;
     Checked c{&entry, {}, {}, {}, 0, true};
     const auto t0 = std::chrono::steady_clock::now();
-    c.verdict = check_rule(entry.rule);
+    c.verdict = check_rule(entry.rule, entry.words);
     c.millis = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (const auto& v : c.verdict.conditions)
       if (!v.holds) c.failures.push_back(v.name());
@@ -114,7 +114,7 @@ int check(const CheckOptions& o) {
     } else {
       c.matches_record = c.failures.empty();
     }
-    if (!c.failures.empty() && o.confirm_darts > 0) c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
+    if (!c.failures.empty() && o.confirm_darts > 0 && !entry.words.scheme) c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
     rows.push_back(std::move(c));
   }
   const auto mismatches = std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.matches_record; });

@@ -33,6 +33,7 @@ struct ArcText {
   std::string source, target;
   int label = 0;
   bool oriented = false, backwards = false;
+  std::optional<std::string> word;  // scheme label "(w,d)"
 };
 
 std::optional<ArcText> parse_arc(const std::string& text) {
@@ -58,7 +59,15 @@ std::optional<ArcText> parse_arc(const std::string& text) {
   } else {
     return std::nullopt;
   }
-  if ((a.backwards && forwards) || link.empty() || link.size() > 3) return std::nullopt;
+  if (a.backwards && forwards) return std::nullopt;
+  // A scheme label (w,d): the word and the dimension.
+  if (link.size() >= 5 && link.front() == '(' && link.back() == ')') {
+    const auto comma = link.rfind(',');
+    if (comma == std::string_view::npos) return std::nullopt;
+    a.word = std::string(link.substr(1, comma - 1));
+    link = link.substr(comma + 1, link.size() - comma - 2);
+  }
+  if (link.empty() || link.size() > 3) return std::nullopt;
   for (char c : link) {
     if (c < '0' || c > '9') return std::nullopt;
     a.label = a.label * 10 + (c - '0');
@@ -118,7 +127,8 @@ static Model read_custom_model(const std::string& file, const std::string& name,
   return m;
 }
 
-TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which) {
+TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model,
+                    std::vector<ConjWord>* words, bool* has_words) {
   yaml::expect_map(file, side, which);
   yaml::allow_keys(file, side, {"nodes", "arcs"});
   TopoGraph g;
@@ -134,7 +144,9 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
     for (const auto& a : arcs) {
       const auto text = yaml::as_string(file, a, "arc");
       const auto arc = parse_arc(text);
-      if (!arc) fail_at(file, a, fmt::format("arc '{}': expected 'x -i- y' (non-oriented pair), 'x -i-> y' or 'x <-i- y' (one oriented arc)", text));
+      if (!arc)
+        fail_at(file, a, fmt::format("arc '{}': expected 'x -i- y' (non-oriented pair), 'x -i-> y' or 'x <-i- y' (one oriented arc), "
+                                     "with i a dimension or a scheme label (w,i)", text));
       auto node = [&](const std::string& name) {
         auto v = g.find(name);
         if (!v) fail_at(file, a, fmt::format("arc '{}': node '{}' is not declared in {}.nodes", text, name, which));
@@ -143,8 +155,23 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
       NodeId x = node(arc->source), y = node(arc->target);
       if (arc->label > max_dimension) fail_at(file, a, fmt::format("arc '{}': dimension {} is above {}", text, arc->label, max_dimension));
       if (arc->backwards) std::swap(x, y);
+      ConjWord w;
+      if (arc->word) {
+        if (!model || !words) fail_at(file, a, fmt::format("arc '{}': a scheme label (w,i) is not allowed here", text));
+        try {
+          w = parse_conj_word(*arc->word, *model);
+        } catch (const std::invalid_argument& e) {
+          fail_at(file, a, fmt::format("arc '{}': {}", text, e.what()));
+        }
+        if (has_words) *has_words = true;
+      }
       g.add_arc(x, y, arc->label);
-      if (!arc->oriented && x != y) g.add_arc(y, x, arc->label);
+      if (words) words->push_back(w);
+      if (!arc->oriented && x != y) {
+        // The reverse of (w, i) is (conj(w), i) (002 Def. 24).
+        g.add_arc(y, x, arc->label);
+        if (words) words->push_back(model ? ConjugateRewriting(*model).conjugate(w) : w);
+      }
     }
   }
   return g;
@@ -228,8 +255,10 @@ Catalog read_catalog(const std::string& file) {
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
       if (c.find_rule(name)) fail_at(file, n["name"], fmt::format("rule '{}' is declared twice", name));
       const Model model = model_of(n);
-      TopoGraph left = read_side(file, yaml::require(file, n, "left"), "left");
-      TopoGraph right = read_side(file, yaml::require(file, n, "right"), "right");
+      ArcWords words;
+      TopoGraph left = read_side(file, yaml::require(file, n, "left"), "left", &model, &words.left, &words.scheme);
+      TopoGraph right = read_side(file, yaml::require(file, n, "right"), "right", &model, &words.right, &words.scheme);
+      if (!words.scheme) words = ArcWords{};
       std::vector<std::string> hooks;
       const auto hn = n["hooks"];
       if (hn) {
@@ -238,11 +267,11 @@ Catalog read_catalog(const std::string& file) {
       }
       std::optional<Rule> rule;
       try {
-        rule.emplace(name, model, std::move(left), std::move(right), std::move(hooks));
+        rule.emplace(name, model, std::move(left), std::move(right), std::move(hooks), words.left, words.right);
       } catch (const std::invalid_argument& e) {
         fail_at(file, hn ? hn : n, fmt::format("rule '{}': {}", name, e.what()));
       }
-      CatalogRule cr{std::move(*rule), n["note"] ? yaml::as_string(file, n["note"], "note") : "", {}, where(file, n), {}, {}};
+      CatalogRule cr{std::move(*rule), n["note"] ? yaml::as_string(file, n["note"], "note") : "", {}, where(file, n), {}, {}, words};
       if (const auto vn = n["verdict"]) {
         // "consistent", or the list of the conditions that must fail.
         cr.verdict_location = where(file, vn);

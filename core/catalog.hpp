@@ -46,6 +46,9 @@ struct CatalogRule {
   /// ("I(0)", "C(0,2)", ...), empty for "consistent"; unset if none.
   std::optional<std::vector<std::string>> expected_failures;
   SourceLocation verdict_location;
+  /// The W-labels of a rule scheme (002 Sec. 6); `words.scheme` is false
+  /// for a DPO rule.
+  ArcWords words;
 };
 
 struct Catalog {
@@ -62,7 +65,11 @@ Catalog read_catalog(const std::string& file);
 /// Reads one side of a rule: {nodes: [...], arcs: ["a -0- b", ...]}.
 /// Arc notation: "a -i- b" is the non-oriented pair a -i-> b, b -i-> a
 /// (one loop arc when a == b); "a -i-> b" and "a <-i- b" one oriented arc.
-TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which);
+/// With `model` and `words`, arcs may carry scheme labels "(w,i)": `words`
+/// receives one word per arc (ε for plain labels) and `has_words` is set if
+/// any arc has one.
+TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model = nullptr,
+                    std::vector<ConjWord>* words = nullptr, bool* has_words = nullptr);
 
 /// Reads a model: a preset name, or {dims, non_oriented, exchangeable,
 /// partial, loop_free} for a custom one.

@@ -18,14 +18,15 @@ void check_side(const TopoGraph& g, const Model& model, const char* side) {
 }
 
 // Marks which arcs of `a` have a partner in `b` with the same endpoints (by
-// name) and label, pairing occurrences one to one.
-std::vector<bool> kept_arcs(const TopoGraph& a, const TopoGraph& b) {
+// name), label and word, pairing occurrences one to one.
+std::vector<bool> kept_arcs(const TopoGraph& a, const TopoGraph& b, const std::vector<ConjWord>& wa, const std::vector<ConjWord>& wb) {
   std::vector<bool> kept(a.arc_count(), false), used(b.arc_count(), false);
   for (ArcId e = 0; e < a.arc_count(); ++e) {
     const auto& x = a.arc(e);
     for (ArcId f = 0; f < b.arc_count(); ++f) {
       const auto& y = b.arc(f);
-      if (!used[f] && y.label == x.label && b.name(y.source) == a.name(x.source) && b.name(y.target) == a.name(x.target)) {
+      const bool same_word = (wa.empty() ? ConjWord{} : wa[e]) == (wb.empty() ? ConjWord{} : wb[f]);
+      if (!used[f] && y.label == x.label && same_word && b.name(y.source) == a.name(x.source) && b.name(y.target) == a.name(x.target)) {
         used[f] = kept[e] = true;
         break;
       }
@@ -56,13 +57,19 @@ std::vector<int> Rule::components(const TopoGraph& g, int* count) {
 }
 
 Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks)
+    : Rule(std::move(name), std::move(model), std::move(left), std::move(right), std::move(hooks), {}, {}) {}
+
+Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks,
+           const std::vector<ConjWord>& left_words, const std::vector<ConjWord>& right_words)
     : name_(std::move(name)), model_(std::move(model)), left_(std::move(left)), right_(std::move(right)) {
+  if ((!left_words.empty() && left_words.size() != left_.arc_count()) || (!right_words.empty() && right_words.size() != right_.arc_count()))
+    throw std::invalid_argument("a rule scheme needs one word per arc");
   check_side(left_, model_, "L");
   check_side(right_, model_, "R");
   for (NodeId v = 0; v < left_.node_count(); ++v) left_to_right_.push_back(right_.find(left_.name(v)).value_or(no_node));
   for (NodeId v = 0; v < right_.node_count(); ++v) right_to_left_.push_back(left_.find(right_.name(v)).value_or(no_node));
-  left_arc_kept_ = kept_arcs(left_, right_);
-  right_arc_kept_ = kept_arcs(right_, left_);
+  left_arc_kept_ = kept_arcs(left_, right_, left_words, right_words);
+  right_arc_kept_ = kept_arcs(right_, left_, right_words, left_words);
 
   int count = 0;
   const auto comp = components(left_, &count);

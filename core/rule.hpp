@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/conjugate_words.hpp"
 #include "core/graph.hpp"
 #include "core/model.hpp"
 
@@ -23,6 +24,11 @@ class Rule {
   /// a hook is not a node of L, or a connected component of L has no hook
   /// or several (002 Sec. 6.3: one hook per component).
   Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks);
+  /// A rule scheme's core (002 Def. 18): arcs are identified by their full
+  /// label (w, d), so `left_words` and `right_words` (one word per arc) take
+  /// part in K = L ∩ R; the core itself keeps the D-labels.
+  Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks,
+       const std::vector<ConjWord>& left_words, const std::vector<ConjWord>& right_words);
 
   const std::string& name() const { return name_; }
   const Model& model() const { return model_; }
@@ -52,6 +58,14 @@ class Rule {
   std::vector<NodeId> hooks_;
   std::vector<NodeId> left_to_right_, right_to_left_;
   std::vector<bool> left_arc_kept_, right_arc_kept_;
+};
+
+/// The W-labels of the arcs of both sides of a rule scheme, in arc order.
+/// For a DPO rule (`scheme` false) the vectors are empty and every word is
+/// ε.
+struct ArcWords {
+  bool scheme = false;
+  std::vector<ConjWord> left, right;
 };
 
 }  // namespace dartcheck
