@@ -35,6 +35,27 @@ std::string representability(const Rule& rule, const Map& g, const Match& m) {
 
 }  // namespace
 
+std::vector<std::pair<Dart, Dart>> compact(Map& g, std::vector<Dart> holes) {
+  // While holes remain, drop the last dart if it is a hole, otherwise move
+  // it into the smallest hole. holes[lo, hi) are unfilled.
+  std::vector<std::pair<Dart, Dart>> moved;
+  std::sort(holes.begin(), holes.end());
+  std::size_t size = g.size(), lo = 0, hi = holes.size();
+  while (lo < hi) {
+    if (holes[hi - 1] == size - 1) {
+      --hi;
+    } else {
+      const Dart last = static_cast<Dart>(size - 1);
+      g.relocate(last, holes[lo]);
+      moved.emplace_back(last, holes[lo]);
+      ++lo;
+    }
+    --size;
+  }
+  g.truncate(size);
+  return moved;
+}
+
 Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> hook_darts) {
   auto matched = match_from_hooks(rule, g, hook_darts);
   if (!matched.ok()) return refuse(matched.refusal, matched.why);
@@ -67,22 +88,7 @@ Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> h
   for (ArcId e = 0; e < R.arc_count(); ++e)
     if (!rule.preserved_right_arc(e)) g.set_link(R.arc(e).label, d.comatch[R.arc(e).source], d.comatch[R.arc(e).target]);
 
-  // Keep H dense: while holes remain, drop the last dart if it is a hole,
-  // otherwise move it into the smallest hole. holes[lo, hi) are unfilled.
-  std::sort(holes.begin(), holes.end());
-  std::size_t size = g.size(), lo = 0, hi = holes.size();
-  while (lo < hi) {
-    if (holes[hi - 1] == size - 1) {
-      --hi;
-    } else {
-      const Dart last = static_cast<Dart>(size - 1);
-      g.relocate(last, holes[lo]);
-      d.moved.emplace_back(last, holes[lo]);
-      ++lo;
-    }
-    --size;
-  }
-  g.truncate(size);
+  d.moved = compact(g, std::move(holes));
   for (auto& x : d.comatch)
     for (auto [from, to] : d.moved)
       if (x == from) x = to;

@@ -23,4 +23,9 @@ struct Derivation {
 /// `g` is left unchanged and the outcome says why.
 Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> hook_darts);
 
+/// Keeps a map dense after deleting darts: the `holes` (darts with no arc
+/// left) are filled with the last darts, which are renumbered, and the map
+/// is truncated. Returns the renumberings (old, new).
+std::vector<std::pair<Dart, Dart>> compact(Map& g, std::vector<Dart> holes);
+
 }  // namespace dartcheck

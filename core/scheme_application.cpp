@@ -1,0 +1,185 @@
+#include "core/scheme_application.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace dartcheck {
+namespace {
+
+Outcome<SchemeDerivation> refuse(Refusal r, std::string why) { return {std::nullopt, r, std::move(why)}; }
+
+const ConjWord& word(const std::vector<ConjWord>& ws, ArcId e) {
+  static const ConjWord eps;
+  return ws.empty() ? eps : ws[e];
+}
+
+}  // namespace
+
+Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts) {
+  const TopoGraph &L = core.left(), &R = core.right();
+  if (core.hooks().size() != 1)
+    return refuse(Refusal::bad_hooks, "schemes whose L has several connected components are not supported (one hook per scheme)");
+  if (hook_darts.size() != 1 || hook_darts[0] >= g.size())
+    return refuse(Refusal::bad_hooks, fmt::format("the scheme needs one hook dart below {}", g.size()));
+  const Dart v = hook_darts[0];
+  const NodeId hook = core.hooks()[0];
+  const ConjugateRewriting rw(core.model());
+
+  // W: the words of the scheme, each with its conjugate (P_v takes the
+  // darts reachable to and from v).
+  std::vector<ConjWord> gens;
+  for (const auto* ws : {&words.left, &words.right})
+    for (const auto& w : *ws)
+      for (const ConjWord& x : {w, rw.conjugate(w)})
+        if (!x.empty() && std::find(gens.begin(), gens.end(), x) == gens.end()) gens.push_back(x);
+
+  // P_v by BFS; index[d] is d's position in P_v.
+  constexpr std::uint32_t none = 0xffffffffU;
+  std::vector<std::uint32_t> index(g.size(), none);
+  std::vector<Dart> pattern{v};
+  index[v] = 0;
+  for (std::size_t k = 0; k < pattern.size(); ++k)
+    for (const auto& w : gens) {
+      const Dart t = follow(g, pattern[k], w);
+      if (t == no_dart)
+        return refuse(Refusal::not_combinatorial, fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], w.str()));
+      if (index[t] == none) {
+        index[t] = static_cast<std::uint32_t>(pattern.size());
+        pattern.push_back(t);
+      }
+    }
+  const std::size_t np = pattern.size();
+  // p·w for every pattern node and arc word, precomputed once per arc.
+  auto step = [&](std::size_t p, const ConjWord& w) { return index[follow(g, pattern[p], w)]; };
+
+  // The match: m[x][p] is the image of product node (p, x), propagated from
+  // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
+  std::vector<std::vector<Dart>> m(L.node_count(), std::vector<Dart>(np, no_dart));
+  std::vector<std::pair<std::uint32_t, NodeId>> queue{{0, hook}};
+  m[hook][0] = v;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const auto [p, x] = queue[k];
+    const Dart here = m[x][p];
+    for (ArcId e = 0; e < L.arc_count(); ++e) {
+      const auto& a = L.arc(e);
+      std::uint32_t q;
+      NodeId y;
+      Dart there;
+      if (a.source == x) {
+        q = step(p, word(words.left, e));
+        y = a.target;
+        there = g.link(a.label, here);
+      } else if (a.target == x) {
+        q = step(p, rw.conjugate(word(words.left, e)));
+        y = a.source;
+        there = g.inverse_link(a.label, here);
+      } else {
+        continue;
+      }
+      if (there == no_dart)
+        return refuse(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source),
+                                                     a.label, L.name(a.target), pattern[p], here, a.label));
+      if (m[y][q] == no_dart) {
+        m[y][q] = there;
+        queue.emplace_back(q, y);
+      } else if (m[y][q] != there) {
+        return refuse(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q],
+                                                     L.name(y), m[y][q], there));
+      }
+    }
+  }
+  // Injectivity on nodes; every product node matched (ι(L, P_v) connected).
+  std::vector<bool> taken(g.size(), false);
+  for (NodeId x = 0; x < L.node_count(); ++x)
+    for (std::size_t p = 0; p < np; ++p) {
+      const Dart d = m[x][p];
+      if (d == no_dart)
+        return refuse(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hook: the words of R "
+                                                     "reach pattern darts that the arcs of L do not",
+                                                     pattern[p], L.name(x)));
+      if (taken[d]) return refuse(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
+      taken[d] = true;
+    }
+  // Arc injectivity: two arcs of L out of one node with one label share
+  // their images.
+  for (ArcId e = 0; e < L.arc_count(); ++e)
+    for (ArcId f = e + 1; f < L.arc_count(); ++f)
+      if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label)
+        return refuse(Refusal::not_injective,
+                      fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source)));
+  // Dangling: a deleted node needs an L arc in and out for every dimension
+  // its darts carry.
+  for (NodeId x = 0; x < L.node_count(); ++x) {
+    if (core.to_right(x) != no_node) continue;
+    for (Dim i : core.model().dims) {
+      bool out = false, in = false;
+      for (const auto& a : L.arcs()) {
+        out |= a.source == x && a.label == i;
+        in |= a.target == x && a.label == i;
+      }
+      for (std::size_t p = 0; p < np; ++p)
+        if ((!out && g.link(i, m[x][p]) != no_dart) || (!in && g.inverse_link(i, m[x][p]) != no_dart))
+          return refuse(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[x][p], L.name(x), i));
+    }
+  }
+  // Representability, per scheme arc (the same for every pattern node).
+  for (ArcId e = 0; e < R.arc_count(); ++e) {
+    if (core.preserved_right_arc(e)) continue;
+    const auto& a = R.arc(e);
+    for (ArcId f = e + 1; f < R.arc_count(); ++f)
+      if (!core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label)
+        return refuse(Refusal::not_representable, fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source)));
+    const NodeId x = core.to_left(a.source);
+    if (x == no_node) continue;
+    bool freed = false, kept = false;
+    for (ArcId f = 0; f < L.arc_count(); ++f) freed |= !core.preserved_left_arc(f) && L.arc(f).source == x && L.arc(f).label == a.label;
+    for (ArcId f = 0; f < R.arc_count(); ++f) kept |= core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label;
+    for (std::size_t p = 0; p < np && !freed; ++p)
+      if (kept || g.link(a.label, m[x][p]) != no_dart)
+        return refuse(Refusal::not_representable, fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label,
+                                                              R.name(a.source), m[x][p], a.label));
+  }
+
+  // p·w for the added arcs, read on G before it changes.
+  std::vector<std::vector<std::uint32_t>> shifted(R.arc_count());
+  for (ArcId e = 0; e < R.arc_count(); ++e) {
+    if (core.preserved_right_arc(e)) continue;
+    shifted[e].resize(np);
+    for (std::size_t p = 0; p < np; ++p) shifted[e][p] = step(p, word(words.right, e));
+  }
+
+  // Rewrite: delete the instances of L \ K, place R's nodes, add R \ K.
+  SchemeDerivation out{np, np * L.node_count(), 0, {}};
+  for (ArcId e = 0; e < L.arc_count(); ++e)
+    if (!core.preserved_left_arc(e))
+      for (std::size_t p = 0; p < np; ++p) g.remove_link(L.arc(e).label, m[L.arc(e).source][p]);
+  std::vector<Dart> holes;
+  for (NodeId x = 0; x < L.node_count(); ++x)
+    if (core.to_right(x) == no_node) holes.insert(holes.end(), m[x].begin(), m[x].end());
+  std::vector<std::vector<Dart>> c(R.node_count());
+  std::size_t added_nodes = 0;
+  for (NodeId y = 0; y < R.node_count(); ++y) added_nodes += core.to_left(y) == no_node;
+  const std::size_t reuse = std::min(holes.size(), added_nodes * np);
+  const Dart first_new = added_nodes * np > reuse ? g.add_darts(added_nodes * np - reuse) : no_dart;
+  std::size_t next_new = 0, next_hole = 0;
+  for (NodeId y = 0; y < R.node_count(); ++y) {
+    if (core.to_left(y) != no_node) {
+      c[y] = m[core.to_left(y)];
+      continue;
+    }
+    c[y].resize(np);
+    for (auto& d : c[y]) d = next_hole < reuse ? holes[next_hole++] : static_cast<Dart>(first_new + next_new++);
+  }
+  out.added_darts = added_nodes * np;
+  for (ArcId e = 0; e < R.arc_count(); ++e) {
+    if (core.preserved_right_arc(e)) continue;
+    const auto& a = R.arc(e);
+    for (std::size_t p = 0; p < np; ++p) g.set_link(a.label, c[a.source][p], c[a.target][shifted[e][p]]);
+  }
+  holes.erase(holes.begin(), holes.begin() + static_cast<std::ptrdiff_t>(reuse));
+  out.moved = compact(g, std::move(holes));
+  return {std::move(out), Refusal::none, {}};
+}
+
+}  // namespace dartcheck

@@ -1,0 +1,31 @@
+// Application of a rule scheme to a dense map (002 Sec. 6.3): the pattern
+// graph P_v of the hook dart (the darts reachable along the words of the
+// scheme, 002 Def. 20), the instantiated rule ι(S, P_v) = π_D(E_D(P_v) × S)
+// (Def. 19), its unique match sending (v, hook) to v, and the direct
+// derivation. The instantiated rule is never built as a graph: node (p, x)
+// of the product is the pair (pattern node, scheme node), so application
+// costs O(|P_v| · (|L| + |R|)) link operations, linear in the size of the
+// instantiated rule.
+#pragma once
+
+#include <span>
+
+#include "core/derivation.hpp"
+
+namespace dartcheck {
+
+struct SchemeDerivation {
+  std::size_t pattern_nodes = 0;  // |P_v|
+  std::size_t matched_darts = 0;  // |P_v| · |V_L|
+  std::size_t added_darts = 0;
+  std::vector<std::pair<Dart, Dart>> moved;  // renumbered darts of H
+};
+
+/// Rewrites `g` at the hook dart. L must be connected (one hook). Refuses,
+/// leaving `g` unchanged, when a word has no path from a pattern node
+/// (not-combinatorial), when the instantiated L does not match (no-match,
+/// not-injective), breaks the dangling condition, or would give a dart
+/// two i-arcs (not-representable).
+Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts);
+
+}  // namespace dartcheck
