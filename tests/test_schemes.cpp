@@ -72,3 +72,27 @@ TEST(QuadSubdivision, BrokenWordBreaksTheCycleConstraint) {
   ASSERT_FALSE(report.valid());
   for (const auto& v : report.violations) EXPECT_EQ(v.constraint, Constraint::cycle) << "only C(0,2) is predicted to fail";
 }
+
+// Cone extrusion of an isolated k-gon (002 Sec. 10.2): a pyramid, closed:
+// k + 1 vertices, 2k edges, k + 1 faces; 4 darts per edge in a G-map (8k),
+// 2 in an O-map (4k).
+void expect_cone(const std::string& scheme, const Model& model, int k) {
+  Map g = build_shape(model, {"polygon", {k}});
+  const auto& s = entry(scheme);
+  const Dart hook = 0;
+  auto out = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+  ASSERT_TRUE(out.ok()) << out.why;
+  const auto n = static_cast<std::size_t>(k);
+  EXPECT_EQ(g.size(), (model.is_generalized() ? 8 : 4) * n);
+  const auto report = check_map(g);
+  EXPECT_TRUE(report.valid()) << report.violations.size() << " violations";
+  const auto cells = count_cells(g);
+  EXPECT_EQ(cells.cells, (std::vector<std::size_t>{n + 1, 2 * n, n + 1}));
+  EXPECT_EQ(cells.euler(), 2);
+}
+TEST(ConeExtrusion, Gmap) {
+  for (int k : {3, 4, 6}) expect_cone("cone-extrusion-gmap", Model::gmap(2), k);
+}
+TEST(ConeExtrusion, Omap) {
+  for (int k : {3, 4, 6}) expect_cone("cone-extrusion-omap", Model::omap(2), k);
+}
