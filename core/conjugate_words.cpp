@@ -101,19 +101,26 @@ bool ConjugateRewriting::swappable(char y, char x) const {
   return !(model_.is_oriented(dx) && model_.is_oriented(dy) && ((x ^ y) & 1));
 }
 
+bool ConjugateRewriting::rewrite_at(const std::string& w, std::size_t k, std::string& child) const {
+  if (cancels(w[k], w[k + 1])) {
+    child = w.substr(0, k) + w.substr(k + 2);
+  } else if (swappable(w[k], w[k + 1])) {
+    child = w;
+    child[k] = conj_letter(model_, w[k + 1]);
+    child[k + 1] = conj_letter(model_, w[k]);
+  } else {
+    return false;
+  }
+  return true;
+}
+
 std::vector<ConjugateRewriting::Step> ConjugateRewriting::steps(const ConjWord& w) const {
   std::vector<Step> out;
   const std::string& c = w.code();
-  for (std::size_t k = 0; k + 1 < c.size(); ++k) {
-    if (cancels(c[k], c[k + 1])) {
-      out.push_back({Step::cancel, k, ConjWord::from_code(c.substr(0, k) + c.substr(k + 2))});
-    } else if (swappable(c[k], c[k + 1])) {
-      std::string r = c;
-      r[k] = conj_letter(model_, c[k + 1]);
-      r[k + 1] = conj_letter(model_, c[k]);
-      out.push_back({Step::swap, k, ConjWord::from_code(std::move(r))});
-    }
-  }
+  std::string child;
+  for (std::size_t k = 0; k + 1 < c.size(); ++k)
+    if (rewrite_at(c, k, child))
+      out.push_back({cancels(c[k], c[k + 1]) ? Step::cancel : Step::swap, k, ConjWord::from_code(child)});
   return out;
 }
 
@@ -133,15 +140,7 @@ const std::vector<std::uint32_t>& ConjugateRewriting::nf_ids(const std::string& 
   bool reducible = false;
   std::string child;
   for (std::size_t k = 0; k + 1 < w.size(); ++k) {
-    if (cancels(w[k], w[k + 1])) {
-      child = w.substr(0, k) + w.substr(k + 2);
-    } else if (swappable(w[k], w[k + 1])) {
-      child = w;
-      child[k] = conj_letter(model_, w[k + 1]);
-      child[k + 1] = conj_letter(model_, w[k]);
-    } else {
-      continue;
-    }
+    if (!rewrite_at(w, k, child)) continue;
     reducible = true;
     const auto& sub = nf_ids(child);
     ids.insert(ids.end(), sub.begin(), sub.end());
@@ -178,15 +177,7 @@ bool ConjugateRewriting::reaches_empty(const std::string& w) {
   bool found = false;
   std::string child;
   for (std::size_t k = 0; k + 1 < w.size() && !found; ++k) {
-    if (cancels(w[k], w[k + 1])) {
-      child = w.substr(0, k) + w.substr(k + 2);
-    } else if (swappable(w[k], w[k + 1])) {
-      child = w;
-      child[k] = conj_letter(model_, w[k + 1]);
-      child[k + 1] = conj_letter(model_, w[k]);
-    } else {
-      continue;
-    }
+    if (!rewrite_at(w, k, child)) continue;
     found = reaches_empty(child);
   }
   empty_memo_.emplace(w, found);

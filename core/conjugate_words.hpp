@@ -114,6 +114,9 @@ class ConjugateRewriting {
   bool exchangeable(Dim a, Dim b) const { return a < b && has_dim(exchangeable_[a], b); }
   bool cancels(char x, char y) const;
   bool swappable(char y, char x) const;
+  /// The one-step rewriting of w at letters k, k+1 into `child`; false if
+  /// no rule applies there.
+  bool rewrite_at(const std::string& w, std::size_t k, std::string& child) const;
   const std::vector<std::uint32_t>& nf_ids(const std::string& w);
   bool reaches_empty(const std::string& w);
 

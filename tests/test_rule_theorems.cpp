@@ -196,6 +196,20 @@ Semantic search_semantic(const Rule& rule, Host h, std::size_t extra) {
   return out;
 }
 
+// Hooks for a random rule: the first node of each component of L.
+std::vector<std::string> first_node_per_component(const TopoGraph& L) {
+  int comps = 0;
+  const auto comp = Rule::components(L, &comps);
+  std::vector<std::string> hooks;
+  std::vector<bool> seen(static_cast<std::size_t>(comps), false);
+  for (NodeId v = 0; v < L.node_count(); ++v)
+    if (!seen[static_cast<std::size_t>(comp[v])]) {
+      seen[static_cast<std::size_t>(comp[v])] = true;
+      hooks.push_back(L.name(v));
+    }
+  return hooks;
+}
+
 // Random small rules: L on 1-3 nodes, often a subset of the arcs of a host
 // of the class (so that matches exist), sometimes arbitrary arcs; R keeps a
 // random part of L and adds nodes and arcs, biased towards repairing the
@@ -238,16 +252,7 @@ Rule random_rule(std::mt19937& rng, Host h, const Model& model) {
         if (t != v && coin(50)) R.add_arc(t, v, d);
       }
   for (int k = static_cast<int>(rng() % 2); k > 0; --k) R.add_arc(pick(R.node_count()), pick(R.node_count()), static_cast<Dim>(rng() % 2));
-  int comps = 0;
-  const auto comp = Rule::components(L, &comps);
-  std::vector<std::string> hooks;
-  std::vector<bool> seen(static_cast<std::size_t>(comps), false);
-  for (NodeId v = 0; v < nl; ++v)
-    if (!seen[static_cast<std::size_t>(comp[v])]) {
-      seen[static_cast<std::size_t>(comp[v])] = true;
-      hooks.push_back(L.name(v));
-    }
-  return Rule("random", model, L, R, hooks);
+  return Rule("random", model, L, R, first_node_per_component(L));
 }
 
 // Random D-combinatorial rules (Def. 12) by construction, so that Theorems
@@ -332,16 +337,7 @@ Rule random_combinatorial_rule(std::mt19937& rng, const Model& host_class, const
     }
   }
   if (R.node_count() == 0) R.add_node("a0");
-  int comps = 0;
-  const auto comp = Rule::components(L, &comps);
-  std::vector<std::string> hooks;
-  std::vector<bool> seen(static_cast<std::size_t>(comps), false);
-  for (NodeId v = 0; v < nl; ++v)
-    if (!seen[static_cast<std::size_t>(comp[v])]) {
-      seen[static_cast<std::size_t>(comp[v])] = true;
-      hooks.push_back(L.name(v));
-    }
-  return Rule("random", model, L, R, hooks);
+  return Rule("random", model, L, R, first_node_per_component(L));
 }
 
 // Arbitrary arcs over the model's dimensions, for rules far from valid.
@@ -357,16 +353,7 @@ Rule random_rule_for(std::mt19937& rng, const Model& model) {
   if (R.node_count() == 0) R.add_node("a0");
   for (int k = static_cast<int>(rng() % 8); k > 0; --k)
     R.add_arc(pick(R.node_count()), pick(R.node_count()), model.dims[rng() % model.dims.size()]);
-  int comps = 0;
-  const auto comp = Rule::components(L, &comps);
-  std::vector<std::string> hooks;
-  std::vector<bool> seen(static_cast<std::size_t>(comps), false);
-  for (NodeId v = 0; v < nl; ++v)
-    if (!seen[static_cast<std::size_t>(comp[v])]) {
-      seen[static_cast<std::size_t>(comp[v])] = true;
-      hooks.push_back(L.name(v));
-    }
-  return Rule("random", model, L, R, hooks);
+  return Rule("random", model, L, R, first_node_per_component(L));
 }
 
 bool combinatorial(const Rule& r) {
