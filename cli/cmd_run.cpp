@@ -8,6 +8,7 @@
 #include "core/catalog.hpp"
 #include "core/derivation.hpp"
 #include "core/orbit.hpp"
+#include "core/scheme_application.hpp"
 
 namespace dartcheck::cli {
 
@@ -31,11 +32,23 @@ int run(const RunOptions& o) {
       std::size_t index = 0;
       while (catalog.maps[index].name != e.map) ++index;
       Map host = built[index];
-      auto result = apply_rule(r.rule, host, e.hooks);
+      // A scheme is instantiated at the hook (002 Sec. 6.3), a DPO rule
+      // matched from it.
+      Refusal refusal = Refusal::none;
+      std::string why;
+      if (r.words.scheme) {
+        auto result = apply_scheme(r.rule, r.words, host, e.hooks);
+        refusal = result.refusal;
+        why = result.why;
+      } else {
+        auto result = apply_rule(r.rule, host, e.hooks);
+        refusal = result.refusal;
+        why = result.why;
+      }
       std::string got, detail;
-      if (!result.ok()) {
-        got = std::string(refusal_name(result.refusal));
-        detail = result.why;
+      if (refusal != Refusal::none) {
+        got = std::string(refusal_name(refusal));
+        detail = why;
       } else {
         const auto report = check_map(host);
         got = report.valid() ? "valid" : "invalid";

@@ -1,10 +1,12 @@
 #include "core/catalog.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/jerboa_scheme.hpp"
 #include "core/map_io.hpp"
 #include "core/yaml_util.hpp"
 
@@ -128,16 +130,33 @@ static Model read_custom_model(const std::string& file, const std::string& name,
 }
 
 TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model,
-                    std::vector<ConjWord>* words, bool* has_words) {
+                    std::vector<ConjWord>* words, bool* has_words, const OrbitType* jerboa) {
   yaml::expect_map(file, side, which);
   yaml::allow_keys(file, side, {"nodes", "arcs"});
   TopoGraph g;
   const auto nodes = yaml::require(file, side, "nodes");
-  yaml::expect_sequence(file, nodes, fmt::format("{}.nodes", which));
-  for (const auto& n : nodes) {
-    const auto name = yaml::as_string(file, n, "node name");
-    if (g.find(name)) fail_at(file, n, fmt::format("{} declares node '{}' twice", which, name));
-    g.add_node(name);
+  if (jerboa) {
+    // Jerboa notation: nodes map to generalized orbit types (000 Sec. 4.3).
+    if (!model || !words) fail_at(file, nodes, "Jerboa node labels are allowed only in a rule");
+    yaml::expect_map(file, nodes, fmt::format("{}.nodes (Jerboa notation: name: \"<0,_,2>\")", which));
+    for (const auto& kv : nodes) {
+      const auto name = yaml::as_string(file, kv.first, "node name");
+      if (g.find(name)) fail_at(file, kv.first, fmt::format("{} declares node '{}' twice", which, name));
+      const NodeId v = g.add_node(name);
+      try {
+        add_implicit_arcs(g, *words, v, *jerboa, parse_orbit_type(yaml::as_string(file, kv.second, "orbit type")), *model);
+      } catch (const std::invalid_argument& e) {
+        fail_at(file, kv.second, fmt::format("node '{}': {}", name, e.what()));
+      }
+    }
+    if (has_words) *has_words = true;
+  } else {
+    yaml::expect_sequence(file, nodes, fmt::format("{}.nodes", which));
+    for (const auto& n : nodes) {
+      const auto name = yaml::as_string(file, n, "node name");
+      if (g.find(name)) fail_at(file, n, fmt::format("{} declares node '{}' twice", which, name));
+      g.add_node(name);
+    }
   }
   if (const auto arcs = side["arcs"]) {
     yaml::expect_sequence(file, arcs, fmt::format("{}.arcs", which));
@@ -156,6 +175,8 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
       if (arc->label > max_dimension) fail_at(file, a, fmt::format("arc '{}': dimension {} is above {}", text, arc->label, max_dimension));
       if (arc->backwards) std::swap(x, y);
       ConjWord w;
+      if (arc->word && jerboa)
+        fail_at(file, a, fmt::format("arc '{}': a Jerboa scheme's explicit arcs are plain dimensions; relabelings go in the node labels", text));
       if (arc->word) {
         if (!model || !words) fail_at(file, a, fmt::format("arc '{}': a scheme label (w,i) is not allowed here", text));
         try {
@@ -200,6 +221,120 @@ Example read_example(const std::string& file, const YAML::Node& n) {
     e.cells = c;
   }
   return e;
+}
+
+}  // namespace
+
+namespace {
+
+// A side of a variant: the base side's nodes (or the variant's `nodes:
+// {left|right: ...}`) and arcs, minus `remove: {side: [...]}`, plus `add:
+// {side: [...]}`. Arcs are matched by their exact text; the kept YAML nodes
+// keep their positions for error messages.
+YAML::Node edit_side(const std::string& file, const YAML::Node& base, const YAML::Node& variant, const char* which) {
+  yaml::expect_map(file, base, which);
+  YAML::Node side(YAML::NodeType::Map);
+  const auto nodes = variant["nodes"];
+  if (nodes) {
+    yaml::expect_map(file, nodes, "nodes");
+    yaml::allow_keys(file, nodes, {"left", "right"});
+  }
+  side["nodes"] = nodes && nodes[which] ? nodes[which] : base["nodes"];
+  // YAML::Node's assignment writes through to the shared node, so arcs are
+  // dropped by flag, never by moving handles around (vector::erase would
+  // overwrite the base rule's own arcs).
+  std::vector<YAML::Node> arcs;
+  std::vector<bool> dropped;
+  if (const auto a = base["arcs"]) {
+    yaml::expect_sequence(file, a, fmt::format("{}.arcs", which));
+    for (const auto& x : a) arcs.push_back(x);
+  }
+  dropped.assign(arcs.size(), false);
+  auto part = [&](const char* key) {
+    const auto edit = variant[key];
+    if (!edit) return YAML::Node(YAML::NodeType::Sequence);
+    yaml::expect_map(file, edit, key);
+    yaml::allow_keys(file, edit, {"left", "right"});
+    if (!edit[which]) return YAML::Node(YAML::NodeType::Sequence);
+    yaml::expect_sequence(file, edit[which], fmt::format("{}.{}", key, which));
+    return edit[which];
+  };
+  for (const auto& r : part("remove")) {
+    const auto text = yaml::as_string(file, r, "arc");
+    std::size_t k = 0;
+    while (k < arcs.size() && (dropped[k] || !arcs[k].IsScalar() || arcs[k].Scalar() != text)) ++k;
+    if (k == arcs.size()) fail_at(file, r, fmt::format("remove: the base rule's {} side has no arc '{}'", which, text));
+    dropped[k] = true;
+  }
+  YAML::Node seq(YAML::NodeType::Sequence);
+  for (std::size_t k = 0; k < arcs.size(); ++k)
+    if (!dropped[k]) seq.push_back(arcs[k]);
+  for (const auto& a : part("add")) seq.push_back(a);
+  side["arcs"] = seq;
+  return side;
+}
+
+// The parameter orbit type of a Jerboa scheme (its L nodes map to orbit
+// types): the label of its first hook, which must have no '_' (000 Sec.
+// 4.3.2). nullopt for a rule in the (W,D) notation.
+std::optional<OrbitType> jerboa_parameter(const std::string& file, const YAML::Node& left, const YAML::Node& rule) {
+  const auto nodes = left["nodes"];
+  if (!nodes || !nodes.IsMap()) return std::nullopt;
+  const auto hooks = rule["hooks"];
+  if (!hooks || !hooks.IsSequence() || hooks.size() == 0)
+    fail_at(file, rule, "a Jerboa scheme (nodes labeled by orbit types) needs a hook: its label is the parameter orbit type");
+  const auto hook = yaml::as_string(file, hooks[0], "hook");
+  const auto label = nodes[hook];
+  if (!label) fail_at(file, hooks[0], fmt::format("hook '{}' is not a node of left", hook));
+  OrbitType t;
+  try {
+    t = parse_orbit_type(yaml::as_string(file, label, "orbit type"));
+  } catch (const std::invalid_argument& e) {
+    fail_at(file, label, e.what());
+  }
+  if (std::find(t.begin(), t.end(), std::nullopt) != t.end())
+    fail_at(file, label, fmt::format("the hook's label {} is the parameter orbit type and cannot contain '_'", orbit_type_str(t)));
+  return t;
+}
+
+// Builds one rule (a catalog entry or a variant `v` of the entry `n`) and
+// appends it; `v` holds the name, note and verdict, `n` the hooks.
+void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const std::string& name, const Model& model, const YAML::Node& left_node,
+              const YAML::Node& right_node, const YAML::Node& n) {
+  if (c.find_rule(name)) fail_at(file, v["name"] ? v["name"] : v, fmt::format("rule '{}' is declared twice", name));
+  const auto parameter = jerboa_parameter(file, left_node, n);
+  const OrbitType* jerboa = parameter ? &*parameter : nullptr;
+  if (!jerboa && right_node["nodes"] && right_node["nodes"].IsMap())
+    fail_at(file, right_node["nodes"], "right uses Jerboa node labels but left does not");
+  ArcWords words;
+  TopoGraph left = read_side(file, left_node, "left", &model, &words.left, &words.scheme, jerboa);
+  TopoGraph right = read_side(file, right_node, "right", &model, &words.right, &words.scheme, jerboa);
+  if (!words.scheme) words = ArcWords{};
+  std::vector<std::string> hooks;
+  const auto hn = n["hooks"];
+  if (hn) {
+    yaml::expect_sequence(file, hn, "hooks");
+    for (const auto& h : hn) hooks.push_back(yaml::as_string(file, h, "hook"));
+  }
+  std::optional<Rule> rule;
+  try {
+    rule.emplace(name, model, std::move(left), std::move(right), std::move(hooks), words.left, words.right);
+  } catch (const std::invalid_argument& e) {
+    fail_at(file, hn ? hn : v, fmt::format("rule '{}': {}", name, e.what()));
+  }
+  CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words};
+  if (const auto vn = v["verdict"]) {
+    // "consistent", or the list of the conditions that must fail.
+    cr.verdict_location = where(file, vn);
+    if (vn.IsScalar() && vn.Scalar() == "consistent") {
+      cr.expected_failures.emplace();
+    } else {
+      if (!vn.IsSequence()) fail_at(file, vn, "verdict: expected 'consistent' or a list of failing conditions such as [\"C(0,2)\"]");
+      cr.expected_failures.emplace();
+      for (const auto& f : vn) cr.expected_failures->push_back(yaml::as_string(file, f, "failing condition"));
+    }
+  }
+  c.rules.push_back(std::move(cr));
 }
 
 }  // namespace
@@ -251,47 +386,31 @@ Catalog read_catalog(const std::string& file) {
     yaml::expect_sequence(file, rules, "rules");
     for (const auto& n : rules) {
       yaml::expect_map(file, n, "rule");
-      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict"});
+      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants"});
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
-      if (c.find_rule(name)) fail_at(file, n["name"], fmt::format("rule '{}' is declared twice", name));
       const Model model = model_of(n);
-      ArcWords words;
-      TopoGraph left = read_side(file, yaml::require(file, n, "left"), "left", &model, &words.left, &words.scheme);
-      TopoGraph right = read_side(file, yaml::require(file, n, "right"), "right", &model, &words.right, &words.scheme);
-      if (!words.scheme) words = ArcWords{};
-      std::vector<std::string> hooks;
-      const auto hn = n["hooks"];
-      if (hn) {
-        yaml::expect_sequence(file, hn, "hooks");
-        for (const auto& h : hn) hooks.push_back(yaml::as_string(file, h, "hook"));
-      }
-      std::optional<Rule> rule;
-      try {
-        rule.emplace(name, model, std::move(left), std::move(right), std::move(hooks), words.left, words.right);
-      } catch (const std::invalid_argument& e) {
-        fail_at(file, hn ? hn : n, fmt::format("rule '{}': {}", name, e.what()));
-      }
-      CatalogRule cr{std::move(*rule), n["note"] ? yaml::as_string(file, n["note"], "note") : "", {}, where(file, n), {}, {}, words};
-      if (const auto vn = n["verdict"]) {
-        // "consistent", or the list of the conditions that must fail.
-        cr.verdict_location = where(file, vn);
-        if (vn.IsScalar() && vn.Scalar() == "consistent") {
-          cr.expected_failures.emplace();
-        } else {
-          if (!vn.IsSequence()) fail_at(file, vn, "verdict: expected 'consistent' or a list of failing conditions such as [\"C(0,2)\"]");
-          cr.expected_failures.emplace();
-          for (const auto& f : vn) cr.expected_failures->push_back(yaml::as_string(file, f, "failing condition"));
-        }
-      }
+      const auto left = yaml::require(file, n, "left"), right = yaml::require(file, n, "right");
+      add_rule(c, file, n, name, model, left, right, n);
+      auto& base = c.rules.back();
       if (const auto ex = n["examples"]) {
         yaml::expect_sequence(file, ex, "examples");
         for (const auto& e : ex) {
-          cr.examples.push_back(read_example(file, e));
-          if (!c.find_map(cr.examples.back().map))
-            fail_at(file, e["map"], fmt::format("example of rule '{}': no map named '{}' under 'maps'", name, cr.examples.back().map));
+          base.examples.push_back(read_example(file, e));
+          if (!c.find_map(base.examples.back().map))
+            fail_at(file, e["map"], fmt::format("example of rule '{}': no map named '{}' under 'maps'", name, base.examples.back().map));
         }
       }
-      c.rules.push_back(std::move(cr));
+      if (const auto vs = n["variants"]) {
+        // Broken (or alternative) variants: the base rule with arcs removed
+        // or added, each with its own verdict.
+        yaml::expect_sequence(file, vs, "variants");
+        for (const auto& v : vs) {
+          yaml::expect_map(file, v, "variant");
+          yaml::allow_keys(file, v, {"name", "note", "verdict", "remove", "add", "nodes"});
+          const auto vname = name + "/" + yaml::as_string(file, yaml::require(file, v, "name"), "variant name");
+          add_rule(c, file, v, vname, model, edit_side(file, left, v, "left"), edit_side(file, right, v, "right"), n);
+        }
+      }
     }
   }
   return c;

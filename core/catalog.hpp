@@ -6,6 +6,7 @@
 #include <vector>
 #include <yaml-cpp/yaml.h>
 
+#include "core/jerboa_scheme.hpp"
 #include "core/map.hpp"
 #include "core/rule.hpp"
 
@@ -67,9 +68,11 @@ Catalog read_catalog(const std::string& file);
 /// (one loop arc when a == b); "a -i-> b" and "a <-i- b" one oriented arc.
 /// With `model` and `words`, arcs may carry scheme labels "(w,i)": `words`
 /// receives one word per arc (ε for plain labels) and `has_words` is set if
-/// any arc has one.
+/// any arc has one. With `jerboa` (the parameter orbit type), nodes are a
+/// mapping from names to generalized orbit types and are translated to
+/// (W,D) loops (core/jerboa_scheme.hpp).
 TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model = nullptr,
-                    std::vector<ConjWord>* words = nullptr, bool* has_words = nullptr);
+                    std::vector<ConjWord>* words = nullptr, bool* has_words = nullptr, const OrbitType* jerboa = nullptr);
 
 /// Reads a model: a preset name, or {dims, non_oriented, exchangeable,
 /// partial, loop_free} for a custom one.

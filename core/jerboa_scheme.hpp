@@ -1,0 +1,42 @@
+// Jerboa-style rule schemes (000 Sec. 4.3) as (W,D)-rule schemes (002 Sec.
+// 10.1).
+//
+// A Jerboa scheme labels each node with a generalized orbit type such as
+// <_,1,2>: a relabeling of the parameter orbit type <o> carried by the hook
+// (<0,1,2> maps 0 to "removed", 1 to 1, 2 to 2). Its arcs are explicit
+// links between copies of the same dart. The translation is the one of 002
+// Sec. 10.1: an explicit i-arc becomes an (ε,i)-arc, and position k of a
+// node label, o_k relabeled to j, becomes an (o_k, j)-loop on the node. So
+// one checker and one application engine serve both notations.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/conjugate_words.hpp"
+#include "core/graph.hpp"
+#include "core/model.hpp"
+
+namespace dartcheck {
+
+/// A generalized orbit type: one entry per position, nullopt for the
+/// removing symbol '_'.
+using OrbitType = std::vector<std::optional<Dim>>;
+
+/// Parses "<0,_,2>" (also with ⟨ ⟩). Throws std::invalid_argument naming
+/// the byte position of the problem, and when a dimension repeats (a
+/// relabeling function is injective, 000 Def. 4.1).
+OrbitType parse_orbit_type(std::string_view text);
+std::string orbit_type_str(const OrbitType& t);
+
+/// Adds to `g` (whose arc words are `words`, one per arc) the implicit arcs
+/// of node v labeled `label` under the parameter orbit type `parameter`: an
+/// (o_k, label_k)-loop for each position k whose label is not '_'. Throws
+/// std::invalid_argument if the lengths differ (000 Def. 4.2's size
+/// condition), the parameter has a '_', or a dimension is not in the model.
+void add_implicit_arcs(TopoGraph& g, std::vector<ConjWord>& words, NodeId v, const OrbitType& parameter, const OrbitType& label,
+                       const Model& model);
+
+}  // namespace dartcheck
