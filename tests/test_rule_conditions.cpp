@@ -126,3 +126,81 @@ TEST(Example24, QuadSubdivisionOmapScheme) {
   EXPECT_FALSE(v.holds);
   EXPECT_TRUE(mentions(v, "added arc c -(1,2)-> c has 0 reverse arcs c -(~1,2)-> c"));
 }
+
+// ---- Rule schemes, 002 Sec. 7-9 (Examples 16-22) ---------------------------
+
+namespace {
+const CatalogRule& scheme(const std::string& name) {
+  static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
+  const CatalogRule* r = c.find_rule(name);
+  if (!r) throw std::runtime_error("no rule " + name);
+  return *r;
+}
+}  // namespace
+
+// Example 16: the scheme of Fig. 21 satisfies I_S({1,2}): y (interface) has
+// a 1-loop in L and a 1-arc each way in R; the added x has a 2-loop and a
+// 1-arc each way. Without y -(ε,1)- x, I(1) fails at both.
+TEST(Example16, Figure21SatisfiesIncidentArcs) {
+  const auto& s = scheme("fig21-scheme");
+  EXPECT_TRUE(check_incident_arcs(s.rule, 1, s.words).holds);
+  EXPECT_TRUE(check_incident_arcs(s.rule, 2, s.words).holds);
+  const auto& broken = scheme("fig21-scheme/missing-1");
+  EXPECT_FALSE(check_incident_arcs(broken.rule, 1, broken.words).holds);
+}
+
+// Example 18: Fig. 21 satisfies O_S(1): the two 1-arcs of R read ε, which
+// is its own conjugate. The (21,2)-loop of x is a loop, its own reverse in
+// the core, and conj(21) = 12 ≠ 21: O_S(2) fails (the paper claims only
+// O_S(1)).
+TEST(Example18, Figure21NonOrientation) {
+  const auto& s = scheme("fig21-scheme");
+  EXPECT_TRUE(check_non_orientation(s.rule, 1, s.words).holds);
+  const auto v2 = check_non_orientation(s.rule, 2, s.words);
+  EXPECT_FALSE(v2.holds);
+  EXPECT_TRUE(mentions(v2, "x -(21,2)-> x")) << "the witness is the 2-loop";
+  // The core alone (every word ε) satisfies O(2).
+  EXPECT_TRUE(check_non_orientation(s.rule, 2).holds);
+}
+
+// Example 20: Fig. 26b and 26d share a core that satisfies C(1,2); in 26b
+// the path abc reads 1 in L and aec reads 1 1 in R, not congruent.
+TEST(Example20, Figure26bPathsDoNotCohere) {
+  const auto& d = scheme("fig26d-scheme");
+  const auto& b = scheme("fig26d-scheme/fig26b");
+  EXPECT_TRUE(check_cycle(d.rule, 1, 2).holds) << "the core of Fig. 26a";
+  EXPECT_TRUE(check_cycle(b.rule, 1, 2).holds) << "26b has the same core";
+  const auto v = check_cycle(b.rule, 1, 2, b.words);
+  EXPECT_FALSE(v.holds);
+  bool found = false;
+  for (const auto& w : v.witnesses)
+    if (w.subcondition == 1 && w.words == std::vector<std::string>{"1", "11"}) found = true;
+  EXPECT_TRUE(found) << "sub-condition 1 with the W-labels 1 (abc) and 11 (aec)";
+}
+
+// Example 21: in Fig. 26d the path aec reads 1 1 1̄ ->* 1, congruent to
+// abc's 1; def and dbf both read 1. C_S(1,2) holds.
+TEST(Example21, Figure26dPathsCohere) {
+  const auto& d = scheme("fig26d-scheme");
+  ConjugateRewriting r(d.rule.model());
+  EXPECT_TRUE(r.congruent(parse_conj_word("11~1", d.rule.model()), parse_conj_word("1", d.rule.model())));
+  EXPECT_TRUE(check_cycle(d.rule, 1, 2, d.words).holds);
+  EXPECT_TRUE(check_rule(d.rule, d.words).consistent());
+}
+
+// Example 22: Fig. 28 satisfies C_S(1,2): b's 1212-cycles read 21212121
+// (L) and 2121 (R), both ->* ε under R_{∅,{(1,2)}}; the paths cad and ced
+// both read 21. Reading ced as 12 breaks it: 21 and 12 are not congruent
+// when 1 and 2 are oriented.
+TEST(Example22, Figure28SatisfiesTheCycleCondition) {
+  const auto& s = scheme("fig28-scheme");
+  ConjugateRewriting r(s.rule.model());
+  EXPECT_TRUE(r.reduces_to_empty(parse_conj_word("21212121", s.rule.model())));
+  EXPECT_TRUE(r.reduces_to_empty(parse_conj_word("2121", s.rule.model())));
+  EXPECT_FALSE(r.congruent(parse_conj_word("21", s.rule.model()), parse_conj_word("12", s.rule.model())));
+  EXPECT_TRUE(check_rule(s.rule, s.words).consistent());
+  const auto& broken = scheme("fig28-scheme/swapped-word");
+  const auto v = check_cycle(broken.rule, 1, 2, broken.words);
+  EXPECT_FALSE(v.holds);
+  EXPECT_TRUE(check_cycle(broken.rule, 1, 2).holds) << "only the words differ";
+}
