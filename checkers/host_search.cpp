@@ -11,7 +11,7 @@ namespace dartcheck {
 namespace {
 
 struct Search {
-  const Rule& rule;
+  const Rule* rule;  // null: only visit the maps
   const Model& model;
   const std::function<bool(const Violation&)>& relevant;
   std::size_t budget;
@@ -20,6 +20,7 @@ struct Search {
   std::vector<std::vector<bool>> used;        // targets taken, per dimension index
   HostSearch out;
   bool stop = false;
+  std::function<bool(const std::vector<std::vector<NodeId>>&)> visit;
 
   // Partial checks as soon as the permutations they read are complete.
   bool consistent_so_far(std::size_t k) const {
@@ -46,7 +47,11 @@ struct Search {
       stop = true;
       return;
     }
-    const TopoGraph& L = rule.left();
+    if (visit) {
+      stop = !visit(sigma);
+      return;
+    }
+    const TopoGraph& L = rule->left();
     TopoGraph G;
     for (NodeId v = 0; v < n; ++v) G.add_node(v < L.node_count() ? L.name(v) : fmt::format("x{}", v));
     for (std::size_t k = 0; k < model.dims.size(); ++k)
@@ -54,10 +59,10 @@ struct Search {
     GraphMatch m{std::vector<NodeId>(L.node_count()), std::vector<ArcId>(L.arc_count())};
     std::iota(m.node.begin(), m.node.end(), 0);
     for (ArcId e = 0; e < L.arc_count(); ++e) m.arc[e] = static_cast<ArcId>(index(L.arc(e).label) * n + L.arc(e).source);
-    if (!satisfies_dangling(rule, G, m)) return;
+    if (!satisfies_dangling(*rule, G, m)) return;
     out.matched = true;
     ++out.derivations;
-    TopoGraph H = derive(rule, G, m);
+    TopoGraph H = derive(*rule, G, m);
     auto report = check_graph(H, model);
     std::vector<Violation> bad;
     for (const auto& v : report.violations)
@@ -112,7 +117,7 @@ struct Search {
 
 HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra,
                         const std::function<bool(const Violation&)>& relevant, std::size_t budget) {
-  Search s{rule, host_model, relevant, budget, 0, {}, {}, {}, false};
+  Search s{&rule, host_model, relevant, budget, 0, {}, {}, {}, false, {}};
   const TopoGraph& L = rule.left();
   const std::size_t nl = L.node_count();
   for (std::size_t n = nl; n <= nl + extra && !s.stop; ++n) {
@@ -140,6 +145,15 @@ HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t e
     s.assign(0, 0);
   }
   return std::move(s.out);
+}
+
+void for_each_small_map(const Model& model, std::size_t n, const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
+                        std::size_t budget) {
+  static const std::function<bool(const Violation&)> all;
+  Search s{nullptr, model, all, budget, n, {}, {}, {}, false, visit};
+  s.sigma.assign(model.dims.size(), std::vector<NodeId>(n, no_node));
+  s.used.assign(model.dims.size(), std::vector<bool>(n, false));
+  s.assign(0, 0);
 }
 
 }  // namespace dartcheck

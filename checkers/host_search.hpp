@@ -32,4 +32,11 @@ struct HostSearch {
 HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra,
                         const std::function<bool(const Violation&)>& relevant = {}, std::size_t budget = 2'000'000);
 
+/// Calls `visit` with every map of `model` on exactly `n` darts (the same
+/// class as search_hosts: one permutation per dimension, sigma[k][v] for
+/// model.dims[k], satisfying O, C and loop-freeness), until it returns
+/// false or `budget` maps were visited.
+void for_each_small_map(const Model& model, std::size_t n, const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
+                        std::size_t budget = 2'000'000);
+
 }  // namespace dartcheck

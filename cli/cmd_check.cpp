@@ -12,6 +12,8 @@
 #include "checkers/host_search.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "cli/commands.hpp"
+#include "cli/resolve.hpp"
+#include "cli/scheme_confirm.hpp"
 #include "core/catalog.hpp"
 #include "core/input_error.hpp"
 
@@ -22,7 +24,9 @@ struct Checked {
   const CatalogRule* entry;
   RuleVerdict verdict;
   std::vector<std::string> failures;
-  std::optional<HostSearch> search;  // failing rules only
+  std::optional<HostSearch> search;  // failing DPO rules only
+  std::optional<SchemeSearch> scheme_search;  // every scheme
+  bool unsound = false;  // judged consistent, yet broke a map
   double millis = 0;
   bool matches_record = true;
 };
@@ -68,6 +72,10 @@ std::string cell(const RuleVerdict& v, RuleCondition kind) {
 }
 
 std::string model_level(const Checked& c) {
+  if (c.scheme_search) {
+    const auto text = describe(*c.scheme_search, c.entry->rule.model().name);
+    return c.unsound ? "SOUNDNESS BUG: judged consistent, yet " + text : text;
+  }
   if (!c.search) return "";
   const auto& s = *c.search;
   if (s.host) {
@@ -90,10 +98,16 @@ int check(const CheckOptions& o) {
   if (!o.rule.empty() && !catalog.find_rule(o.rule))
     throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", o.rule, o.catalog));
 
+  // The catalog's maps, built on first use.
+  std::vector<std::optional<Map>> maps(catalog.maps.size());
+  auto built_map = [&](std::size_t k) -> const Map& {
+    if (!maps[k]) maps[k] = build_source(catalog.maps[k]);
+    return *maps[k];
+  };
   std::vector<Checked> rows;
   for (const auto& entry : catalog.rules) {
     if (!o.rule.empty() && entry.rule.name() != o.rule) continue;
-    Checked c{&entry, {}, {}, {}, 0, true};
+    Checked c{&entry, {}, {}, {}, {}, false, 0, true};
     const auto t0 = std::chrono::steady_clock::now();
     c.verdict = check_rule(entry.rule, entry.words);
     c.millis = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -114,7 +128,20 @@ int check(const CheckOptions& o) {
     } else {
       c.matches_record = c.failures.empty();
     }
-    if (!c.failures.empty() && o.confirm_darts > 0 && !entry.words.scheme) c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
+    if (o.confirm_darts > 0 && entry.words.scheme) {
+      // Schemes, consistent or not, run on the catalog's maps of their
+      // model and on random valid maps: a failure is confirmed or
+      // reported as not found; a consistent scheme that breaks a map is a
+      // soundness bug of the checker.
+      std::vector<Map> extra;
+      for (std::size_t k = 0; k < catalog.maps.size(); ++k)
+        if (catalog.maps[k].model == entry.rule.model()) extra.push_back(built_map(k));
+      c.scheme_search = search_scheme_hosts(entry, extra, 64);
+      c.unsound = c.failures.empty() && c.scheme_search->host;
+      if (c.unsound) c.matches_record = false;
+    } else if (!c.failures.empty() && o.confirm_darts > 0) {
+      c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
+    }
     rows.push_back(std::move(c));
   }
   const auto mismatches = std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.matches_record; });
@@ -161,7 +188,7 @@ int check(const CheckOptions& o) {
     fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {:>7.2f}  {}{}\n", c.entry->rule.name(), width, c.entry->rule.model().name,
                cell(v, RuleCondition::incident_arcs), cell(v, RuleCondition::dangling), cell(v, RuleCondition::non_orientation),
                cell(v, RuleCondition::cycle), c.millis, verdict, record);
-    if (c.search) fmt::print("{:<{}}  {}\n", "", width, model_level(c));
+    if (c.search || c.scheme_search) fmt::print("{:<{}}  {}\n", "", width, model_level(c));
     if (o.explain && !c.failures.empty()) {
       for (const auto& cond : v.conditions) {
         if (cond.holds) continue;
@@ -169,6 +196,9 @@ int check(const CheckOptions& o) {
           fmt::print("{:<{}}    {}{}: {}\n", "", width, cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
                      w.text);
       }
+      if (c.scheme_search && c.scheme_search->host)
+        fmt::print("{:<{}}    host: the {}-dart map above, hook dart {} (`dartcheck apply` reproduces it)\n", "", width,
+                   c.scheme_search->host->size(), c.scheme_search->hook);
       if (c.search && c.search->host)
         fmt::print("{:<{}}    host G: {}\n{:<{}}    result H: {}\n", "", width, arcs_text(*c.search->host), "", width,
                    arcs_text(*c.search->result));
