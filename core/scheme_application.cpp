@@ -34,24 +34,37 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
       for (const ConjWord& x : {w, rw.conjugate(w)})
         if (!x.empty() && std::find(gens.begin(), gens.end(), x) == gens.end()) gens.push_back(x);
 
-  // P_v by BFS; index[d] is d's position in P_v.
+  // P_v by BFS; index[d] is d's position in P_v, and shift[k][p] the
+  // position of p·gens[k], recorded as the BFS follows it (so every p·w
+  // below is a table lookup, not a walk).
   constexpr std::uint32_t none = 0xffffffffU;
   std::vector<std::uint32_t> index(g.size(), none);
   std::vector<Dart> pattern{v};
+  std::vector<std::vector<std::uint32_t>> shift(gens.size());
   index[v] = 0;
   for (std::size_t k = 0; k < pattern.size(); ++k)
-    for (const auto& w : gens) {
-      const Dart t = follow(g, pattern[k], w);
+    for (std::size_t w = 0; w < gens.size(); ++w) {
+      const Dart t = follow(g, pattern[k], gens[w]);
       if (t == no_dart)
-        return refuse(Refusal::not_combinatorial, fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], w.str()));
+        return refuse(Refusal::not_combinatorial, fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], gens[w].str()));
       if (index[t] == none) {
         index[t] = static_cast<std::uint32_t>(pattern.size());
         pattern.push_back(t);
       }
+      shift[w].push_back(index[t]);
     }
   const std::size_t np = pattern.size();
-  // p·w for every pattern node and arc word, precomputed once per arc.
-  auto step = [&](std::size_t p, const ConjWord& w) { return index[follow(g, pattern[p], w)]; };
+  // The generator of a word (-1 for ε, which does not move).
+  auto gen_of = [&](const ConjWord& w) {
+    return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
+  };
+  auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
+  std::vector<int> left_fwd(L.arc_count()), left_bwd(L.arc_count()), right_fwd(R.arc_count());
+  for (ArcId e = 0; e < L.arc_count(); ++e) {
+    left_fwd[e] = gen_of(word(words.left, e));
+    left_bwd[e] = gen_of(rw.conjugate(word(words.left, e)));
+  }
+  for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd[e] = gen_of(word(words.right, e));
 
   // The match: m[x][p] is the image of product node (p, x), propagated from
   // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
@@ -67,11 +80,11 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
       NodeId y;
       Dart there;
       if (a.source == x) {
-        q = step(p, word(words.left, e));
+        q = step(p, left_fwd[e]);
         y = a.target;
         there = g.link(a.label, here);
       } else if (a.target == x) {
-        q = step(p, rw.conjugate(word(words.left, e)));
+        q = step(p, left_bwd[e]);
         y = a.source;
         there = g.inverse_link(a.label, here);
       } else {
@@ -141,14 +154,6 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
                                                               R.name(a.source), m[x][p], a.label));
   }
 
-  // p·w for the added arcs, read on G before it changes.
-  std::vector<std::vector<std::uint32_t>> shifted(R.arc_count());
-  for (ArcId e = 0; e < R.arc_count(); ++e) {
-    if (core.preserved_right_arc(e)) continue;
-    shifted[e].resize(np);
-    for (std::size_t p = 0; p < np; ++p) shifted[e][p] = step(p, word(words.right, e));
-  }
-
   // Rewrite: delete the instances of L \ K, place R's nodes, add R \ K.
   SchemeDerivation out{np, np * L.node_count(), 0, {}};
   for (ArcId e = 0; e < L.arc_count(); ++e)
@@ -175,7 +180,8 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   for (ArcId e = 0; e < R.arc_count(); ++e) {
     if (core.preserved_right_arc(e)) continue;
     const auto& a = R.arc(e);
-    for (std::size_t p = 0; p < np; ++p) g.set_link(a.label, c[a.source][p], c[a.target][shifted[e][p]]);
+    // shift was read on G before the rewrite began.
+    for (std::size_t p = 0; p < np; ++p) g.set_link(a.label, c[a.source][p], c[a.target][step(p, right_fwd[e])]);
   }
   holes.erase(holes.begin(), holes.begin() + static_cast<std::ptrdiff_t>(reuse));
   out.moved = compact(g, std::move(holes));

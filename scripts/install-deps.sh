@@ -10,7 +10,7 @@ packages=(
   libgraphviz-dev graphviz
   libbenchmark-dev
   # Oracles, peers and real data for tests and benchmarks only.
-  libcgal-dev libcgal-demo geomview assimp-testmodels
+  libcgal-dev libcgal-demo geomview assimp-testmodels libopenmesh-dev
 )
 
 missing=()

@@ -1,0 +1,241 @@
+// Quad subdivision of a ~100,000-dart closed quad surface (002 Sec. 3.4,
+// Example 25: 100,680 darts become 402,720), dartcheck's rule schemes
+// against what a user would pick instead, on the same OFF input in one
+// program:
+//   - dartcheck: the seed catalog's quad-subdivision-gmap and -omap schemes
+//     (apply_scheme at dart 0), topology only;
+//   - CGAL: Linear_cell_complex_for_combinatorial_map<2,3>, the topological
+//     part of the libcgal-demo's subdivide_lcc_pqq (insert_barycenter_in_cell
+//     <1> on every edge, insert_barycenter_in_cell<2> on every face, then
+//     remove_cell<1> on the spokes to the old vertices); the barycenters'
+//     points come with it, the smoothing passes are left out;
+//   - OpenMesh: Subdivider::Uniform::CatmullClarkT on a PolyMesh, which
+//     cannot be split into topology and geometry (it moves every point).
+// Each peer runs in its own child process (fork), so its peak resident
+// memory is its own: "peak MiB" is the growth of the peak RSS while
+// subdividing once, over the RSS with the input loaded. Times are medians of
+// `--runs` subdivisions of a fresh copy of the input (copy not timed).
+//
+//   build/bench/bench_quad_subdivision [--runs N] [--grid RxC]
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CGAL/Linear_cell_complex_constructors.h>
+#include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+
+#include "checkers/map_validity.hpp"
+#include "core/catalog.hpp"
+#include "core/orbit.hpp"
+#include "core/scheme_application.hpp"
+#include "generators/mesh_map.hpp"
+
+namespace {
+
+using LCC = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3>;
+using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+
+// A closed quad torus of r x c faces: V = rc, E = 2rc, F = rc; 8rc darts in
+// a 2-G-map, 4rc in a 2-O-map.
+void write_torus_off(const std::string& path, int r, int c) {
+  std::ofstream out(path);
+  out << "OFF\n" << r * c << " " << r * c << " 0\n";
+  const double pi = 3.14159265358979;
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < c; ++j) {
+      const double u = 2 * pi * i / r, v = 2 * pi * j / c;
+      out << (3 + std::cos(v)) * std::cos(u) << " " << (3 + std::cos(v)) * std::sin(u) << " " << std::sin(v) << "\n";
+    }
+  auto id = [&](int i, int j) { return ((i + r) % r) * c + (j + c) % c; };
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < c; ++j) out << "4 " << id(i, j) << " " << id(i + 1, j) << " " << id(i + 1, j + 1) << " " << id(i, j + 1) << "\n";
+}
+
+long rss_kib() {
+  long pages = 0, resident = 0;
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (f) {
+    if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+    std::fclose(f);
+  }
+  return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+long peak_kib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
+struct Result {
+  double median_ms = 0;
+  double peak_mib = 0;
+  std::size_t out_elements = 0;  // darts (dartcheck, CGAL) or halfedges (OpenMesh)
+  bool ok = false;
+};
+
+// Runs `subdivide` (which copies its input untimed and returns the
+// subdivision time and the output size) once for memory, then `runs` times.
+template <class F>
+Result measure(int runs, F subdivide) {
+  Result r;
+  const long base = rss_kib();
+  double ms = 0;
+  r.ok = subdivide(ms, r.out_elements);
+  r.peak_mib = static_cast<double>(std::max(0L, peak_kib() - base)) / 1024.0;
+  std::vector<double> times;
+  for (int k = 0; k < runs; ++k) {
+    std::size_t n = 0;
+    subdivide(ms, n);
+    times.push_back(ms);
+  }
+  std::sort(times.begin(), times.end());
+  r.median_ms = times[times.size() / 2];
+  return r;
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Result run_dartcheck(const std::string& off, const dartcheck::Model& model, const char* scheme, int runs) {
+  using namespace dartcheck;
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
+  const CatalogRule& s = *catalog.find_rule(scheme);
+  const Map input = load_mesh(model, off);
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    Map g = input;
+    const Dart hook = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto r = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+    ms = since(t0);
+    out = g.size();
+    return r.ok() && check_map(g).valid();
+  });
+}
+
+// The topological part of CGAL's demo subdivide_lcc_pqq.
+void cgal_pqq_topology(LCC& m) {
+  LCC::size_type old = m.get_new_mark();
+  LCC::size_type treated = m.get_new_mark();
+  m.negate_mark(old);
+  m.negate_mark(treated);
+  for (auto it = m.darts().begin(); m.number_of_marked_darts(treated) > 0; ++it)
+    if (m.is_marked(it, treated)) {
+      CGAL::unmark_cell<LCC, 1>(m, it, treated);
+      m.insert_barycenter_in_cell<1>(it);
+    }
+  std::vector<LCC::Dart_handle> remove;
+  m.negate_mark(treated);
+  for (auto it = m.darts().begin(); m.number_of_marked_darts(treated) > 0; ++it)
+    if (m.is_marked(it, treated)) {
+      CGAL::unmark_cell<LCC, 2>(m, it, treated);
+      LCC::Dart_handle dc = m.insert_barycenter_in_cell<2>(it);
+      for (auto it2 = m.one_dart_per_incident_cell<1, 0>(dc).begin(); it2 != m.one_dart_per_incident_cell<1, 0>(dc).end(); ++it2)
+        if (m.is_marked(m.beta(it2, 1), old)) remove.push_back(it2);
+      for (auto d : remove) m.remove_cell<1>(d);
+      remove.clear();
+    }
+  m.negate_mark(treated);
+  m.free_mark(treated);
+  m.unmark_all(old);
+  m.free_mark(old);
+}
+
+Result run_cgal(const std::string& off, int runs) {
+  LCC input;
+  std::ifstream in(off);
+  CGAL::load_off(input, in);
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    LCC m(input);
+    const auto t0 = std::chrono::steady_clock::now();
+    cgal_pqq_topology(m);
+    ms = since(t0);
+    out = m.number_of_darts();
+    return m.is_valid();
+  });
+}
+
+Result run_openmesh(const std::string& off, int runs) {
+  PolyMesh input;
+  if (!OpenMesh::IO::read_mesh(input, off)) return {};
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    PolyMesh m(input);
+    OpenMesh::Subdivider::Uniform::CatmullClarkT<PolyMesh> cc;
+    const auto t0 = std::chrono::steady_clock::now();
+    cc.attach(m);
+    cc(1);
+    cc.detach();
+    ms = since(t0);
+    out = m.n_halfedges();
+    return m.n_faces() == 4 * input.n_faces();
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int runs = 5, r = 148, c = 85;  // 148 x 85 quads: 100,640 G-map darts
+  for (int k = 1; k < argc; ++k) {
+    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc) std::sscanf(argv[++k], "%dx%d", &r, &c);
+    else {
+      std::fprintf(stderr, "usage: %s [--runs N] [--grid RxC]\n", argv[0]);
+      return 2;
+    }
+  }
+  const std::string off = "/tmp/dartcheck-bench-torus-" + std::to_string(getpid()) + ".off";
+  write_torus_off(off, r, c);
+  std::printf("input: quad torus %dx%d: V=%d E=%d F=%d, %d G-map darts, %d O-map darts; median of %d runs\n\n", r, c, r * c, 2 * r * c,
+              r * c, 8 * r * c, 4 * r * c, runs);
+
+  struct Peer {
+    const char* name;
+    const char* unit;
+    std::function<Result()> run;
+  };
+  const std::vector<Peer> peers{
+      {"dartcheck 2-G-map scheme", "darts", [&] { return run_dartcheck(off, dartcheck::Model::gmap(2), "quad-subdivision-gmap", runs); }},
+      {"dartcheck 2-O-map scheme", "darts", [&] { return run_dartcheck(off, dartcheck::Model::omap(2), "quad-subdivision-omap", runs); }},
+      {"CGAL LCC pqq topology", "darts", [&] { return run_cgal(off, runs); }},
+      {"OpenMesh Catmull-Clark", "halfedges", [&] { return run_openmesh(off, runs); }},
+  };
+  std::vector<Result> results;
+  for (const auto& p : peers) {
+    int pipefd[2];
+    if (pipe(pipefd) != 0) return 1;
+    const pid_t pid = fork();
+    if (pid == 0) {
+      close(pipefd[0]);
+      const Result res = p.run();
+      if (write(pipefd[1], &res, sizeof res) != sizeof res) _exit(1);
+      _exit(0);
+    }
+    close(pipefd[1]);
+    Result res;
+    if (read(pipefd[0], &res, sizeof res) != sizeof res) res = {};
+    close(pipefd[0]);
+    waitpid(pid, nullptr, 0);
+    results.push_back(res);
+  }
+  std::remove(off.c_str());
+
+  std::printf("| peer | output | median ms | peak MiB | ms / dartcheck 2-G | MiB / dartcheck 2-G | result valid |\n|---|---|---|---|---|---|---|\n");
+  for (std::size_t k = 0; k < peers.size(); ++k) {
+    const auto& x = results[k];
+    std::printf("| %s | %zu %s | %.1f | %.1f | %.2fx | %.2fx | %s |\n", peers[k].name, x.out_elements, peers[k].unit, x.median_ms, x.peak_mib,
+                x.median_ms / results[0].median_ms, results[0].peak_mib > 0 ? x.peak_mib / results[0].peak_mib : 0.0, x.ok ? "yes" : "NO");
+  }
+  return std::all_of(results.begin(), results.end(), [](const Result& x) { return x.ok; }) ? 0 : 1;
+}
