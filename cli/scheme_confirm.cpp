@@ -24,15 +24,7 @@ bool generated(const Model& m) {
 // first counterexample found is a small one.
 Map random_host(const Model& model, std::size_t k) {
   std::mt19937 rng(static_cast<std::uint32_t>(1000 + k));
-  auto pick = [&](std::uint32_t lo, std::uint32_t hi) { return std::uniform_int_distribution<std::uint32_t>(lo, hi)(rng); };
-  MapRecipe recipe;
-  const auto faces = static_cast<std::uint32_t>(1 + k / 8);
-  for (std::uint32_t f = 0; f < faces; ++f) recipe.face_sizes.push_back(static_cast<std::uint8_t>(pick(1, 6)));
-  const std::uint32_t sewings = pick(0, 2 * faces);
-  const auto top = static_cast<std::uint32_t>(model.dimension());
-  for (std::uint32_t s = 0; s < sewings; ++s)
-    recipe.sewings.push_back({static_cast<std::uint8_t>(pick(2, std::max(2u, top))), pick(0, 999), pick(0, 999), pick(0, 999)});
-  return build_random_map(model, recipe);
+  return build_random_map(model, draw_recipe(rng, static_cast<std::uint32_t>(1 + k / 8), model.dimension()));
 }
 
 // Applies the scheme at every dart of g; records the first broken result.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include <rapidcheck.h>
@@ -37,6 +38,11 @@ struct MapRecipe {
 ///    to its twin by d_i <-> e_{(r-i) mod k}, which makes every 1313-path a
 ///    cycle; 2-sewing as in 2-O-maps.
 Map build_random_map(const Model& model, const MapRecipe& recipe);
+
+/// A recipe drawn from a seeded engine, outside RapidCheck (reproducible
+/// host sets for `check` and the scheme theorems): `faces` faces of 1-6
+/// edges and up to 2 * faces sewings in dimensions 2..top_dim.
+MapRecipe draw_recipe(std::mt19937& rng, std::uint32_t faces, int top_dim);
 
 /// Recipes with `min_faces`..`max_faces` faces and up to twice as many
 /// sewings.

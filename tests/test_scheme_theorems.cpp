@@ -102,14 +102,7 @@ void mutate(SchemeSpec& s, const Model& model, const std::vector<ConjWord>& pool
 
 // A random valid map of the model from a recipe drawn with `rng`.
 Map random_host(const Model& model, std::mt19937& rng) {
-  auto pick = [&](std::uint32_t lo, std::uint32_t hi) { return std::uniform_int_distribution<std::uint32_t>(lo, hi)(rng); };
-  MapRecipe recipe;
-  const std::uint32_t faces = pick(2, 24);
-  for (std::uint32_t f = 0; f < faces; ++f) recipe.face_sizes.push_back(static_cast<std::uint8_t>(pick(1, 6)));
-  const std::uint32_t sewings = pick(0, 2 * faces);
-  for (std::uint32_t k = 0; k < sewings; ++k)
-    recipe.sewings.push_back({static_cast<std::uint8_t>(model.dims.back() == 3 ? pick(2, 3) : 2), pick(0, 1000), pick(0, 1000), pick(0, 1000)});
-  return build_random_map(model, recipe);
+  return build_random_map(model, draw_recipe(rng, std::uniform_int_distribution<std::uint32_t>(2, 24)(rng), model.dimension()));
 }
 
 struct Tally {
