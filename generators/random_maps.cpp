@@ -1,5 +1,6 @@
 #include "generators/random_maps.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace dartcheck {
