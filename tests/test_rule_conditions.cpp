@@ -8,12 +8,14 @@
 using namespace dartcheck;
 
 namespace {
-const Rule& rule(const std::string& name) {
+// A catalog entry (rule and, for a scheme, its words).
+const CatalogRule& scheme(const std::string& name) {
   static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
   const CatalogRule* r = c.find_rule(name);
   if (!r) throw std::runtime_error("no rule " + name);
-  return r->rule;
+  return *r;
 }
+const Rule& rule(const std::string& name) { return scheme(name).rule; }
 bool mentions(const ConditionVerdict& v, const std::string& text) {
   for (const auto& w : v.witnesses)
     if (w.text.find(text) != std::string::npos) return true;
@@ -128,15 +130,6 @@ TEST(Example24, QuadSubdivisionOmapScheme) {
 }
 
 // ---- Rule schemes, 002 Sec. 7-9 (Examples 16-22) ---------------------------
-
-namespace {
-const CatalogRule& scheme(const std::string& name) {
-  static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
-  const CatalogRule* r = c.find_rule(name);
-  if (!r) throw std::runtime_error("no rule " + name);
-  return *r;
-}
-}  // namespace
 
 // Example 16: the scheme of Fig. 21 satisfies I_S({1,2}): y (interface) has
 // a 1-loop in L and a 1-arc each way in R; the added x has a 2-loop and a
