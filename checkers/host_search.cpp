@@ -115,45 +115,51 @@ struct Search {
 
 }  // namespace
 
+namespace {
+
+// L's arcs fix entries of the permutations (the identity match); false on a
+// clash, when no host of the class contains an injective image of L.
+bool fix_arcs(Search& s, const TopoGraph& L) {
+  for (const auto& a : L.arcs()) {
+    if (!s.model.contains(a.label)) return false;
+    const std::size_t k = s.index(a.label);
+    if (s.sigma[k][a.source] != no_node || s.used[k][a.target]) return false;
+    s.sigma[k][a.source] = a.target;
+    s.used[k][a.target] = true;
+  }
+  return true;
+}
+
+void reset(Search& s, std::size_t n) {
+  s.n = n;
+  s.sigma.assign(s.model.dims.size(), std::vector<NodeId>(n, no_node));
+  s.used.assign(s.model.dims.size(), std::vector<bool>(n, false));
+}
+
+}  // namespace
+
 HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra,
                         const std::function<bool(const Violation&)>& relevant, std::size_t budget) {
   Search s{&rule, host_model, relevant, budget, 0, {}, {}, {}, false, {}};
   const TopoGraph& L = rule.left();
   const std::size_t nl = L.node_count();
   for (std::size_t n = nl; n <= nl + extra && !s.stop; ++n) {
-    s.n = n;
+    reset(s, n);
     s.out.largest_host = n;
-    s.sigma.assign(host_model.dims.size(), std::vector<NodeId>(n, no_node));
-    s.used.assign(host_model.dims.size(), std::vector<bool>(n, false));
-    // L's arcs fix entries of the permutations; a clash means no host of
-    // this class contains an injective image of L.
-    bool clash = false;
-    for (const auto& a : L.arcs()) {
-      if (!host_model.contains(a.label)) {
-        clash = true;
-        break;
-      }
-      const std::size_t k = s.index(a.label);
-      if (s.sigma[k][a.source] != no_node || s.used[k][a.target]) {
-        clash = true;
-        break;
-      }
-      s.sigma[k][a.source] = a.target;
-      s.used[k][a.target] = true;
-    }
-    if (clash) break;
+    if (!fix_arcs(s, L)) break;
     s.assign(0, 0);
   }
   return std::move(s.out);
 }
 
-void for_each_small_map(const Model& model, std::size_t n, const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
-                        std::size_t budget) {
+std::size_t for_each_small_map(const Model& model, std::size_t n, const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
+                               std::size_t budget, const TopoGraph* containing) {
   static const std::function<bool(const Violation&)> all;
   Search s{nullptr, model, all, budget, n, {}, {}, {}, false, visit};
-  s.sigma.assign(model.dims.size(), std::vector<NodeId>(n, no_node));
-  s.used.assign(model.dims.size(), std::vector<bool>(n, false));
+  reset(s, n);
+  if (containing && (containing->node_count() > n || !fix_arcs(s, *containing))) return 0;
   s.assign(0, 0);
+  return std::min(s.out.hosts, budget);
 }
 
 }  // namespace dartcheck

@@ -35,8 +35,12 @@ HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t e
 /// Calls `visit` with every map of `model` on exactly `n` darts (the same
 /// class as search_hosts: one permutation per dimension, sigma[k][v] for
 /// model.dims[k], satisfying O, C and loop-freeness), until it returns
-/// false or `budget` maps were visited.
-void for_each_small_map(const Model& model, std::size_t n, const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
-                        std::size_t budget = 2'000'000);
+/// false or `budget` maps were visited. With `containing`, only the maps
+/// in which the identity on its nodes is an image of its arcs (its nodes
+/// are darts 0..|nodes|-1). Returns the number of maps visited; fewer than
+/// `budget` and no early stop means every such map was visited.
+std::size_t for_each_small_map(const Model& model, std::size_t n,
+                               const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
+                               std::size_t budget = 2'000'000, const TopoGraph* containing = nullptr);
 
 }  // namespace dartcheck

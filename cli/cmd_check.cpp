@@ -12,8 +12,9 @@
 #include "checkers/host_search.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "cli/commands.hpp"
+#include "cli/report_text.hpp"
 #include "cli/resolve.hpp"
-#include "cli/scheme_confirm.hpp"
+#include "cli/fuzz.hpp"
 #include "core/catalog.hpp"
 #include "core/input_error.hpp"
 
@@ -25,30 +26,11 @@ struct Checked {
   RuleVerdict verdict;
   std::vector<std::string> failures;
   std::optional<HostSearch> search;  // failing DPO rules only
-  std::optional<SchemeSearch> scheme_search;  // every scheme
+  std::optional<FuzzReport> scheme_search;  // every scheme
   bool unsound = false;  // judged consistent, yet broke a map
   double millis = 0;
   bool matches_record = true;
 };
-
-std::string json_escape(std::string_view s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '"': o += "\\\""; break;
-      case '\\': o += "\\\\"; break;
-      case '\n': o += "\\n"; break;
-      default: o += c;
-    }
-  }
-  return o;
-}
-
-std::string json_strings(const std::vector<std::string>& v) {
-  std::string o = "[";
-  for (std::size_t k = 0; k < v.size(); ++k) o += fmt::format("{}\"{}\"", k ? ", " : "", json_escape(v[k]));
-  return o + "]";
-}
 
 std::string arcs_text(const TopoGraph& g) {
   std::string s;
@@ -73,8 +55,16 @@ std::string cell(const RuleVerdict& v, RuleCondition kind) {
 
 std::string model_level(const Checked& c) {
   if (c.scheme_search) {
-    const auto text = describe(*c.scheme_search, c.entry->rule.model().name);
-    return c.unsound ? "SOUNDNESS BUG: judged consistent, yet " + text : text;
+    const auto& f = *c.scheme_search;
+    if (f.counterexample) {
+      const auto& cx = *f.counterexample;
+      return fmt::format("{}confirmed: applied at dart{} {} of a {}-dart {}, it breaks ({})", c.unsound ? "SOUNDNESS BUG: judged consistent, yet " : "",
+                         cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), c.entry->rule.model().name,
+                         fmt::join(cx.broken(), ", "));
+    }
+    if (f.applications == 0) return fmt::format("never applicable on {} {} maps of up to {} darts", f.hosts, c.entry->rule.model().name, f.largest_host);
+    return fmt::format("no model-level counterexample in {} applications on {} {} maps of up to {} darts", f.applications, f.hosts,
+                       c.entry->rule.model().name, f.largest_host);
   }
   if (!c.search) return "";
   const auto& s = *c.search;
@@ -129,15 +119,20 @@ int check(const CheckOptions& o) {
       c.matches_record = c.failures.empty();
     }
     if (o.confirm_darts > 0 && entry.words.scheme) {
-      // Schemes, consistent or not, run on the catalog's maps of their
-      // model and on random valid maps: a failure is confirmed or
-      // reported as not found; a consistent scheme that breaks a map is a
-      // soundness bug of the checker.
+      // Schemes, consistent or not, run on every small map of their
+      // model, the catalog's maps and random valid maps (the fuzzer with
+      // a small fixed budget): a failure is confirmed or reported as not
+      // found; a consistent scheme that breaks a map is a soundness bug
+      // of the checker.
       std::vector<Map> extra;
       for (std::size_t k = 0; k < catalog.maps.size(); ++k)
         if (catalog.maps[k].model == entry.rule.model()) extra.push_back(built_map(k));
-      c.scheme_search = search_scheme_hosts(entry, extra, 64);
-      c.unsound = c.failures.empty() && c.scheme_search->host;
+      FuzzOptions fo;
+      fo.runs = 2000;
+      fo.max_darts = 64;
+      fo.static_check = [&](const CatalogRule&) { return c.verdict; };
+      c.scheme_search = fuzz_rule(entry, extra, fo);
+      c.unsound = c.failures.empty() && c.scheme_search->counterexample;
       if (c.unsound) c.matches_record = false;
     } else if (!c.failures.empty() && o.confirm_darts > 0) {
       c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
@@ -196,9 +191,9 @@ int check(const CheckOptions& o) {
           fmt::print("{:<{}}    {}{}: {}\n", "", width, cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
                      w.text);
       }
-      if (c.scheme_search && c.scheme_search->host)
-        fmt::print("{:<{}}    host: the {}-dart map above, hook dart {} (`dartcheck apply` reproduces it)\n", "", width,
-                   c.scheme_search->host->size(), c.scheme_search->hook);
+      if (c.scheme_search && c.scheme_search->counterexample)
+        fmt::print("{:<{}}    host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)\n", "", width,
+                   c.scheme_search->counterexample->origin, c.entry->rule.name());
       if (c.search && c.search->host)
         fmt::print("{:<{}}    host G: {}\n{:<{}}    result H: {}\n", "", width, arcs_text(*c.search->host), "", width,
                    arcs_text(*c.search->result));

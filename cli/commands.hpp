@@ -1,7 +1,9 @@
 // The dartcheck subcommands. Each returns the process exit status:
-// 0 success, 1 a violation or a failed expectation, 2 bad input.
+// 0 success, 1 a violation or a failed expectation, 2 bad input, 3 a
+// soundness bug (a rule judged consistent broke a map).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,7 +12,7 @@
 
 namespace dartcheck::cli {
 
-enum Exit : int { ok = 0, violation = 1, bad_input = 2 };
+enum Exit : int { ok = 0, violation = 1, bad_input = 2, soundness_bug = 3 };
 
 struct ValidateOptions {
   std::string target;
@@ -47,5 +49,16 @@ struct WordsOptions {
 /// Exit 0 for normal forms or congruent words, 1 for words not shown
 /// congruent.
 int words(const WordsOptions& o);
+
+struct FuzzCommand {
+  std::string catalog, rule, time, out, format = "text";
+  std::optional<std::size_t> runs;
+  std::optional<std::uint64_t> seed;
+  std::size_t max_darts = 128;
+  std::vector<std::string> maps;
+};
+/// Exit 3 if a rule judged consistent broke a map, 0 otherwise (a
+/// confirmed or unconfirmed failure agrees with the static verdict).
+int fuzz(const FuzzCommand& c);
 
 }  // namespace dartcheck::cli

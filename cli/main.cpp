@@ -48,6 +48,18 @@ int main(int argc, char** argv) {
   w->add_option("word", words.word, "a word: digits are dimensions, ~d is the conjugate of d, ε the empty word")->required();
   w->add_option("word2", words.other, "a second word: test w <->* w2 instead");
 
+  cli::FuzzCommand fuzz;
+  auto* f = app.add_subcommand("fuzz", "Apply every rule at many matches on enumerated, given and random maps; set failures against the static verdict");
+  f->add_option("catalog", fuzz.catalog, "YAML catalog")->required();
+  f->add_option("--rule", fuzz.rule, "fuzz only this rule");
+  f->add_option("--time", fuzz.time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
+  f->add_option("--runs", fuzz.runs, "applications per rule (default 10000 without --time)");
+  f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)");
+  f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str();
+  f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
+  f->add_option("--out", fuzz.out, "write each counterexample here: host, match, result and a replay command");
+  f->add_option("--format", fuzz.format, "text or json")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -60,6 +72,7 @@ int main(int argc, char** argv) {
     if (*r) return cli::run(run);
     if (*w) return cli::words(words);
     if (*c) return cli::check(check);
+    if (*f) return cli::fuzz(fuzz);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;

@@ -44,4 +44,28 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& r, std
   if (shown < r.violations.size()) fmt::print(out, "  ... and {} more (use --limit 0 to list all)\n", r.violations.size() - shown);
 }
 
+std::string json_escape(std::string_view s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '"': o += "\\\""; break;
+      case '\\': o += "\\\\"; break;
+      case '\n': o += "\\n"; break;
+      case '\t': o += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20)
+          o += fmt::format("\\u{:04x}", static_cast<int>(c));
+        else
+          o += c;
+    }
+  }
+  return o;
+}
+
+std::string json_strings(const std::vector<std::string>& v) {
+  std::string o = "[";
+  for (std::size_t k = 0; k < v.size(); ++k) o += fmt::format("{}\"{}\"", k ? ", " : "", json_escape(v[k]));
+  return o + "]";
+}
+
 }  // namespace dartcheck::cli

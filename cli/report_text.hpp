@@ -3,6 +3,8 @@
 
 #include <cstdio>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "checkers/violation.hpp"
 #include "core/map.hpp"
@@ -15,5 +17,10 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& report
 
 /// "8 vertices, 12 edges, 6 faces"
 std::string cells_sentence(const Map& map);
+
+/// A JSON string body: quotes, backslashes and control characters escaped.
+std::string json_escape(std::string_view s);
+/// ["a", "b"]
+std::string json_strings(const std::vector<std::string>& v);
 
 }  // namespace dartcheck::cli

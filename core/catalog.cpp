@@ -78,12 +78,6 @@ std::optional<ArcText> parse_arc(const std::string& text) {
   return a;
 }
 
-std::vector<Dim> read_dims(const std::string& file, const YAML::Node& n, const char* what) {
-  yaml::expect_sequence(file, n, what);
-  std::vector<Dim> dims;
-  for (const auto& d : n) dims.push_back(static_cast<Dim>(yaml::as_int(file, d, what, 0, max_dimension)));
-  return dims;
-}
 
 }  // namespace
 
@@ -95,39 +89,6 @@ Model read_model(const std::string& file, const YAML::Node& node, const std::vec
   fail_at(file, node, fmt::format("unknown model '{}' (expected {}, or a model declared under 'models')", name, Model::known_names()));
 }
 
-static Model read_custom_model(const std::string& file, const std::string& name, const YAML::Node& n) {
-  yaml::expect_map(file, n, "model");
-  yaml::allow_keys(file, n, {"dims", "non_oriented", "exchangeable", "partial", "loop_free"});
-  Model m;
-  m.name = name;
-  m.dims = read_dims(file, yaml::require(file, n, "dims"), "dims");
-  std::sort(m.dims.begin(), m.dims.end());
-  if (m.dims.empty() || std::adjacent_find(m.dims.begin(), m.dims.end()) != m.dims.end())
-    fail_at(file, n["dims"], "dims: expected a non-empty list of distinct dimensions");
-  auto subset = [&](const char* key) {
-    DimSet s = 0;
-    if (auto v = n[key]) {
-      const auto dims = read_dims(file, v, key);
-      for (std::size_t k = 0; k < dims.size(); ++k) {
-        if (!m.contains(dims[k])) fail_at(file, v[k], fmt::format("{}: {} is not in dims", key, dims[k]));
-        s |= dim_bit(dims[k]);
-      }
-    }
-    return s;
-  };
-  m.non_oriented = subset("non_oriented");
-  m.partial = subset("partial");
-  if (auto e = n["exchangeable"]) {
-    yaml::expect_sequence(file, e, "exchangeable");
-    for (const auto& p : e) {
-      const auto pair = read_dims(file, p, "exchangeable pair");
-      if (pair.size() != 2 || !m.contains(pair[0]) || !m.contains(pair[1])) fail_at(file, p, "exchangeable: expected a pair [i, j] of dims");
-      m.exchangeable.emplace_back(pair[0], pair[1]);
-    }
-  }
-  if (auto l = n["loop_free"]) m.loop_free = l.as<bool>(false);
-  return m;
-}
 
 TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model,
                     std::vector<ConjWord>* words, bool* has_words, const OrbitType* jerboa) {
@@ -211,7 +172,7 @@ Example read_example(const std::string& file, const YAML::Node& n) {
   for (const auto& h : hooks) e.hooks.push_back(static_cast<Dart>(yaml::as_int(file, h, "hook dart", 0, (1LL << 31))));
   const auto expect = yaml::require(file, n, "expect");
   e.expect = yaml::as_string(file, expect, "expect");
-  static const std::vector<std::string> allowed{"valid", "invalid", "no-match", "not-injective", "dangling", "not-representable", "not-combinatorial", "bad-hooks"};
+  static const std::vector<std::string> allowed{"valid", "invalid", "no-match", "not-injective", "dangling", "not-representable", "not-combinatorial", "bad-hooks", "disconnected-instance"};
   if (std::find(allowed.begin(), allowed.end(), e.expect) == allowed.end())
     fail_at(file, expect, fmt::format("expect: '{}' is not one of {}", e.expect, fmt::join(allowed, ", ")));
   if (const auto cells = n["cells"]) {
@@ -349,7 +310,7 @@ Catalog read_catalog(const std::string& file) {
   std::vector<Model> custom;
   if (const auto models = root["models"]) {
     yaml::expect_map(file, models, "models");
-    for (const auto& kv : models) custom.push_back(read_custom_model(file, kv.first.Scalar(), kv.second));
+    for (const auto& kv : models) custom.push_back(yaml::custom_model(file, kv.first.Scalar(), kv.second));
   }
   std::optional<Model> default_model;
   if (root["model"]) default_model = read_model(file, root["model"], custom);

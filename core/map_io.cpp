@@ -66,6 +66,27 @@ void read_dimension(const std::string& file, const YAML::Node& spec, Map& m, Dim
   }
 }
 
+// A preset by name; a custom model inline, so the file reads back without
+// the catalog that declared it.
+void write_model(std::ostream& out, const Model& model) {
+  const auto preset = Model::by_name(model.name);
+  if (preset && *preset == model) {
+    out << "model: " << model.name << '\n';
+    return;
+  }
+  auto dims = [&](DimSet s) {
+    std::vector<Dim> v;
+    for (Dim i : model.dims)
+      if (has_dim(s, i)) v.push_back(i);
+    return fmt::format("[{}]", fmt::join(v, ", "));
+  };
+  out << "model: {name: " << model.name << ", dims: [" << fmt::format("{}", fmt::join(model.dims, ", ")) << "], non_oriented: "
+      << dims(model.non_oriented) << ", exchangeable: [";
+  for (std::size_t k = 0; k < model.exchangeable.size(); ++k)
+    out << (k ? ", " : "") << '[' << model.exchangeable[k].first << ", " << model.exchangeable[k].second << ']';
+  out << "], partial: " << dims(model.partial) << ", loop_free: " << (model.loop_free ? "true" : "false") << "}\n";
+}
+
 }  // namespace
 
 Map read_map_links(const std::string& file, const YAML::Node& node, const Model& model) {
@@ -102,6 +123,7 @@ Map read_map(const std::string& file, const YAML::Node& node) {
   return read_map_links(file, node, yaml::as_model(file, yaml::require(file, node, "model")));
 }
 
+
 void write_map(std::ostream& out, const Map& m) {
   auto row = [&](auto get) {
     out << '[';
@@ -115,7 +137,8 @@ void write_map(std::ostream& out, const Map& m) {
     }
     out << "]\n";
   };
-  out << "model: " << m.model().name << "\ndarts: " << m.size() << "\nlinks:\n";
+  write_model(out, m.model());
+  out << "darts: " << m.size() << "\nlinks:\n";
   for (Dim i : m.model().dims) {
     out << "  " << i << ": ";
     row([&](Dart d) { return m.link(i, d); });

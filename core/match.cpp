@@ -14,6 +14,7 @@ std::string_view refusal_name(Refusal r) {
     case Refusal::not_injective: return "not-injective";
     case Refusal::dangling: return "dangling";
     case Refusal::not_representable: return "not-representable";
+    case Refusal::disconnected: return "disconnected-instance";
   }
   return "?";
 }

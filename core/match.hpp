@@ -28,6 +28,7 @@ enum class Refusal {
   not_injective,      // two nodes or two arcs of L would share an image
   dangling,           // a deleted dart keeps an arc outside the match
   not_representable,  // H would give a dart two i-arcs (not a dense map)
+  disconnected,       // schemes: ι(L, P_v) is not connected, so hooks do not fix the match (002 Sec. 6.3)
 };
 
 std::string_view refusal_name(Refusal r);

@@ -18,12 +18,11 @@ const ConjWord& word(const std::vector<ConjWord>& ws, ArcId e) {
 
 Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts) {
   const TopoGraph &L = core.left(), &R = core.right();
-  if (core.hooks().size() != 1)
-    return refuse(Refusal::bad_hooks, "schemes whose L has several connected components are not supported (one hook per scheme)");
-  if (hook_darts.size() != 1 || hook_darts[0] >= g.size())
-    return refuse(Refusal::bad_hooks, fmt::format("the scheme needs one hook dart below {}", g.size()));
-  const Dart v = hook_darts[0];
-  const NodeId hook = core.hooks()[0];
+  if (hook_darts.size() != core.hooks().size())
+    return refuse(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
+                                                  core.hooks().size() == 1 ? "" : "s"));
+  for (Dart h : hook_darts)
+    if (h >= g.size()) return refuse(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
   const ConjugateRewriting rw(core.model());
 
   // W: the words of the scheme, each with its conjugate (P_v takes the
@@ -36,23 +35,39 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
 
   // P_v by BFS; index[d] is d's position in P_v, and shift[k][p] the
   // position of p·gens[k], recorded as the BFS follows it (so every p·w
-  // below is a table lookup, not a walk).
+  // below is a table lookup, not a walk). With several hooks (one per
+  // component of L, Sec. 6.3) every P_{v_k} is walked in the same order
+  // and must give the same tables: the pattern graphs are isomorphic, and
+  // patterns[k][p] is the image of pattern node p under that isomorphism.
   constexpr std::uint32_t none = 0xffffffffU;
   std::vector<std::uint32_t> index(g.size(), none);
-  std::vector<Dart> pattern{v};
   std::vector<std::vector<std::uint32_t>> shift(gens.size());
-  index[v] = 0;
-  for (std::size_t k = 0; k < pattern.size(); ++k)
-    for (std::size_t w = 0; w < gens.size(); ++w) {
-      const Dart t = follow(g, pattern[k], gens[w]);
-      if (t == no_dart)
-        return refuse(Refusal::not_combinatorial, fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], gens[w].str()));
-      if (index[t] == none) {
-        index[t] = static_cast<std::uint32_t>(pattern.size());
-        pattern.push_back(t);
+  std::vector<std::vector<Dart>> patterns(hook_darts.size());
+  for (std::size_t h = 0; h < hook_darts.size(); ++h) {
+    std::vector<Dart>& pattern = patterns[h];
+    pattern.push_back(hook_darts[h]);
+    index[hook_darts[h]] = 0;
+    for (std::size_t k = 0; k < pattern.size(); ++k)
+      for (std::size_t w = 0; w < gens.size(); ++w) {
+        const Dart t = follow(g, pattern[k], gens[w]);
+        if (t == no_dart)
+          return refuse(Refusal::not_combinatorial,
+                        fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], gens[w].str()));
+        if (index[t] == none) {
+          index[t] = static_cast<std::uint32_t>(pattern.size());
+          pattern.push_back(t);
+        }
+        if (h == 0) {
+          shift[w].push_back(index[t]);
+        } else if (shift[w][k] != index[t]) {
+          return refuse(Refusal::no_match, fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one "
+                                                       "pattern for every component of L)",
+                                                       hook_darts[0], hook_darts[h]));
+        }
       }
-      shift[w].push_back(index[t]);
-    }
+    for (Dart d : pattern) index[d] = none;
+  }
+  const std::vector<Dart>& pattern = patterns[0];
   const std::size_t np = pattern.size();
   // The generator of a word (-1 for ε, which does not move).
   auto gen_of = [&](const ConjWord& w) {
@@ -69,8 +84,13 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   // The match: m[x][p] is the image of product node (p, x), propagated from
   // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
   std::vector<std::vector<Dart>> m(L.node_count(), std::vector<Dart>(np, no_dart));
-  std::vector<std::pair<std::uint32_t, NodeId>> queue{{0, hook}};
-  m[hook][0] = v;
+  std::vector<std::pair<std::uint32_t, NodeId>> queue;
+  for (std::size_t h = 0; h < hook_darts.size(); ++h) {
+    const NodeId hook = core.hooks()[h];
+    if (m[hook][0] != no_dart) return refuse(Refusal::bad_hooks, "two hooks name one node of L");
+    m[hook][0] = hook_darts[h];
+    queue.emplace_back(0, hook);
+  }
   for (std::size_t k = 0; k < queue.size(); ++k) {
     const auto [p, x] = queue[k];
     const Dart here = m[x][p];
@@ -108,9 +128,9 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
     for (std::size_t p = 0; p < np; ++p) {
       const Dart d = m[x][p];
       if (d == no_dart)
-        return refuse(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hook: the words of R "
-                                                     "reach pattern darts that the arcs of L do not",
-                                                     pattern[p], L.name(x)));
+        return refuse(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) "
+                                                         "is not connected, so the hooks do not fix the match (002 Sec. 6.3)",
+                                                         pattern[p], L.name(x)));
       if (taken[d]) return refuse(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
       taken[d] = true;
     }

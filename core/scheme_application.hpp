@@ -21,11 +21,14 @@ struct SchemeDerivation {
   std::vector<std::pair<Dart, Dart>> moved;  // renumbered darts of H
 };
 
-/// Rewrites `g` at the hook dart. L must be connected (one hook). Refuses,
+/// Rewrites `g` at the hook darts, one per connected component of L (the
+/// order of core.hooks()). With several hooks the pattern graphs of the
+/// hook darts must be isomorphic, hook onto hook (002 Sec. 6.3); each
+/// component of L is then instantiated on its own hook's pattern. Refuses,
 /// leaving `g` unchanged, when a word has no path from a pattern node
 /// (not-combinatorial), when the instantiated L does not match (no-match,
-/// not-injective), breaks the dangling condition, or would give a dart
-/// two i-arcs (not-representable).
+/// not-injective, or pattern graphs that differ), breaks the dangling
+/// condition, or would give a dart two i-arcs (not-representable).
 Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts);
 
 }  // namespace dartcheck

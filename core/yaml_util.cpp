@@ -40,7 +40,55 @@ std::string as_string(const std::string& file, const YAML::Node& n, std::string_
   return n.Scalar();
 }
 
+std::vector<Dim> read_dims(const std::string& file, const YAML::Node& n, const char* what) {
+  expect_sequence(file, n, what);
+  std::vector<Dim> dims;
+  for (const auto& d : n) dims.push_back(static_cast<Dim>(as_int(file, d, what, 0, max_dimension)));
+  return dims;
+}
+
+Model custom_model(const std::string& file, const std::string& name, const YAML::Node& n, bool named) {
+  expect_map(file, n, "model");
+  if (named)
+    allow_keys(file, n, {"name", "dims", "non_oriented", "exchangeable", "partial", "loop_free"});
+  else
+    allow_keys(file, n, {"dims", "non_oriented", "exchangeable", "partial", "loop_free"});
+  Model m;
+  m.name = name;
+  m.dims = read_dims(file, require(file, n, "dims"), "dims");
+  std::sort(m.dims.begin(), m.dims.end());
+  if (m.dims.empty() || std::adjacent_find(m.dims.begin(), m.dims.end()) != m.dims.end())
+    fail_at(file, n["dims"], "dims: expected a non-empty list of distinct dimensions");
+  auto subset = [&](const char* key) {
+    DimSet s = 0;
+    if (auto v = n[key]) {
+      const auto dims = read_dims(file, v, key);
+      for (std::size_t k = 0; k < dims.size(); ++k) {
+        if (!m.contains(dims[k])) fail_at(file, v[k], fmt::format("{}: {} is not in dims", key, dims[k]));
+        s |= dim_bit(dims[k]);
+      }
+    }
+    return s;
+  };
+  m.non_oriented = subset("non_oriented");
+  m.partial = subset("partial");
+  if (auto e = n["exchangeable"]) {
+    expect_sequence(file, e, "exchangeable");
+    for (const auto& p : e) {
+      const auto pair = read_dims(file, p, "exchangeable pair");
+      if (pair.size() != 2 || !m.contains(pair[0]) || !m.contains(pair[1])) fail_at(file, p, "exchangeable: expected a pair [i, j] of dims");
+      m.exchangeable.emplace_back(pair[0], pair[1]);
+    }
+  }
+  if (auto l = n["loop_free"]) {
+    if (!l.IsScalar() || (l.Scalar() != "true" && l.Scalar() != "false")) fail_at(file, l, "loop_free: expected true or false");
+    m.loop_free = l.Scalar() == "true";
+  }
+  return m;
+}
+
 Model as_model(const std::string& file, const YAML::Node& n) {
+  if (n.IsMap()) return custom_model(file, as_string(file, require(file, n, "name"), "model name"), n, true);
   const std::string name = as_string(file, n, "model");
   auto m = Model::by_name(name);
   if (!m) fail_at(file, n, fmt::format("unknown model '{}' (expected {})", name, Model::known_names()));

@@ -19,7 +19,13 @@ void expect_sequence(const std::string& file, const YAML::Node& n, std::string_v
 void allow_keys(const std::string& file, const YAML::Node& map, std::initializer_list<std::string_view> allowed);
 long long as_int(const std::string& file, const YAML::Node& n, std::string_view what, long long lo, long long hi);
 std::string as_string(const std::string& file, const YAML::Node& n, std::string_view what);
-/// A model name, resolved against the presets.
+/// A list of dimensions (0..max_dimension).
+std::vector<Dim> read_dims(const std::string& file, const YAML::Node& n, const char* what);
+/// A custom model {dims, non_oriented, exchangeable, partial, loop_free};
+/// with `named`, the mapping also carries its `name` (the inline form of a
+/// map file).
+Model custom_model(const std::string& file, const std::string& name, const YAML::Node& n, bool named = false);
+/// A model: a preset name, or an inline custom model {name, dims, ...}.
 Model as_model(const std::string& file, const YAML::Node& n);
 
 }  // namespace dartcheck::yaml

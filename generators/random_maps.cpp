@@ -161,6 +161,12 @@ void apply_corruption(Map& map, const LinkCorruption& c) {
     map.set_link_raw(i, d, t);
 }
 
+bool has_random_generator(const Model& m) {
+  for (int n = 1; n <= 3; ++n)
+    if (m == Model::gmap(n) || (n >= 2 && m == Model::omap(n))) return true;
+  return false;
+}
+
 MapRecipe draw_recipe(std::mt19937& rng, std::uint32_t faces, int top_dim) {
   auto pick = [&](std::uint32_t lo, std::uint32_t hi) { return std::uniform_int_distribution<std::uint32_t>(lo, hi)(rng); };
   MapRecipe recipe;
@@ -169,6 +175,39 @@ MapRecipe draw_recipe(std::mt19937& rng, std::uint32_t faces, int top_dim) {
   const auto top = static_cast<std::uint32_t>(std::max(2, top_dim));
   for (std::uint32_t k = 0; k < sewings; ++k) recipe.sewings.push_back({static_cast<std::uint8_t>(pick(2, top)), pick(0, 999), pick(0, 999), pick(0, 999)});
   return recipe;
+}
+
+std::vector<MapRecipe> shrink_candidates(const MapRecipe& r) {
+  std::vector<MapRecipe> out;
+  const std::size_t faces = r.face_sizes.size(), sewings = r.sewings.size();
+  auto keep = [&](std::size_t f, std::size_t s) {
+    MapRecipe c;
+    c.face_sizes.assign(r.face_sizes.begin(), r.face_sizes.begin() + static_cast<std::ptrdiff_t>(f));
+    c.sewings.assign(r.sewings.begin(), r.sewings.begin() + static_cast<std::ptrdiff_t>(s));
+    out.push_back(std::move(c));
+  };
+  // Large steps first: half the faces, then no sewings, then one element
+  // at a time (each face, each sewing, each face one edge shorter).
+  if (faces > 1) keep(faces / 2, sewings);
+  if (sewings > 0) keep(faces, 0);
+  for (std::size_t k = faces; k-- > 0;) {
+    if (faces == 1) break;
+    MapRecipe c = r;
+    c.face_sizes.erase(c.face_sizes.begin() + static_cast<std::ptrdiff_t>(k));
+    out.push_back(std::move(c));
+  }
+  for (std::size_t k = sewings; k-- > 0;) {
+    MapRecipe c = r;
+    c.sewings.erase(c.sewings.begin() + static_cast<std::ptrdiff_t>(k));
+    out.push_back(std::move(c));
+  }
+  for (std::size_t k = 0; k < faces; ++k)
+    if (r.face_sizes[k] > 1) {
+      MapRecipe c = r;
+      --c.face_sizes[k];
+      out.push_back(std::move(c));
+    }
+  return out;
 }
 
 }  // namespace dartcheck

@@ -39,10 +39,18 @@ struct MapRecipe {
 ///    cycle; 2-sewing as in 2-O-maps.
 Map build_random_map(const Model& model, const MapRecipe& recipe);
 
+/// True for the models build_random_map builds (1-3-G-maps, 2-3-O-maps).
+bool has_random_generator(const Model& model);
+
 /// A recipe drawn from a seeded engine, outside RapidCheck (reproducible
 /// host sets for `check` and the scheme theorems): `faces` faces of 1-6
 /// edges and up to 2 * faces sewings in dimensions 2..top_dim.
 MapRecipe draw_recipe(std::mt19937& rng, std::uint32_t faces, int top_dim);
+
+/// Smaller recipes than `r`, largest steps first: fewer faces, fewer
+/// sewings, shorter faces. Every candidate builds a valid map, so a greedy
+/// shrinker outside RapidCheck (dartcheck fuzz) keeps validity too.
+std::vector<MapRecipe> shrink_candidates(const MapRecipe& r);
 
 /// Recipes with `min_faces`..`max_faces` faces and up to twice as many
 /// sewings.

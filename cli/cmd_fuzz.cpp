@@ -1,0 +1,255 @@
+// `dartcheck fuzz`: every rule of a catalog against random, enumerated and
+// given maps (cli/fuzz.hpp), classified against its static verdict, with
+// counterexample files that `dartcheck apply` replays.
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "checkers/map_validity.hpp"
+#include "cli/commands.hpp"
+#include "cli/fuzz.hpp"
+#include "cli/report_text.hpp"
+#include "cli/resolve.hpp"
+#include "core/input_error.hpp"
+#include "core/map_io.hpp"
+
+namespace dartcheck::cli {
+namespace {
+
+double parse_duration(const std::string& text) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  const std::string unit = text.substr(used);
+  double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : -1;
+  if (used == 0 || scale < 0 || !(v > 0))
+    throw InputError("<command line>", 0, 0, fmt::format("--time: expected a positive duration such as 30s, 500ms or 2m, got '{}'", text));
+  return v * scale;
+}
+
+// Rule names may hold '/' (variants): file names use '.' instead.
+std::string file_stem(const std::string& rule) {
+  std::string s = rule;
+  for (char& c : s)
+    if (c == '/' || c == '\\' || c == ' ') c = '.';
+  return s;
+}
+
+std::string replay_command(const std::string& catalog, const std::string& rule, const std::string& host,
+                           const std::vector<Dart>& hooks) {
+  std::string cmd = fmt::format("dartcheck apply {} --rule {} --map {}", catalog, rule, host);
+  for (Dart h : hooks) cmd += fmt::format(" --hook {}", h);
+  return cmd;
+}
+
+// host.yaml, result.yaml and counterexample.yaml; returns the replay command.
+std::string write_counterexample(const std::string& dir, const std::string& catalog, const FuzzOptions& o, const FuzzReport& r) {
+  const Counterexample& cx = *r.counterexample;
+  std::filesystem::create_directories(dir);
+  const std::string stem = (std::filesystem::path(dir) / file_stem(r.rule)).string();
+  auto write = [](const std::string& path, const std::string& text) {
+    std::ofstream f(path);
+    if (!f || !(f << text)) throw InputError(path, 0, 0, "cannot write the counterexample file");
+  };
+  write(stem + ".host.yaml", map_to_yaml(cx.host));
+  if (cx.result) write(stem + ".result.yaml", map_to_yaml(*cx.result));
+  const std::string replay = replay_command(catalog, r.rule, stem + ".host.yaml", cx.hooks);
+  YAML::Emitter y;
+  y << YAML::BeginMap;
+  y << YAML::Key << "rule" << YAML::Value << r.rule;
+  y << YAML::Key << "catalog" << YAML::Value << catalog;
+  y << YAML::Key << "seed" << YAML::Value << o.seed;
+  y << YAML::Key << "class" << YAML::Value << std::string(fuzz_class_name(r.verdict));
+  y << YAML::Key << "static_failures" << YAML::Value << YAML::Flow << r.static_failures;
+  y << YAML::Key << "host" << YAML::Value << stem + ".host.yaml";
+  y << YAML::Key << "host_darts" << YAML::Value << cx.host.size();
+  y << YAML::Key << "hooks" << YAML::Value << YAML::Flow << cx.hooks;
+  if (!cx.match.empty()) {
+    y << YAML::Key << "match" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (const auto& [node, dart] : cx.match) y << YAML::Key << node << YAML::Value << dart;
+    y << YAML::EndMap;
+  }
+  if (cx.result) y << YAML::Key << "result" << YAML::Value << stem + ".result.yaml";
+  y << YAML::Key << "broken" << YAML::Value << YAML::Flow << cx.broken();
+  if (!cx.unrepresentable.empty()) y << YAML::Key << "not_representable" << YAML::Value << cx.unrepresentable;
+  y << YAML::Key << "violations" << YAML::Value << YAML::BeginSeq;
+  for (const auto& v : cx.violations) {
+    y << YAML::Flow << YAML::BeginMap << YAML::Key << "dart" << YAML::Value << v.element << YAML::Key << "constraint" << YAML::Value
+      << constraint_name(v) << YAML::Key << "what" << YAML::Value << describe(v, fmt::format("dart {}", v.element)) << YAML::EndMap;
+  }
+  y << YAML::EndSeq;
+  y << YAML::Key << "origin" << YAML::Value << cx.origin;
+  y << YAML::Key << "minimal" << YAML::Value << cx.minimal;
+  y << YAML::Key << "replay" << YAML::Value << replay;
+  y << YAML::EndMap;
+  write(stem + ".counterexample.yaml", std::string(y.c_str()) + "\n");
+  return replay;
+}
+
+std::string outcome_text(const FuzzReport& r) {
+  switch (r.verdict) {
+    case FuzzClass::consistent:
+      return r.reason.empty() ? fmt::format("consistent (checked {} applications on {} maps of up to {} darts)", r.applications, r.hosts,
+                                            r.largest_host)
+                              : fmt::format("consistent; {}", r.reason);
+    case FuzzClass::unconfirmed: return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
+    case FuzzClass::confirmed:
+    case FuzzClass::soundness_bug: {
+      const auto& cx = *r.counterexample;
+      return fmt::format("{}: at hook{} {} of a {}-dart map, H breaks {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
+                         fmt::join(cx.hooks, ","), cx.host.size(), fmt::join(cx.broken(), ", "), cx.minimal ? " (minimal)" : "");
+    }
+  }
+  return "";
+}
+
+// The user's maps, built once per model that the fuzzed rules rewrite.
+std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::vector<Model>& models,
+                            const Catalog& catalog) {
+  std::vector<Map> out;
+  for (const auto& t : targets) {
+    const auto ext = std::filesystem::path(t).extension().string();
+    if (ext == ".yaml" || ext == ".yml") {
+      out.push_back(resolve_map(t, models.front(), &catalog));  // the file names its model
+      continue;
+    }
+    std::vector<std::string> why;
+    std::size_t built = 0;
+    for (const Model& m : models) {
+      try {
+        out.push_back(resolve_map(t, m, &catalog));
+        ++built;
+      } catch (const InputError& e) {
+        why.push_back(fmt::format("{}: {}", m.name, e.what()));
+      }
+    }
+    if (built == 0) throw InputError("<command line>", 0, 0, fmt::format("--maps {}: not built for any model of the rules ({})", t, fmt::join(why, "; ")));
+    for (const auto& w : why) fmt::print(stderr, "note: --maps {} is not used for {}\n", t, w);
+  }
+  for (const Map& m : out) {
+    const auto report = check_map(m);
+    if (!report.valid())
+      throw InputError("<command line>", 0, 0, fmt::format("--maps: a given {} of {} darts is not valid ({} violations): fuzzing needs valid hosts",
+                                                           m.model().name, m.size(), report.violations.size()));
+  }
+  return out;
+}
+
+}  // namespace
+
+int fuzz(const FuzzCommand& c) {
+  if (c.format != "text" && c.format != "json")
+    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", c.format));
+  const Catalog catalog = read_catalog(c.catalog);
+  if (!c.rule.empty() && !catalog.find_rule(c.rule))
+    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", c.rule, c.catalog));
+  if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
+
+  FuzzOptions o;
+  o.seed = c.seed ? *c.seed : std::random_device{}();
+  o.max_darts = c.max_darts;
+  std::optional<double> seconds;
+  if (!c.time.empty()) seconds = parse_duration(c.time);
+  o.runs = c.runs ? *c.runs : seconds ? SIZE_MAX : 10'000;
+
+  std::vector<const CatalogRule*> rules;
+  std::vector<Model> models;
+  for (const auto& e : catalog.rules) {
+    if (!c.rule.empty() && e.rule.name() != c.rule) continue;
+    rules.push_back(&e);
+    if (std::find(models.begin(), models.end(), e.rule.model()) == models.end()) models.push_back(e.rule.model());
+  }
+  std::vector<Map> seeds;
+  for (const auto& s : catalog.maps)
+    if (std::find(models.begin(), models.end(), s.model) != models.end()) seeds.push_back(build_source(s));
+  for (auto& m : given_maps(c.maps, models, catalog)) seeds.push_back(std::move(m));
+
+  const bool tty = isatty(fileno(stderr)) != 0;
+  fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {} rule{}, {}\n", o.seed, o.seed, rules.size(),
+             rules.size() == 1 ? "" : "s",
+             seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
+                     : fmt::format("{} applications per rule", o.runs));
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<FuzzReport> reports;
+  std::size_t failures = 0;
+  for (std::size_t k = 0; k < rules.size(); ++k) {
+    if (seconds) {
+      // An equal share of what is left for each remaining rule.
+      const double left = *seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      o.deadline = std::chrono::steady_clock::now() +
+                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(std::max(0.0, left) / double(rules.size() - k)));
+    }
+    if (tty)
+      o.progress = [&, k](const FuzzProgress& p) {
+        fmt::print(stderr, "\r\033[K[{}/{}] {}: {} applications ({:.0f}/s), {} failure{}", k + 1, rules.size(), *p.rule, p.applications,
+                   p.seconds > 0 ? double(p.applications) / p.seconds : 0.0, failures, failures == 1 ? "" : "s");
+      };
+    reports.push_back(fuzz_rule(*rules[k], seeds, o));
+    if (reports.back().counterexample) ++failures;
+  }
+  if (tty) fmt::print(stderr, "\r\033[K");
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::vector<std::string> replays(reports.size());
+  if (!c.out.empty())
+    for (std::size_t k = 0; k < reports.size(); ++k)
+      if (reports[k].counterexample) replays[k] = write_counterexample(c.out, c.catalog, o, reports[k]);
+
+  auto count = [&](FuzzClass v) { return std::count_if(reports.begin(), reports.end(), [&](const FuzzReport& r) { return r.verdict == v; }); };
+  std::size_t applications = 0;
+  for (const auto& r : reports) applications += r.applications;
+  const auto bugs = count(FuzzClass::soundness_bug);
+
+  if (c.format == "json") {
+    fmt::print("{{\"catalog\": \"{}\", \"seed\": {}, \"seconds\": {:.3f}, \"rules\": [\n", json_escape(c.catalog), o.seed, total);
+    for (std::size_t k = 0; k < reports.size(); ++k) {
+      const auto& r = reports[k];
+      fmt::print("  {{\"name\": \"{}\", \"model\": \"{}\", \"static_failures\": {}, \"class\": \"{}\", \"applications\": {}, \"hosts\": {}, "
+                 "\"largest_host\": {}, \"exhaustive_darts\": {}, \"seconds\": {:.4f}, \"out_of_time\": {}, \"reason\": \"{}\"",
+                 json_escape(r.rule), rules[k]->rule.model().name, json_strings(r.static_failures), fuzz_class_name(r.verdict), r.applications,
+                 r.hosts, r.largest_host, r.exhaustive_darts, r.seconds, r.out_of_time, json_escape(r.reason));
+      if (r.counterexample) {
+        const auto& cx = *r.counterexample;
+        fmt::print(", \"counterexample\": {{\"darts\": {}, \"hooks\": [{}], \"broken\": {}, \"minimal\": {}, \"origin\": \"{}\", \"replay\": \"{}\"}}",
+                   cx.host.size(), fmt::join(cx.hooks, ", "), json_strings(cx.broken()), cx.minimal, json_escape(cx.origin), json_escape(replays[k]));
+      }
+      fmt::print("}}{}\n", k + 1 < reports.size() ? "," : "");
+    }
+    fmt::print("], \"consistent\": {}, \"confirmed\": {}, \"unconfirmed\": {}, \"soundness_bugs\": {}, \"applications\": {}}}\n",
+               count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, applications);
+    return bugs ? soundness_bug : ok;
+  }
+
+  std::size_t width = 4;
+  for (const auto& r : reports) width = std::max(width, r.rule.size());
+  fmt::print("{:<{}}  {:<18} {}\n", "rule", width, "static", "dynamic");
+  for (std::size_t k = 0; k < reports.size(); ++k) {
+    const auto& r = reports[k];
+    const std::string stat = r.static_failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(r.static_failures, " "));
+    fmt::print("{:<{}}  {:<18} {}\n", r.rule, width, stat, outcome_text(r));
+    if (r.counterexample) {
+      const auto& cx = *r.counterexample;
+      fmt::print("{:<{}}  found in {}\n", "", width, cx.origin);
+      if (!cx.unrepresentable.empty()) fmt::print("{:<{}}  H has no dense form: {}\n", "", width, cx.unrepresentable);
+      if (!replays[k].empty())
+        fmt::print("{:<{}}  replay: {}\n", "", width, replays[k]);
+      else
+        fmt::print("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
+    }
+  }
+  fmt::print("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
+             reports.size(), count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, bugs == 1 ? "" : "s", applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
+  return bugs ? soundness_bug : ok;
+}
+
+}  // namespace dartcheck::cli

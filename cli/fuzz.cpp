@@ -1,0 +1,334 @@
+#include "cli/fuzz.hpp"
+
+#include <algorithm>
+#include <random>
+#include <span>
+
+#include <fmt/format.h>
+
+#include "checkers/host_search.hpp"
+#include "checkers/map_validity.hpp"
+#include "core/derivation.hpp"
+#include "core/scheme_application.hpp"
+#include "generators/random_maps.hpp"
+
+namespace dartcheck::cli {
+
+std::string_view fuzz_class_name(FuzzClass c) {
+  switch (c) {
+    case FuzzClass::consistent: return "consistent";
+    case FuzzClass::confirmed: return "inconsistent, confirmed";
+    case FuzzClass::unconfirmed: return "inconsistent statically, unconfirmed";
+    case FuzzClass::soundness_bug: return "SOUNDNESS BUG";
+  }
+  return "?";
+}
+
+std::vector<std::string> Counterexample::broken() const {
+  std::vector<std::string> b;
+  for (const auto& v : violations) b.push_back(constraint_name(v));
+  if (!unrepresentable.empty()) b.push_back("not-representable");
+  std::sort(b.begin(), b.end());
+  b.erase(std::unique(b.begin(), b.end()), b.end());
+  return b;
+}
+
+std::vector<std::string> static_failures(const RuleVerdict& v) {
+  std::vector<std::string> f;
+  for (const auto& c : v.conditions)
+    if (!c.holds) f.push_back(c.name());
+  return f;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A stable per-rule stream: the same rule gets the same hosts whether it is
+// fuzzed alone (--rule) or with its whole catalog.
+std::uint64_t rule_seed(std::uint64_t seed, const std::string& name) {
+  std::uint64_t h = 1469598103934665603ULL ^ seed;
+  for (unsigned char c : name) h = (h ^ c) * 1099511628211ULL;
+  return h;
+}
+
+Map map_of(const Model& model, std::size_t n, const std::vector<std::vector<NodeId>>& sigma) {
+  Map g(model, n);
+  for (std::size_t k = 0; k < model.dims.size(); ++k)
+    for (Dart d = 0; d < n; ++d) g.set_link(model.dims[k], d, sigma[k][d]);
+  return g;
+}
+
+// Mean darts per recipe face: G-maps 2 per edge, 2-O-maps 1, 3-O-maps 2
+// (each face and its 3-twin); faces have 1-6 edges.
+std::size_t darts_per_face(const Model& m) { return m.is_generalized() || m.dimension() == 3 ? 7 : 4; }
+
+class Fuzzer {
+ public:
+  Fuzzer(const CatalogRule& entry, const FuzzOptions& o, FuzzReport& out)
+      : entry_(entry), rule_(entry.rule), o_(o), out_(out), rng_(static_cast<std::uint32_t>(rule_seed(o.seed, entry.rule.name()) % 4294967291U)), start_(Clock::now()) {}
+
+  // Where random maps exist the enumeration takes at most half of the
+  // applications, so larger hosts get the other half; it resumes if the
+  // random maps rarely admit a match (L with loops, say).
+  void run(const std::vector<Map>& seeds) {
+    const bool random = has_random_generator(rule_.model());
+    host_budget_ = random ? o_.exhaustive_hosts : 50 * o_.exhaustive_hosts;
+    n_ = scheme() ? 1 : std::max<std::size_t>(rule_.left().node_count(), 1);
+    first_n_ = n_;
+    exhaustive(random ? o_.runs / 2 : o_.runs);
+    if (!out_.counterexample && budget_left()) given(seeds);
+    if (!out_.counterexample && budget_left() && random) random_hosts();
+    if (!out_.counterexample && budget_left()) exhaustive(o_.runs);
+    out_.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+  }
+
+ private:
+  const CatalogRule& entry_;
+  const Rule& rule_;
+  const FuzzOptions& o_;
+  FuzzReport& out_;
+  std::mt19937 rng_;
+  Clock::time_point start_;
+  Map scratch_{Model::gmap(2)};
+  std::size_t attempts_ = 0, next_progress_ = 4096;
+  // Where the enumeration stands: hosts of n_ darts, the first skip_ of
+  // them already tried; host_budget_ hosts left.
+  std::size_t n_ = 1, first_n_ = 1, skip_ = 0, host_budget_ = 0;
+
+  bool scheme() const { return entry_.words.scheme; }
+  std::size_t hook_count() const { return rule_.hooks().size(); }
+
+  // Stops at --runs applications, at the deadline, or after 20 attempts
+  // per requested application when none applied (a rule that matches
+  // nowhere: refusals are cheap, and the report counts them).
+  bool budget_left() {
+    if (out_.applications >= o_.runs) return false;
+    if (out_.applications == 0 && attempts_ / 20 >= std::max<std::size_t>(o_.runs, 1)) return false;
+    if (o_.deadline && Clock::now() > *o_.deadline) {
+      out_.out_of_time = true;
+      return false;
+    }
+    return true;
+  }
+
+  void note_host(const Map& g) {
+    ++out_.hosts;
+    out_.largest_host = std::max(out_.largest_host, g.size());
+  }
+
+  // One application on a copy of g; the counterexample if H is invalid or
+  // has no dense form (two i-arcs at a dart: I(i) breaks).
+  std::optional<Counterexample> attempt(const Map& g, std::span<const Dart> hooks) {
+    ++attempts_;
+    if (o_.progress && attempts_ >= next_progress_) {
+      next_progress_ += 4096;
+      o_.progress({&rule_.name(), out_.applications, out_.hosts, std::chrono::duration<double>(Clock::now() - start_).count()});
+    }
+    scratch_ = g;
+    Refusal refusal = Refusal::none;
+    std::string why;
+    std::vector<std::pair<std::string, Dart>> match;
+    if (scheme()) {
+      auto r = apply_scheme(rule_, entry_.words, scratch_, hooks);
+      refusal = r.refusal;
+      why = std::move(r.why);
+    } else {
+      auto r = apply_rule(rule_, scratch_, hooks);
+      refusal = r.refusal;
+      why = std::move(r.why);
+      if (r.ok())
+        for (NodeId v = 0; v < rule_.left().node_count(); ++v) match.emplace_back(rule_.left().name(v), r.value->match.node[v]);
+    }
+    if (refusal != Refusal::none && refusal != Refusal::not_representable) {
+      ++out_.refusals[std::string(refusal_name(refusal))];
+      return std::nullopt;
+    }
+    Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false};
+    if (refusal == Refusal::not_representable) {
+      ++out_.refusals["not-representable"];
+      cx.unrepresentable = std::move(why);
+      return cx;
+    }
+    ++out_.applications;
+    auto report = check_map(scratch_);
+    if (report.valid()) return std::nullopt;
+    cx.result = scratch_;
+    cx.violations = std::move(report.violations);
+    return cx;
+  }
+
+  // Every hook of a single-hook rule; random tuples of distinct darts (all
+  // of them when there are few) for several hooks. Stops at the first
+  // counterexample, or when `budget` says so.
+  std::optional<Counterexample> every_match(const Map& g, bool budgeted) {
+    const std::size_t n = g.size(), h = hook_count();
+    if (n < h) return std::nullopt;
+    std::vector<Dart> hooks(h);
+    if (h == 1) {
+      for (Dart d = 0; d < n; ++d) {
+        if (budgeted && !budget_left()) return std::nullopt;
+        hooks[0] = d;
+        if (auto cx = attempt(g, hooks)) return cx;
+      }
+      return std::nullopt;
+    }
+    std::size_t tuples = 1;
+    for (std::size_t k = 0; k < h && tuples <= 4096; ++k) tuples *= n;
+    if (tuples <= 4096) {
+      for (std::size_t t = 0; t < tuples; ++t) {
+        std::size_t x = t;
+        for (auto& d : hooks) d = static_cast<Dart>(x % n), x /= n;
+        if (budgeted && !budget_left()) return std::nullopt;
+        if (auto cx = attempt(g, hooks)) return cx;
+      }
+      return std::nullopt;
+    }
+    std::uniform_int_distribution<Dart> dart(0, static_cast<Dart>(n - 1));
+    for (std::size_t t = 0; t < 4 * n; ++t) {
+      for (auto& d : hooks) d = dart(rng_);
+      if (budgeted && !budget_left()) return std::nullopt;
+      if (auto cx = attempt(g, hooks)) return cx;
+    }
+    return std::nullopt;
+  }
+
+  // Phase 1: every map on n darts (containing L at the identity for DPO
+  // rules), n growing, until `share` applications, the host budget or
+  // n = first + 8. Resumable: a second call continues where this stopped.
+  void exhaustive(std::size_t share) {
+    const Model& model = rule_.model();
+    const bool dpo = !scheme();
+    const std::size_t last = std::min(o_.max_darts, first_n_ + 8);
+    std::vector<Dart> hooks;
+    for (NodeId v : rule_.hooks()) hooks.push_back(v);  // L's node v is dart v
+    for (; n_ <= last && host_budget_ > 0 && budget_left() && out_.applications < share; ++n_, skip_ = 0) {
+      const std::size_t n = n_;
+      std::size_t seen = 0;
+      bool stopped = false;
+      for_each_small_map(
+          model, n,
+          [&](const std::vector<std::vector<NodeId>>& sigma) {
+            if (seen++ < skip_) return true;  // tried by an earlier call
+            --host_budget_;
+            const Map g = map_of(model, n, sigma);
+            note_host(g);
+            auto cx = dpo ? attempt(g, hooks) : every_match(g, true);
+            if (cx) {
+              cx->origin = fmt::format("every {} of {} darts{}, in enumeration order", model.name, n, dpo ? " containing L" : "");
+              cx->minimal = n == first_n_ || out_.exhaustive_darts + 1 == n;
+              out_.counterexample = std::move(cx);
+            }
+            stopped = out_.counterexample || host_budget_ == 0 || !budget_left() || out_.applications >= share;
+            return !stopped;
+          },
+          skip_ + host_budget_, dpo ? &rule_.left() : nullptr);
+      if (stopped) {
+        skip_ = seen;
+        return;
+      }
+      out_.exhaustive_darts = n;
+    }
+  }
+
+  // Phase 2: the catalog's and the user's maps, smallest first.
+  void given(const std::vector<Map>& seeds) {
+    std::vector<const Map*> maps;
+    for (const Map& m : seeds)
+      if (m.model() == rule_.model()) maps.push_back(&m);
+    std::stable_sort(maps.begin(), maps.end(), [](const Map* a, const Map* b) { return a->size() < b->size(); });
+    for (const Map* g : maps) {
+      note_host(*g);
+      if (auto cx = every_match(*g, true)) {
+        cx->origin = fmt::format("a given map of {} darts", g->size());
+        out_.counterexample = std::move(cx);
+        return;
+      }
+      if (!budget_left()) return;
+    }
+  }
+
+  // Phase 3: random recipes, growing from one face to what --max-darts
+  // allows and back; a failing recipe is shrunk while it still fails.
+  // Gives up after 20 attempts per requested application if none applied
+  // here, and after 500 if some did (a rule that needs a rare shape).
+  void random_hosts() {
+    const Model& model = rule_.model();
+    const std::size_t cap = std::max<std::size_t>(1, o_.max_darts / darts_per_face(model));
+    const std::size_t attempts0 = attempts_, applications0 = out_.applications, runs = std::max<std::size_t>(o_.runs, 1);
+    auto starving = [&] {
+      const std::size_t tried = attempts_ - attempts0;
+      return tried / (out_.applications == applications0 ? 20 : 500) >= runs;
+    };
+    for (std::size_t trial = 0; budget_left() && !starving(); ++trial) {
+      const auto faces = static_cast<std::uint32_t>(1 + (trial / 4) % cap);
+      MapRecipe recipe = draw_recipe(rng_, faces, model.dimension());
+      Map g = build_random_map(model, recipe);
+      while (g.size() > o_.max_darts && recipe.face_sizes.size() > 1) {
+        recipe.face_sizes.pop_back();
+        g = build_random_map(model, recipe);
+      }
+      note_host(g);
+      if (auto cx = every_match(g, true)) {
+        const std::size_t before = g.size();
+        shrink(recipe, *cx);
+        cx->origin = fmt::format("random recipe (trial {}), shrunk from {} to {} darts", trial, before, cx->host.size());
+        out_.counterexample = std::move(cx);
+        return;
+      }
+    }
+  }
+
+  // Greedy shrinking: take the first smaller recipe that still fails, until
+  // none does. Every candidate is a valid map (generators/random_maps).
+  void shrink(MapRecipe& recipe, Counterexample& cx) {
+    for (bool improved = true; improved;) {
+      improved = false;
+      for (auto& c : shrink_candidates(recipe)) {
+        const Map g = build_random_map(rule_.model(), c);
+        if (g.size() > cx.host.size()) continue;
+        if (auto smaller = every_match(g, false)) {
+          recipe = std::move(c);
+          cx = std::move(*smaller);
+          improved = true;
+          break;
+        }
+      }
+    }
+  }
+};
+
+}  // namespace
+
+FuzzReport fuzz_rule(const CatalogRule& entry, const std::vector<Map>& seeds, const FuzzOptions& o) {
+  FuzzReport out;
+  out.rule = entry.rule.name();
+  const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);
+  out.static_failures = static_failures(verdict);
+  const bool static_holds = out.static_failures.empty();
+  Fuzzer(entry, o, out).run(seeds);
+  if (out.counterexample) {
+    out.verdict = static_holds ? FuzzClass::soundness_bug : FuzzClass::confirmed;
+    return out;
+  }
+  if (static_holds) {
+    out.verdict = FuzzClass::consistent;
+    if (out.applications == 0) out.reason = "never applied: no host admitted a derivation";
+    return out;
+  }
+  out.verdict = FuzzClass::unconfirmed;
+  std::vector<std::string> refused;
+  for (const auto& [why, count] : out.refusals) refused.push_back(fmt::format("{} {}", count, why));
+  if (out.applications == 0)
+    out.reason = fmt::format("never applied: every attempt was refused ({})", refused.empty() ? "L matched no host" : fmt::format("{}", fmt::join(refused, ", ")));
+  else
+    out.reason = fmt::format("no failure in {} applications on {} maps of up to {} darts", out.applications, out.hosts, out.largest_host);
+  if (out.exhaustive_darts)
+    out.reason += fmt::format("; every map of up to {} darts{} was tried", out.exhaustive_darts, entry.words.scheme ? "" : " containing L");
+  if (entry.words.scheme && std::all_of(out.static_failures.begin(), out.static_failures.end(), [](const std::string& f) { return f[0] == 'C'; }))
+    out.reason += "; only the cycle condition fails, and Theorem 6 is sufficient, not necessary";
+  if (out.out_of_time) out.reason += " (stopped by --time)";
+  return out;
+}
+
+}  // namespace dartcheck::cli
