@@ -80,6 +80,10 @@ class Fuzzer {
     if (!out_.counterexample && budget_left()) given(seeds);
     if (!out_.counterexample && budget_left() && random) random_hosts();
     if (!out_.counterexample && budget_left()) exhaustive(o_.runs);
+    // Minimal when every host with one dart fewer was enumerated (none
+    // below |L| can hold an image of L), whichever phase found it.
+    if (out_.counterexample)
+      out_.counterexample->minimal = out_.counterexample->host.size() <= std::max(out_.exhaustive_darts + 1, scheme() ? 1 : first_n_);
     out_.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
   }
 
@@ -216,7 +220,6 @@ class Fuzzer {
             auto cx = dpo ? attempt(g, hooks) : every_match(g, true);
             if (cx) {
               cx->origin = fmt::format("every {} of {} darts{}, in enumeration order", model.name, n, dpo ? " containing L" : "");
-              cx->minimal = n == first_n_ || out_.exhaustive_darts + 1 == n;
               out_.counterexample = std::move(cx);
             }
             stopped = out_.counterexample || host_budget_ == 0 || !budget_left() || out_.applications >= share;
@@ -260,21 +263,27 @@ class Fuzzer {
       const std::size_t tried = attempts_ - attempts0;
       return tried / (out_.applications == applications0 ? 20 : 500) >= runs;
     };
-    for (std::size_t trial = 0; budget_left() && !starving(); ++trial) {
+    // After the first failure, 256 more trials on smaller hosts look for a
+    // smaller one: greedy shrinking stops at a local minimum.
+    std::size_t hunt = 0;
+    for (std::size_t trial = 0; budget_left() && !starving() && hunt < 256; ++trial) {
       const auto faces = static_cast<std::uint32_t>(1 + (trial / 4) % cap);
       MapRecipe recipe = draw_recipe(rng_, faces, model.dimension());
       Map g = build_random_map(model, recipe);
-      while (g.size() > o_.max_darts && recipe.face_sizes.size() > 1) {
+      const std::size_t limit = out_.counterexample ? out_.counterexample->host.size() - 1 : o_.max_darts;
+      while (g.size() > limit && recipe.face_sizes.size() > 1) {
         recipe.face_sizes.pop_back();
         g = build_random_map(model, recipe);
       }
+      if (out_.counterexample) ++hunt;
+      if (g.size() > limit) continue;
       note_host(g);
       if (auto cx = every_match(g, true)) {
         const std::size_t before = g.size();
         shrink(recipe, *cx);
         cx->origin = fmt::format("random recipe (trial {}), shrunk from {} to {} darts", trial, before, cx->host.size());
-        out_.counterexample = std::move(cx);
-        return;
+        if (!out_.counterexample || cx->host.size() < out_.counterexample->host.size()) out_.counterexample = std::move(cx);
+        if (out_.counterexample->host.size() <= out_.exhaustive_darts + 1) return;  // nothing smaller exists
       }
     }
   }
