@@ -59,6 +59,32 @@ Map map_of(const Model& model, std::size_t n, const std::vector<std::vector<Node
   return g;
 }
 
+// The connected components of the hooks, renumbered in dart order: the
+// rule reads and writes nothing else (patterns and matches are connected
+// to a hook), so a failure there is a failure on this smaller map.
+std::pair<Map, std::vector<Dart>> hook_components(const Map& g, std::span<const Dart> hooks) {
+  const Model& model = g.model();
+  std::vector<Dart> index(g.size(), no_dart), darts(hooks.begin(), hooks.end());
+  for (Dart h : hooks) index[h] = 0;
+  for (std::size_t k = 0; k < darts.size(); ++k)
+    for (Dim i : model.dims)
+      for (Dart e : {g.link(i, darts[k]), g.inverse_link(i, darts[k])})
+        if (e != no_dart && index[e] == no_dart) {
+          index[e] = 0;
+          darts.push_back(e);
+        }
+  std::sort(darts.begin(), darts.end());
+  darts.erase(std::unique(darts.begin(), darts.end()), darts.end());
+  for (std::size_t k = 0; k < darts.size(); ++k) index[darts[k]] = static_cast<Dart>(k);
+  Map sub(model, darts.size());
+  for (std::size_t k = 0; k < darts.size(); ++k)
+    for (Dim i : model.dims)
+      if (const Dart e = g.link(i, darts[k]); e != no_dart) sub.set_link(i, static_cast<Dart>(k), index[e]);
+  std::vector<Dart> renamed;
+  for (Dart h : hooks) renamed.push_back(index[h]);
+  return {std::move(sub), std::move(renamed)};
+}
+
 // Mean darts per recipe face: G-maps 2 per edge, 2-O-maps 1, 3-O-maps 2
 // (each face and its 3-twin); faces have 1-6 edges.
 std::size_t darts_per_face(const Model& m) { return m.is_generalized() || m.dimension() == 3 ? 7 : 4; }
@@ -82,6 +108,7 @@ class Fuzzer {
     if (!out_.counterexample && budget_left()) exhaustive(o_.runs);
     // Minimal when every host with one dart fewer was enumerated (none
     // below |L| can hold an image of L), whichever phase found it.
+    if (out_.counterexample) to_hook_components(*out_.counterexample);
     if (out_.counterexample)
       out_.counterexample->minimal = out_.counterexample->host.size() <= std::max(out_.exhaustive_darts + 1, scheme() ? 1 : first_n_);
     out_.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
@@ -285,6 +312,15 @@ class Fuzzer {
         if (!out_.counterexample || cx->host.size() < out_.counterexample->host.size()) out_.counterexample = std::move(cx);
         if (out_.counterexample->host.size() <= out_.exhaustive_darts + 1) return;  // nothing smaller exists
       }
+    }
+  }
+
+  void to_hook_components(Counterexample& cx) {
+    auto [sub, hooks] = hook_components(cx.host, cx.hooks);
+    if (sub.size() == cx.host.size()) return;
+    if (auto smaller = attempt(sub, hooks)) {
+      smaller->origin = fmt::format("{}; cut to the hook's connected component", cx.origin);
+      cx = std::move(*smaller);
     }
   }
 
