@@ -117,6 +117,7 @@ std::string outcome_text(const FuzzReport& r) {
 std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::vector<Model>& models,
                             const Catalog& catalog) {
   std::vector<Map> out;
+  if (models.empty()) return out;  // a catalog without rules: nothing to fuzz
   for (const auto& t : targets) {
     const auto ext = std::filesystem::path(t).extension().string();
     if (ext == ".yaml" || ext == ".yml") {
