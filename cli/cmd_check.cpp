@@ -82,11 +82,7 @@ std::string model_level(const Checked& c) {
 }  // namespace
 
 int check(const CheckOptions& o) {
-  if (o.format != "text" && o.format != "json")
-    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", o.format));
-  const Catalog catalog = read_catalog(o.catalog);
-  if (!o.rule.empty() && !catalog.find_rule(o.rule))
-    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", o.rule, o.catalog));
+  const Catalog catalog = read_command_catalog(o.catalog, o.rule, o.format);
 
   // The catalog's maps, built on first use.
   std::vector<std::optional<Map>> maps(catalog.maps.size());

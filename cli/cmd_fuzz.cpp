@@ -149,11 +149,7 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
 }  // namespace
 
 int fuzz(const FuzzCommand& c) {
-  if (c.format != "text" && c.format != "json")
-    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", c.format));
-  const Catalog catalog = read_catalog(c.catalog);
-  if (!c.rule.empty() && !catalog.find_rule(c.rule))
-    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", c.rule, c.catalog));
+  const Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format);
   if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
 
   FuzzOptions o;

@@ -82,7 +82,7 @@ struct FuzzOptions {
   /// The static verdict to set the dynamic one against; `check_rule` by
   /// default. Tests plant weakened checkers here.
   std::function<RuleVerdict(const CatalogRule&)> static_check;
-  std::function<void(const FuzzProgress&)> progress;  // called about every 4096 applications
+  std::function<void(const FuzzProgress&)> progress;  // called about every 4096 attempts
 };
 
 /// Fuzzes one rule; `seeds` are the given maps (any model: those of

@@ -11,6 +11,15 @@
 
 namespace dartcheck::cli {
 
+Catalog read_command_catalog(const std::string& file, const std::string& rule, const std::string& format) {
+  if (format != "text" && format != "json")
+    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", format));
+  Catalog catalog = read_catalog(file);
+  if (!rule.empty() && !catalog.find_rule(rule))
+    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", rule, file));
+  return catalog;
+}
+
 Map build_source(const MapSource& s) {
   if (s.map) return *s.map;
   if (!s.mesh.empty()) return load_mesh(s.model, s.mesh);

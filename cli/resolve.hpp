@@ -8,6 +8,10 @@
 
 namespace dartcheck::cli {
 
+/// Reads the catalog a command works on, after checking --format (text or
+/// json) and that --rule, if given, names one of its rules.
+Catalog read_command_catalog(const std::string& file, const std::string& rule, const std::string& format);
+
 /// Builds a catalog map: explicit, shape or mesh. Errors carry the map's
 /// position in the catalog.
 Map build_source(const MapSource& source);
