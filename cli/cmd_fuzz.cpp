@@ -13,6 +13,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
+#include "cli/counterexample_files.hpp"
 #include "cli/fuzz.hpp"
 #include "cli/report_text.hpp"
 #include "cli/resolve.hpp"
@@ -35,65 +36,6 @@ double parse_duration(const std::string& text) {
   if (used == 0 || scale < 0 || !(v > 0))
     throw InputError("<command line>", 0, 0, fmt::format("--time: expected a positive duration such as 30s, 500ms or 2m, got '{}'", text));
   return v * scale;
-}
-
-// Rule names may hold '/' (variants): file names use '.' instead.
-std::string file_stem(const std::string& rule) {
-  std::string s = rule;
-  for (char& c : s)
-    if (c == '/' || c == '\\' || c == ' ') c = '.';
-  return s;
-}
-
-std::string replay_command(const std::string& catalog, const std::string& rule, const std::string& host,
-                           const std::vector<Dart>& hooks) {
-  std::string cmd = fmt::format("dartcheck apply {} --rule {} --map {}", catalog, rule, host);
-  for (Dart h : hooks) cmd += fmt::format(" --hook {}", h);
-  return cmd;
-}
-
-// host.yaml, result.yaml and counterexample.yaml; returns the replay command.
-std::string write_counterexample(const std::string& dir, const std::string& catalog, const FuzzOptions& o, const FuzzReport& r) {
-  const Counterexample& cx = *r.counterexample;
-  std::filesystem::create_directories(dir);
-  const std::string stem = (std::filesystem::path(dir) / file_stem(r.rule)).string();
-  auto write = [](const std::string& path, const std::string& text) {
-    std::ofstream f(path);
-    if (!f || !(f << text)) throw InputError(path, 0, 0, "cannot write the counterexample file");
-  };
-  write(stem + ".host.yaml", map_to_yaml(cx.host));
-  if (cx.result) write(stem + ".result.yaml", map_to_yaml(*cx.result));
-  const std::string replay = replay_command(catalog, r.rule, stem + ".host.yaml", cx.hooks);
-  YAML::Emitter y;
-  y << YAML::BeginMap;
-  y << YAML::Key << "rule" << YAML::Value << r.rule;
-  y << YAML::Key << "catalog" << YAML::Value << catalog;
-  y << YAML::Key << "seed" << YAML::Value << o.seed;
-  y << YAML::Key << "class" << YAML::Value << std::string(fuzz_class_name(r.verdict));
-  y << YAML::Key << "static_failures" << YAML::Value << YAML::Flow << r.static_failures;
-  y << YAML::Key << "host" << YAML::Value << stem + ".host.yaml";
-  y << YAML::Key << "host_darts" << YAML::Value << cx.host.size();
-  y << YAML::Key << "hooks" << YAML::Value << YAML::Flow << cx.hooks;
-  if (!cx.match.empty()) {
-    y << YAML::Key << "match" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    for (const auto& [node, dart] : cx.match) y << YAML::Key << node << YAML::Value << dart;
-    y << YAML::EndMap;
-  }
-  if (cx.result) y << YAML::Key << "result" << YAML::Value << stem + ".result.yaml";
-  y << YAML::Key << "broken" << YAML::Value << YAML::Flow << cx.broken();
-  if (!cx.unrepresentable.empty()) y << YAML::Key << "not_representable" << YAML::Value << cx.unrepresentable;
-  y << YAML::Key << "violations" << YAML::Value << YAML::BeginSeq;
-  for (const auto& v : cx.violations) {
-    y << YAML::Flow << YAML::BeginMap << YAML::Key << "dart" << YAML::Value << v.element << YAML::Key << "constraint" << YAML::Value
-      << constraint_name(v) << YAML::Key << "what" << YAML::Value << describe(v, fmt::format("dart {}", v.element)) << YAML::EndMap;
-  }
-  y << YAML::EndSeq;
-  y << YAML::Key << "origin" << YAML::Value << cx.origin;
-  y << YAML::Key << "minimal" << YAML::Value << cx.minimal;
-  y << YAML::Key << "replay" << YAML::Value << replay;
-  y << YAML::EndMap;
-  write(stem + ".counterexample.yaml", std::string(y.c_str()) + "\n");
-  return replay;
 }
 
 std::string outcome_text(const FuzzReport& r) {
@@ -200,7 +142,10 @@ int fuzz(const FuzzCommand& c) {
   std::vector<std::string> replays(reports.size());
   if (!c.out.empty())
     for (std::size_t k = 0; k < reports.size(); ++k)
-      if (reports[k].counterexample) replays[k] = write_counterexample(c.out, c.catalog, o, reports[k]);
+      if (reports[k].counterexample)
+        replays[k] = write_counterexample(c.out, file_stem(reports[k].rule), c.catalog, reports[k].rule,
+                                          {{"seed", std::to_string(o.seed)}, {"class", std::string(fuzz_class_name(reports[k].verdict))}},
+                                          reports[k].static_failures, *reports[k].counterexample);
 
   auto count = [&](FuzzClass v) { return std::count_if(reports.begin(), reports.end(), [&](const FuzzReport& r) { return r.verdict == v; }); };
   std::size_t applications = 0;

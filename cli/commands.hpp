@@ -61,4 +61,16 @@ struct FuzzCommand {
 /// confirmed or unconfirmed failure agrees with the static verdict).
 int fuzz(const FuzzCommand& c);
 
+struct ProveCommand {
+  std::string catalog, rule, out, format = "text";
+  std::size_t max_darts = 10;
+  unsigned rlimit = 200'000'000;
+  double timeout = 0;  // seconds of wall clock per query on top of rlimit (0: none)
+  bool explain = false;
+};
+/// Exit 3 if some solver answer contradicts the static verdict where a
+/// theorem says they must agree (or a counterexample does not replay), 0
+/// otherwise.
+int prove(const ProveCommand& c);
+
 }  // namespace dartcheck::cli

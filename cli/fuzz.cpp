@@ -89,6 +89,40 @@ std::pair<Map, std::vector<Dart>> hook_components(const Map& g, std::span<const 
 // (each face and its 3-twin); faces have 1-6 edges.
 std::size_t darts_per_face(const Model& m) { return m.is_generalized() || m.dimension() == 3 ? 7 : 4; }
 
+}  // namespace
+
+std::optional<Counterexample> apply_and_check(const CatalogRule& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
+                                              Refusal& refusal) {
+  const Rule& rule = entry.rule;
+  scratch = g;
+  std::string why;
+  std::vector<std::pair<std::string, Dart>> match;
+  if (entry.words.scheme) {
+    auto r = apply_scheme(rule, entry.words, scratch, hooks);
+    refusal = r.refusal;
+    why = std::move(r.why);
+  } else {
+    auto r = apply_rule(rule, scratch, hooks);
+    refusal = r.refusal;
+    why = std::move(r.why);
+    if (r.ok())
+      for (NodeId v = 0; v < rule.left().node_count(); ++v) match.emplace_back(rule.left().name(v), r.value->match.node[v]);
+  }
+  if (refusal != Refusal::none && refusal != Refusal::not_representable) return std::nullopt;
+  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false};
+  if (refusal == Refusal::not_representable) {
+    cx.unrepresentable = std::move(why);
+    return cx;
+  }
+  auto report = check_map(scratch);
+  if (report.valid()) return std::nullopt;
+  cx.result = scratch;
+  cx.violations = std::move(report.violations);
+  return cx;
+}
+
+namespace {
+
 class Fuzzer {
  public:
   Fuzzer(const CatalogRule& entry, const FuzzOptions& o, FuzzReport& out)
@@ -156,36 +190,11 @@ class Fuzzer {
       next_progress_ += 4096;
       o_.progress({&rule_.name(), out_.applications, out_.hosts, std::chrono::duration<double>(Clock::now() - start_).count()});
     }
-    scratch_ = g;
     Refusal refusal = Refusal::none;
-    std::string why;
-    std::vector<std::pair<std::string, Dart>> match;
-    if (scheme()) {
-      auto r = apply_scheme(rule_, entry_.words, scratch_, hooks);
-      refusal = r.refusal;
-      why = std::move(r.why);
-    } else {
-      auto r = apply_rule(rule_, scratch_, hooks);
-      refusal = r.refusal;
-      why = std::move(r.why);
-      if (r.ok())
-        for (NodeId v = 0; v < rule_.left().node_count(); ++v) match.emplace_back(rule_.left().name(v), r.value->match.node[v]);
-    }
-    if (refusal != Refusal::none && refusal != Refusal::not_representable) {
-      ++out_.refusals[std::string(refusal_name(refusal))];
-      return std::nullopt;
-    }
-    Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false};
-    if (refusal == Refusal::not_representable) {
-      ++out_.refusals["not-representable"];
-      cx.unrepresentable = std::move(why);
-      return cx;
-    }
-    ++out_.applications;
-    auto report = check_map(scratch_);
-    if (report.valid()) return std::nullopt;
-    cx.result = scratch_;
-    cx.violations = std::move(report.violations);
+    auto cx = apply_and_check(entry_, g, hooks, scratch_, refusal);
+    if (refusal == Refusal::not_representable) ++out_.refusals["not-representable"];
+    else if (refusal != Refusal::none) ++out_.refusals[std::string(refusal_name(refusal))];
+    else ++out_.applications;
     return cx;
   }
 

@@ -20,6 +20,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,13 @@ struct FuzzOptions {
 /// Fuzzes one rule; `seeds` are the given maps (any model: those of
 /// another model are skipped).
 FuzzReport fuzz_rule(const CatalogRule& rule, const std::vector<Map>& seeds, const FuzzOptions& options);
+
+/// One application on a copy of g (into `scratch`), checked with
+/// check_map: the counterexample if H is invalid or has no dense form,
+/// nullopt if H is valid or the rule does not apply (`refusal` says why;
+/// not_representable comes with a counterexample).
+std::optional<Counterexample> apply_and_check(const CatalogRule& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
+                                              Refusal& refusal);
 
 /// The static failures the default checker finds ("I(0)", "C(0,2)", ...).
 std::vector<std::string> static_failures(const RuleVerdict& v);

@@ -60,6 +60,17 @@ int main(int argc, char** argv) {
   f->add_option("--out", fuzz.out, "write each counterexample here: host, match, result and a replay command");
   f->add_option("--format", fuzz.format, "text or json")->capture_default_str();
 
+  cli::ProveCommand prove;
+  auto* p = app.add_subcommand("prove", "Ask Z3 for a host whose derived map breaks a constraint (bounded), and set the answer against the static verdict");
+  p->add_option("catalog", prove.catalog, "YAML catalog")->required();
+  p->add_option("--rule", prove.rule, "prove only this rule");
+  p->add_option("--max-darts", prove.max_darts, "search hosts of up to this many darts")->capture_default_str();
+  p->add_option("--rlimit", prove.rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str();
+  p->add_option("--timeout", prove.timeout, "also stop a query after this many seconds (answers then depend on the machine)");
+  p->add_option("--out", prove.out, "write each counterexample on a map of the model here, with a replay command");
+  p->add_option("--format", prove.format, "text or json")->capture_default_str();
+  p->add_flag("--explain", prove.explain, "print the hosts and derived graphs of theorem-class counterexamples");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,6 +84,7 @@ int main(int argc, char** argv) {
     if (*w) return cli::words(words);
     if (*c) return cli::check(check);
     if (*f) return cli::fuzz(fuzz);
+    if (*p) return cli::prove(prove);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;

@@ -1,0 +1,311 @@
+#include "proofs/rule_prover.hpp"
+
+#include <chrono>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "checkers/graph_constraints.hpp"
+#include "core/graph_derivation.hpp"
+
+namespace dartcheck::proofs {
+
+std::string_view status_name(Status s) {
+  switch (s) {
+    case Status::counterexample: return "counterexample";
+    case Status::none: return "none";
+    case Status::unknown: return "unknown";
+    case Status::vacuous: return "vacuous";
+  }
+  return "";
+}
+
+std::string_view agreement_name(Agreement a) {
+  switch (a) {
+    case Agreement::agree: return "agree";
+    case Agreement::disagree: return "DISAGREE";
+    case Agreement::unresolved: return "unresolved";
+    case Agreement::not_compared: return "not compared";
+  }
+  return "";
+}
+
+std::size_t RuleProof::count(Agreement a) const {
+  std::size_t n = 0;
+  for (const auto& c : constraints) n += c.agreement == a;
+  return n;
+}
+
+TopoGraph host_graph(const Rule& rule, const HostClass& cls, const SymbolicHost& h) {
+  const TopoGraph& L = rule.left();
+  TopoGraph g;
+  for (std::size_t x = 0; x < h.size; ++x) g.add_node(x < L.node_count() ? L.name(static_cast<NodeId>(x)) : fmt::format("d{}", x));
+  for (Dim d : rule.model().dims) {
+    if (const auto* l = h.find(d)) {
+      for (std::size_t x = 0; x < h.size; ++x)
+        if ((*l)[x] != no_dart) g.add_arc(static_cast<NodeId>(x), (*l)[x], d);
+      continue;
+    }
+    std::vector<bool> has_out(h.size, false), has_in(h.size, false);
+    for (const auto& a : L.arcs())
+      if (a.label == d) {
+        g.add_arc(a.source, a.target, d);
+        has_out[a.source] = has_in[a.target] = true;
+      }
+    if (!cls.others_combinatorial) continue;
+    // Complete L's partial injection to a permutation: free sources to free
+    // targets in order (the premise of Theorems 2-3 makes any completion a
+    // host of the class; the constraint checked only reads encoded labels).
+    std::vector<NodeId> sources, targets;
+    for (NodeId x = 0; x < h.size; ++x) {
+      if (!has_out[x]) sources.push_back(x);
+      if (!has_in[x]) targets.push_back(x);
+    }
+    for (std::size_t k = 0; k < sources.size() && k < targets.size(); ++k) g.add_arc(sources[k], targets[k], d);
+  }
+  return g;
+}
+
+Map host_map(const Model& model, const SymbolicHost& h) {
+  Map m(model, h.size);
+  for (const auto& [d, l] : h.links)
+    for (Dart x = 0; x < h.size; ++x)
+      if (l[x] != no_dart) m.set_link(d, x, l[x]);
+  return m;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool graph_breaks(const TopoGraph& g, const HConstraint& c, bool partial) {
+  for (NodeId v = 0; v < g.node_count(); ++v) {
+    switch (c.kind) {
+      case RuleCondition::incident_arcs: {
+        std::vector<Violation> out;
+        check_incidence(g, v, c.i, partial, out);
+        if (!out.empty()) return true;
+        break;
+      }
+      case RuleCondition::non_orientation:
+        if (!non_oriented_at(g, v, c.i)) return true;
+        break;
+      case RuleCondition::cycle:
+        if (!cycle_at(g, v, c.i, c.j)) return true;
+        break;
+      default: break;
+    }
+  }
+  if (c.kind == RuleCondition::no_loop)
+    for (const auto& a : g.arcs())
+      if (a.label == c.i && a.source == a.target) return true;
+  return false;
+}
+
+// Why g is not a host of the class, or empty.
+std::string outside_class(const TopoGraph& g, const HostClass& cls, const Model& m) {
+  for (Dim d : m.dims) {
+    if (!has_dim(cls.symbolic, d) && !cls.others_combinatorial) continue;
+    const bool partial = has_dim(cls.partial, d);
+    for (NodeId v = 0; v < g.node_count(); ++v) {
+      std::vector<Violation> out;
+      check_incidence(g, v, d, partial, out);
+      if (!out.empty()) return fmt::format("I({}) fails at {}", d, g.name(v));
+      if (has_dim(cls.involutive, d) && !non_oriented_at(g, v, d)) return fmt::format("O({}) fails at {}", d, g.name(v));
+    }
+  }
+  for (auto [i, j] : cls.cycles)
+    for (NodeId v = 0; v < g.node_count(); ++v)
+      if (!cycle_at(g, v, i, j)) return fmt::format("C({},{}) fails at {}", i, j, g.name(v));
+  if (cls.loop_free)
+    for (const auto& a : g.arcs())
+      if (a.source == a.target) return fmt::format("loop at {}", g.name(a.source));
+  return {};
+}
+
+// Replays a solver host through the library: in the class, the identity
+// match satisfies the dangling condition, and derive() breaks c.
+void replay(const Rule& rule, const HostClass& cls, const HConstraint& c, ClassAnswer& a) {
+  a.host_graph = host_graph(rule, cls, *a.host);
+  if (auto why = outside_class(a.host_graph, cls, rule.model()); !why.empty()) {
+    a.replay_failure = "the solver's host is not in the class: " + why;
+    return;
+  }
+  const TopoGraph& L = rule.left();
+  GraphMatch m;
+  for (NodeId v = 0; v < L.node_count(); ++v) m.node.push_back(v);
+  std::vector<bool> used(a.host_graph.arc_count(), false);
+  for (const auto& e : L.arcs()) {
+    ArcId found = static_cast<ArcId>(-1);
+    for (ArcId f = 0; f < a.host_graph.arc_count() && found == static_cast<ArcId>(-1); ++f) {
+      const auto& x = a.host_graph.arc(f);
+      if (!used[f] && x.source == e.source && x.target == e.target && x.label == e.label) found = f;
+    }
+    if (found == static_cast<ArcId>(-1)) {
+      a.replay_failure = "the identity is not a match of L in the solver's host";
+      return;
+    }
+    used[found] = true;
+    m.arc.push_back(found);
+  }
+  if (!satisfies_dangling(rule, a.host_graph, m)) {
+    a.replay_failure = "the match breaks the dangling condition in the solver's host";
+    return;
+  }
+  a.result_graph = derive(rule, a.host_graph, m);
+  a.replayed = graph_breaks(a.result_graph, c, has_dim(cls.partial, c.i) || (c.j >= 0 && has_dim(cls.partial, c.j)));
+  if (!a.replayed) a.replay_failure = fmt::format("the library's derivation on the solver's host satisfies {}", c.name());
+}
+
+// The queries of one host class, sharing one incremental solver.
+class ClassRun {
+ public:
+  ClassRun(const Rule& rule, HostClass cls, const ProveOptions& o) : rule_(rule), cls_(std::move(cls)), o_(o) {
+    darts_ = o.max_darts;
+    blocked_ = unmatchable_outside(rule, cls_);
+    if (blocked_.empty() && rule.left().node_count() > o.max_darts)
+      unknown_ = fmt::format("L has {} nodes, more than --max-darts {}", rule.left().node_count(), o.max_darts);
+    if (!blocked_.empty() || !unknown_.empty()) return;
+    // Past a small-model bound, larger hosts add nothing: encode up to it.
+    darts_ = bound() ? std::min(o.max_darts, bound()) : o.max_darts;
+    enc_ = std::make_unique<DpoEncoding>(rule, cls_, darts_, o.rlimit, o.timeout_ms, o.fault);
+    derivable_ = enc_->derivable();
+    if (derivable_ == Answer::unsat)
+      blocked_ = fmt::format("no host of up to {} darts admits a match with a derivation", darts_);
+    else if (derivable_ == Answer::unknown)
+      unknown_ = "the solver ran out of resources deciding whether a derivation exists";
+  }
+
+  ClassAnswer ask(const HConstraint& c) {
+    const auto start = Clock::now();
+    ClassAnswer a;
+    a.class_name = cls_.name;
+    a.darts = darts_;
+    a.bound = bound();
+    if (!blocked_.empty()) {
+      a.status = Status::vacuous;
+      a.why = blocked_;
+    } else if (!unknown_.empty()) {
+      a.status = Status::unknown;
+      a.why = unknown_;
+    } else {
+      switch (enc_->breaks(c, &a.core)) {
+        case Answer::sat:
+          a.status = Status::counterexample;
+          a.minimal = o_.minimize && enc_->minimize();
+          a.host = enc_->host();
+          a.darts = a.host->size;
+          replay(rule_, cls_, c, a);
+          break;
+        case Answer::unsat: a.status = Status::none; break;
+        case Answer::unknown:
+          a.status = Status::unknown;
+          a.why = "rlimit reached";
+          break;
+      }
+    }
+    a.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return a;
+  }
+
+ private:
+  // The small-model bounds of docs/prove.md: Theorem 1's violations do not
+  // depend on the host beyond L; Theorem 2's live in L and its O-partners.
+  std::size_t bound() const {
+    const std::size_t nl = rule_.left().node_count();
+    return cls_.theorem == 1 ? nl : cls_.theorem == 2 ? 2 * nl : 0;
+  }
+
+  const Rule& rule_;
+  HostClass cls_;
+  const ProveOptions& o_;
+  std::size_t darts_ = 0;
+  std::string blocked_, unknown_;
+  std::unique_ptr<DpoEncoding> enc_;
+  Answer derivable_ = Answer::unknown;
+};
+
+void judge(ConstraintProof& p, bool combinatorial_rule, bool consistent) {
+  const HConstraint& c = p.constraint;
+  const bool holds = p.static_holds.value_or(true);
+  auto bad_replay = [](const ClassAnswer& a) { return a.status == Status::counterexample && !a.replayed; };
+  if (bad_replay(p.model) || (p.theorem && bad_replay(*p.theorem))) {
+    p.agreement = Agreement::disagree;
+    p.note = "a solver counterexample does not replay: " + (bad_replay(p.model) ? p.model : *p.theorem).replay_failure;
+    return;
+  }
+  // Maps of the model are hosts of every theorem's class, so a static
+  // condition that holds (with the theorem's premise) forbids a map
+  // counterexample; so does a consistent rule.
+  const bool premise = c.kind == RuleCondition::incident_arcs || combinatorial_rule;
+  if (p.model.status == Status::counterexample && (consistent || (holds && premise && c.kind != RuleCondition::no_loop) ||
+                                                   (c.kind == RuleCondition::no_loop && holds))) {
+    p.agreement = Agreement::disagree;
+    p.note = fmt::format("static {} holds, yet a valid map on {} darts yields an H that breaks it", c.name(), p.model.darts);
+    return;
+  }
+  if (!p.theorem) {
+    p.agreement = (p.model.status == Status::counterexample) != holds ? Agreement::agree : Agreement::not_compared;
+    if (p.agreement == Agreement::not_compared)
+      p.note = p.model.status == Status::unknown ? "unknown" : "static fails, no counterexample among maps up to the bound";
+    return;
+  }
+  const ClassAnswer& t = *p.theorem;
+  const int n = c.kind == RuleCondition::incident_arcs ? 1 : c.kind == RuleCondition::non_orientation ? 2 : 3;
+  if (n > 1 && !combinatorial_rule) {
+    p.agreement = Agreement::not_compared;
+    p.note = fmt::format("Theorem {} assumes a D-combinatorial rule", n);
+  } else if (t.status == Status::vacuous) {
+    p.agreement = Agreement::not_compared;
+    p.note = fmt::format("Theorem {} is vacuous here: {}", n, t.why);
+  } else if (t.status == Status::unknown) {
+    p.agreement = Agreement::not_compared;
+    p.note = "the solver answered unknown";
+  } else if (t.status == Status::counterexample) {
+    p.agreement = holds ? Agreement::disagree : Agreement::agree;
+    if (holds) p.note = fmt::format("static {} holds but a host of Theorem {}'s class breaks it: the theorem's (=>) fails", c.name(), n);
+  } else if (holds) {
+    p.agreement = Agreement::agree;
+  } else if (t.proved_for_all()) {
+    p.agreement = Agreement::disagree;
+    p.note = fmt::format("static {} fails but no host of Theorem {}'s class breaks it (small-model bound {} darts): the theorem's (<=) fails",
+                         c.name(), n, t.bound);
+  } else {
+    p.agreement = Agreement::unresolved;
+    p.note = fmt::format("static {} fails; no counterexample up to {} darts", c.name(), t.darts);
+  }
+  if (p.agreement == Agreement::agree && !holds && p.model.status != Status::counterexample)
+    p.note = fmt::format("a host of Theorem {}'s class breaks it, no valid {} up to {} darts does", n, p.model.class_name, p.model.darts);
+}
+
+}  // namespace
+
+RuleProof prove_rule(const CatalogRule& entry, const ProveOptions& o) {
+  const auto start = Clock::now();
+  const Rule& rule = entry.rule;
+  RuleProof p;
+  p.rule = rule.name();
+  p.model = rule.model().name;
+  if (entry.words.scheme) {
+    p.out_of_scope = "rule scheme: the solver encodes DPO rules (schemes are checked by `dartcheck fuzz`)";
+    return p;
+  }
+  const RuleVerdict verdict = check_rule(rule);
+  for (const auto& c : verdict.conditions)
+    if (!c.holds) p.static_failures.push_back(c.name());
+  const bool comb = combinatorial(verdict);
+  ClassRun maps(rule, model_class(rule.model()), o);
+  for (const HConstraint& c : model_constraints(rule.model())) {
+    ConstraintProof cp;
+    cp.constraint = c;
+    if (const auto* sc = static_condition(verdict, c)) cp.static_holds = sc->holds;
+    cp.model = maps.ask(c);
+    if (auto cls = theorem_class(rule.model(), c)) cp.theorem = ClassRun(rule, *cls, o).ask(c);
+    judge(cp, comb, verdict.consistent());
+    p.constraints.push_back(std::move(cp));
+  }
+  p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return p;
+}
+
+}  // namespace dartcheck::proofs

@@ -1,0 +1,93 @@
+// `dartcheck prove` for one rule: for every constraint of the model, ask
+// the solver for a host whose derived graph H breaks it, once over the
+// hosts of the theorem that speaks of the constraint (to cross-check the
+// theorem's "iff" against the static checker) and once over the valid
+// maps of the model (the user's question). Every counterexample is
+// replayed through the library's own graph derivation before it is
+// believed.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/catalog.hpp"
+#include "core/graph.hpp"
+#include "proofs/dpo_encoding.hpp"
+
+namespace dartcheck::proofs {
+
+struct ProveOptions {
+  std::size_t max_darts = 12;
+  /// Z3 resource units per query (deterministic, unlike seconds).
+  unsigned rlimit = 200'000'000;
+  /// Wall-clock cap per query in milliseconds (0: none); answers then
+  /// depend on the machine.
+  unsigned timeout_ms = 0;
+  bool minimize = true;
+  EncodingFault fault = EncodingFault::none;
+};
+
+enum class Status {
+  counterexample,  // a host whose H breaks the constraint
+  none,            // no such host up to `darts` darts
+  unknown,         // the solver ran out of resources
+  vacuous,         // no host of the class admits a derivation (up to `darts`)
+};
+std::string_view status_name(Status s);
+
+struct ClassAnswer {
+  std::string class_name;
+  Status status = Status::unknown;
+  std::size_t darts = 0;  // the counterexample's size, or the largest size searched
+  bool minimal = false;   // no counterexample on fewer darts
+  /// A small-model bound (docs/prove.md): a counterexample exists iff one
+  /// exists on at most `bound` darts. 0 when none is known.
+  std::size_t bound = 0;
+  std::vector<std::string> core;  // unsat core: the assumptions that sufficed
+  std::string why;                // for vacuous and unknown answers
+  std::optional<SymbolicHost> host;
+  TopoGraph host_graph, result_graph;  // the counterexample as D-graphs
+  bool replayed = false;  // the library's derivation on host_graph breaks the constraint too
+  std::string replay_failure;
+  double seconds = 0;
+  bool proved_for_all() const { return status == Status::none && bound > 0 && darts >= bound; }
+};
+
+enum class Agreement {
+  agree,
+  disagree,      // contradicts a theorem's "iff", or a replay failed: exit 3
+  unresolved,    // static fails, no counterexample up to k below the bound
+  not_compared,  // the theorem's premise fails, the class is vacuous, or unknown
+};
+std::string_view agreement_name(Agreement a);
+
+struct ConstraintProof {
+  HConstraint constraint;
+  std::optional<bool> static_holds;  // the static condition of the same name
+  std::optional<ClassAnswer> theorem;  // none for no-loop: no theorem covers it
+  ClassAnswer model;
+  Agreement agreement = Agreement::not_compared;
+  std::string note;
+};
+
+struct RuleProof {
+  std::string rule;
+  std::string model;
+  std::string out_of_scope;  // why the solver does not encode this rule
+  std::vector<std::string> static_failures;
+  std::vector<ConstraintProof> constraints;
+  double seconds = 0;
+  std::size_t count(Agreement a) const;
+};
+
+RuleProof prove_rule(const CatalogRule& entry, const ProveOptions& options);
+
+/// The host of a solver answer as a D-graph of the class: the encoded links
+/// plus, on the other dimensions, L's arcs (Theorem 1) or L's arcs
+/// completed to permutations (D-combinatorial classes).
+TopoGraph host_graph(const Rule& rule, const HostClass& cls, const SymbolicHost& h);
+/// The host as a dense map of the rule's model (model class only).
+Map host_map(const Model& model, const SymbolicHost& h);
+
+}  // namespace dartcheck::proofs
