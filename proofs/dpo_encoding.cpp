@@ -27,9 +27,10 @@ z3::expr count_is(z3::context& ctx, const std::vector<z3::expr>& terms, std::siz
 
 }  // namespace
 
-DpoEncoding::DpoEncoding(const Rule& rule, const HostClass& cls, std::size_t max_darts, unsigned rlimit, unsigned timeout_ms,
+DpoEncoding::DpoEncoding(z3::context& ctx, const Rule& rule, const HostClass& cls, std::size_t max_darts, unsigned rlimit, unsigned timeout_ms,
                          EncodingFault fault)
-    : rule_(rule),
+    : ctx_(ctx),
+      rule_(rule),
       cls_(cls),
       k_(max_darts),
       nl_(rule.left().node_count()),

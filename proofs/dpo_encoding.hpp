@@ -44,7 +44,9 @@ enum class Answer { sat, unsat, unknown };
 class DpoEncoding {
  public:
   /// `rlimit` bounds each check by Z3's deterministic resource counter.
-  DpoEncoding(const Rule& rule, const HostClass& cls, std::size_t max_darts, unsigned rlimit, unsigned timeout_ms = 0,
+  /// `ctx` may serve several encodings (creating a context costs more than
+  /// a small query); it must outlive this object.
+  DpoEncoding(z3::context& ctx, const Rule& rule, const HostClass& cls, std::size_t max_darts, unsigned rlimit, unsigned timeout_ms = 0,
               EncodingFault fault = EncodingFault::none);
 
   /// Some host of the class on at most max_darts darts admits the match
@@ -76,12 +78,12 @@ class DpoEncoding {
   void decode(const z3::model& m);
   const Exprs& links(Dim d) const { return link_[static_cast<std::size_t>(d)]; }
 
+  z3::context& ctx_;
   const Rule& rule_;
   HostClass cls_;
   std::size_t k_, nl_, added_;
   unsigned rlimit_;
   EncodingFault fault_;
-  z3::context ctx_;
   z3::solver solver_;
   unsigned width_ = 0;
   std::size_t none_ = 0;
