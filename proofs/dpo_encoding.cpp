@@ -238,7 +238,7 @@ Answer DpoEncoding::run(const Exprs& assumptions, std::vector<std::string>* core
   if (r == z3::unsat) {
     if (core) {
       core->clear();
-      for (const auto& e : solver_.unsat_core()) core->push_back(e.to_string());
+      for (const auto& e : solver_.unsat_core()) core->push_back(e.decl().name().str());
     }
     return Answer::unsat;
   }
