@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "checkers/host_search.hpp"
 #include "cli/fuzz.hpp"
 #include "core/catalog.hpp"
 #include "generators/random_rules.hpp"
@@ -166,4 +167,53 @@ TEST(ProvePlantedBug, DroppedDanglingConditionIsDetected) {
   o.fault = EncodingFault::drop_dangling;
   const Tally t = random_agreement(Model::gmap(2), 13, 150, o, false);
   EXPECT_GT(t.disagreements, 0);
+}
+
+// The small-model bounds of docs/prove.md, against brute force: for
+// D-combinatorial rules on D = {0,1}, the solver's answer on hosts of at
+// most the bound (|L| darts for Theorem 1, 2|L| for Theorem 2) equals the
+// answer of the exhaustive search (checkers/host_search) over every host
+// of the class with up to |L| + 3 darts, which is past both bounds since
+// |L| <= 3.
+TEST(ProveSmallModelBound, Theorems1And2AgreeWithBruteForcePastTheBound) {
+  Model two;
+  two.name = "D={0,1}";
+  two.dims = {0, 1};
+  std::mt19937 rng(21);
+  ProveOptions o;
+  o.max_darts = 9;
+  int compared = 0, violated = 0;
+  for (int k = 0; k < 150; ++k) {
+    Model cls = two;
+    const bool theorem2 = k % 2 == 1;
+    if (theorem2) cls.non_oriented = dim_bit(0);
+    const Rule rule = random_combinatorial_rule(rng, cls, cls);
+    if (!combinatorial(check_rule(rule))) continue;
+    const HConstraint c{theorem2 ? RuleCondition::non_orientation : RuleCondition::incident_arcs, 0};
+    const CatalogRule entry{rule, "", {}, {}, std::nullopt, {}, {}};
+    const RuleProof p = prove_rule(entry, o);
+    const ConstraintProof* cp = nullptr;
+    for (const auto& x : p.constraints)
+      if (x.constraint == c) cp = &x;
+    // The model of `rule` is cls itself: its constraints include c.
+    ASSERT_NE(cp, nullptr);
+    ASSERT_TRUE(cp->theorem.has_value());
+    const ClassAnswer& a = *cp->theorem;
+    const HostSearch hs = search_hosts(rule, cls, 3, [&](const Violation& v) {
+      return v.i == 0 && (theorem2 ? v.constraint == Constraint::non_orientation
+                                   : v.constraint == Constraint::incident_in || v.constraint == Constraint::incident_out);
+    });
+    if (!hs.matched) continue;
+    ++compared;
+    violated += hs.host.has_value();
+    EXPECT_EQ(a.status == Status::counterexample, hs.host.has_value())
+        << c.name() << " solver " << status_name(a.status) << " at bound " << a.bound << "\nL: " << text(rule.left()) << "\nR: " << text(rule.right());
+    if (a.status == Status::none) {
+      EXPECT_EQ(a.darts, a.bound);
+      EXPECT_TRUE(a.proved_for_all());
+    }
+  }
+  std::cout << fmt::format("{} rules compared with brute force, {} with a violation\n", compared, violated);
+  EXPECT_GT(compared, 60);
+  EXPECT_GT(violated, 5);
 }
