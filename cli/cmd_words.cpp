@@ -6,6 +6,8 @@
 #include "core/conjugate_words.hpp"
 #include "core/input_error.hpp"
 #include "generators/random_maps.hpp"
+#include "core/map_io.hpp"
+#include "proofs/word_congruence.hpp"
 
 #include <random>
 
@@ -58,16 +60,39 @@ int words(const WordsOptions& o) {
   }
   const ConjWord w2 = parse_arg(*o.other, *model, "WORD2");
   const ConjWord probe = w + r.conjugate(w2);
-  if (r.congruent(w, w2)) {
-    fmt::print("{} <->* {}: congruent ({} ->* ε)\n", w.str(), w2.str(), probe.str());
-    return ok;
+  const bool congruent = r.congruent(w, w2);
+  std::optional<proofs::WordSeparation> solver;
+  if (o.prove_darts > 0) solver = proofs::separate_words(*model, w, w2, o.prove_darts, 200'000'000);
+  auto solver_line = [&]() -> std::string {
+    if (!solver) return "";
+    switch (solver->answer) {
+      case proofs::Answer::sat: {
+        const Map& m = *solver->map;
+        return fmt::format("\nZ3: a {} of {} darts separates them at dart 0 (ends {} and {}):\n{}", model->name, m.size(), follow(m, 0, w),
+                           follow(m, 0, w2), map_to_yaml(m));
+      }
+      case proofs::Answer::unsat: return fmt::format("\nZ3: no {} of up to {} darts separates them", model->name, o.prove_darts);
+      case proofs::Answer::unknown: return "\nZ3: unknown (rlimit reached)";
+    }
+    return "";
+  };
+  if (congruent) {
+    fmt::print("{} <->* {}: congruent ({} ->* ε){}\n", w.str(), w2.str(), probe.str(), solver_line());
+    // Lemma 3: congruent words end at the same dart on every valid map.
+    return solver && solver->answer == proofs::Answer::sat ? soundness_bug : ok;
   }
-  if (auto witness = separating_map(*model, w, w2)) {
-    fmt::print("{} and {}: not congruent: {}\n", w.str(), w2.str(), *witness);
+  if (solver && solver->answer != proofs::Answer::unknown) {
+    fmt::print("{} and {}: {} has no rewriting to ε in R_{{N,E}}{}\n", w.str(), w2.str(), probe.str(), solver_line());
+    if (solver->answer == proofs::Answer::unsat)
+      fmt::print("note: R_{{N,E}} does not prove them congruent, yet no bounded map separates them\n");
     return violation;
   }
-  fmt::print("{} and {}: not shown congruent ({} has no rewriting to ε, and no random map separates them)\n", w.str(),
-             w2.str(), probe.str());
+  if (auto witness = separating_map(*model, w, w2)) {
+    fmt::print("{} and {}: not congruent: {}{}\n", w.str(), w2.str(), *witness, solver_line());
+    return violation;
+  }
+  fmt::print("{} and {}: not shown congruent ({} has no rewriting to ε, and no random map separates them){}\n", w.str(),
+             w2.str(), probe.str(), solver_line());
   return violation;
 }
 

@@ -45,9 +45,10 @@ int check(const CheckOptions& o);
 struct WordsOptions {
   std::string model, word;
   std::optional<std::string> other;
+  std::size_t prove_darts = 0;  // also ask Z3 for a separating map of up to this many darts (0: no)
 };
 /// Exit 0 for normal forms or congruent words, 1 for words not shown
-/// congruent.
+/// congruent, 3 if Z3 separates words R_{N,E} calls congruent.
 int words(const WordsOptions& o);
 
 struct FuzzCommand {

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   w->add_option("model", words.model, "model giving N and E (2-gmap, 3-omap, ...)")->required();
   w->add_option("word", words.word, "a word: digits are dimensions, ~d is the conjugate of d, ε the empty word")->required();
   w->add_option("word2", words.other, "a second word: test w <->* w2 instead");
+  w->add_option("--prove", words.prove_darts, "with WORD2: ask Z3 for a map of up to this many darts on which the two paths differ");
 
   cli::FuzzCommand fuzz;
   auto* f = app.add_subcommand("fuzz", "Apply every rule at many matches on enumerated, given and random maps; set failures against the static verdict");

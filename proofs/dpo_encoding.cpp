@@ -269,6 +269,27 @@ Answer DpoEncoding::breaks(const HConstraint& c, std::vector<std::string>* core)
   return run(assumptions, core);
 }
 
+z3::expr DpoEncoding::follow(z3::expr from, const ConjWord& w) {
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    const Exprs& l = links(w.dim(k));
+    if (!w.bar(k) || !rule_.model().is_oriented(w.dim(k))) {
+      from = lookup(l, from);
+      continue;
+    }
+    z3::expr source = none();  // the dart whose link is `from`
+    for (std::size_t y = l.size(); y-- > 0;) source = z3::ite(from != none() && l[y] == from, val(y), source);
+    from = source;
+  }
+  return from;
+}
+
+Answer DpoEncoding::separates(const ConjWord& a, const ConjWord& b) {
+  const z3::expr apart = ctx_.bool_const(("separates " + a.str() + " " + b.str()).c_str());
+  solver_.add(z3::implies(apart, follow(val(0), a) != follow(val(0), b)));
+  last_ = {apart};
+  return run(last_, nullptr);
+}
+
 bool DpoEncoding::minimize() {
   while (host_.size > nl_) {
     solver_.push();

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/conjugate_words.hpp"
 #include "core/map.hpp"
 #include "proofs/host_class.hpp"
 
@@ -56,6 +57,11 @@ class DpoEncoding {
   /// that satisfy I on the dimensions c reads, as Theorems 2-3 assume). On
   /// unsat, `core` receives the names of the assumptions that sufficed.
   Answer breaks(const HConstraint& c, std::vector<std::string>* core = nullptr);
+  /// Words (002 Sec. 9.2): is there a host on which the paths of `a` and
+  /// `b` from dart 0 end at different darts (or one of them breaks off)?
+  /// Conjugate letters follow arcs backwards. Unsat means a and b are
+  /// congruent on every host of the class up to max_darts darts.
+  Answer separates(const ConjWord& a, const ConjWord& b);
   /// After sat: looks for the same answer on fewer darts, as long as the
   /// solver answers; true if the last size is proved minimal.
   bool minimize();
@@ -74,6 +80,7 @@ class DpoEncoding {
   void encode_derived();
   z3::expr violation(const HConstraint& c);
   z3::expr incident_violation(Dim d);
+  z3::expr follow(z3::expr from, const ConjWord& w);
   Answer run(const Exprs& assumptions, std::vector<std::string>* core);
   void decode(const z3::model& m);
   const Exprs& links(Dim d) const { return link_[static_cast<std::size_t>(d)]; }
