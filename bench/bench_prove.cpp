@@ -1,0 +1,70 @@
+// Time to the solver's answer per seed DPO rule and constraint, and the
+// largest host size answered within a wall-clock cap per query (10 s by
+// default), for BENCHMARKS.md:
+//   build/bench/bench_prove [CAP_SECONDS] [--rule NAME]
+// Sizes tried: 12, 16, 24, 32, 48, 64 darts; a constraint stops growing at
+// its first unknown answer or over-cap query.
+#include <cstdlib>
+#include <map>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "core/catalog.hpp"
+#include "proofs/rule_prover.hpp"
+
+using namespace dartcheck;
+using namespace dartcheck::proofs;
+
+int main(int argc, char** argv) {
+  double cap = 10;
+  std::string only;
+  for (int a = 1; a < argc; ++a) {
+    if (std::string(argv[a]) == "--rule" && a + 1 < argc) only = argv[++a];
+    else cap = std::atof(argv[a]);
+  }
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
+  fmt::print("{:<40} {:<8} {:>12} {:>12} {:>9} {:>9}\n", "rule", "constr.", "thm k=12 s", "maps k=12 s", "thm max k", "maps max k");
+  double total12 = 0, worst12 = 0;
+  for (const auto& e : catalog.rules) {
+    if (e.words.scheme || (!only.empty() && e.rule.name() != only)) continue;
+    std::map<std::string, std::size_t> thm_k, map_k;
+    std::map<std::string, std::pair<double, double>> at12;
+    std::map<std::string, bool> thm_open, map_open;
+    for (std::size_t k : {12, 16, 24, 32, 48, 64}) {
+      ProveOptions o;
+      o.max_darts = k;
+      o.timeout_ms = static_cast<unsigned>(cap * 1000);
+      o.rlimit = 4'000'000'000U;
+      const RuleProof p = prove_rule(e, o);
+      bool grew = false;
+      for (const auto& c : p.constraints) {
+        const std::string n = c.constraint.name();
+        if (!thm_open.count(n)) thm_open[n] = map_open[n] = true;
+        if (k == 12) {
+          at12[n] = {c.theorem ? c.theorem->seconds : 0, c.model.seconds};
+          worst12 = std::max({worst12, at12[n].first, at12[n].second});
+          total12 += at12[n].first + at12[n].second;
+        }
+        auto grow = [&](const ClassAnswer& a, std::map<std::string, std::size_t>& best, bool& open) {
+          if (!open) return;
+          if (a.status == Status::unknown || a.seconds > cap) {
+            open = false;
+            return;
+          }
+          best[n] = a.status == Status::none && a.bound ? a.darts : k;
+          // A counterexample or a proof for all hosts does not grow with k.
+          if (a.status == Status::counterexample || a.proved_for_all()) return;
+          grew = true;
+        };
+        if (c.theorem) grow(*c.theorem, thm_k, thm_open[n]);
+        grow(c.model, map_k, map_open[n]);
+      }
+      if (!grew) break;
+    }
+    for (const auto& [n, t] : at12)
+      fmt::print("{:<40} {:<8} {:>12.4f} {:>12.4f} {:>9} {:>9}\n", e.rule.name(), n, t.first, t.second,
+                 thm_k.count(n) ? std::to_string(thm_k[n]) : "-", map_k.count(n) ? std::to_string(map_k[n]) : "-");
+  }
+  fmt::print("\nat k = 12: {:.2f} s for all queries, slowest query {:.3f} s (cap {} s)\n", total12, worst12, cap);
+}
