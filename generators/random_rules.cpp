@@ -7,6 +7,18 @@
 #include <fmt/format.h>
 
 namespace dartcheck {
+namespace {
+
+// Draws every permutation of s anew, on n nodes.
+void shuffle_all(Perms& s, std::size_t n, std::mt19937& rng) {
+  for (auto& p : s) {
+    p.resize(n);
+    std::iota(p.begin(), p.end(), 0);
+    std::shuffle(p.begin(), p.end(), rng);
+  }
+}
+
+}  // namespace
 
 bool perms_in_model(const Model& m, const Perms& s) {
   const std::size_t n = s[0].size();
@@ -47,13 +59,8 @@ Rule random_rule(std::mt19937& rng, const Model& arcs_from, const Model& model, 
   std::vector<std::tuple<NodeId, NodeId, Dim>> larcs;
   if (coin(75)) {
     Perms s(model.dims.size());
-    do {
-      for (auto& p : s) {
-        p.resize(nl);
-        std::iota(p.begin(), p.end(), 0);
-        std::shuffle(p.begin(), p.end(), rng);
-      }
-    } while (!perms_in_model(arcs_from, s) && !(any_arcs_often && coin(50)));
+    do shuffle_all(s, nl, rng);
+    while (!perms_in_model(arcs_from, s) && !(any_arcs_often && coin(50)));
     for (std::size_t k = 0; k < model.dims.size(); ++k)
       for (NodeId v = 0; v < nl; ++v)
         if (coin(70)) larcs.emplace_back(v, s[k][v], model.dims[k]);
@@ -91,13 +98,8 @@ Rule random_combinatorial_rule(std::mt19937& rng, const Model& host_class, const
   auto coin = [&](int percent) { return static_cast<int>(rng() % 100) < percent; };
   const std::size_t nl = 1 + rng() % 3;
   Perms s(model.dims.size());
-  do {
-    for (auto& p : s) {
-      p.resize(nl);
-      std::iota(p.begin(), p.end(), 0);
-      std::shuffle(p.begin(), p.end(), rng);
-    }
-  } while (!perms_in_model(host_class, s));
+  do shuffle_all(s, nl, rng);
+  while (!perms_in_model(host_class, s));
   TopoGraph L, R;
   for (NodeId v = 0; v < nl; ++v) L.add_node(fmt::format("n{}", v));
   for (std::size_t k = 0; k < model.dims.size(); ++k)

@@ -15,7 +15,7 @@ std::vector<HConstraint> model_constraints(const Model& m) {
   return out;
 }
 
-std::optional<HostClass> theorem_class(const Model& m, const HConstraint& c) {
+std::optional<HostClass> theorem_class(const HConstraint& c) {
   HostClass h;
   h.kind = HostClass::Kind::theorem;
   switch (c.kind) {
@@ -39,7 +39,6 @@ std::optional<HostClass> theorem_class(const Model& m, const HConstraint& c) {
       break;
     default: return std::nullopt;
   }
-  (void)m;
   return h;
 }
 

@@ -10,6 +10,7 @@
 // constraints those links satisfy.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,7 +55,7 @@ struct HostClass {
 
 /// The class of the theorem that speaks of constraint c (none for no-loop,
 /// which no theorem covers).
-std::optional<HostClass> theorem_class(const Model& m, const HConstraint& c);
+std::optional<HostClass> theorem_class(const HConstraint& c);
 /// The valid maps of the model.
 HostClass model_class(const Model& m);
 

@@ -166,22 +166,6 @@ class ClassRun {
     setup_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   }
 
-  void setup(const Rule& rule, const ProveOptions& o) {
-    darts_ = o.max_darts;
-    blocked_ = unmatchable_outside(rule, cls_);
-    if (blocked_.empty() && rule.left().node_count() > o.max_darts)
-      unknown_ = fmt::format("L has {} nodes, more than --max-darts {}", rule.left().node_count(), o.max_darts);
-    if (!blocked_.empty() || !unknown_.empty()) return;
-    // Past a small-model bound, larger hosts add nothing: encode up to it.
-    darts_ = bound() ? std::min(o.max_darts, bound()) : o.max_darts;
-    enc_ = std::make_unique<DpoEncoding>(ctx_, rule, cls_, darts_, o.rlimit, o.timeout_ms, o.fault);
-    derivable_ = enc_->derivable();
-    if (derivable_ == Answer::unsat)
-      blocked_ = fmt::format("no host of up to {} darts admits a match with a derivation", darts_);
-    else if (derivable_ == Answer::unknown)
-      unknown_ = "the solver ran out of resources deciding whether a derivation exists";
-  }
-
   ClassAnswer ask(const HConstraint& c) {
     const auto start = Clock::now();
     ClassAnswer a;
@@ -217,6 +201,22 @@ class ClassRun {
   }
 
  private:
+  void setup(const Rule& rule, const ProveOptions& o) {
+    darts_ = o.max_darts;
+    blocked_ = unmatchable_outside(rule, cls_);
+    if (blocked_.empty() && rule.left().node_count() > o.max_darts)
+      unknown_ = fmt::format("L has {} nodes, more than --max-darts {}", rule.left().node_count(), o.max_darts);
+    if (!blocked_.empty() || !unknown_.empty()) return;
+    // Past a small-model bound, larger hosts add nothing: encode up to it.
+    darts_ = bound() ? std::min(o.max_darts, bound()) : o.max_darts;
+    enc_ = std::make_unique<DpoEncoding>(ctx_, rule, cls_, darts_, o.rlimit, o.timeout_ms, o.fault);
+    derivable_ = enc_->derivable();
+    if (derivable_ == Answer::unsat)
+      blocked_ = fmt::format("no host of up to {} darts admits a match with a derivation", darts_);
+    else if (derivable_ == Answer::unknown)
+      unknown_ = "the solver ran out of resources deciding whether a derivation exists";
+  }
+
   // The small-model bounds of docs/prove.md: Theorem 1's violations do not
   // depend on the host beyond L; Theorem 2's live in L and its O-partners.
   std::size_t bound() const {
@@ -248,8 +248,7 @@ void judge(ConstraintProof& p, bool combinatorial_rule, bool consistent) {
   // condition that holds (with the theorem's premise) forbids a map
   // counterexample; so does a consistent rule.
   const bool premise = c.kind == RuleCondition::incident_arcs || combinatorial_rule;
-  if (p.model.status == Status::counterexample && (consistent || (holds && premise && c.kind != RuleCondition::no_loop) ||
-                                                   (c.kind == RuleCondition::no_loop && holds))) {
+  if (p.model.status == Status::counterexample && (consistent || (holds && (premise || c.kind == RuleCondition::no_loop)))) {
     p.agreement = Agreement::disagree;
     p.note = fmt::format("static {} holds, yet a valid map on {} darts yields an H that breaks it", c.name(), p.model.darts);
     return;
@@ -311,7 +310,7 @@ RuleProof prove_rule(const CatalogRule& entry, const ProveOptions& o) {
     cp.constraint = c;
     if (const auto* sc = static_condition(verdict, c)) cp.static_holds = sc->holds;
     cp.model = maps.ask(c);
-    if (auto cls = theorem_class(rule.model(), c)) cp.theorem = ClassRun(ctx, rule, *cls, o).ask(c);
+    if (auto cls = theorem_class(c)) cp.theorem = ClassRun(ctx, rule, *cls, o).ask(c);
     judge(cp, comb, verdict.consistent());
     p.constraints.push_back(std::move(cp));
   }
