@@ -93,8 +93,10 @@ std::string confirm_dynamically(const CatalogRule& entry, proofs::ConstraintProo
 int prove(const ProveCommand& c) {
   const Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format);
   if (c.max_darts < 1 || c.max_darts > 256) throw InputError("<command line>", 0, 0, "--max-darts: expected 1 to 256");
+  if (c.scheme_darts < 1 || c.scheme_darts > 256) throw InputError("<command line>", 0, 0, "--scheme-darts: expected 1 to 256");
   proofs::ProveOptions o;
   o.max_darts = c.max_darts;
+  o.scheme_darts = c.scheme_darts;
   o.rlimit = c.rlimit;
   o.timeout_ms = static_cast<unsigned>(c.timeout * 1000);
 
@@ -150,7 +152,7 @@ int prove(const ProveCommand& c) {
     for (std::size_t i = 0; i < p.constraints.size(); ++i) {
       const auto& cp = p.constraints[i];
       fmt::print("  {:<11} static {:<5}  theorem: {:<36}  maps: {:<32}  {}\n", cp.constraint.name(),
-                 cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-", cp.theorem ? answer_text(*cp.theorem) : "(no theorem)",
+                 cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-", cp.theorem ? answer_text(*cp.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)",
                  answer_text(cp.model), proofs::agreement_name(cp.agreement));
       if (!cp.note.empty()) fmt::print("  {:<11} {}\n", "", cp.note);
       if (cp.theorem && cp.theorem->status == Status::counterexample && c.explain)

@@ -65,6 +65,7 @@ int fuzz(const FuzzCommand& c);
 struct ProveCommand {
   std::string catalog, rule, out, format = "text";
   std::size_t max_darts = 10;
+  std::size_t scheme_darts = 6;
   unsigned rlimit = 200'000'000;
   double timeout = 0;  // seconds of wall clock per query on top of rlimit (0: none)
   bool explain = false;

@@ -66,6 +66,9 @@ int main(int argc, char** argv) {
   p->add_option("catalog", prove.catalog, "YAML catalog")->required();
   p->add_option("--rule", prove.rule, "prove only this rule");
   p->add_option("--max-darts", prove.max_darts, "search hosts of up to this many darts")->capture_default_str();
+  p->add_option("--scheme-darts", prove.scheme_darts,
+                "for rule schemes, hosts of up to this many darts (at most --max-darts): H has that many darts per node of R")
+      ->capture_default_str();
   p->add_option("--rlimit", prove.rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str();
   p->add_option("--timeout", prove.timeout, "also stop a query after this many seconds (answers then depend on the machine)");
   p->add_option("--out", prove.out, "write each counterexample on a map of the model here, with a replay command");

@@ -7,7 +7,10 @@
 namespace dartcheck {
 namespace {
 
-Outcome<SchemeDerivation> refuse(Refusal r, std::string why) { return {std::nullopt, r, std::move(why)}; }
+template <class T>
+Outcome<T> refuse(Refusal r, std::string why) {
+  return {std::nullopt, r, std::move(why)};
+}
 
 const ConjWord& word(const std::vector<ConjWord>& ws, ArcId e) {
   static const ConjWord eps;
@@ -16,57 +19,73 @@ const ConjWord& word(const std::vector<ConjWord>& ws, ArcId e) {
 
 }  // namespace
 
-Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts) {
-  const TopoGraph &L = core.left(), &R = core.right();
-  if (hook_darts.size() != core.hooks().size())
-    return refuse(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
-                                                  core.hooks().size() == 1 ? "" : "s"));
-  for (Dart h : hook_darts)
-    if (h >= g.size()) return refuse(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
-  const ConjugateRewriting rw(core.model());
-
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
+  const ConjugateRewriting rw(model);
+  PatternGraphs out;
   // W: the words of the scheme, each with its conjugate (P_v takes the
   // darts reachable to and from v).
-  std::vector<ConjWord> gens;
   for (const auto* ws : {&words.left, &words.right})
     for (const auto& w : *ws)
       for (const ConjWord& x : {w, rw.conjugate(w)})
-        if (!x.empty() && std::find(gens.begin(), gens.end(), x) == gens.end()) gens.push_back(x);
+        if (!x.empty() && std::find(out.gens.begin(), out.gens.end(), x) == out.gens.end()) out.gens.push_back(x);
 
   // P_v by BFS; index[d] is d's position in P_v, and shift[k][p] the
   // position of p·gens[k], recorded as the BFS follows it (so every p·w
-  // below is a table lookup, not a walk). With several hooks (one per
+  // is a table lookup, not a walk). With several hooks (one per
   // component of L, Sec. 6.3) every P_{v_k} is walked in the same order
   // and must give the same tables: the pattern graphs are isomorphic, and
-  // patterns[k][p] is the image of pattern node p under that isomorphism.
+  // darts[k][p] is the image of pattern node p under that isomorphism.
   constexpr std::uint32_t none = 0xffffffffU;
   std::vector<std::uint32_t> index(g.size(), none);
-  std::vector<std::vector<std::uint32_t>> shift(gens.size());
-  std::vector<std::vector<Dart>> patterns(hook_darts.size());
+  out.shift.resize(out.gens.size());
+  out.darts.resize(hook_darts.size());
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
-    std::vector<Dart>& pattern = patterns[h];
+    std::vector<Dart>& pattern = out.darts[h];
     pattern.push_back(hook_darts[h]);
     index[hook_darts[h]] = 0;
     for (std::size_t k = 0; k < pattern.size(); ++k)
-      for (std::size_t w = 0; w < gens.size(); ++w) {
-        const Dart t = follow(g, pattern[k], gens[w]);
+      for (std::size_t w = 0; w < out.gens.size(); ++w) {
+        const Dart t = follow(g, pattern[k], out.gens[w]);
         if (t == no_dart)
-          return refuse(Refusal::not_combinatorial,
-                        fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], gens[w].str()));
+          return refuse<PatternGraphs>(Refusal::not_combinatorial, fmt::format("dart {} has no {}-path: the host is not combinatorial",
+                                                                               pattern[k], out.gens[w].str()));
         if (index[t] == none) {
           index[t] = static_cast<std::uint32_t>(pattern.size());
           pattern.push_back(t);
         }
         if (h == 0) {
-          shift[w].push_back(index[t]);
-        } else if (shift[w][k] != index[t]) {
-          return refuse(Refusal::no_match, fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one "
-                                                       "pattern for every component of L)",
-                                                       hook_darts[0], hook_darts[h]));
+          out.shift[w].push_back(index[t]);
+        } else if (out.shift[w][k] != index[t]) {
+          return refuse<PatternGraphs>(Refusal::no_match,
+                                       fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one "
+                                                   "pattern for every component of L)",
+                                                   hook_darts[0], hook_darts[h]));
         }
       }
     for (Dart d : pattern) index[d] = none;
   }
+  return {std::move(out), Refusal::none, {}};
+}
+
+std::uint32_t PatternGraphs::step(std::size_t p, const ConjWord& w) const {
+  if (w.empty()) return static_cast<std::uint32_t>(p);
+  return shift[static_cast<std::size_t>(std::find(gens.begin(), gens.end(), w) - gens.begin())][p];
+}
+
+Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts) {
+  const TopoGraph &L = core.left(), &R = core.right();
+  if (hook_darts.size() != core.hooks().size())
+    return refuse<SchemeDerivation>(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
+                                                  core.hooks().size() == 1 ? "" : "s"));
+  for (Dart h : hook_darts)
+    if (h >= g.size()) return refuse<SchemeDerivation>(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
+  const ConjugateRewriting rw(core.model());
+  auto found = pattern_graphs(core.model(), words, g, hook_darts);
+  if (!found.ok()) return refuse<SchemeDerivation>(found.refusal, std::move(found.why));
+  const PatternGraphs& pg = *found.value;
+  const std::vector<ConjWord>& gens = pg.gens;
+  const auto& shift = pg.shift;
+  const auto& patterns = pg.darts;
   const std::vector<Dart>& pattern = patterns[0];
   const std::size_t np = pattern.size();
   // The generator of a word (-1 for ε, which does not move).
@@ -87,7 +106,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   std::vector<std::pair<std::uint32_t, NodeId>> queue;
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
     const NodeId hook = core.hooks()[h];
-    if (m[hook][0] != no_dart) return refuse(Refusal::bad_hooks, "two hooks name one node of L");
+    if (m[hook][0] != no_dart) return refuse<SchemeDerivation>(Refusal::bad_hooks, "two hooks name one node of L");
     m[hook][0] = hook_darts[h];
     queue.emplace_back(0, hook);
   }
@@ -111,13 +130,13 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
         continue;
       }
       if (there == no_dart)
-        return refuse(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source),
+        return refuse<SchemeDerivation>(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source),
                                                      a.label, L.name(a.target), pattern[p], here, a.label));
       if (m[y][q] == no_dart) {
         m[y][q] = there;
         queue.emplace_back(q, y);
       } else if (m[y][q] != there) {
-        return refuse(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q],
+        return refuse<SchemeDerivation>(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q],
                                                      L.name(y), m[y][q], there));
       }
     }
@@ -128,10 +147,10 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
     for (std::size_t p = 0; p < np; ++p) {
       const Dart d = m[x][p];
       if (d == no_dart)
-        return refuse(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) "
+        return refuse<SchemeDerivation>(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) "
                                                          "is not connected, so the hooks do not fix the match (002 Sec. 6.3)",
                                                          pattern[p], L.name(x)));
-      if (taken[d]) return refuse(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
+      if (taken[d]) return refuse<SchemeDerivation>(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
       taken[d] = true;
     }
   // Arc injectivity: two arcs of L out of one node with one label share
@@ -139,7 +158,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   for (ArcId e = 0; e < L.arc_count(); ++e)
     for (ArcId f = e + 1; f < L.arc_count(); ++f)
       if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label)
-        return refuse(Refusal::not_injective,
+        return refuse<SchemeDerivation>(Refusal::not_injective,
                       fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source)));
   // Dangling: a deleted node needs an L arc in and out for every dimension
   // its darts carry.
@@ -153,7 +172,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
       }
       for (std::size_t p = 0; p < np; ++p)
         if ((!out && g.link(i, m[x][p]) != no_dart) || (!in && g.inverse_link(i, m[x][p]) != no_dart))
-          return refuse(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[x][p], L.name(x), i));
+          return refuse<SchemeDerivation>(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[x][p], L.name(x), i));
     }
   }
   // Representability, per scheme arc (the same for every pattern node).
@@ -162,7 +181,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
     const auto& a = R.arc(e);
     for (ArcId f = e + 1; f < R.arc_count(); ++f)
       if (!core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label)
-        return refuse(Refusal::not_representable, fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source)));
+        return refuse<SchemeDerivation>(Refusal::not_representable, fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source)));
     const NodeId x = core.to_left(a.source);
     if (x == no_node) continue;
     bool freed = false, kept = false;
@@ -170,7 +189,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
     for (ArcId f = 0; f < R.arc_count(); ++f) kept |= core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label;
     for (std::size_t p = 0; p < np && !freed; ++p)
       if (kept || g.link(a.label, m[x][p]) != no_dart)
-        return refuse(Refusal::not_representable, fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label,
+        return refuse<SchemeDerivation>(Refusal::not_representable, fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label,
                                                               R.name(a.source), m[x][p], a.label));
   }
 

@@ -14,6 +14,22 @@
 
 namespace dartcheck {
 
+/// The pattern graphs of the hook darts (002 Def. 20): W's words and their
+/// conjugates as generators, the darts of each P_{v_k} in BFS order
+/// (darts[k][0] is the hook dart), and shift[w][p], the position of p·w
+/// in P_v. With several hooks every pattern has the same shift tables.
+struct PatternGraphs {
+  std::vector<ConjWord> gens;
+  std::vector<std::vector<Dart>> darts;
+  std::vector<std::vector<std::uint32_t>> shift;
+  /// The position of p·w for a word w of the scheme (ε stays at p).
+  std::uint32_t step(std::size_t p, const ConjWord& w) const;
+};
+
+/// Refuses when a word has no path from a pattern dart
+/// (not-combinatorial) or when two hooks' pattern graphs differ (no-match).
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
+
 struct SchemeDerivation {
   std::size_t pattern_nodes = 0;  // |P_v|
   std::size_t matched_darts = 0;  // |P_v| · |V_L|

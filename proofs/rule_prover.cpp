@@ -7,6 +7,8 @@
 
 #include "checkers/graph_constraints.hpp"
 #include "core/graph_derivation.hpp"
+#include "core/scheme_instantiation.hpp"
+#include "proofs/scheme_encoding.hpp"
 
 namespace dartcheck::proofs {
 
@@ -123,6 +125,41 @@ std::string outside_class(const TopoGraph& g, const HostClass& cls, const Model&
   return {};
 }
 
+// The match of L in the solver's host that sends L's node v to nodes[v],
+// with an unused host arc for every arc of L; nullopt if there is none.
+std::optional<GraphMatch> match_at(const TopoGraph& L, const TopoGraph& host, std::vector<NodeId> nodes) {
+  GraphMatch m{std::move(nodes), {}};
+  std::vector<bool> used(host.arc_count(), false);
+  for (const auto& e : L.arcs()) {
+    ArcId found = static_cast<ArcId>(-1);
+    for (ArcId f = 0; f < host.arc_count() && found == static_cast<ArcId>(-1); ++f) {
+      const auto& x = host.arc(f);
+      if (!used[f] && x.source == m.node[e.source] && x.target == m.node[e.target] && x.label == e.label) found = f;
+    }
+    if (found == static_cast<ArcId>(-1)) return std::nullopt;
+    used[found] = true;
+    m.arc.push_back(found);
+  }
+  return m;
+}
+
+// Derives H from a[.host_graph] by `rule` at `nodes` with the library's own
+// DPO derivation, and records whether H breaks c.
+void derive_and_check(const Rule& rule, std::vector<NodeId> nodes, const HostClass& cls, const HConstraint& c, ClassAnswer& a) {
+  const auto m = match_at(rule.left(), a.host_graph, std::move(nodes));
+  if (!m) {
+    a.replay_failure = "the solver's match is not a match of L in its host";
+    return;
+  }
+  if (!satisfies_dangling(rule, a.host_graph, *m)) {
+    a.replay_failure = "the match breaks the dangling condition in the solver's host";
+    return;
+  }
+  a.result_graph = derive(rule, a.host_graph, *m);
+  a.replayed = graph_breaks(a.result_graph, c, has_dim(cls.partial, c.i) || (c.j >= 0 && has_dim(cls.partial, c.j)));
+  if (!a.replayed) a.replay_failure = fmt::format("the library's derivation on the solver's host satisfies {}", c.name());
+}
+
 // Replays a solver host through the library: in the class, the identity
 // match satisfies the dangling condition, and derive() breaks c.
 void replay(const Rule& rule, const HostClass& cls, const HConstraint& c, ClassAnswer& a) {
@@ -131,38 +168,61 @@ void replay(const Rule& rule, const HostClass& cls, const HConstraint& c, ClassA
     a.replay_failure = "the solver's host is not in the class: " + why;
     return;
   }
-  const TopoGraph& L = rule.left();
-  GraphMatch m;
-  for (NodeId v = 0; v < L.node_count(); ++v) m.node.push_back(v);
-  std::vector<bool> used(a.host_graph.arc_count(), false);
-  for (const auto& e : L.arcs()) {
-    ArcId found = static_cast<ArcId>(-1);
-    for (ArcId f = 0; f < a.host_graph.arc_count() && found == static_cast<ArcId>(-1); ++f) {
-      const auto& x = a.host_graph.arc(f);
-      if (!used[f] && x.source == e.source && x.target == e.target && x.label == e.label) found = f;
-    }
-    if (found == static_cast<ArcId>(-1)) {
-      a.replay_failure = "the identity is not a match of L in the solver's host";
-      return;
-    }
-    used[found] = true;
-    m.arc.push_back(found);
-  }
-  if (!satisfies_dangling(rule, a.host_graph, m)) {
-    a.replay_failure = "the match breaks the dangling condition in the solver's host";
+  std::vector<NodeId> identity(rule.left().node_count());
+  for (NodeId v = 0; v < identity.size(); ++v) identity[v] = v;
+  derive_and_check(rule, std::move(identity), cls, c, a);
+}
+
+// A scheme's replay: the pattern graph of dart 0 in the solver's map, the
+// instantiated rule ι(S, P_v) built as a DPO rule, and derive() on it.
+void replay_scheme(const CatalogRule& entry, const HostClass& cls, const HConstraint& c, ClassAnswer& a) {
+  const Model& model = entry.rule.model();
+  const Map host = host_map(model, *a.host);
+  a.host_graph = to_graph(host);
+  if (auto why = outside_class(a.host_graph, cls, model); !why.empty()) {
+    a.replay_failure = "the solver's host is not in the class: " + why;
     return;
   }
-  a.result_graph = derive(rule, a.host_graph, m);
-  a.replayed = graph_breaks(a.result_graph, c, has_dim(cls.partial, c.i) || (c.j >= 0 && has_dim(cls.partial, c.j)));
-  if (!a.replayed) a.replay_failure = fmt::format("the library's derivation on the solver's host satisfies {}", c.name());
+  const Dart hook = 0;
+  const auto pattern = pattern_graphs(model, entry.words, host, std::span(&hook, 1));
+  if (!pattern.ok()) {
+    a.replay_failure = "no pattern graph at dart 0 of the solver's map: " + pattern.why;
+    return;
+  }
+  try {
+    const Rule inst = instantiate(entry.rule, entry.words, *pattern.value);
+    // ι(L, P_v) has one node per pattern dart (L is the hook alone).
+    std::vector<NodeId> nodes(pattern.value->darts.front().begin(), pattern.value->darts.front().end());
+    derive_and_check(inst, std::move(nodes), cls, c, a);
+  } catch (const std::invalid_argument& e) {
+    a.replay_failure = fmt::format("the instantiated rule is not a rule: {}", e.what());
+  }
 }
 
 // The queries of one host class, sharing one incremental solver.
+// A scheme that application always refuses (apply_scheme's static
+// refusals): two arcs of L, or two added arcs of R, out of one node with
+// one dimension.
+std::string scheme_never_applies(const Rule& core) {
+  for (const auto* side : {&core.left(), &core.right()}) {
+    const bool left = side == &core.left();
+    for (ArcId e = 0; e < side->arc_count(); ++e)
+      for (ArcId f = e + 1; f < side->arc_count(); ++f) {
+        const auto &a = side->arc(e), &b = side->arc(f);
+        if (a.source != b.source || a.label != b.label) continue;
+        if (left || (!core.preserved_right_arc(e) && !core.preserved_right_arc(f)))
+          return fmt::format("{} has two {}-arcs out of {}: application always refuses", left ? "L" : "R \\ K", a.label, side->name(a.source));
+      }
+  }
+  return {};
+}
+
 class ClassRun {
  public:
-  ClassRun(z3::context& ctx, const Rule& rule, HostClass cls, const ProveOptions& o) : ctx_(ctx), rule_(rule), cls_(std::move(cls)), o_(o) {
+  ClassRun(z3::context& ctx, const CatalogRule& entry, HostClass cls, const ProveOptions& o)
+      : ctx_(ctx), entry_(entry), rule_(entry.rule), cls_(std::move(cls)), o_(o) {
     const auto start = Clock::now();
-    setup(rule, o);
+    setup(rule_, o);
     setup_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   }
 
@@ -185,7 +245,10 @@ class ClassRun {
           a.minimal = o_.minimize && enc_->minimize();
           a.host = enc_->host();
           a.darts = a.host->size;
-          replay(rule_, cls_, c, a);
+          if (entry_.words.scheme)
+            replay_scheme(entry_, cls_, c, a);
+          else
+            replay(rule_, cls_, c, a);
           break;
         case Answer::unsat: a.status = Status::none; break;
         case Answer::unknown:
@@ -203,6 +266,13 @@ class ClassRun {
  private:
   void setup(const Rule& rule, const ProveOptions& o) {
     darts_ = o.max_darts;
+    if (entry_.words.scheme) {
+      darts_ = std::min(o.max_darts, o.scheme_darts);
+      blocked_ = scheme_never_applies(rule);
+      if (blocked_.empty()) enc_ = std::make_unique<SchemeEncoding>(ctx_, rule, entry_.words, cls_, darts_, o.rlimit, o.timeout_ms);
+      decide_derivable();
+      return;
+    }
     blocked_ = unmatchable_outside(rule, cls_);
     if (blocked_.empty() && rule.left().node_count() > o.max_darts)
       unknown_ = fmt::format("L has {} nodes, more than --max-darts {}", rule.left().node_count(), o.max_darts);
@@ -210,6 +280,11 @@ class ClassRun {
     // Past a small-model bound, larger hosts add nothing: encode up to it.
     darts_ = bound() ? std::min(o.max_darts, bound()) : o.max_darts;
     enc_ = std::make_unique<DpoEncoding>(ctx_, rule, cls_, darts_, o.rlimit, o.timeout_ms, o.fault);
+    decide_derivable();
+  }
+
+  void decide_derivable() {
+    if (!enc_) return;
     derivable_ = enc_->derivable();
     if (derivable_ == Answer::unsat)
       blocked_ = fmt::format("no host of up to {} darts admits a match with a derivation", darts_);
@@ -225,13 +300,14 @@ class ClassRun {
   }
 
   z3::context& ctx_;
+  const CatalogRule& entry_;
   const Rule& rule_;
   HostClass cls_;
   const ProveOptions& o_;
   std::size_t darts_ = 0;
   double setup_seconds_ = 0;
   std::string blocked_, unknown_;
-  std::unique_ptr<DpoEncoding> enc_;
+  std::unique_ptr<HostEncoding> enc_;
   Answer derivable_ = Answer::unknown;
 };
 
@@ -269,7 +345,7 @@ void judge(ConstraintProof& p, bool combinatorial_rule, bool consistent) {
     p.note = fmt::format("Theorem {} is vacuous here: {}", n, t.why);
   } else if (t.status == Status::unknown) {
     p.agreement = Agreement::not_compared;
-    p.note = "the solver answered unknown";
+    p.note = "the solver answered unknown: " + t.why;
   } else if (t.status == Status::counterexample) {
     p.agreement = holds ? Agreement::disagree : Agreement::agree;
     if (holds) p.note = fmt::format("static {} holds but a host of Theorem {}'s class breaks it: the theorem's (=>) fails", c.name(), n);
@@ -284,7 +360,62 @@ void judge(ConstraintProof& p, bool combinatorial_rule, bool consistent) {
     p.note = fmt::format("static {} fails; no counterexample up to {} darts", c.name(), t.darts);
   }
   if (p.agreement == Agreement::agree && !holds && p.model.status != Status::counterexample)
-    p.note = fmt::format("a host of Theorem {}'s class breaks it, no valid {} up to {} darts does", n, p.model.class_name, p.model.darts);
+    p.note = fmt::format("a host of Theorem {}'s class breaks it, none of the {} up to {} darts does", n, p.model.class_name, p.model.darts);
+}
+
+
+// Schemes are asked about maps of the model only. Theorems 4-6 give the
+// (=>) direction on them: a scheme whose condition holds (with the
+// theorem's premise: Theorem 5 a (W,D)-combinatorial scheme, Theorem 6
+// also O_S(N)) yields no H that breaks the constraint, so a map
+// counterexample then contradicts the static checker. The (<=) of
+// Theorems 4-5 quantifies over W-pattern graphs, and the P_v of a map
+// obeys L's loops and the model's relations, so a failed condition with
+// no map counterexample is not a contradiction; Theorem 6 is sufficient
+// only.
+void judge_scheme(ConstraintProof& p, const RuleVerdict& v) {
+  const HConstraint& c = p.constraint;
+  const bool holds = p.static_holds.value_or(true);
+  const ClassAnswer& m = p.model;
+  if (m.status == Status::counterexample && !m.replayed) {
+    p.agreement = Agreement::disagree;
+    p.note = "a solver counterexample does not replay: " + m.replay_failure;
+    return;
+  }
+  const int theorem = c.kind == RuleCondition::incident_arcs ? 4 : c.kind == RuleCondition::non_orientation ? 5 : 6;
+  bool premise = c.kind == RuleCondition::incident_arcs || c.kind == RuleCondition::no_loop || combinatorial(v);
+  if (c.kind == RuleCondition::cycle)
+    for (const auto& cond : v.conditions) premise = premise && (cond.condition != RuleCondition::non_orientation || cond.holds);
+  if (m.status == Status::counterexample) {
+    if (v.consistent() || (holds && premise)) {
+      p.agreement = Agreement::disagree;
+      p.note = fmt::format("static {} holds, yet a valid map on {} darts yields an H that breaks it{}", c.name(), m.darts,
+                           c.kind == RuleCondition::no_loop ? "" : fmt::format(": Theorem {}'s (=>) fails", theorem));
+    } else {
+      p.agreement = Agreement::agree;
+      if (holds) p.note = fmt::format("static {} holds, but Theorem {}'s premise does not", c.name(), theorem);
+    }
+    return;
+  }
+  if (m.status == Status::unknown || m.status == Status::vacuous) {
+    p.agreement = Agreement::not_compared;
+    p.note = (m.status == Status::unknown ? "the solver answered unknown: " : "the scheme never applies: ") + m.why;
+    return;
+  }
+  if (holds) {
+    p.agreement = Agreement::agree;
+    return;
+  }
+  p.agreement = Agreement::not_compared;
+  if (!premise) {
+    p.note = fmt::format("Theorem {} assumes a (W,D)-combinatorial scheme{}", theorem, theorem == 6 ? " satisfying O_S(N)" : "");
+    return;
+  }
+  p.note = c.kind == RuleCondition::cycle
+               ? fmt::format("static {} fails, no map up to {} darts breaks it: Theorem 6 is sufficient, not necessary", c.name(), m.darts)
+               : fmt::format("static {} fails, no map up to {} darts breaks it: Theorem {}'s (<=) ranges over W-pattern graphs, not over "
+                             "the P_v of maps where L matches",
+                             c.name(), m.darts, theorem);
 }
 
 }  // namespace
@@ -295,23 +426,26 @@ RuleProof prove_rule(const CatalogRule& entry, const ProveOptions& o) {
   RuleProof p;
   p.rule = rule.name();
   p.model = rule.model().name;
-  if (entry.words.scheme) {
-    p.out_of_scope = "rule scheme: the solver encodes DPO rules (schemes are checked by `dartcheck fuzz`)";
-    return p;
-  }
-  const RuleVerdict verdict = check_rule(rule);
+  p.scheme = entry.words.scheme;
+  if (p.scheme) p.out_of_scope = scheme_out_of_scope(rule);
+  if (!p.out_of_scope.empty()) return p;
+  const RuleVerdict verdict = check_rule(rule, entry.words);
   for (const auto& c : verdict.conditions)
     if (!c.holds) p.static_failures.push_back(c.name());
   const bool comb = combinatorial(verdict);
   z3::context ctx;
-  ClassRun maps(ctx, rule, model_class(rule.model()), o);
+  ClassRun maps(ctx, entry, model_class(rule.model()), o);
   for (const HConstraint& c : model_constraints(rule.model())) {
     ConstraintProof cp;
     cp.constraint = c;
     if (const auto* sc = static_condition(verdict, c)) cp.static_holds = sc->holds;
     cp.model = maps.ask(c);
-    if (auto cls = theorem_class(c)) cp.theorem = ClassRun(ctx, rule, *cls, o).ask(c);
-    judge(cp, comb, verdict.consistent());
+    if (p.scheme) {
+      judge_scheme(cp, verdict);
+    } else {
+      if (auto cls = theorem_class(c)) cp.theorem = ClassRun(ctx, entry, *cls, o).ask(c);
+      judge(cp, comb, verdict.consistent());
+    }
     p.constraints.push_back(std::move(cp));
   }
   p.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -19,6 +19,9 @@ namespace dartcheck::proofs {
 
 struct ProveOptions {
   std::size_t max_darts = 12;
+  /// Schemes: hosts of up to min(max_darts, scheme_darts) darts (H has
+  /// that many darts per node of R, so queries grow faster).
+  std::size_t scheme_darts = 6;
   /// Z3 resource units per query (deterministic, unlike seconds).
   unsigned rlimit = 200'000'000;
   /// Wall-clock cap per query in milliseconds (0: none); answers then
@@ -74,6 +77,7 @@ struct ConstraintProof {
 struct RuleProof {
   std::string rule;
   std::string model;
+  bool scheme = false;       // a rule scheme: maps of the model only (no theorem class)
   std::string out_of_scope;  // why the solver does not encode this rule
   std::vector<std::string> static_failures;
   std::vector<ConstraintProof> constraints;
