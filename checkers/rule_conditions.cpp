@@ -35,15 +35,6 @@ const ConjWord& word_of(const std::vector<ConjWord>& words, ArcId e) {
   return words.empty() ? eps : words[e];
 }
 
-std::string label_text(Dim d, const ConjWord& w, bool scheme) {
-  return scheme ? fmt::format("({},{})", w.str(), d) : std::to_string(d);
-}
-
-std::string arc_text(const TopoGraph& g, ArcId e, const std::vector<ConjWord>& words, bool scheme) {
-  const auto& a = g.arc(e);
-  return fmt::format("{} -{}-> {}", g.name(a.source), label_text(a.label, word_of(words, e), scheme), g.name(a.target));
-}
-
 std::size_t count_arcs(const TopoGraph& g, NodeId v, Dim i, bool out) {
   std::size_t n = 0;
   for (const auto& a : g.arcs()) n += a.label == i && (out ? a.source : a.target) == v;
@@ -58,6 +49,15 @@ void fail(ConditionVerdict& v, RuleWitness w) {
 }
 
 }  // namespace
+
+std::string label_text(Dim d, const ConjWord& w, bool scheme) {
+  return scheme ? fmt::format("({},{})", w.str(), d) : std::to_string(d);
+}
+
+std::string arc_text(const TopoGraph& g, ArcId e, const std::vector<ConjWord>& words, bool scheme) {
+  const auto& a = g.arc(e);
+  return fmt::format("{} -{}-> {}", g.name(a.source), label_text(a.label, word_of(words, e), scheme), g.name(a.target));
+}
 
 ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords&) {
   auto v = verdict(RuleCondition::incident_arcs, i);

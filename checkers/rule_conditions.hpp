@@ -55,6 +55,11 @@ struct RuleVerdict {
 };
 
 
+/// An arc label as witnesses write it: "1", or "(w,1)" in a scheme.
+std::string label_text(Dim d, const ConjWord& w, bool scheme);
+/// An arc as witnesses write it: "a -1-> b", "a -(~1,2)-> b".
+std::string arc_text(const TopoGraph& g, ArcId e, const std::vector<ConjWord>& words, bool scheme);
+
 /// The conditions of one kind for one dimension (or pair).
 ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords& words = {});
 ConditionVerdict check_dangling(const Rule& rule, Dim i, const ArcWords& words = {});

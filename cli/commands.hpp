@@ -21,6 +21,19 @@ struct ValidateOptions {
 };
 int validate_map(const ValidateOptions& o);
 
+struct DrawOptions {
+  std::string catalog, rule, output, engine = "dot";
+};
+/// A rule's picture; 0, or 2 on bad input.
+int draw(const DrawOptions& o);
+
+struct DrawMapOptions {
+  std::string target, output, model = "2-gmap", engine = "dot";
+};
+/// A map's picture; 1 if the map is invalid (its failing darts are
+/// highlighted).
+int draw_map(const DrawMapOptions& o);
+
 struct ApplyOptions {
   std::string catalog, rule, map, output;
   std::vector<Dart> hooks;

@@ -75,6 +75,19 @@ int main(int argc, char** argv) {
   p->add_option("--format", prove.format, "text or json")->capture_default_str();
   p->add_flag("--explain", prove.explain, "print the hosts and derived graphs of theorem-class counterexamples");
 
+  cli::DrawOptions draw;
+  auto* dr = app.add_subcommand("draw", "Draw a rule or scheme: L and R side by side, witnesses of failed conditions highlighted");
+  dr->add_option("catalog", draw.catalog, "YAML catalog")->required();
+  dr->add_option("--rule", draw.rule, "the rule to draw")->required();
+  dr->add_option("-o,--output", draw.output, "picture file: .svg, .png, .pdf, or .dot/.gv for the DOT text")->required();
+  dr->add_option("--engine", draw.engine, "Graphviz layout engine")->capture_default_str();
+  cli::DrawMapOptions draw_map;
+  auto* dm = app.add_subcommand("draw-map", "Draw a map: one node per dart, links colored by dimension, invalid darts highlighted");
+  dm->add_option("map", draw_map.target, fmt::format("a map file (.yaml, .off, .obj) or a shape ({})", shape_usage()))->required();
+  dm->add_option("-o,--output", draw_map.output, "picture file: .svg, .png, .pdf, or .dot/.gv for the DOT text")->required();
+  dm->add_option("--model", draw_map.model, "model for meshes and shapes")->capture_default_str();
+  dm->add_option("--engine", draw_map.engine, "Graphviz layout engine (neato or sfdp for large maps)")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -89,6 +102,8 @@ int main(int argc, char** argv) {
     if (*c) return cli::check(check);
     if (*f) return cli::fuzz(fuzz);
     if (*p) return cli::prove(prove);
+    if (*dr) return cli::draw(draw);
+    if (*dm) return cli::draw_map(draw_map);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;

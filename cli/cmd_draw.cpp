@@ -1,0 +1,62 @@
+// `dartcheck draw` (a rule or scheme, witnesses of its failed conditions
+// highlighted) and `dartcheck draw-map` (a map, links colored by
+// dimension, invalid darts highlighted): one picture each, rendered by
+// libgvc in the format the output file's extension names.
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "checkers/graph_constraints.hpp"
+#include "checkers/map_validity.hpp"
+#include "cli/commands.hpp"
+#include "cli/resolve.hpp"
+#include "core/graph_derivation.hpp"
+#include "core/input_error.hpp"
+#include "reports/graph_dot.hpp"
+#include "reports/render.hpp"
+#include "reports/rule_dot.hpp"
+
+namespace dartcheck::cli {
+namespace {
+
+void write_picture(const std::string& dot, const std::string& file, const std::string& engine) {
+  std::string format;
+  try {
+    format = reports::format_of(file);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("<command line>", 0, 0, fmt::format("-o: {}", e.what()));
+  }
+  const std::string data = format == "dot" ? dot : reports::render(dot, format, engine);
+  std::ofstream out(file, std::ios::binary);
+  if (!out || !out.write(data.data(), static_cast<std::streamsize>(data.size())))
+    throw InputError(file, 0, 0, "cannot write the picture");
+  fmt::print("wrote {} ({} bytes)\n", file, data.size());
+}
+
+}  // namespace
+
+int draw(const DrawOptions& o) {
+  const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  const CatalogRule* entry = catalog.find_rule(o.rule);
+  const RuleVerdict verdict = check_rule(entry->rule, entry->words);
+  const auto witnesses = reports::failed_witnesses(verdict);
+  write_picture(reports::rule_dot(entry->rule, entry->words, witnesses), o.output, o.engine);
+  return ok;
+}
+
+int draw_map(const DrawMapOptions& o) {
+  const auto model = Model::by_name(o.model);
+  if (!model) throw InputError("<command line>", 0, 0, fmt::format("--model: unknown model '{}' (expected {})", o.model, Model::known_names()));
+  const Map map = resolve_map(o.target, *model, nullptr);
+  const auto report = check_map(map);
+  reports::GraphPicture p;
+  p.title = fmt::format("{} ({}, {} darts)", o.target, map.model().name, map.size());
+  p.highlight.assign(map.size(), false);
+  for (const auto& v : report.violations)
+    if (v.element < map.size()) p.highlight[v.element] = true;
+  if (!report.valid()) p.highlight_label = fmt::format("filled: {} violations", report.violations.size());
+  write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, o.engine);
+  return report.valid() ? ok : violation;
+}
+
+}  // namespace dartcheck::cli

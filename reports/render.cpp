@@ -1,0 +1,65 @@
+#include "reports/render.hpp"
+
+#include <graphviz/gvc.h>
+
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <utility>
+
+namespace dartcheck::reports {
+namespace {
+
+// Graphviz reports through a global error hook; keep the last message.
+std::string& last_error() {
+  static std::string message;
+  return message;
+}
+
+int keep_error(char* text) {
+  last_error() += text;
+  return 0;
+}
+
+std::string take_error(std::string_view what) {
+  std::string m = std::exchange(last_error(), {});
+  while (!m.empty() && (m.back() == '\n' || m.back() == ' ')) m.pop_back();
+  return std::string(what) + (m.empty() ? "" : ": " + m);
+}
+
+}  // namespace
+
+std::string render(std::string_view dot, std::string_view format, std::string_view engine) {
+  // libgvc keeps global state (error hook, plugin registry): one caller at
+  // a time.
+  static std::mutex lock;
+  const std::lock_guard guard(lock);
+  agseterrf(keep_error);
+  agseterr(AGWARN);
+  last_error().clear();
+  std::unique_ptr<GVC_t, int (*)(GVC_t*)> gvc(gvContext(), gvFreeContext);
+  if (!gvc) throw std::runtime_error("Graphviz: no context");
+  const std::string text(dot);
+  std::unique_ptr<Agraph_t, int (*)(Agraph_t*)> g(agmemread(text.c_str()), agclose);
+  if (!g) throw std::runtime_error(take_error("Graphviz cannot read the DOT text"));
+  const std::string eng(engine), fmt(format);
+  if (gvLayout(gvc.get(), g.get(), eng.c_str()) != 0) throw std::runtime_error(take_error("Graphviz layout '" + eng + "' failed"));
+  char* data = nullptr;
+  unsigned int length = 0;
+  const int rc = gvRenderData(gvc.get(), g.get(), fmt.c_str(), &data, &length);
+  std::string out = rc == 0 && data ? std::string(data, length) : std::string();
+  if (data) gvFreeRenderData(data);
+  gvFreeLayout(gvc.get(), g.get());
+  if (rc != 0) throw std::runtime_error(take_error("Graphviz cannot render format '" + fmt + "'"));
+  return out;
+}
+
+std::string format_of(std::string_view file) {
+  const auto dot = file.rfind('.');
+  const std::string ext = dot == std::string_view::npos ? "" : std::string(file.substr(dot + 1));
+  if (ext == "svg" || ext == "png" || ext == "dot" || ext == "pdf") return ext;
+  if (ext == "gv") return "dot";
+  throw std::invalid_argument("'" + std::string(file) + "': expected a file name ending in .svg, .png, .pdf, .dot or .gv");
+}
+
+}  // namespace dartcheck::reports

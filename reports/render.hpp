@@ -1,0 +1,21 @@
+// Graphviz rendering through libgvc (no `dot` process): DOT text in, SVG,
+// PNG or laid-out DOT out.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace dartcheck::reports {
+
+/// Lays out `dot` with `engine` ("dot", "neato", ...) and renders it in
+/// `format` ("svg", "png", "dot" for the laid-out graph, ...). Throws
+/// std::runtime_error with Graphviz's message if the text does not parse
+/// or the format or engine is unknown.
+std::string render(std::string_view dot, std::string_view format, std::string_view engine = "dot");
+
+/// The output format a file name asks for: its extension (svg, png, dot,
+/// gv as dot, pdf). Throws std::invalid_argument naming the extensions
+/// accepted.
+std::string format_of(std::string_view file);
+
+}  // namespace dartcheck::reports

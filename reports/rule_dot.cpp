@@ -1,0 +1,139 @@
+#include "reports/rule_dot.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "reports/dot_text.hpp"
+
+namespace dartcheck::reports {
+namespace {
+
+const ConjWord& word_of(const std::vector<ConjWord>& ws, ArcId e) {
+  static const ConjWord eps;
+  return ws.empty() ? eps : ws[e];
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+// The steps (source, label, target) of a witness arc or path as the
+// checker writes it: "a -1-> b", "c -(1,2)-> c -0-> d" (a path may write
+// an ε-word label as the bare dimension).
+struct Step {
+  std::string source, label, target;
+};
+std::vector<Step> steps(const std::string& text) {
+  std::vector<Step> out;
+  std::size_t at = text.find(" -");
+  std::string from = text.substr(0, at);
+  while (at != std::string::npos) {
+    const std::size_t arrow = text.find("-> ", at + 2);
+    if (arrow == std::string::npos) break;
+    const std::string label = text.substr(at + 2, arrow - at - 2);
+    const std::size_t next = text.find(" -", arrow + 3);
+    const std::string to = text.substr(arrow + 3, next == std::string::npos ? std::string::npos : next - arrow - 3);
+    out.push_back({from, label, to});
+    from = to;
+    at = next;
+  }
+  return out;
+}
+
+// One side of the rule, as a cluster.
+std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses,
+                         const std::string& prefix) {
+  const TopoGraph& g = left ? rule.left() : rule.right();
+  const std::vector<ConjWord>& ws = left ? words.left : words.right;
+  const Model& model = rule.model();
+  const ConjugateRewriting rw(model);
+  const std::string side = left ? "L" : "R";
+  std::vector<std::string> lit_nodes;
+  std::vector<Step> lit_arcs;
+  for (const auto& w : witnesses)
+    if (w.side == side[0]) {
+      lit_nodes.insert(lit_nodes.end(), w.nodes.begin(), w.nodes.end());
+      for (const auto& text : w.arcs)
+        for (auto& s : steps(text)) {
+          lit_nodes.push_back(s.source);
+          lit_nodes.push_back(s.target);
+          lit_arcs.push_back(std::move(s));
+        }
+    }
+  auto lit_arc = [&](ArcId e) {
+    const auto& a = g.arc(e);
+    const std::string full = label_text(a.label, word_of(ws, e), words.scheme), bare = std::to_string(a.label);
+    return std::any_of(lit_arcs.begin(), lit_arcs.end(), [&](const Step& s) {
+      return s.source == g.name(a.source) && s.target == g.name(a.target) && (s.label == full || (word_of(ws, e).empty() && s.label == bare));
+    });
+  };
+  std::string out = fmt::format("    subgraph {} {{\n      label={}; color=\"#bdbdbd\";\n", quote("cluster_" + prefix + side), quote(side));
+  for (NodeId v = 0; v < g.node_count(); ++v) {
+    const bool kept = left ? rule.to_right(v) != no_node : rule.to_left(v) != no_node;
+    const NodeId in_left = left ? v : rule.to_left(v);
+    const bool hook = in_left != no_node && std::find(rule.hooks().begin(), rule.hooks().end(), in_left) != rule.hooks().end();
+    const auto color = kept ? preserved_color : left ? deleted_color : added_color;
+    const bool lit = contains(lit_nodes, g.name(v));
+    out += fmt::format("      {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), quote(g.name(v)),
+                       color, color, hook ? ", peripheries=2" : "",
+                       lit ? fmt::format(", style=filled, fillcolor=\"{}\", penwidth=2, witness=\"true\"", highlight_fill) : "");
+  }
+  std::vector<bool> drawn(g.arc_count(), false);
+  for (ArcId e = 0; e < g.arc_count(); ++e) {
+    if (drawn[e]) continue;
+    drawn[e] = true;
+    const auto& a = g.arc(e);
+    const bool kept = left ? rule.preserved_left_arc(e) : rule.preserved_right_arc(e);
+    const ConjWord& w = word_of(ws, e);
+    bool pair = false;
+    ArcId partner = e;
+    if (!model.is_oriented(a.label)) {
+      if (a.source == a.target && rw.conjugate(w) == w) pair = true;
+      for (ArcId f = e + 1; f < g.arc_count() && !pair; ++f) {
+        const auto& b = g.arc(f);
+        const bool f_kept = left ? rule.preserved_left_arc(f) : rule.preserved_right_arc(f);
+        if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source && f_kept == kept &&
+            word_of(ws, f) == rw.conjugate(w))
+          drawn[f] = pair = true, partner = f;
+      }
+    }
+    const auto color = kept ? preserved_color : left ? deleted_color : added_color;
+    const bool lit = lit_arc(e) || lit_arc(partner);
+    out += fmt::format("      {} -> {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(a.source)),
+                       quote(prefix + side + ":" + g.name(a.target)), quote(label_text(a.label, w, words.scheme)),
+                       lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, pair ? ", dir=none" : "",
+                       lit ? ", penwidth=2, witness=\"true\"" : "");
+  }
+  return out + "    }\n";
+}
+
+}  // namespace
+
+std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v) {
+  std::vector<RuleWitness> out;
+  for (const auto& c : v.conditions)
+    if (!c.holds) out.insert(out.end(), c.witnesses.begin(), c.witnesses.end());
+  return out;
+}
+
+std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix) {
+  std::string out = fmt::format("  subgraph {} {{\n    label={}; color=\"white\";\n", quote("cluster_" + prefix + "rule"), quote(rule.name()));
+  out += side_cluster(rule, words, true, witnesses, prefix);
+  out += side_cluster(rule, words, false, witnesses, prefix);
+  // Level each preserved node of R with its node in L.
+  for (NodeId v = 0; v < rule.left().node_count(); ++v)
+    if (rule.to_right(v) != no_node)
+      out += fmt::format("    {} -> {} [style=invis, weight=20];\n", quote(prefix + "L:" + rule.left().name(v)),
+                         quote(prefix + "R:" + rule.right().name(rule.to_right(v))));
+  return out + "  }\n";
+}
+
+std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses) {
+  std::string legend = fmt::format(R"(<font color="{}">preserved</font>  <font color="{}">deleted</font>  <font color="{}">added</font>  )"
+                                   R"(double border: hook{})",
+                                   preserved_color, deleted_color, added_color, witnesses.empty() ? "" : "  filled: witness");
+  return fmt::format("digraph {} {{\n  rankdir=LR; fontname=\"Helvetica\"; label=<{}>; labelloc=b;\n"
+                     "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n{}}}\n",
+                     quote(rule.name()), legend, rule_cluster(rule, words, witnesses, ""));
+}
+
+}  // namespace dartcheck::reports

@@ -1,0 +1,29 @@
+// A rule or rule scheme as DOT: L and R side by side, preserved elements
+// black, deleted red, added green, hooks drawn with a double border; arc
+// labels are dimensions, or (word, dimension) pairs for schemes; a
+// non-oriented pair of arcs (reverse arcs with one label and conjugate
+// words) is one undirected edge. Each preserved node of R sits level with
+// its node in L. The witnesses of failed conditions are highlighted and
+// carry the attribute witness="true" (nodes and arcs), for tools and
+// tests.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "checkers/rule_conditions.hpp"
+#include "core/rule.hpp"
+
+namespace dartcheck::reports {
+
+/// The witnesses of every condition of `v` that fails.
+std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v);
+
+/// A cluster holding L and R (to embed in a larger picture); node ids are
+/// prefix + "L:" + name and prefix + "R:" + name.
+std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix);
+
+/// A whole picture of the rule, titled with its name.
+std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {});
+
+}  // namespace dartcheck::reports
