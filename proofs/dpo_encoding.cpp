@@ -2,16 +2,6 @@
 
 namespace dartcheck::proofs {
 
-namespace {
-
-std::size_t added_nodes(const Rule& rule) {
-  std::size_t n = 0;
-  for (NodeId r = 0; r < rule.right().node_count(); ++r) n += rule.to_left(r) == no_node;
-  return n;
-}
-
-}  // namespace
-
 DpoEncoding::DpoEncoding(z3::context& ctx, const Rule& rule, const HostClass& cls, std::size_t max_darts, unsigned rlimit, unsigned timeout_ms,
                          EncodingFault fault)
     : HostEncoding(ctx, rule.model(), cls, max_darts, rule.left().node_count(), max_darts + added_nodes(rule), rlimit, timeout_ms),

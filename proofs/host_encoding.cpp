@@ -10,6 +10,12 @@ const std::vector<Dart>* SymbolicHost::find(Dim d) const {
   return nullptr;
 }
 
+std::size_t added_nodes(const Rule& rule) {
+  std::size_t n = 0;
+  for (NodeId r = 0; r < rule.right().node_count(); ++r) n += rule.to_left(r) == no_node;
+  return n;
+}
+
 z3::expr count_is(z3::context& ctx, const std::vector<z3::expr>& terms, std::size_t constant, std::size_t fixed) {
   if (terms.empty()) return ctx.bool_val(fixed == constant);
   if (constant < fixed || constant - fixed > terms.size()) return ctx.bool_val(false);

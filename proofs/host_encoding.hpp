@@ -102,6 +102,9 @@ class HostEncoding {
   Exprs last_;  // the assumptions of the last query, for minimize()
 };
 
+/// The nodes R adds (its nodes with no L node of the same name).
+std::size_t added_nodes(const Rule& rule);
+
 /// Sums of 0/1 terms plus `fixed` known-true terms equal to `constant`, as
 /// a pseudo-Boolean constraint (the counts here are a few arcs).
 z3::expr count_is(z3::context& ctx, const std::vector<z3::expr>& terms, std::size_t constant, std::size_t fixed);

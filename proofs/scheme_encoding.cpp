@@ -8,12 +8,6 @@
 namespace dartcheck::proofs {
 namespace {
 
-std::size_t added_nodes(const Rule& core) {
-  std::size_t n = 0;
-  for (NodeId y = 0; y < core.right().node_count(); ++y) n += core.to_left(y) == no_node;
-  return n;
-}
-
 const ConjWord& word_of(const std::vector<ConjWord>& ws, ArcId e) {
   static const ConjWord eps;
   return ws.empty() ? eps : ws[e];
