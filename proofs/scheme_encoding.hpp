@@ -14,12 +14,12 @@
 // plus one block of k indices per added node y of R, (p, y) at
 // k·block(y) + p, present for p < np. Each arc x -(w,i)-> y of R \ K gives
 // one candidate i-arc per pattern position p, to (p·w, y), where p·w is a
-// composed look-up in the host. The constraints of H are then checked on
-// images of R's nodes (the touched darts: the locality argument of
-// docs/prove.md carries over, since L \ K's instances join pattern darts
-// and R \ K's join touched ones) from these candidates, by counting, not
-// by the theorems' reasoning, so the answer is independent evidence for
-// Theorems 4-6.
+// composed look-up in the host. The constraints of H are then read off
+// these candidates, not derived by the theorems' reasoning, so the answer
+// is independent evidence for Theorems 4-6: I and O at the images of R's
+// nodes (the touched darts: the locality argument of docs/prove.md
+// carries over, since L \ K's instances join pattern darts and R \ K's
+// join touched ones), C's ijij-path at every present dart.
 #pragma once
 
 #include "core/rule.hpp"
