@@ -30,11 +30,6 @@ const ConditionVerdict* RuleVerdict::find(const std::string& name) const {
 
 namespace {
 
-const ConjWord& word_of(const std::vector<ConjWord>& words, ArcId e) {
-  static const ConjWord eps;
-  return words.empty() ? eps : words[e];
-}
-
 std::size_t count_arcs(const TopoGraph& g, NodeId v, Dim i, bool out) {
   std::size_t n = 0;
   for (const auto& a : g.arcs()) n += a.label == i && (out ? a.source : a.target) == v;
@@ -56,7 +51,7 @@ std::string label_text(Dim d, const ConjWord& w, bool scheme) {
 
 std::string arc_text(const TopoGraph& g, ArcId e, const std::vector<ConjWord>& words, bool scheme) {
   const auto& a = g.arc(e);
-  return fmt::format("{} -{}-> {}", g.name(a.source), label_text(a.label, word_of(words, e), scheme), g.name(a.target));
+  return fmt::format("{} -{}-> {}", g.name(a.source), label_text(a.label, arc_word(words, e), scheme), g.name(a.target));
 }
 
 ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords&) {
@@ -120,11 +115,11 @@ ConditionVerdict check_non_orientation(const Rule& rule, Dim i, const ArcWords& 
       if (a.label != i || kept(e)) continue;
       // The reverse of (w, i): t -> s labeled (conj(w), i); a loop whose
       // word is its own conjugate is its own reverse.
-      const ConjWord back = rw.conjugate(word_of(ws, e));
+      const ConjWord back = rw.conjugate(arc_word(ws, e));
       std::vector<ArcId> reverse;
       for (ArcId f = 0; f < g.arc_count(); ++f) {
         const auto& b = g.arc(f);
-        if (b.label == i && b.source == a.target && b.target == a.source && word_of(ws, f) == back) reverse.push_back(f);
+        if (b.label == i && b.source == a.target && b.target == a.source && arc_word(ws, f) == back) reverse.push_back(f);
       }
       const char* what = side == 'L' ? "deleted" : "added";
       if (reverse.size() != 1) {
@@ -249,10 +244,10 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
   CycleSide left{'L', &L, {}, {}, {}}, right{'R', &R, {}, {}, {}};
   for (ArcId e = 0; e < L.arc_count(); ++e)
     if (L.arc(e).label == i || L.arc(e).label == j)
-      left.arcs.push_back({L.arc(e).source, L.arc(e).target, L.arc(e).label, !rule.preserved_left_arc(e), word_of(words.left, e), ""});
+      left.arcs.push_back({L.arc(e).source, L.arc(e).target, L.arc(e).label, !rule.preserved_left_arc(e), arc_word(words.left, e), ""});
   for (ArcId e = 0; e < R.arc_count(); ++e)
     if (R.arc(e).label == i || R.arc(e).label == j)
-      right.arcs.push_back({R.arc(e).source, R.arc(e).target, R.arc(e).label, !rule.preserved_right_arc(e), word_of(words.right, e), ""});
+      right.arcs.push_back({R.arc(e).source, R.arc(e).target, R.arc(e).label, !rule.preserved_right_arc(e), arc_word(words.right, e), ""});
 
   // ij-completion (Sec. 5.2.1): an iji-path s ~> t of L closes with a
   // j-arc t -> s in every host satisfying C(i,j); add it to L, and to the

@@ -90,4 +90,9 @@ Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::
 
 Rule Rule::inverse(std::vector<std::string> hooks) const { return Rule(name_ + "^-1", model_, right_, left_, std::move(hooks)); }
 
+const ConjWord& arc_word(const std::vector<ConjWord>& words, ArcId e) {
+  static const ConjWord eps;
+  return words.empty() ? eps : words[e];
+}
+
 }  // namespace dartcheck

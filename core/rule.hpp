@@ -68,4 +68,8 @@ struct ArcWords {
   std::vector<ConjWord> left, right;
 };
 
+/// The W-label of arc e of a side whose words are `words` (ArcWords::left
+/// or right): ε when the vector is empty, as for a DPO rule.
+const ConjWord& arc_word(const std::vector<ConjWord>& words, ArcId e);
+
 }  // namespace dartcheck

@@ -12,11 +12,6 @@ Outcome<T> refuse(Refusal r, std::string why) {
   return {std::nullopt, r, std::move(why)};
 }
 
-const ConjWord& word(const std::vector<ConjWord>& ws, ArcId e) {
-  static const ConjWord eps;
-  return ws.empty() ? eps : ws[e];
-}
-
 }  // namespace
 
 Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
@@ -95,10 +90,10 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
   std::vector<int> left_fwd(L.arc_count()), left_bwd(L.arc_count()), right_fwd(R.arc_count());
   for (ArcId e = 0; e < L.arc_count(); ++e) {
-    left_fwd[e] = gen_of(word(words.left, e));
-    left_bwd[e] = gen_of(rw.conjugate(word(words.left, e)));
+    left_fwd[e] = gen_of(arc_word(words.left, e));
+    left_bwd[e] = gen_of(rw.conjugate(arc_word(words.left, e)));
   }
-  for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd[e] = gen_of(word(words.right, e));
+  for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd[e] = gen_of(arc_word(words.right, e));
 
   // The match: m[x][p] is the image of product node (p, x), propagated from
   // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).

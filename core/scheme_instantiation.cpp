@@ -12,10 +12,9 @@ TopoGraph product(const TopoGraph& side, const std::vector<ConjWord>& words, con
   for (NodeId x = 0; x < side.node_count(); ++x)
     for (std::size_t p = 0; p < np; ++p) out.add_node(fmt::format("{}@{}", side.name(x), darts[p]));
   auto node = [&](NodeId x, std::size_t p) { return static_cast<NodeId>(x * np + p); };
-  static const ConjWord eps;
   for (ArcId e = 0; e < side.arc_count(); ++e) {
     const auto& a = side.arc(e);
-    const ConjWord& w = words.empty() ? eps : words[e];
+    const ConjWord& w = arc_word(words, e);
     for (std::size_t p = 0; p < np; ++p) out.add_arc(node(a.source, p), node(a.target, pattern.step(p, w)), a.label);
   }
   return out;

@@ -6,15 +6,6 @@
 #include <fmt/format.h>
 
 namespace dartcheck::proofs {
-namespace {
-
-const ConjWord& word_of(const std::vector<ConjWord>& ws, ArcId e) {
-  static const ConjWord eps;
-  return ws.empty() ? eps : ws[e];
-}
-
-}  // namespace
-
 std::string scheme_out_of_scope(const Rule& core) {
   if (core.left().node_count() != 1)
     return fmt::format("rule scheme whose L has {} nodes and {} hook{}: the solver encodes schemes whose L is one hook node with loops "
@@ -92,7 +83,7 @@ void SchemeEncoding::encode_pattern_and_match() {
   // The match: every loop (w, d) of L instantiates to p -d-> p·w.
   for (ArcId e = 0; e < L.arc_count(); ++e)
     for (std::size_t x = 0; x < k_; ++x)
-      solver_.add(z3::implies(in_pattern(x), links(L.arc(e).label)[x] == shift(x, word_of(words_.left, e))));
+      solver_.add(z3::implies(in_pattern(x), links(L.arc(e).label)[x] == shift(x, arc_word(words_.left, e))));
   // Dangling: a deleted hook's darts keep no arc of a dimension L has no
   // loop of (the loops' instances are all the arcs of the others: they
   // map P_v into itself injectively, hence onto).
@@ -127,7 +118,7 @@ void SchemeEncoding::encode_derived() {
       if (a.label != d || core_.preserved_right_arc(e)) continue;
       const std::size_t from = block_[a.source], to = block_[a.target];
       for (std::size_t p = 0; p < k_; ++p)
-        arcs.push_back({from * k_ + p, in_pattern(p), index(to, shift(p, word_of(words_.right, e))), to});
+        arcs.push_back({from * k_ + p, in_pattern(p), index(to, shift(p, arc_word(words_.right, e))), to});
     }
     Exprs& h = hlink_[static_cast<std::size_t>(d)];
     h.assign(n, none());

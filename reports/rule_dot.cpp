@@ -9,11 +9,6 @@
 namespace dartcheck::reports {
 namespace {
 
-const ConjWord& word_of(const std::vector<ConjWord>& ws, ArcId e) {
-  static const ConjWord eps;
-  return ws.empty() ? eps : ws[e];
-}
-
 bool contains(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
 
 // The steps (source, label, target) of a witness arc or path as the
@@ -61,9 +56,9 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     }
   auto lit_arc = [&](ArcId e) {
     const auto& a = g.arc(e);
-    const std::string full = label_text(a.label, word_of(ws, e), words.scheme), bare = std::to_string(a.label);
+    const std::string full = label_text(a.label, arc_word(ws, e), words.scheme), bare = std::to_string(a.label);
     return std::any_of(lit_arcs.begin(), lit_arcs.end(), [&](const Step& s) {
-      return s.source == g.name(a.source) && s.target == g.name(a.target) && (s.label == full || (word_of(ws, e).empty() && s.label == bare));
+      return s.source == g.name(a.source) && s.target == g.name(a.target) && (s.label == full || (arc_word(ws, e).empty() && s.label == bare));
     });
   };
   std::string out = fmt::format("    subgraph {} {{\n      label={}; color=\"#bdbdbd\";\n", quote("cluster_" + prefix + side), quote(side));
@@ -83,7 +78,7 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     drawn[e] = true;
     const auto& a = g.arc(e);
     const bool kept = left ? rule.preserved_left_arc(e) : rule.preserved_right_arc(e);
-    const ConjWord& w = word_of(ws, e);
+    const ConjWord& w = arc_word(ws, e);
     bool pair = false;
     ArcId partner = e;
     if (!model.is_oriented(a.label)) {
@@ -92,7 +87,7 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
         const auto& b = g.arc(f);
         const bool f_kept = left ? rule.preserved_left_arc(f) : rule.preserved_right_arc(f);
         if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source && f_kept == kept &&
-            word_of(ws, f) == rw.conjugate(w))
+            arc_word(ws, f) == rw.conjugate(w))
           drawn[f] = pair = true, partner = f;
       }
     }

@@ -36,11 +36,6 @@ std::vector<const CatalogRule*> schemes_in_scope() {
   return out;
 }
 
-const ConjWord& word_of(const std::vector<ConjWord>& ws, ArcId e) {
-  static const ConjWord eps;
-  return ws.empty() ? eps : ws[e];
-}
-
 // The constraints that the derived graph of the scheme at hook dart 0 of
 // g breaks, from 002 Def. 19-20 read directly: P_v is the closure of the
 // hook under the words and their conjugates, ι(L, P_v) must match (each
@@ -79,7 +74,7 @@ std::optional<std::set<std::string>> broken_by_product(const CatalogRule& entry,
     for (ArcId f = e + 1; f < L.arc_count(); ++f)
       if (L.arc(f).label == L.arc(e).label) return std::nullopt;  // two instances on one arc
     for (Dart p : P)
-      if (g.link(L.arc(e).label, p) != follow(g, p, word_of(entry.words.left, e))) return std::nullopt;
+      if (g.link(L.arc(e).label, p) != follow(g, p, arc_word(entry.words.left, e))) return std::nullopt;
   }
   const bool kept = s.to_right(0) != no_node;
   if (!kept)
@@ -106,7 +101,7 @@ std::optional<std::set<std::string>> broken_by_product(const CatalogRule& entry,
   for (ArcId e = 0; e < R.arc_count(); ++e) {
     if (s.preserved_right_arc(e)) continue;
     const auto& a = R.arc(e);
-    for (Dart p : P) h.add_arc(at(a.source, p), at(a.target, follow(g, p, word_of(entry.words.right, e))), a.label);
+    for (Dart p : P) h.add_arc(at(a.source, p), at(a.target, follow(g, p, arc_word(entry.words.right, e))), a.label);
   }
   std::set<std::string> broken;
   for (const auto& v : check_graph(h, s.model()).violations) broken.insert(constraint_name(v));
