@@ -38,21 +38,6 @@ std::string arcs_text(const TopoGraph& g) {
   return s;
 }
 
-// Conditions of one kind, as a table cell: "ok", or the failing dimensions.
-std::string cell(const RuleVerdict& v, RuleCondition kind) {
-  std::vector<std::string> bad;
-  bool any = false, skipped = false;
-  for (const auto& c : v.conditions) {
-    if (c.condition != kind) continue;
-    any = true;
-    if (!c.skipped.empty()) skipped = true;
-    if (!c.holds) bad.push_back(c.j >= 0 ? fmt::format("{}{}", c.i, c.j) : std::to_string(c.i));
-  }
-  if (!any) return "-";
-  if (!bad.empty()) return "fails " + fmt::format("{}", fmt::join(bad, ","));
-  return skipped ? "skipped" : "ok";
-}
-
 std::string model_level(const Checked& c) {
   if (c.scheme_search) {
     const auto& f = *c.scheme_search;
@@ -99,21 +84,7 @@ int check(const CheckOptions& o) {
     c.millis = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (const auto& v : c.verdict.conditions)
       if (!v.holds) c.failures.push_back(v.name());
-    if (entry.expected_failures) {
-      for (const auto& name : *entry.expected_failures)
-        if (!c.verdict.find(name)) {
-          const auto& at = entry.verdict_location;
-          throw InputError(at.file, at.line, at.column,
-                           fmt::format("rule '{}': verdict names '{}', which is not a condition of {}", entry.rule.name(), name,
-                                       entry.rule.model().name));
-        }
-      auto want = *entry.expected_failures, got = c.failures;
-      std::sort(want.begin(), want.end());
-      std::sort(got.begin(), got.end());
-      c.matches_record = want == got;
-    } else {
-      c.matches_record = c.failures.empty();
-    }
+    c.matches_record = matches_record(entry, c.verdict);
     if (o.confirm_darts > 0 && entry.words.scheme) {
       // Schemes, consistent or not, run on every small map of their
       // model, the catalog's maps and random valid maps (the fuzzer with

@@ -40,7 +40,7 @@ int draw(const DrawOptions& o) {
   const CatalogRule* entry = catalog.find_rule(o.rule);
   const RuleVerdict verdict = check_rule(entry->rule, entry->words);
   const auto witnesses = reports::failed_witnesses(verdict);
-  write_picture(reports::rule_dot(entry->rule, entry->words, witnesses), o.output, o.engine);
+  write_picture(reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr), o.output, o.engine);
   return ok;
 }
 

@@ -23,38 +23,6 @@
 namespace dartcheck::cli {
 namespace {
 
-double parse_duration(const std::string& text) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  const std::string unit = text.substr(used);
-  double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : -1;
-  if (used == 0 || scale < 0 || !(v > 0))
-    throw InputError("<command line>", 0, 0, fmt::format("--time: expected a positive duration such as 30s, 500ms or 2m, got '{}'", text));
-  return v * scale;
-}
-
-std::string outcome_text(const FuzzReport& r) {
-  switch (r.verdict) {
-    case FuzzClass::consistent:
-      return r.reason.empty() ? fmt::format("consistent (checked {} applications on {} maps of up to {} darts)", r.applications, r.hosts,
-                                            r.largest_host)
-                              : fmt::format("consistent; {}", r.reason);
-    case FuzzClass::unconfirmed: return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
-    case FuzzClass::confirmed:
-    case FuzzClass::soundness_bug: {
-      const auto& cx = *r.counterexample;
-      return fmt::format("{}: at hook{} {} of a {}-dart map, H breaks {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
-                         fmt::join(cx.hooks, ","), cx.host.size(), fmt::join(cx.broken(), ", "), cx.minimal ? " (minimal)" : "");
-    }
-  }
-  return "";
-}
-
 // The user's maps, built once per model that the fuzzed rules rewrite.
 std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::vector<Model>& models,
                             const Catalog& catalog) {
@@ -98,7 +66,7 @@ int fuzz(const FuzzCommand& c) {
   o.seed = c.seed ? *c.seed : std::random_device{}();
   o.max_darts = c.max_darts;
   std::optional<double> seconds;
-  if (!c.time.empty()) seconds = parse_duration(c.time);
+  if (!c.time.empty()) seconds = parse_duration(c.time, "--time");
   o.runs = c.runs ? *c.runs : seconds ? SIZE_MAX : 10'000;
 
   std::vector<const CatalogRule*> rules;
@@ -113,30 +81,12 @@ int fuzz(const FuzzCommand& c) {
     if (std::find(models.begin(), models.end(), s.model) != models.end()) seeds.push_back(build_source(s));
   for (auto& m : given_maps(c.maps, models, catalog)) seeds.push_back(std::move(m));
 
-  const bool tty = isatty(fileno(stderr)) != 0;
   fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {} rule{}, {}\n", o.seed, o.seed, rules.size(),
              rules.size() == 1 ? "" : "s",
              seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
                      : fmt::format("{} applications per rule", o.runs));
   const auto start = std::chrono::steady_clock::now();
-  std::vector<FuzzReport> reports;
-  std::size_t failures = 0;
-  for (std::size_t k = 0; k < rules.size(); ++k) {
-    if (seconds) {
-      // An equal share of what is left for each remaining rule.
-      const double left = *seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      o.deadline = std::chrono::steady_clock::now() +
-                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(std::max(0.0, left) / double(rules.size() - k)));
-    }
-    if (tty)
-      o.progress = [&, k](const FuzzProgress& p) {
-        fmt::print(stderr, "\r\033[K[{}/{}] {}: {} applications ({:.0f}/s), {} failure{}", k + 1, rules.size(), *p.rule, p.applications,
-                   p.seconds > 0 ? double(p.applications) / p.seconds : 0.0, failures, failures == 1 ? "" : "s");
-      };
-    reports.push_back(fuzz_rule(*rules[k], seeds, o));
-    if (reports.back().counterexample) ++failures;
-  }
-  if (tty) fmt::print(stderr, "\r\033[K");
+  const std::vector<FuzzReport> reports = fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::vector<std::string> replays(reports.size());

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/counterexample_files.hpp"
 #include "cli/fuzz.hpp"
+#include "cli/prove_replay.hpp"
 #include "cli/report_text.hpp"
 #include "cli/resolve.hpp"
 #include "core/input_error.hpp"
@@ -60,30 +61,13 @@ std::string answer_json(const ClassAnswer& a) {
   return s + "}";
 }
 
-// The third opinion on a map counterexample: apply_rule and check_map.
-// Returns the replay command if files were written.
+// The third opinion on a map counterexample, written as files when `out`
+// is given. Returns the replay command if files were written.
 std::string confirm_dynamically(const CatalogRule& entry, proofs::ConstraintProof& c, const std::string& out, const std::string& catalog,
                                 const std::vector<std::string>& static_failures) {
-  if (c.model.status != Status::counterexample || !c.model.host) return {};
-  const Map host = proofs::host_map(entry.rule.model(), *c.model.host);
-  std::vector<Dart> hooks(entry.rule.hooks().begin(), entry.rule.hooks().end());  // the match is the identity on L's nodes
-  Map scratch(entry.rule.model());
-  Refusal refusal = Refusal::none;
-  auto cx = apply_and_check(entry, host, hooks, scratch, refusal);
-  if (!cx) {
-    c.agreement = Agreement::disagree;
-    c.note = fmt::format("the dynamic checker finds no failure on the solver's map ({})",
-                         refusal == Refusal::none ? "H is valid" : std::string(refusal_name(refusal)));
-    return {};
-  }
-  if (out.empty()) return {};
-  cx->origin = fmt::format("dartcheck prove: a valid {} of {} darts whose H breaks {}", entry.rule.model().name, host.size(),
-                           c.constraint.name());
-  cx->minimal = c.model.minimal;
-  std::string constraint = c.constraint.name();
-  std::erase_if(constraint, [](char ch) { return ch == '(' || ch == ')'; });
-  std::replace(constraint.begin(), constraint.end(), ',', '-');
-  return write_counterexample(out, file_stem(entry.rule.name()) + "." + constraint, catalog, entry.rule.name(),
+  auto cx = replay_solver_map(entry, c);
+  if (!cx || out.empty()) return {};
+  return write_counterexample(out, file_stem(entry.rule.name()) + "." + constraint_stem(c), catalog, entry.rule.name(),
                               {{"constraint", c.constraint.name()}, {"class", "counterexample on a map of the model (dartcheck prove)"}},
                               static_failures, *cx);
 }

@@ -27,6 +27,17 @@ struct DrawOptions {
 /// A rule's picture; 0, or 2 on bad input.
 int draw(const DrawOptions& o);
 
+struct ReportOptions {
+  std::string catalog, rule, output, engine = "dot";
+  std::string fuzz;              // a duration: fuzz every rule within it (empty: no fuzzing)
+  std::size_t prove_darts = 0;   // ask Z3 for counterexamples of up to this many darts (0: no)
+  std::optional<std::uint64_t> seed;
+};
+/// DIR/index.html and the SVG pictures; 3 on a soundness bug or a
+/// solver disagreement, 1 if a static verdict differs from the catalog's,
+/// 0 otherwise.
+int report(const ReportOptions& o);
+
 struct DrawMapOptions {
   std::string target, output, model = "2-gmap", engine = "dot";
 };

@@ -385,4 +385,45 @@ FuzzReport fuzz_rule(const CatalogRule& entry, const std::vector<Map>& seeds, co
   return out;
 }
 
+std::string outcome_text(const FuzzReport& r) {
+  switch (r.verdict) {
+    case FuzzClass::consistent:
+      return r.reason.empty() ? fmt::format("consistent (checked {} applications on {} maps of up to {} darts)", r.applications, r.hosts,
+                                            r.largest_host)
+                              : fmt::format("consistent; {}", r.reason);
+    case FuzzClass::unconfirmed: return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
+    case FuzzClass::confirmed:
+    case FuzzClass::soundness_bug: {
+      const auto& cx = *r.counterexample;
+      return fmt::format("{}: at hook{} {} of a {}-dart map, H breaks {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
+                         fmt::join(cx.hooks, ","), cx.host.size(), fmt::join(cx.broken(), ", "), cx.minimal ? " (minimal)" : "");
+    }
+  }
+  return "";
+}
+
+std::vector<FuzzReport> fuzz_rules(const std::vector<const CatalogRule*>& rules, const std::vector<Map>& seeds, FuzzOptions o,
+                                   std::optional<double> seconds, bool progress) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<FuzzReport> reports;
+  std::size_t failures = 0;
+  for (std::size_t k = 0; k < rules.size(); ++k) {
+    if (seconds) {
+      // An equal share of what is left for each remaining rule.
+      const double left = *seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      o.deadline = std::chrono::steady_clock::now() +
+                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(std::max(0.0, left) / double(rules.size() - k)));
+    }
+    if (progress)
+      o.progress = [&, k](const FuzzProgress& p) {
+        fmt::print(stderr, "\r\033[K[{}/{}] {}: {} applications ({:.0f}/s), {} failure{}", k + 1, rules.size(), *p.rule, p.applications,
+                   p.seconds > 0 ? double(p.applications) / p.seconds : 0.0, failures, failures == 1 ? "" : "s");
+      };
+    reports.push_back(fuzz_rule(*rules[k], seeds, o));
+    if (reports.back().counterexample) ++failures;
+  }
+  if (progress) fmt::print(stderr, "\r\033[K");
+  return reports;
+}
+
 }  // namespace dartcheck::cli

@@ -90,6 +90,16 @@ struct FuzzOptions {
 /// another model are skipped).
 FuzzReport fuzz_rule(const CatalogRule& rule, const std::vector<Map>& seeds, const FuzzOptions& options);
 
+/// Fuzzes each rule in turn. With `seconds`, the rules share that budget:
+/// each gets an equal part of what is left (options.deadline is set per
+/// rule). `progress` prints a progress line on stderr.
+std::vector<FuzzReport> fuzz_rules(const std::vector<const CatalogRule*>& rules, const std::vector<Map>& seeds, FuzzOptions options,
+                                   std::optional<double> seconds, bool progress);
+
+/// The outcome in one line: "consistent (checked ...)", "confirmed: at
+/// hook 3 of a 6-dart map, H breaks C(0,2) (minimal)", ...
+std::string outcome_text(const FuzzReport& r);
+
 /// One application on a copy of g (into `scratch`), checked with
 /// check_map: the counterexample if H is invalid or has no dense form,
 /// nullopt if H is valid or the rule does not apply (`refusal` says why;

@@ -81,6 +81,15 @@ int main(int argc, char** argv) {
   dr->add_option("--rule", draw.rule, "the rule to draw")->required();
   dr->add_option("-o,--output", draw.output, "picture file: .svg, .png, .pdf, or .dot/.gv for the DOT text")->required();
   dr->add_option("--engine", draw.engine, "Graphviz layout engine")->capture_default_str();
+  cli::ReportOptions report;
+  auto* rp = app.add_subcommand("report", "Write an HTML report of a catalog: verdict table, every rule drawn, every failure pointed at");
+  rp->add_option("catalog", report.catalog, "YAML catalog")->required();
+  rp->add_option("-o,--output", report.output, "directory for index.html and the SVG pictures")->required();
+  rp->add_option("--rule", report.rule, "only this rule");
+  rp->add_option("--fuzz", report.fuzz, "fuzz every rule within this total time (30s, 2m, ...) and draw the counterexamples");
+  rp->add_option("--prove", report.prove_darts, "ask Z3 for counterexamples of up to K darts and draw them");
+  rp->add_option("--seed", report.seed, "random seed of --fuzz (default: drawn and printed)");
+  rp->add_option("--engine", report.engine, "Graphviz layout engine")->capture_default_str();
   cli::DrawMapOptions draw_map;
   auto* dm = app.add_subcommand("draw-map", "Draw a map: one node per dart, links colored by dimension, invalid darts highlighted");
   dm->add_option("map", draw_map.target, fmt::format("a map file (.yaml, .off, .obj) or a shape ({})", shape_usage()))->required();
@@ -104,6 +113,7 @@ int main(int argc, char** argv) {
     if (*p) return cli::prove(prove);
     if (*dr) return cli::draw(draw);
     if (*dm) return cli::draw_map(draw_map);
+    if (*rp) return cli::report(report);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;

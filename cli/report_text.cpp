@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
+#include "core/input_error.hpp"
 #include "core/orbit.hpp"
 
 namespace dartcheck::cli {
@@ -66,6 +69,38 @@ std::string json_strings(const std::vector<std::string>& v) {
   std::string o = "[";
   for (std::size_t k = 0; k < v.size(); ++k) o += fmt::format("{}\"{}\"", k ? ", " : "", json_escape(v[k]));
   return o + "]";
+}
+
+// Conditions of one kind, as a table cell: "ok", or the failing dimensions.
+std::string cell(const RuleVerdict& v, RuleCondition kind) {
+  std::vector<std::string> bad;
+  bool any = false, skipped = false;
+  for (const auto& c : v.conditions) {
+    if (c.condition != kind) continue;
+    any = true;
+    if (!c.skipped.empty()) skipped = true;
+    if (!c.holds) bad.push_back(c.j >= 0 ? fmt::format("{}{}", c.i, c.j) : std::to_string(c.i));
+  }
+  if (!any) return "-";
+  if (!bad.empty()) return "fails " + fmt::format("{}", fmt::join(bad, ","));
+  return skipped ? "skipped" : "ok";
+}
+
+bool matches_record(const CatalogRule& entry, const RuleVerdict& v) {
+  std::vector<std::string> got;
+  for (const auto& c : v.conditions)
+    if (!c.holds) got.push_back(c.name());
+  if (!entry.expected_failures) return got.empty();
+  for (const auto& name : *entry.expected_failures)
+    if (!v.find(name)) {
+      const auto& at = entry.verdict_location;
+      throw InputError(at.file, at.line, at.column,
+                       fmt::format("rule '{}': verdict names '{}', which is not a condition of {}", entry.rule.name(), name, entry.rule.model().name));
+    }
+  auto want = *entry.expected_failures;
+  std::sort(want.begin(), want.end());
+  std::sort(got.begin(), got.end());
+  return want == got;
 }
 
 }  // namespace dartcheck::cli

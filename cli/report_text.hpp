@@ -6,7 +6,9 @@
 #include <string_view>
 #include <vector>
 
+#include "checkers/rule_conditions.hpp"
 #include "checkers/violation.hpp"
+#include "core/catalog.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::cli {
@@ -22,5 +24,14 @@ std::string cells_sentence(const Map& map);
 std::string json_escape(std::string_view s);
 /// ["a", "b"]
 std::string json_strings(const std::vector<std::string>& v);
+
+/// The conditions of one kind, as a table cell: "ok", "fails 1,2",
+/// "skipped" or "-" (the model has none of that kind).
+std::string cell(const RuleVerdict& v, RuleCondition kind);
+
+/// Whether the static verdict's failing conditions are exactly those the
+/// catalog records (none, when it records none). Throws InputError at the
+/// verdict when it names a condition the model does not have.
+bool matches_record(const CatalogRule& entry, const RuleVerdict& v);
 
 }  // namespace dartcheck::cli

@@ -48,4 +48,19 @@ Map resolve_map(const std::string& target, const Model& model, const Catalog* ca
 
 std::string describe_target(const std::string& target, const Map& map) { return fmt::format("{} ({}, {} darts)", target, map.model().name, map.size()); }
 
+double parse_duration(const std::string& text, const std::string& option) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  const std::string unit = text.substr(used);
+  double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : -1;
+  if (used == 0 || scale < 0 || !(v > 0))
+    throw InputError("<command line>", 0, 0, fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, text));
+  return v * scale;
+}
+
 }  // namespace dartcheck::cli

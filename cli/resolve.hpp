@@ -24,4 +24,8 @@ Map resolve_map(const std::string& target, const Model& model, const Catalog* ca
 /// A short human label for a target ("cube (2-gmap)").
 std::string describe_target(const std::string& target, const Map& map);
 
+/// Seconds in "30s", "500ms", "2m", "1h" or a bare number of seconds;
+/// InputError naming `option` otherwise.
+double parse_duration(const std::string& text, const std::string& option);
+
 }  // namespace dartcheck::cli

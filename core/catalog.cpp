@@ -91,7 +91,8 @@ Model read_model(const std::string& file, const YAML::Node& node, const std::vec
 
 
 TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model,
-                    std::vector<ConjWord>* words, bool* has_words, const OrbitType* jerboa) {
+                    std::vector<ConjWord>* words, bool* has_words, const OrbitType* jerboa,
+                    std::vector<OrbitType>* orbit_types) {
   yaml::expect_map(file, side, which);
   yaml::allow_keys(file, side, {"nodes", "arcs"});
   TopoGraph g;
@@ -105,7 +106,9 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
       if (g.find(name)) fail_at(file, kv.first, fmt::format("{} declares node '{}' twice", which, name));
       const NodeId v = g.add_node(name);
       try {
-        add_implicit_arcs(g, *words, v, *jerboa, parse_orbit_type(yaml::as_string(file, kv.second, "orbit type")), *model);
+        const OrbitType t = parse_orbit_type(yaml::as_string(file, kv.second, "orbit type"));
+        add_implicit_arcs(g, *words, v, *jerboa, t, *model);
+        if (orbit_types) orbit_types->push_back(t);
       } catch (const std::invalid_argument& e) {
         fail_at(file, kv.second, fmt::format("node '{}': {}", name, e.what()));
       }
@@ -268,8 +271,10 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
   if (!jerboa && right_node["nodes"] && right_node["nodes"].IsMap())
     fail_at(file, right_node["nodes"], "right uses Jerboa node labels but left does not");
   ArcWords words;
-  TopoGraph left = read_side(file, left_node, "left", &model, &words.left, &words.scheme, jerboa);
-  TopoGraph right = read_side(file, right_node, "right", &model, &words.right, &words.scheme, jerboa);
+  std::optional<JerboaLabels> labels;
+  if (jerboa) labels.emplace().parameter = *jerboa;
+  TopoGraph left = read_side(file, left_node, "left", &model, &words.left, &words.scheme, jerboa, labels ? &labels->left : nullptr);
+  TopoGraph right = read_side(file, right_node, "right", &model, &words.right, &words.scheme, jerboa, labels ? &labels->right : nullptr);
   if (!words.scheme) words = ArcWords{};
   std::vector<std::string> hooks;
   const auto hn = n["hooks"];
@@ -283,7 +288,7 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
   } catch (const std::invalid_argument& e) {
     fail_at(file, hn ? hn : v, fmt::format("rule '{}': {}", name, e.what()));
   }
-  CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words};
+  CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words, std::move(labels)};
   if (const auto vn = v["verdict"]) {
     // "consistent", or the list of the conditions that must fail.
     cr.verdict_location = where(file, vn);

@@ -50,6 +50,9 @@ struct CatalogRule {
   /// The W-labels of a rule scheme (002 Sec. 6); `words.scheme` is false
   /// for a DPO rule.
   ArcWords words;
+  /// The orbit types of a Jerboa-style scheme's nodes (000 Sec. 4.3),
+  /// already translated into `words`' loops; unset in the (W,D) notation.
+  std::optional<JerboaLabels> jerboa;
 };
 
 struct Catalog {
@@ -72,7 +75,8 @@ Catalog read_catalog(const std::string& file);
 /// mapping from names to generalized orbit types and are translated to
 /// (W,D) loops (core/jerboa_scheme.hpp).
 TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model = nullptr,
-                    std::vector<ConjWord>* words = nullptr, bool* has_words = nullptr, const OrbitType* jerboa = nullptr);
+                    std::vector<ConjWord>* words = nullptr, bool* has_words = nullptr, const OrbitType* jerboa = nullptr,
+                    std::vector<OrbitType>* orbit_types = nullptr);
 
 /// Reads a model: a preset name, or {dims, non_oriented, exchangeable,
 /// partial, loop_free} for a custom one.

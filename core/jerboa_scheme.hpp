@@ -36,6 +36,15 @@ std::string orbit_type_str(const OrbitType& t);
 /// (o_k, label_k)-loop for each position k whose label is not '_'. Throws
 /// std::invalid_argument if the lengths differ (000 Def. 4.2's size
 /// condition), the parameter has a '_', or a dimension is not in the model.
+/// A Jerboa scheme's node labels, kept beside their translation so that
+/// pictures and writers show the notation the user wrote: one orbit type
+/// per node of L and of R (indexed by node id), and the parameter orbit
+/// type (the hook's label).
+struct JerboaLabels {
+  OrbitType parameter;
+  std::vector<OrbitType> left, right;
+};
+
 void add_implicit_arcs(TopoGraph& g, std::vector<ConjWord>& words, NodeId v, const OrbitType& parameter, const OrbitType& label,
                        const Model& model);
 

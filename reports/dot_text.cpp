@@ -9,6 +9,10 @@ namespace dartcheck::reports {
 std::string quote(std::string_view s) {
   std::string out = "\"";
   for (char c : s) {
+    if (c == '\n') {  // a line break of a label
+      out += "\\n";
+      continue;
+    }
     if (c == '"' || c == '\\') out += '\\';
     out += c;
   }

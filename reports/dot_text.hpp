@@ -8,7 +8,7 @@
 
 namespace dartcheck::reports {
 
-/// A DOT double-quoted string.
+/// A DOT double-quoted string; a newline becomes DOT's line break "\n".
 std::string quote(std::string_view s);
 
 /// Text for an HTML-like label: &, < and > escaped.

@@ -11,7 +11,8 @@ std::string graph_cluster(const TopoGraph& g, const Model& model, const GraphPic
                                 quote(p.highlight_label.empty() ? p.title : p.title + " (" + p.highlight_label + ")"));
   for (NodeId v = 0; v < g.node_count(); ++v) {
     const bool lit = v < p.highlight.size() && p.highlight[v];
-    out += fmt::format("    {} [label={}{}];\n", quote(p.prefix + g.name(v)), quote(g.name(v)),
+    const bool tagged = v < p.tags.size() && !p.tags[v].empty();
+    out += fmt::format("    {} [label={}{}];\n", quote(p.prefix + g.name(v)), quote(tagged ? g.name(v) + "\n" + p.tags[v] : g.name(v)),
                        lit ? fmt::format(", style=filled, fillcolor=\"{}\", color=\"{}\", penwidth=2, highlight=\"true\"", highlight_fill,
                                          highlight_line)
                            : "");

@@ -36,7 +36,7 @@ std::vector<Step> steps(const std::string& text) {
 
 // One side of the rule, as a cluster.
 std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses,
-                         const std::string& prefix) {
+                         const std::string& prefix, const JerboaLabels* labels) {
   const TopoGraph& g = left ? rule.left() : rule.right();
   const std::vector<ConjWord>& ws = left ? words.left : words.right;
   const Model& model = rule.model();
@@ -68,7 +68,9 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     const bool hook = in_left != no_node && std::find(rule.hooks().begin(), rule.hooks().end(), in_left) != rule.hooks().end();
     const auto color = kept ? preserved_color : left ? deleted_color : added_color;
     const bool lit = contains(lit_nodes, g.name(v));
-    out += fmt::format("      {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), quote(g.name(v)),
+    const auto* types = labels ? (left ? &labels->left : &labels->right) : nullptr;
+    const std::string text = types && v < types->size() ? g.name(v) + "\n" + orbit_type_str((*types)[v]) : g.name(v);
+    out += fmt::format("      {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), quote(text),
                        color, color, hook ? ", peripheries=2" : "",
                        lit ? fmt::format(", style=filled, fillcolor=\"{}\", penwidth=2, witness=\"true\"", highlight_fill) : "");
   }
@@ -93,6 +95,8 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     }
     const auto color = kept ? preserved_color : left ? deleted_color : added_color;
     const bool lit = lit_arc(e) || lit_arc(partner);
+    // A Jerboa node's orbit type already says what its implicit loops say.
+    if (labels && a.source == a.target && !w.empty() && !lit) continue;
     out += fmt::format("      {} -> {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(a.source)),
                        quote(prefix + side + ":" + g.name(a.target)), quote(label_text(a.label, w, words.scheme)),
                        lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, pair ? ", dir=none" : "",
@@ -110,10 +114,20 @@ std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v) {
   return out;
 }
 
-std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix) {
+std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
+                         const JerboaLabels* labels) {
   std::string out = fmt::format("  subgraph {} {{\n    label={}; color=\"white\";\n", quote("cluster_" + prefix + "rule"), quote(rule.name()));
-  out += side_cluster(rule, words, true, witnesses, prefix);
-  out += side_cluster(rule, words, false, witnesses, prefix);
+  out += side_cluster(rule, words, true, witnesses, prefix, labels);
+  out += side_cluster(rule, words, false, witnesses, prefix, labels);
+  // R right of L: an invisible node ranked after every node of L and
+  // before every node of R (without it, L and R can end up stacked when
+  // their preserved nodes sit at different depths, as in Fig. 26d).
+  const std::string sep = prefix + "L|R";
+  out += fmt::format("    {} [shape=point, style=invis, width=0];\n", quote(sep));
+  for (NodeId v = 0; v < rule.left().node_count(); ++v)
+    out += fmt::format("    {} -> {} [style=invis, weight=0];\n", quote(prefix + "L:" + rule.left().name(v)), quote(sep));
+  for (NodeId v = 0; v < rule.right().node_count(); ++v)
+    out += fmt::format("    {} -> {} [style=invis, weight=0];\n", quote(sep), quote(prefix + "R:" + rule.right().name(v)));
   // Level each preserved node of R with its node in L.
   for (NodeId v = 0; v < rule.left().node_count(); ++v)
     if (rule.to_right(v) != no_node)
@@ -122,13 +136,13 @@ std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vec
   return out + "  }\n";
 }
 
-std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses) {
+std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels) {
   std::string legend = fmt::format(R"(<font color="{}">preserved</font>  <font color="{}">deleted</font>  <font color="{}">added</font>  )"
                                    R"(double border: hook{})",
                                    preserved_color, deleted_color, added_color, witnesses.empty() ? "" : "  filled: witness");
-  return fmt::format("digraph {} {{\n  rankdir=LR; fontname=\"Helvetica\"; label=<{}>; labelloc=b;\n"
+  return fmt::format("digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; label=<{}>; labelloc=b;\n"
                      "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n{}}}\n",
-                     quote(rule.name()), legend, rule_cluster(rule, words, witnesses, ""));
+                     quote(rule.name()), legend, rule_cluster(rule, words, witnesses, "", labels));
 }
 
 }  // namespace dartcheck::reports

@@ -5,13 +5,15 @@
 // words) is one undirected edge. Each preserved node of R sits level with
 // its node in L. The witnesses of failed conditions are highlighted and
 // carry the attribute witness="true" (nodes and arcs), for tools and
-// tests.
+// tests. A Jerboa-style scheme's nodes show their orbit types; the loops
+// those types stand for are then drawn only when they are witnesses.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "checkers/rule_conditions.hpp"
+#include "core/jerboa_scheme.hpp"
 #include "core/rule.hpp"
 
 namespace dartcheck::reports {
@@ -21,9 +23,11 @@ std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v);
 
 /// A cluster holding L and R (to embed in a larger picture); node ids are
 /// prefix + "L:" + name and prefix + "R:" + name.
-std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix);
+std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
+                         const JerboaLabels* labels = nullptr);
 
 /// A whole picture of the rule, titled with its name.
-std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {});
+std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {},
+                     const JerboaLabels* labels = nullptr);
 
 }  // namespace dartcheck::reports

@@ -8,6 +8,9 @@ packages=(
   libgtest-dev libgmock-dev librapidcheck-dev
   libz3-dev libfmt-dev libyaml-cpp-dev libcli11-dev libpugixml-dev
   libgraphviz-dev graphviz
+  # The HTML report's test: headless Chromium screenshots the page, libpng
+  # reads the screenshot.
+  chromium libpng-dev
   libbenchmark-dev
   # Oracles, peers and real data for tests and benchmarks only.
   libcgal-dev libcgal-demo geomview assimp-testmodels libopenmesh-dev

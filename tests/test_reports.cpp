@@ -1,12 +1,16 @@
 // Pictures: the DOT of every rule with failing conditions highlights the
-// checker's witnesses (read back with Graphviz's own parser, cgraph), and
+// checker's witnesses (read back with Graphviz's own parser, cgraph),
 // every seed rule and a map render to well-formed SVG with one node per
-// rule node or dart (read with pugixml).
+// rule node or dart (read with pugixml), Jerboa nodes show their orbit
+// types, and a counterexample's three panels highlight the match and the
+// broken darts.
 #include <gtest/gtest.h>
 
 #include <graphviz/cgraph.h>
 #include <pugixml.hpp>
 
+#include <algorithm>
+#include <map>
 #include <memory>
 #include <set>
 
@@ -14,6 +18,7 @@
 #include "core/catalog.hpp"
 #include "core/graph_derivation.hpp"
 #include "generators/shapes.hpp"
+#include "reports/counterexample_dot.hpp"
 #include "reports/graph_dot.hpp"
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
@@ -122,4 +127,93 @@ TEST(Render, BadDotAndUnknownFormatAreErrorsNotCrashes) {
   EXPECT_THROW(reports::render("digraph { a -> b }", "nosuchformat"), std::runtime_error);
   EXPECT_THROW(reports::format_of("picture.txt"), std::invalid_argument);
   EXPECT_EQ(reports::format_of("x.gv"), "dot");
+}
+
+// Jerboa-style schemes show each node's orbit type, and the loops those
+// types stand for are left out unless they are witnesses.
+TEST(RuleDot, JerboaNodesShowTheirOrbitTypes) {
+  int schemes = 0;
+  for (const auto& e : seed_catalog().rules) {
+    if (!e.jerboa) continue;
+    ++schemes;
+    const RuleVerdict v = check_rule(e.rule, e.words);
+    const Graph g = parse(reports::rule_dot(e.rule, e.words, reports::failed_witnesses(v), &*e.jerboa));
+    ASSERT_TRUE(g) << e.rule.name();
+    for (bool left : {true, false}) {
+      const TopoGraph& side = left ? e.rule.left() : e.rule.right();
+      const auto& types = left ? e.jerboa->left : e.jerboa->right;
+      ASSERT_EQ(types.size(), side.node_count()) << e.rule.name();
+      for (NodeId n = 0; n < side.node_count(); ++n) {
+        const std::string id = std::string(left ? "L:" : "R:") + side.name(n);
+        Agnode_t* node = agnode(g.get(), const_cast<char*>(id.c_str()), 0);
+        ASSERT_NE(node, nullptr) << id;
+        EXPECT_EQ(std::string(agget(node, const_cast<char*>("label"))), side.name(n) + "\\n" + orbit_type_str(types[n])) << e.rule.name();
+      }
+    }
+    for (Agnode_t* n = agfstnode(g.get()); n; n = agnxtnode(g.get(), n))
+      for (Agedge_t* x = agfstout(g.get(), n); x; x = agnxtout(g.get(), x)) {
+        const char* lit = agget(x, const_cast<char*>("witness"));
+        const std::string label = agget(x, const_cast<char*>("label"));
+        if (aghead(x) == agtail(x) && label.starts_with("(") && !label.starts_with("(ε") && !(lit && std::string(lit) == "true"))
+          ADD_FAILURE() << e.rule.name() << ": implicit loop " << label << " at " << agnameof(n) << " drawn";
+      }
+  }
+  EXPECT_GE(schemes, 5);
+}
+
+namespace {
+
+// Centers of the SVG's nodes by title (Graphviz writes <title>id</title>
+// then the node's ellipse or polygon).
+std::map<std::string, double> node_x(const std::string& svg) {
+  pugi::xml_document doc;
+  EXPECT_TRUE(doc.load_string(svg.c_str()));
+  std::map<std::string, double> out;
+  for (const auto& n : doc.select_nodes("//g[@class='node']")) {
+    const auto e = n.node().child("ellipse");
+    if (e) out[n.node().child_value("title")] = e.attribute("cx").as_double();
+  }
+  return out;
+}
+
+}  // namespace
+
+// The three panels: G with exactly the matched darts filled, H with
+// exactly the broken darts filled, the rule; laid out G, H, rule from left
+// to right; one SVG node per dart of G and H and per rule node.
+TEST(CounterexampleDot, ThreePanelsHighlightMatchAndBrokenDarts) {
+  const Map cube = build_shape(Model::gmap(2), parse_shape("cube"));
+  const CatalogRule& e = *seed_catalog().find_rule("insert-vertex-sewn-edge/missing-1");
+  reports::CounterexamplePicture p;
+  p.title = "test";
+  p.host = &cube;
+  p.match_tags.assign(cube.size(), "");
+  p.match_tags[0] = "a";
+  p.match_tags[7] = "b";
+  p.result = &cube;
+  p.broken.assign(cube.size(), false);
+  p.broken[2] = p.broken[5] = true;
+  const RuleVerdict v = check_rule(e.rule, e.words);
+  const std::string dot = reports::counterexample_dot(e.rule, e.words, reports::failed_witnesses(v), p);
+  const Graph g = parse(dot);
+  ASSERT_TRUE(g);
+  EXPECT_EQ(marked(g.get(), "highlight"), (std::set<std::string>{"G:0", "G:7", "H:2", "H:5"}));
+  EXPECT_FALSE(marked(g.get(), "witness").empty());
+  for (const char* cluster : {"cluster_G:", "cluster_H:"}) {
+    Agraph_t* sub = agsubg(g.get(), const_cast<char*>(cluster), 0);
+    ASSERT_NE(sub, nullptr) << cluster;
+    EXPECT_EQ(static_cast<std::size_t>(agnnodes(sub)), cube.size()) << cluster;
+  }
+  const auto x = node_x(reports::render(dot, "svg"));
+  double g_max = -1e9, h_min = 1e9, h_max = -1e9, rule_min = 1e9;
+  std::size_t darts = 0, rule_nodes = 0;
+  for (const auto& [id, cx] : x) {
+    if (id.starts_with("G:")) g_max = std::max(g_max, cx), ++darts;
+    if (id.starts_with("H:")) h_min = std::min(h_min, cx), h_max = std::max(h_max, cx), ++darts;
+    if (id.starts_with("rule:")) rule_min = std::min(rule_min, cx), ++rule_nodes;
+  }
+  EXPECT_EQ(darts, 2 * cube.size());
+  EXPECT_EQ(rule_nodes, e.rule.left().node_count() + e.rule.right().node_count());
+  EXPECT_LT(g_max, h_min);
+  EXPECT_LT(h_max, rule_min);
 }

@@ -1,0 +1,367 @@
+// `dartcheck report`: one self-contained HTML page for a catalog. A verdict
+// table (rules x conditions, each failing cell linked to its witnesses),
+// then a section per rule: its picture with the witnesses highlighted, the
+// static verdict against the recorded one, and, when asked, what the fuzzer
+// and the solver found, each counterexample drawn as G, H and the rule.
+// The pictures are also written as SVG files beside the page, and each
+// counterexample as the files `dartcheck apply` replays.
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "checkers/violation.hpp"
+#include "cli/commands.hpp"
+#include "cli/counterexample_files.hpp"
+#include "cli/fuzz.hpp"
+#include "cli/prove_replay.hpp"
+#include "cli/report_text.hpp"
+#include "cli/resolve.hpp"
+#include "core/input_error.hpp"
+#include "core/scheme_application.hpp"
+#include "reports/counterexample_dot.hpp"
+#include "reports/html_page.hpp"
+#include "reports/render.hpp"
+#include "reports/rule_dot.hpp"
+
+namespace dartcheck::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using reports::html_text;
+
+struct RuleReport {
+  const CatalogRule* entry = nullptr;
+  RuleVerdict verdict;
+  std::vector<std::string> failures;
+  bool matches_record = true;
+  std::optional<FuzzReport> fuzz;
+  std::string fuzz_replay;
+  std::optional<proofs::RuleProof> proof;
+  std::vector<std::optional<Counterexample>> proof_cx;  // per constraint of the proof
+  std::vector<std::string> proof_replays;
+  bool unsound() const {
+    if (fuzz && fuzz->verdict == FuzzClass::soundness_bug) return true;
+    return proof && proof->count(proofs::Agreement::disagree) > 0;
+  }
+};
+
+// A picture as a file beside the page and as inline SVG for the page.
+class Pictures {
+ public:
+  Pictures(fs::path dir, std::string engine) : dir_(std::move(dir)), engine_(std::move(engine)) {}
+  std::string add(const std::string& dot, const std::string& file) {
+    const std::string svg = reports::render(dot, "svg", engine_);
+    const fs::path path = dir_ / file;
+    fs::create_directories(path.parent_path());
+    std::ofstream out(path, std::ios::binary);
+    if (!out || !out.write(svg.data(), static_cast<std::streamsize>(svg.size()))) throw InputError(path.string(), 0, 0, "cannot write the picture");
+    ++count_;
+    return fmt::format("<div class=\"picture\">{}</div>\n<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n",
+                       reports::inline_svg(svg, fmt::format("p{}_", count_)), html_text(file), html_text(file));
+  }
+  std::size_t count() const { return count_; }
+
+ private:
+  fs::path dir_;
+  std::string engine_;
+  std::size_t count_ = 0;
+};
+
+const JerboaLabels* labels_of(const CatalogRule& e) { return e.jerboa ? &*e.jerboa : nullptr; }
+
+// The three panels of a counterexample: the match (DPO: L's node names on
+// their darts; schemes: every dart of each hook's pattern P_v, named by its
+// hook's node), the darts H breaks, and the rule.
+std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const Counterexample& cx, const std::string& title) {
+  reports::CounterexamplePicture p;
+  p.title = title;
+  p.host = &cx.host;
+  p.match_tags.assign(cx.host.size(), "");
+  if (!cx.match.empty()) {
+    for (const auto& [node, d] : cx.match)
+      if (d < cx.host.size()) p.match_tags[d] = node;
+    p.match_label = "filled: the match";
+  } else {
+    const auto pattern = pattern_graphs(e.rule.model(), e.words, cx.host, cx.hooks);
+    for (std::size_t k = 0; k < cx.hooks.size(); ++k) {
+      const std::string node = e.rule.left().name(e.rule.hooks()[k]);
+      if (pattern.ok())
+        for (Dart d : pattern.value->darts[k]) p.match_tags[d] = node;
+      p.match_tags[cx.hooks[k]] = node + "*";
+    }
+    p.match_label = pattern.ok() ? "filled: P_v, * the hook" : "filled: the hooks";
+  }
+  if (cx.result) {
+    p.result = &*cx.result;
+    p.broken.assign(cx.result->size(), false);
+    for (const auto& viol : cx.violations)
+      if (viol.element < p.broken.size()) p.broken[viol.element] = true;
+    p.broken_label = fmt::format("filled: breaks {}", fmt::join(cx.broken(), ", "));
+  } else {
+    p.no_result = cx.unrepresentable;
+  }
+  return reports::counterexample_dot(e.rule, e.words, reports::failed_witnesses(v), p, labels_of(e));
+}
+
+// What a counterexample breaks, one sentence per violation (up to 12).
+std::string violations_html(const Counterexample& cx) {
+  std::string out = "<ul class=\"witnesses\">\n";
+  if (!cx.unrepresentable.empty()) out += fmt::format("<li>H has no dense form: {}</li>\n", html_text(cx.unrepresentable));
+  for (std::size_t k = 0; k < cx.violations.size() && k < 12; ++k)
+    out += fmt::format("<li>{}</li>\n", html_text(describe(cx.violations[k], fmt::format("dart {}", cx.violations[k].element))));
+  if (cx.violations.size() > 12) out += fmt::format("<li>... and {} more</li>\n", cx.violations.size() - 12);
+  return out + "</ul>\n";
+}
+
+std::string counterexample_html(const RuleReport& r, const Counterexample& cx, const std::string& heading, const std::string& replay,
+                                Pictures& pictures, const std::string& file) {
+  const auto& e = *r.entry;
+  std::string out = fmt::format("<h3>{}</h3>\n<p>{} Found by {}{}.</p>\n", html_text(heading),
+                                html_text(fmt::format("A valid {} of {} darts; applied at hook{} {}, H breaks {}.", e.rule.model().name, cx.host.size(),
+                                                      cx.hooks.size() == 1 ? "" : "s", fmt::join(cx.hooks, ","), fmt::join(cx.broken(), ", "))),
+                                html_text(cx.origin), cx.minimal ? " (minimal: no smaller host breaks it)" : "");
+  out += pictures.add(counterexample_dot(e, r.verdict, cx, fmt::format("{}: {}", e.rule.name(), heading)), file);
+  out += violations_html(cx);
+  if (!replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(replay));
+  return out;
+}
+
+std::string kind_of(const CatalogRule& e) {
+  if (e.jerboa) return fmt::format("Jerboa-style rule scheme, parameter orbit type {}", orbit_type_str(e.jerboa->parameter));
+  return e.words.scheme ? "(W,D)-rule scheme" : "DPO rule";
+}
+
+std::string static_verdict_text(const RuleReport& r) {
+  return r.failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(r.failures, " "));
+}
+
+std::string recorded_text(const CatalogRule& e) {
+  if (!e.expected_failures) return "none recorded";
+  return e.expected_failures->empty() ? "consistent" : fmt::format("fails {}", fmt::join(*e.expected_failures, " "));
+}
+
+std::string fuzz_cell(const FuzzReport& f) {
+  switch (f.verdict) {
+    case FuzzClass::consistent: return fmt::format("<td class=\"ok\">consistent ({} applications)</td>", f.applications);
+    case FuzzClass::confirmed: return fmt::format("<td class=\"fails\">confirmed ({} darts)</td>", f.counterexample->host.size());
+    case FuzzClass::unconfirmed: return "<td class=\"skipped\">unconfirmed</td>";
+    case FuzzClass::soundness_bug: return "<td class=\"bug\">SOUNDNESS BUG</td>";
+  }
+  return "<td></td>";
+}
+
+std::string prove_cell(const proofs::RuleProof& p) {
+  if (!p.out_of_scope.empty()) return "<td class=\"none\">out of scope</td>";
+  using proofs::Agreement;
+  const auto bad = p.count(Agreement::disagree);
+  return fmt::format("<td class=\"{}\">{} agree, {} disagree, {} unresolved, {} not compared</td>", bad ? "bug" : "ok", p.count(Agreement::agree), bad,
+                     p.count(Agreement::unresolved), p.count(Agreement::not_compared));
+}
+
+std::string answer_text(const proofs::ClassAnswer& a) {
+  using proofs::Status;
+  switch (a.status) {
+    case Status::counterexample: return fmt::format("counterexample, {} darts{}", a.darts, a.minimal ? " (minimal)" : "");
+    case Status::none: return a.proved_for_all() ? fmt::format("none, all hosts (bound {})", a.bound) : fmt::format("none up to {} darts", a.darts);
+    case Status::unknown: return fmt::format("unknown ({})", a.why);
+    case Status::vacuous: return "vacuous";
+  }
+  return "";
+}
+
+std::string table_html(const std::vector<RuleReport>& rows, bool fuzzed, bool proved) {
+  static constexpr std::pair<RuleCondition, const char*> kinds[] = {{RuleCondition::incident_arcs, "I"},
+                                                                     {RuleCondition::dangling, "dangling"},
+                                                                     {RuleCondition::non_orientation, "O"},
+                                                                     {RuleCondition::cycle, "C"},
+                                                                     {RuleCondition::no_loop, "no-loop"}};
+  std::string out = "<table class=\"verdicts\">\n<tr><th>rule</th><th>model</th>";
+  for (const auto& [kind, name] : kinds) out += fmt::format("<th>{}</th>", name);
+  out += "<th>static verdict</th><th>recorded</th>";
+  if (fuzzed) out += "<th>fuzz</th>";
+  if (proved) out += "<th>prove</th>";
+  out += "</tr>\n";
+  for (const auto& r : rows) {
+    const auto& e = *r.entry;
+    const std::string id = reports::html_id(e.rule.name());
+    out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td>", id, html_text(e.rule.name()), html_text(e.rule.model().name));
+    for (const auto& [kind, name] : kinds) {
+      const std::string text = cell(r.verdict, kind);
+      const std::string cls = text == "ok" ? "ok" : text == "-" ? "none" : text == "skipped" ? "skipped" : "fails";
+      // A failing cell links to the first failing condition of its kind.
+      std::string target;
+      for (const auto& c : r.verdict.conditions)
+        if (c.condition == kind && !c.holds && target.empty()) target = reports::html_id(e.rule.name() + "." + c.name());
+      out += target.empty() ? fmt::format("<td class=\"{}\">{}</td>", cls, html_text(text))
+                            : fmt::format("<td class=\"{}\"><a href=\"#{}\">{}</a></td>", cls, target, html_text(text));
+    }
+    out += fmt::format("<td>{}</td><td class=\"{}\">{}</td>", html_text(static_verdict_text(r)), r.matches_record ? "ok" : "fails",
+                       html_text(r.matches_record ? "matches" : "MISMATCH: " + recorded_text(e)));
+    if (fuzzed) out += r.fuzz ? fuzz_cell(*r.fuzz) : "<td></td>";
+    if (proved) out += r.proof ? prove_cell(*r.proof) : "<td></td>";
+    out += "</tr>\n";
+  }
+  return out + "</table>\n";
+}
+
+std::string rule_section(const RuleReport& r, Pictures& pictures) {
+  const auto& e = *r.entry;
+  const std::string name = e.rule.name(), stem = file_stem(name);
+  std::string out = fmt::format("<h2 id=\"{}\">{}</h2>\n<p>{} on {}; {}:{}. L has {} nodes, R has {}.</p>\n", reports::html_id(name), html_text(name),
+                                html_text(kind_of(e)), html_text(e.rule.model().name), html_text(e.location.file), e.location.line,
+                                e.rule.left().node_count(), e.rule.right().node_count());
+  if (!e.note.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_text(e.note));
+  out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(static_verdict_text(r)), html_text(recorded_text(e)),
+                     r.matches_record ? "" : " <span class=\"mismatch\">(MISMATCH)</span>");
+  out += pictures.add(reports::rule_dot(e.rule, e.words, reports::failed_witnesses(r.verdict), labels_of(e)), "rules/" + stem + ".svg");
+
+  // Every failing condition with its witnesses; skipped ones with the reason.
+  std::string failing;
+  for (const auto& c : r.verdict.conditions) {
+    if (c.holds && c.skipped.empty()) continue;
+    failing += fmt::format("<li id=\"{}\"><b>{}</b> {}", reports::html_id(name + "." + c.name()), html_text(c.name()),
+                           c.holds ? "skipped: " + html_text(c.skipped) : "fails");
+    if (!c.witnesses.empty()) {
+      failing += "\n<ul class=\"witnesses\">\n";
+      for (const auto& w : c.witnesses)
+        failing += fmt::format("<li>{}in {}: {}</li>\n", w.subcondition ? fmt::format("sub-condition {} ", w.subcondition) : "", w.side,
+                               html_text(w.text));
+      failing += "</ul>\n";
+    }
+    failing += "</li>\n";
+  }
+  if (!failing.empty()) out += "<h3>Conditions that fail</h3>\n<ul>\n" + failing + "</ul>\n";
+
+  if (r.fuzz) {
+    const auto& f = *r.fuzz;
+    out += fmt::format("<h3>Fuzz</h3>\n<p>{}</p>\n", html_text(outcome_text(f)));
+    if (!f.refusals.empty()) {
+      std::vector<std::string> refused;
+      for (const auto& [why, n] : f.refusals) refused.push_back(fmt::format("{} {}", n, why));
+      out += fmt::format("<p class=\"note\">Refused matches: {}.</p>\n", html_text(fmt::format("{}", fmt::join(refused, ", "))));
+    }
+    if (f.counterexample)
+      out += counterexample_html(r, *f.counterexample, "Fuzz counterexample", r.fuzz_replay, pictures, "counterexamples/" + stem + ".fuzz.svg");
+  }
+  if (r.proof) {
+    const auto& p = *r.proof;
+    out += "<h3>Prove (Z3)</h3>\n";
+    if (!p.out_of_scope.empty()) {
+      out += fmt::format("<p>Out of the solver's scope: {}</p>\n", html_text(p.out_of_scope));
+    } else {
+      out += "<table>\n<tr><th>constraint</th><th>static</th><th>theorem class</th><th>maps of the model</th><th>agreement</th><th>note</th></tr>\n";
+      for (const auto& c : p.constraints)
+        out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_text(c.constraint.name()),
+                           c.static_holds ? (*c.static_holds ? "holds" : "fails") : "-",
+                           html_text(c.theorem ? answer_text(*c.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)"),
+                           html_text(answer_text(c.model)), c.agreement == proofs::Agreement::disagree ? "bug" : "none",
+                           proofs::agreement_name(c.agreement), html_text(c.note));
+      out += "</table>\n";
+      for (std::size_t k = 0; k < p.constraints.size(); ++k)
+        if (r.proof_cx[k])
+          out += counterexample_html(r, *r.proof_cx[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
+                                     r.proof_replays[k], pictures,
+                                     "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+int report(const ReportOptions& o) {
+  const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  std::optional<double> seconds;
+  if (!o.fuzz.empty()) seconds = parse_duration(o.fuzz, "--fuzz");
+  if (o.prove_darts > 256) throw InputError("<command line>", 0, 0, "--prove: expected 0 (no proof) to 256 darts");
+  const fs::path dir(o.output);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw InputError(o.output, 0, 0, fmt::format("-o: cannot create the directory ({})", ec.message()));
+
+  std::vector<RuleReport> rows;
+  std::vector<const CatalogRule*> rules;
+  for (const auto& e : catalog.rules) {
+    if (!o.rule.empty() && e.rule.name() != o.rule) continue;
+    RuleReport r;
+    r.entry = &e;
+    r.verdict = check_rule(e.rule, e.words);
+    r.failures = static_failures(r.verdict);
+    r.matches_record = matches_record(e, r.verdict);
+    rows.push_back(std::move(r));
+    rules.push_back(&e);
+  }
+  const fs::path cx_dir = dir / "counterexamples";
+  std::string summary = fmt::format("<p>{} rule{}: {} consistent, {} with failing conditions; {} static verdicts differ from the catalog's.</p>\n",
+                                    rows.size(), rows.size() == 1 ? "" : "s",
+                                    std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return r.failures.empty(); }),
+                                    std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return !r.failures.empty(); }),
+                                    std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return !r.matches_record; }));
+
+  if (seconds) {
+    FuzzOptions fo;
+    fo.seed = o.seed ? *o.seed : std::random_device{}();
+    fo.runs = SIZE_MAX;
+    std::vector<Map> seeds;
+    for (const auto& s : catalog.maps) seeds.push_back(build_source(s));
+    fmt::print(stderr, "dartcheck report: fuzzing {} rule{} for {} s, seed {}\n", rules.size(), rules.size() == 1 ? "" : "s", *seconds, fo.seed);
+    auto found = fuzz_rules(rules, seeds, fo, seconds, isatty(fileno(stderr)) != 0);
+    std::size_t applications = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      applications += found[k].applications;
+      if (found[k].counterexample)
+        rows[k].fuzz_replay = write_counterexample(cx_dir.string(), file_stem(found[k].rule) + ".fuzz", o.catalog, found[k].rule,
+                                                   {{"seed", std::to_string(fo.seed)}, {"class", std::string(fuzz_class_name(found[k].verdict))}},
+                                                   found[k].static_failures, *found[k].counterexample);
+      rows[k].fuzz = std::move(found[k]);
+    }
+    summary += fmt::format("<p>Fuzz: {} s, seed {} (<code>--seed {}</code> replays it), {} application{}.</p>\n", *seconds, fo.seed, fo.seed,
+                           applications, applications == 1 ? "" : "s");
+  }
+  if (o.prove_darts > 0) {
+    proofs::ProveOptions po;
+    po.max_darts = o.prove_darts;
+    po.scheme_darts = std::min<std::size_t>(po.scheme_darts, o.prove_darts);
+    fmt::print(stderr, "dartcheck report: proving {} rule{} up to {} darts (schemes {})\n", rules.size(), rules.size() == 1 ? "" : "s", po.max_darts,
+               po.scheme_darts);
+    for (auto& r : rows) {
+      r.proof = proofs::prove_rule(*r.entry, po);
+      for (auto& c : r.proof->constraints) {
+        r.proof_cx.push_back(replay_solver_map(*r.entry, c));
+        r.proof_replays.push_back(r.proof_cx.back() ? write_counterexample(cx_dir.string(),
+                                                                           file_stem(r.entry->rule.name()) + ".prove." + constraint_stem(c),
+                                                                           o.catalog, r.entry->rule.name(),
+                                                                           {{"constraint", c.constraint.name()},
+                                                                            {"class", "counterexample on a map of the model (dartcheck prove)"}},
+                                                                           r.proof->static_failures, *r.proof_cx.back())
+                                                    : "");
+      }
+    }
+    summary += fmt::format("<p>Prove: Z3 on hosts of up to {} darts (rule schemes {}).</p>\n", po.max_darts, po.scheme_darts);
+  }
+  const auto unsound = std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return r.unsound(); });
+  if (unsound) summary += fmt::format("<p class=\"mismatch\">{} rule{} with a SOUNDNESS BUG or a disagreement.</p>\n", unsound, unsound == 1 ? "" : "s");
+
+  Pictures pictures(dir, o.engine);
+  std::string body = fmt::format("<h1>dartcheck report: {}</h1>\n", html_text(o.catalog));
+  body += summary;
+  body += "<p class=\"note\">Pictures: L and R side by side; preserved black, deleted red, added green; hooks with a double border; "
+          "filled nodes and doubled arcs are the witnesses of a failed condition. Links: 0 black, 1 red, 2 blue, 3 green.</p>\n";
+  body += table_html(rows, seconds.has_value(), o.prove_darts > 0);
+  for (const auto& r : rows) body += rule_section(r, pictures);
+
+  const fs::path index = dir / "index.html";
+  const std::string page = reports::html_document("dartcheck report: " + o.catalog, body);
+  std::ofstream out(index, std::ios::binary);
+  if (!out || !out.write(page.data(), static_cast<std::streamsize>(page.size()))) throw InputError(index.string(), 0, 0, "cannot write the report");
+  fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes)\n", index.string(), rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size());
+  if (unsound) return soundness_bug;
+  return std::all_of(rows.begin(), rows.end(), [](const RuleReport& r) { return r.matches_record; }) ? ok : violation;
+}
+
+}  // namespace dartcheck::cli

@@ -1,0 +1,23 @@
+// The dynamic checker's opinion on a solver counterexample over maps of the
+// model (`dartcheck prove`, `dartcheck report --prove`): the solver's host
+// as a dense map, the rule applied there by apply_rule / apply_scheme, H
+// checked by check_map.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "cli/fuzz.hpp"
+#include "proofs/rule_prover.hpp"
+
+namespace dartcheck::cli {
+
+/// The replayed counterexample, or nullopt when the answer holds none.
+/// When the dynamic checker finds no failure on the solver's map, the
+/// constraint's agreement becomes `disagree` with a note saying why.
+std::optional<Counterexample> replay_solver_map(const CatalogRule& entry, proofs::ConstraintProof& c);
+
+/// "C0-2" for C(0,2): the constraint's part of a file name.
+std::string constraint_stem(const proofs::ConstraintProof& c);
+
+}  // namespace dartcheck::cli
