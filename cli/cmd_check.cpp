@@ -24,7 +24,8 @@ namespace {
 struct Checked {
   const CatalogRule* entry;
   RuleVerdict verdict;
-  std::vector<std::string> failures;
+  std::vector<std::string> failures;  // topological conditions, then embedding checks
+  std::vector<EmbeddingVerdict> embedding;  // catalogs that declare embeddings
   std::optional<HostSearch> search;  // failing DPO rules only
   std::optional<FuzzReport> scheme_search;  // every scheme
   bool unsound = false;  // judged consistent, yet broke a map
@@ -78,13 +79,16 @@ int check(const CheckOptions& o) {
   std::vector<Checked> rows;
   for (const auto& entry : catalog.rules) {
     if (!o.rule.empty() && entry.rule.name() != o.rule) continue;
-    Checked c{&entry, {}, {}, {}, {}, false, 0, true};
+    Checked c{&entry, {}, {}, {}, {}, {}, false, 0, true};
     const auto t0 = std::chrono::steady_clock::now();
     c.verdict = check_rule(entry.rule, entry.words);
+    if (!catalog.embeddings.empty()) c.embedding = check_embedding_presence(entry.rule, entry.words, catalog.embeddings, entry.expressions);
     c.millis = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (const auto& v : c.verdict.conditions)
       if (!v.holds) c.failures.push_back(v.name());
-    c.matches_record = matches_record(entry, c.verdict);
+    const bool topological_failure = !c.failures.empty();
+    for (const auto& name : failing_names(c.embedding)) c.failures.push_back(name);
+    c.matches_record = matches_record(entry, c.verdict, c.embedding);
     if (o.confirm_darts > 0 && entry.words.scheme) {
       // Schemes, consistent or not, run on every small map of their
       // model, the catalog's maps and random valid maps (the fuzzer with
@@ -99,9 +103,9 @@ int check(const CheckOptions& o) {
       fo.max_darts = 64;
       fo.static_check = [&](const CatalogRule&) { return c.verdict; };
       c.scheme_search = fuzz_rule(entry, extra, fo);
-      c.unsound = c.failures.empty() && c.scheme_search->counterexample;
+      c.unsound = !topological_failure && c.scheme_search->counterexample;
       if (c.unsound) c.matches_record = false;
-    } else if (!c.failures.empty() && o.confirm_darts > 0) {
+    } else if (topological_failure && o.confirm_darts > 0) {
       c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
     }
     rows.push_back(std::move(c));
@@ -129,15 +133,43 @@ int check(const CheckOptions& o) {
         }
         fmt::print("]}}");
       }
-      fmt::print("]}}{}\n", k + 1 < rows.size() ? "," : "");
+      fmt::print("], \"embedding_checks\": [");
+      for (std::size_t m = 0; m < c.embedding.size(); ++m) {
+        const auto& e = c.embedding[m];
+        std::vector<std::string> texts;
+        for (const auto& w : e.witnesses) texts.push_back(w.text);
+        fmt::print("{}{{\"check\": \"{}\", \"holds\": {}, \"witnesses\": {}}}", m ? ", " : "", json_escape(e.name()), e.holds, json_strings(texts));
+      }
+      fmt::print("], \"caveats\": {}}}{}\n", json_strings(c.entry->caveats), k + 1 < rows.size() ? "," : "");
     }
+    fmt::print("], \"skipped\": [");
+    for (std::size_t k = 0; k < catalog.skipped.size(); ++k)
+      fmt::print("{}{{\"name\": \"{}\", \"why\": \"{}\", \"at\": \"{}\"}}", k ? ", " : "", json_escape(catalog.skipped[k].name),
+                 json_escape(catalog.skipped[k].why), json_escape(catalog.skipped[k].location.str()));
     fmt::print("], \"mismatches\": {}}}\n", mismatches);
     return mismatches ? violation : ok;
   }
 
   std::size_t width = 4;
   for (const auto& c : rows) width = std::max(width, c.entry->rule.name().size());
-  fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {:>7}  {}\n", "rule", width, "model", "I", "dangling", "O", "C", "ms", "verdict");
+  const bool embedded = !catalog.embeddings.empty();
+  std::vector<std::string> ebd_cells;
+  std::size_t ebd_width = 10;
+  for (const auto& c : rows) {
+    const auto bad = failing_names(c.embedding);
+    ebd_cells.push_back(bad.empty() ? "ok" : fmt::format("fails {}", fmt::join(bad, ",")));
+    ebd_width = std::max(ebd_width, ebd_cells.back().size());
+  }
+  if (!catalog.modeler.empty())
+    fmt::print("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}\n\n", catalog.modeler, o.catalog, catalog.rules.size(),
+               catalog.skipped.size(), [&] {
+                 std::vector<std::string> e;
+                 for (const auto& d : catalog.embeddings) e.push_back(fmt::format("{} <{}>", d.name, fmt::join(d.orbit, ",")));
+                 return e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", "));
+               }());
+  fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7}  {}\n", "rule", width, "model", "I", "dangling", "O", "C",
+             embedded ? fmt::format("{:<{}} ", "embeddings", ebd_width) : "", "ms", "verdict");
+  std::size_t row = 0;
   for (const auto& c : rows) {
     const auto& v = c.verdict;
     const std::string verdict = c.failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(c.failures, " "));
@@ -147,9 +179,11 @@ int check(const CheckOptions& o) {
                    ? fmt::format("   MISMATCH: catalog records {}",
                                  c.entry->expected_failures->empty() ? "consistent" : fmt::format("{}", fmt::join(*c.entry->expected_failures, " ")))
                    : "   MISMATCH: no verdict recorded, so every condition must hold";
-    fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {:>7.2f}  {}{}\n", c.entry->rule.name(), width, c.entry->rule.model().name,
+    fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7.2f}  {}{}\n", c.entry->rule.name(), width, c.entry->rule.model().name,
                cell(v, RuleCondition::incident_arcs), cell(v, RuleCondition::dangling), cell(v, RuleCondition::non_orientation),
-               cell(v, RuleCondition::cycle), c.millis, verdict, record);
+               cell(v, RuleCondition::cycle), embedded ? fmt::format("{:<{}} ", ebd_cells[row], ebd_width) : "", c.millis, verdict, record);
+    ++row;
+    for (const auto& caveat : c.entry->caveats) fmt::print("{:<{}}  note: {}\n", "", width, caveat);
     if (c.search || c.scheme_search) fmt::print("{:<{}}  {}\n", "", width, model_level(c));
     if (o.explain && !c.failures.empty()) {
       for (const auto& cond : v.conditions) {
@@ -158,6 +192,8 @@ int check(const CheckOptions& o) {
           fmt::print("{:<{}}    {}{}: {}\n", "", width, cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
                      w.text);
       }
+      for (const auto& e : c.embedding)
+        for (const auto& w : e.witnesses) fmt::print("{:<{}}    {}: {}\n", "", width, e.name(), w.text);
       if (c.scheme_search && c.scheme_search->counterexample)
         fmt::print("{:<{}}    host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)\n", "", width,
                    c.scheme_search->counterexample->origin, c.entry->rule.name());
@@ -166,6 +202,11 @@ int check(const CheckOptions& o) {
                    arcs_text(*c.search->result));
     }
   }
+  for (const auto& sk : catalog.skipped)
+    if (o.rule.empty()) fmt::print("{:<{}}  skipped ({}): {}\n", sk.name, width, sk.location.str(), sk.why);
+  if (embedded)
+    fmt::print("\nembeddings: defined/merge/one-value are Jerboa's presence checks (003 Thm 2): sufficient, not necessary; expressions are "
+               "compared as text, never evaluated\n");
   fmt::print("\n{} rules, {} consistent, {} with failing conditions; {} verdict{} differ{} from the catalog\n", rows.size(),
              std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return c.failures.empty(); }),
              std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.failures.empty(); }), mismatches,

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "checkers/embedding_presence.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "checkers/violation.hpp"
 #include "core/catalog.hpp"
@@ -29,9 +30,10 @@ std::string json_strings(const std::vector<std::string>& v);
 /// "skipped" or "-" (the model has none of that kind).
 std::string cell(const RuleVerdict& v, RuleCondition kind);
 
-/// Whether the static verdict's failing conditions are exactly those the
-/// catalog records (none, when it records none). Throws InputError at the
-/// verdict when it names a condition the model does not have.
-bool matches_record(const CatalogRule& entry, const RuleVerdict& v);
+/// Whether the static verdict's failing conditions, with the failing
+/// embedding-presence checks, are exactly those the catalog records (none,
+/// when it records none). Throws InputError at the verdict when it names a
+/// condition the rule does not have.
+bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::vector<EmbeddingVerdict>& embedding = {});
 
 }  // namespace dartcheck::cli

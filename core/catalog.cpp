@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/jerboa_modeler.hpp"
 #include "core/jerboa_scheme.hpp"
 #include "core/map_io.hpp"
 #include "core/yaml_util.hpp"
@@ -288,7 +289,26 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
   } catch (const std::invalid_argument& e) {
     fail_at(file, hn ? hn : v, fmt::format("rule '{}': {}", name, e.what()));
   }
-  CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words, std::move(labels)};
+  CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words, std::move(labels), {}, {}};
+  if (const auto ex = n["expressions"]) {
+    // {node of R: {embedding: code}}
+    yaml::expect_map(file, ex, "expressions");
+    for (const auto& kv : ex) {
+      const auto node = yaml::as_string(file, kv.first, "node name");
+      if (!cr.rule.right().find(node)) fail_at(file, kv.first, fmt::format("expressions: '{}' is not a node of right", node));
+      yaml::expect_map(file, kv.second, "expressions of a node");
+      for (const auto& e : kv.second) {
+        const auto ebd = yaml::as_string(file, e.first, "embedding name");
+        if (std::none_of(c.embeddings.begin(), c.embeddings.end(), [&](const EmbeddingDecl& d) { return d.name == ebd; }))
+          fail_at(file, e.first, fmt::format("expressions: no embedding named '{}' under 'embeddings'", ebd));
+        cr.expressions.push_back({node, ebd, yaml::as_string(file, e.second, "expression"), where(file, e.second)});
+      }
+    }
+  }
+  if (const auto cv = n["caveats"]) {
+    yaml::expect_sequence(file, cv, "caveats");
+    for (const auto& x : cv) cr.caveats.push_back(yaml::as_string(file, x, "caveat"));
+  }
   if (const auto vn = v["verdict"]) {
     // "consistent", or the list of the conditions that must fail.
     cr.verdict_location = where(file, vn);
@@ -306,11 +326,44 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
 }  // namespace
 
 Catalog read_catalog(const std::string& file) {
+  if (file.ends_with(".jme")) return read_jme(file);
   const YAML::Node root = load_yaml_file(file);
   Catalog c;
   c.file = file;
   if (!root.IsMap()) throw InputError(file, 1, 1, "a catalog is a mapping with keys models, maps, rules");
-  yaml::allow_keys(file, root, {"models", "maps", "rules", "model", "description"});
+  yaml::allow_keys(file, root, {"models", "maps", "rules", "model", "description", "modeler", "embeddings", "skipped"});
+  if (root["modeler"]) c.modeler = yaml::as_string(file, root["modeler"], "modeler");
+  if (const auto ebds = root["embeddings"]) {
+    // [{name, type, orbit: "<1,2,3>"}]
+    yaml::expect_sequence(file, ebds, "embeddings");
+    for (const auto& e : ebds) {
+      yaml::expect_map(file, e, "embedding");
+      yaml::allow_keys(file, e, {"name", "type", "orbit"});
+      EmbeddingDecl d{yaml::as_string(file, yaml::require(file, e, "name"), "embedding name"),
+                      e["type"] ? yaml::as_string(file, e["type"], "embedding type") : "",
+                      {},
+                      where(file, e)};
+      const auto orbit = yaml::require(file, e, "orbit");
+      try {
+        for (const auto& k : parse_orbit_type(yaml::as_string(file, orbit, "orbit type"))) {
+          if (!k) throw std::invalid_argument("an embedding's orbit type cannot contain '_'");
+          d.orbit.push_back(*k);
+        }
+      } catch (const std::invalid_argument& x) {
+        fail_at(file, orbit, fmt::format("embedding '{}': {}", d.name, x.what()));
+      }
+      c.embeddings.push_back(std::move(d));
+    }
+  }
+  if (const auto sk = root["skipped"]) {
+    // Rules an import could not represent: [{name, why}]
+    yaml::expect_sequence(file, sk, "skipped");
+    for (const auto& x : sk) {
+      yaml::expect_map(file, x, "skipped rule");
+      c.skipped.push_back({yaml::as_string(file, yaml::require(file, x, "name"), "name"), yaml::as_string(file, yaml::require(file, x, "why"), "why"),
+                           where(file, x)});
+    }
+  }
 
   std::vector<Model> custom;
   if (const auto models = root["models"]) {
@@ -352,7 +405,7 @@ Catalog read_catalog(const std::string& file) {
     yaml::expect_sequence(file, rules, "rules");
     for (const auto& n : rules) {
       yaml::expect_map(file, n, "rule");
-      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants"});
+      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats"});
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
       const Model model = model_of(n);
       const auto left = yaml::require(file, n, "left"), right = yaml::require(file, n, "right");

@@ -29,6 +29,28 @@ struct MapSource {
   SourceLocation location;
 };
 
+/// An embedding operation pi : <o> -> tau (003 Sec. 5.1). The value type
+/// is kept as the text the file gives (a Jerboa Java class, "point3", ...).
+struct EmbeddingDecl {
+  std::string name, type;
+  std::vector<Dim> orbit;
+  SourceLocation location;
+};
+
+/// An embedding expression carried by a node of R (Jerboa's
+/// <expr ebd="pos">code</expr>): opaque code, never evaluated; what matters
+/// to the presence checks is that it is there.
+struct NodeExpression {
+  std::string node, embedding, code;
+  SourceLocation location;
+};
+
+/// A rule of an imported file that dartcheck does not represent, and why.
+struct SkippedRule {
+  std::string name, why;
+  SourceLocation location;
+};
+
 /// A worked application: rule at `hooks` on `map`, and what must happen.
 struct Example {
   std::string map;
@@ -53,10 +75,18 @@ struct CatalogRule {
   /// The orbit types of a Jerboa-style scheme's nodes (000 Sec. 4.3),
   /// already translated into `words`' loops; unset in the (W,D) notation.
   std::optional<JerboaLabels> jerboa;
+  /// Embedding expressions on R's nodes (Jerboa modelers).
+  std::vector<NodeExpression> expressions;
+  /// What an import left out of this rule while keeping it (an ignored
+  /// precondition, embedding parameters...), one sentence each.
+  std::vector<std::string> caveats;
 };
 
 struct Catalog {
   std::string file;
+  std::string modeler;  // the Jerboa modeler's name, for imported files
+  std::vector<EmbeddingDecl> embeddings;
+  std::vector<SkippedRule> skipped;
   std::vector<MapSource> maps;
   std::vector<CatalogRule> rules;
   const MapSource* find_map(const std::string& name) const;
@@ -64,6 +94,7 @@ struct Catalog {
 };
 
 /// Reads a catalog; every error is an InputError with file:line:column.
+/// A file ending in .jme is read as a Jerboa modeler (core/jerboa_modeler).
 Catalog read_catalog(const std::string& file);
 
 /// Reads one side of a rule: {nodes: [...], arcs: ["a -0- b", ...]}.
