@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "checkers/embedding_presence.hpp"
 #include "checkers/violation.hpp"
 #include "cli/commands.hpp"
 #include "cli/counterexample_files.hpp"
@@ -37,7 +38,8 @@ using reports::html_text;
 struct RuleReport {
   const CatalogRule* entry = nullptr;
   RuleVerdict verdict;
-  std::vector<std::string> failures;
+  std::vector<std::string> failures;  // topological, then embedding-presence checks
+  std::vector<EmbeddingVerdict> embedding;
   bool matches_record = true;
   std::optional<FuzzReport> fuzz;
   std::string fuzz_replay;
@@ -235,7 +237,20 @@ std::string rule_section(const RuleReport& r, Pictures& pictures) {
     }
     failing += "</li>\n";
   }
+  for (const auto& c : r.embedding) {
+    if (c.holds) continue;
+    failing += fmt::format("<li id=\"{}\"><b>{}</b> fails (Jerboa's presence check, 003 Thm 2: sufficient, not necessary)\n<ul class=\"witnesses\">\n",
+                           reports::html_id(name + "." + c.name()), html_text(c.name()));
+    for (const auto& w : c.witnesses) failing += fmt::format("<li>{}</li>\n", html_text(w.text));
+    failing += "</ul></li>\n";
+  }
   if (!failing.empty()) out += "<h3>Conditions that fail</h3>\n<ul>\n" + failing + "</ul>\n";
+  if (!e.expressions.empty()) {
+    out += "<h3>Embedding expressions (opaque)</h3>\n<ul>\n";
+    for (const auto& x : e.expressions) out += fmt::format("<li>{}.{}: <code>{}</code></li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code));
+    out += "</ul>\n";
+  }
+  for (const auto& caveat : e.caveats) out += fmt::format("<p class=\"note\">Not represented: {}</p>\n", html_text(caveat));
 
   if (r.fuzz) {
     const auto& f = *r.fuzz;
@@ -292,7 +307,9 @@ int report(const ReportOptions& o) {
     r.entry = &e;
     r.verdict = check_rule(e.rule, e.words);
     r.failures = static_failures(r.verdict);
-    r.matches_record = matches_record(e, r.verdict);
+    if (!catalog.embeddings.empty()) r.embedding = check_embedding_presence(e.rule, e.words, catalog.embeddings, e.expressions);
+    for (const auto& name : failing_names(r.embedding)) r.failures.push_back(name);
+    r.matches_record = matches_record(e, r.verdict, r.embedding);
     rows.push_back(std::move(r));
     rules.push_back(&e);
   }
@@ -344,6 +361,8 @@ int report(const ReportOptions& o) {
     }
     summary += fmt::format("<p>Prove: Z3 on hosts of up to {} darts (rule schemes {}).</p>\n", po.max_darts, po.scheme_darts);
   }
+  for (const auto& sk : catalog.skipped)
+    summary += fmt::format("<p class=\"mismatch\">Skipped {} ({}): {}</p>\n", html_text(sk.name), html_text(sk.location.str()), html_text(sk.why));
   const auto unsound = std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return r.unsound(); });
   if (unsound) summary += fmt::format("<p class=\"mismatch\">{} rule{} with a SOUNDNESS BUG or a disagreement.</p>\n", unsound, unsound == 1 ? "" : "s");
 

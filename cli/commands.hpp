@@ -27,6 +27,12 @@ struct DrawOptions {
 /// A rule's picture; 0, or 2 on bad input.
 int draw(const DrawOptions& o);
 
+struct ConvertOptions {
+  std::string input, output;
+};
+/// Writes the catalog (e.g. a Jerboa .jme modeler) as a YAML catalog.
+int convert(const ConvertOptions& o);
+
 struct ReportOptions {
   std::string catalog, rule, output, engine = "dot";
   std::string fuzz;              // a duration: fuzz every rule within it (empty: no fuzzing)

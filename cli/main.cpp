@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
 
   cli::ApplyOptions apply;
   auto* a = app.add_subcommand("apply", "Apply a DPO rule at hook darts, validate and write the result");
-  a->add_option("catalog", apply.catalog, "YAML catalog")->required();
+  a->add_option("catalog", apply.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   a->add_option("--rule", apply.rule, "rule name")->required();
   a->add_option("--map", apply.map, "catalog map name, map file, mesh or shape")->required();
   a->add_option("--hook", apply.hooks, "hook dart, one per hook of the rule (repeat)")->required();
@@ -30,11 +30,11 @@ int main(int argc, char** argv) {
 
   cli::RunOptions run;
   auto* r = app.add_subcommand("run", "Build every catalog map and check every rule example against its expected outcome");
-  r->add_option("catalog", run.catalog, "YAML catalog")->required();
+  r->add_option("catalog", run.catalog, "YAML catalog or Jerboa .jme modeler")->required();
 
   cli::CheckOptions check;
   auto* c = app.add_subcommand("check", "Static consistency conditions of every rule (002 Def. 11-16), against the catalog's verdicts");
-  c->add_option("catalog", check.catalog, "YAML catalog")->required();
+  c->add_option("catalog", check.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   c->add_option("--rule", check.rule, "check only this rule");
   c->add_option("--format", check.format, "text or json")->capture_default_str();
   c->add_flag("--explain", check.explain, "print the witnesses of every failing condition and the counterexample map");
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
 
   cli::FuzzCommand fuzz;
   auto* f = app.add_subcommand("fuzz", "Apply every rule at many matches on enumerated, given and random maps; set failures against the static verdict");
-  f->add_option("catalog", fuzz.catalog, "YAML catalog")->required();
+  f->add_option("catalog", fuzz.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   f->add_option("--rule", fuzz.rule, "fuzz only this rule");
   f->add_option("--time", fuzz.time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
   f->add_option("--runs", fuzz.runs, "applications per rule (default 10000 without --time)");
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
 
   cli::ProveCommand prove;
   auto* p = app.add_subcommand("prove", "Ask Z3 for a host whose derived map breaks a constraint (bounded), and set the answer against the static verdict");
-  p->add_option("catalog", prove.catalog, "YAML catalog")->required();
+  p->add_option("catalog", prove.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   p->add_option("--rule", prove.rule, "prove only this rule");
   p->add_option("--max-darts", prove.max_darts, "search hosts of up to this many darts")->capture_default_str();
   p->add_option("--scheme-darts", prove.scheme_darts,
@@ -77,13 +77,17 @@ int main(int argc, char** argv) {
 
   cli::DrawOptions draw;
   auto* dr = app.add_subcommand("draw", "Draw a rule or scheme: L and R side by side, witnesses of failed conditions highlighted");
-  dr->add_option("catalog", draw.catalog, "YAML catalog")->required();
+  dr->add_option("catalog", draw.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   dr->add_option("--rule", draw.rule, "the rule to draw")->required();
   dr->add_option("-o,--output", draw.output, "picture file: .svg, .png, .pdf, or .dot/.gv for the DOT text")->required();
   dr->add_option("--engine", draw.engine, "Graphviz layout engine")->capture_default_str();
+  cli::ConvertOptions convert;
+  auto* cv = app.add_subcommand("convert", "Write a catalog (a Jerboa .jme modeler, or YAML) as a YAML catalog that checks identically");
+  cv->add_option("input", convert.input, ".jme modeler or YAML catalog")->required();
+  cv->add_option("-o,--output", convert.output, "the YAML catalog to write")->required();
   cli::ReportOptions report;
   auto* rp = app.add_subcommand("report", "Write an HTML report of a catalog: verdict table, every rule drawn, every failure pointed at");
-  rp->add_option("catalog", report.catalog, "YAML catalog")->required();
+  rp->add_option("catalog", report.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   rp->add_option("-o,--output", report.output, "directory for index.html and the SVG pictures")->required();
   rp->add_option("--rule", report.rule, "only this rule");
   rp->add_option("--fuzz", report.fuzz, "fuzz every rule within this total time (30s, 2m, ...) and draw the counterexamples");
@@ -114,6 +118,7 @@ int main(int argc, char** argv) {
     if (*dr) return cli::draw(draw);
     if (*dm) return cli::draw_map(draw_map);
     if (*rp) return cli::report(report);
+    if (*cv) return cli::convert(convert);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;

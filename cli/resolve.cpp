@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
+#include "core/jerboa_jba.hpp"
 #include "core/map_io.hpp"
 #include "core/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
@@ -37,7 +38,8 @@ Map resolve_map(const std::string& target, const Model& model, const Catalog* ca
   if (is_mesh_path(target)) return load_mesh(model, target);
   const auto ext = std::filesystem::path(target).extension().string();
   if (ext == ".yaml" || ext == ".yml") return read_map(target, load_yaml_file(target));
-  if (exists) throw InputError(target, 0, 0, "unknown map file type (expected .yaml, .yml, .off or .obj)");
+  if (ext == ".jba") return read_jba(target).map;  // the file names its dimension
+  if (exists) throw InputError(target, 0, 0, "unknown map file type (expected .yaml, .yml, .off, .obj or .jba)");
   try {
     return build_shape(model, parse_shape(target));
   } catch (const BuildError& e) {

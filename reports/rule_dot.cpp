@@ -98,7 +98,7 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     // A Jerboa node's orbit type already says what its implicit loops say.
     if (labels && a.source == a.target && !w.empty() && !lit) continue;
     out += fmt::format("      {} -> {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(a.source)),
-                       quote(prefix + side + ":" + g.name(a.target)), quote(label_text(a.label, w, words.scheme)),
+                       quote(prefix + side + ":" + g.name(a.target)), quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
                        lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, pair ? ", dir=none" : "",
                        lit ? ", penwidth=2, witness=\"true\"" : "");
   }

@@ -1,0 +1,25 @@
+// `dartcheck convert`: a catalog (a Jerboa .jme modeler, or YAML) written
+// as a YAML catalog that checks identically (core/catalog_writer).
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/resolve.hpp"
+#include "core/catalog_writer.hpp"
+#include "core/input_error.hpp"
+
+namespace dartcheck::cli {
+
+int convert(const ConvertOptions& o) {
+  const Catalog catalog = read_command_catalog(o.input, "", "text");
+  if (!o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
+    throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a file name ending in .yaml or .yml", o.output));
+  const std::string text = catalog_yaml(catalog);
+  std::ofstream out(o.output, std::ios::binary);
+  if (!out || !out.write(text.data(), static_cast<std::streamsize>(text.size()))) throw InputError(o.output, 0, 0, "cannot write the catalog");
+  fmt::print("wrote {}: {} rules, {} skipped, {} embeddings\n", o.output, catalog.rules.size(), catalog.skipped.size(), catalog.embeddings.size());
+  return ok;
+}
+
+}  // namespace dartcheck::cli

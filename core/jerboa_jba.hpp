@@ -1,0 +1,37 @@
+// Jerboa G-map files (.jba, "Jerboa JBA Generic Format"):
+//
+//   Jerboa JBA Generic Format
+//   version 1
+//   name <modeler class>
+//   dimension 3
+//   nbebd 2
+//   ebdid 0 pos <a1, a2, a3> <value type>
+//   ebdid 1 color <a0, a1> <value type>
+//   <dart count> <an id bound, ignored>
+//   <dart id> <alpha_0> ... <alpha_n>          (one line per dart)
+//   <embedding name> <record count>           (one section per embedding)
+//   <dart ids of one orbit>
+//   <its value, kept as text>
+//
+// Loaded into a map of the n-G-map model (darts renumbered in file order)
+// with each embedding's values per dart. Errors: InputError at file:line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/map.hpp"
+#include "core/map_embedding.hpp"
+
+namespace dartcheck {
+
+struct JbaFile {
+  std::string name;  // the modeler the file was written by
+  Map map;
+  std::vector<MapEmbedding> embeddings;
+  std::vector<std::string> ids;  // the file's id of each dart
+};
+
+JbaFile read_jba(const std::string& file);
+
+}  // namespace dartcheck
