@@ -24,25 +24,6 @@ using proofs::Agreement;
 using proofs::ClassAnswer;
 using proofs::Status;
 
-std::string answer_text(const ClassAnswer& a) {
-  switch (a.status) {
-    case Status::counterexample: return fmt::format("counterexample at {} darts{}", a.darts, a.minimal ? " (minimal)" : "");
-    case Status::none: {
-      // An unsat core holding "holds I(d)" means no H satisfying I(d)
-      // breaks the constraint (those that break I(d) are counted there).
-      std::vector<std::string> premises;
-      for (const auto& c : a.core)
-        if (c.starts_with("holds ")) premises.push_back(c.substr(6));
-      const std::string among = premises.empty() ? "" : fmt::format(" with {}", fmt::join(premises, ", "));
-      return a.proved_for_all() ? fmt::format("none{}, all hosts (bound {})", among, a.bound)
-                                : fmt::format("none{} up to {} darts", among, a.darts);
-    }
-    case Status::unknown: return fmt::format("unknown ({})", a.why);
-    case Status::vacuous: return "vacuous";
-  }
-  return "";
-}
-
 std::string graph_arcs(const TopoGraph& g) {
   std::vector<std::string> arcs;
   for (const auto& a : g.arcs()) arcs.push_back(fmt::format("{} -{}-> {}", g.name(a.source), a.label, g.name(a.target)));

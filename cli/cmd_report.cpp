@@ -165,17 +165,6 @@ std::string prove_cell(const proofs::RuleProof& p) {
                      p.count(Agreement::unresolved), p.count(Agreement::not_compared));
 }
 
-std::string answer_text(const proofs::ClassAnswer& a) {
-  using proofs::Status;
-  switch (a.status) {
-    case Status::counterexample: return fmt::format("counterexample, {} darts{}", a.darts, a.minimal ? " (minimal)" : "");
-    case Status::none: return a.proved_for_all() ? fmt::format("none, all hosts (bound {})", a.bound) : fmt::format("none up to {} darts", a.darts);
-    case Status::unknown: return fmt::format("unknown ({})", a.why);
-    case Status::vacuous: return "vacuous";
-  }
-  return "";
-}
-
 std::string table_html(const std::vector<RuleReport>& rows, bool fuzzed, bool proved) {
   static constexpr std::pair<RuleCondition, const char*> kinds[] = {{RuleCondition::incident_arcs, "I"},
                                                                      {RuleCondition::dangling, "dangling"},

@@ -32,4 +32,23 @@ std::string constraint_stem(const proofs::ConstraintProof& c) {
   return s;
 }
 
+std::string answer_text(const proofs::ClassAnswer& a) {
+  switch (a.status) {
+    case proofs::Status::counterexample: return fmt::format("counterexample at {} darts{}", a.darts, a.minimal ? " (minimal)" : "");
+    case proofs::Status::none: {
+      // An unsat core holding "holds I(d)" means no H satisfying I(d)
+      // breaks the constraint (those that break I(d) are counted there).
+      std::vector<std::string> premises;
+      for (const auto& c : a.core)
+        if (c.starts_with("holds ")) premises.push_back(c.substr(6));
+      const std::string among = premises.empty() ? "" : fmt::format(" with {}", fmt::join(premises, ", "));
+      return a.proved_for_all() ? fmt::format("none{}, all hosts (bound {})", among, a.bound)
+                                : fmt::format("none{} up to {} darts", among, a.darts);
+    }
+    case proofs::Status::unknown: return fmt::format("unknown ({})", a.why);
+    case proofs::Status::vacuous: return "vacuous";
+  }
+  return "";
+}
+
 }  // namespace dartcheck::cli
