@@ -30,8 +30,8 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
   if (models.empty()) return out;  // a catalog without rules: nothing to fuzz
   for (const auto& t : targets) {
     const auto ext = std::filesystem::path(t).extension().string();
-    if (ext == ".yaml" || ext == ".yml") {
-      out.push_back(resolve_map(t, models.front(), &catalog));  // the file names its model
+    if (ext == ".yaml" || ext == ".yml" || ext == ".jba") {
+      out.push_back(resolve_map(t, models.front(), &catalog));  // the file names its model (a .jba its dimension)
       continue;
     }
     std::vector<std::string> why;

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
 
   cli::ValidateOptions validate;
   auto* v = app.add_subcommand("validate-map", "Check a map against its model: cells and every violation");
-  v->add_option("map", validate.target, fmt::format("a map file (.yaml, .off, .obj) or a shape ({})", shape_usage()))->required();
+  v->add_option("map", validate.target, fmt::format("a map file (.yaml, .jba, .off, .obj) or a shape ({})", shape_usage()))->required();
   v->add_option("--model", validate.model, "model for meshes and shapes (2-gmap, 3-gmap, 2-omap, ...)")->capture_default_str();
   v->add_option("--limit", validate.limit, "violations to print (0 = all)")->capture_default_str();
 
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
   f->add_option("--runs", fuzz.runs, "applications per rule (default 10000 without --time)");
   f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)");
   f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str();
-  f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
+  f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
   f->add_option("--out", fuzz.out, "write each counterexample here: host, match, result and a replay command");
   f->add_option("--format", fuzz.format, "text or json")->capture_default_str();
 
@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   rp->add_option("--engine", report.engine, "Graphviz layout engine")->capture_default_str();
   cli::DrawMapOptions draw_map;
   auto* dm = app.add_subcommand("draw-map", "Draw a map: one node per dart, links colored by dimension, invalid darts highlighted");
-  dm->add_option("map", draw_map.target, fmt::format("a map file (.yaml, .off, .obj) or a shape ({})", shape_usage()))->required();
+  dm->add_option("map", draw_map.target, fmt::format("a map file (.yaml, .jba, .off, .obj) or a shape ({})", shape_usage()))->required();
   dm->add_option("-o,--output", draw_map.output, "picture file: .svg, .png, .pdf, or .dot/.gv for the DOT text")->required();
   dm->add_option("--model", draw_map.model, "model for meshes and shapes")->capture_default_str();
   dm->add_option("--engine", draw_map.engine, "Graphviz layout engine (neato or sfdp for large maps)")->capture_default_str();
