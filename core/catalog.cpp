@@ -265,7 +265,7 @@ std::optional<OrbitType> jerboa_parameter(const std::string& file, const YAML::N
 // Builds one rule (a catalog entry or a variant `v` of the entry `n`) and
 // appends it; `v` holds the name, note and verdict, `n` the hooks.
 void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const std::string& name, const Model& model, const YAML::Node& left_node,
-              const YAML::Node& right_node, const YAML::Node& n) {
+              const YAML::Node& right_node, const YAML::Node& n, const RuleTerms* base_terms = nullptr) {
   if (c.find_rule(name)) fail_at(file, v["name"] ? v["name"] : v, fmt::format("rule '{}' is declared twice", name));
   const auto parameter = jerboa_parameter(file, left_node, n);
   const OrbitType* jerboa = parameter ? &*parameter : nullptr;
@@ -289,7 +289,12 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
   } catch (const std::invalid_argument& e) {
     fail_at(file, hn ? hn : v, fmt::format("rule '{}': {}", name, e.what()));
   }
-  CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words, std::move(labels), {}, {}};
+  CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words, std::move(labels), {}, {}, std::nullopt};
+  if (v["labels"] || v["parameters"] || v["instantiation"] || base_terms) {
+    if (c.signatures.size() != c.embeddings.size())
+      fail_at(file, v["labels"] ? v["labels"] : v, "labels need typed embeddings: declare each under 'embeddings' with a type (point2, color, ...)");
+    cr.terms = read_rule_terms(file, v, cr.rule, c.signatures, base_terms);
+  }
   if (const auto ex = n["expressions"]) {
     // {node of R: {embedding: code}}
     yaml::expect_map(file, ex, "expressions");
@@ -352,6 +357,7 @@ Catalog read_catalog(const std::string& file) {
       } catch (const std::invalid_argument& x) {
         fail_at(file, orbit, fmt::format("embedding '{}': {}", d.name, x.what()));
       }
+      if (const auto t = type_by_name(d.type)) c.signatures.push_back({d.name, *t, d.orbit});
       c.embeddings.push_back(std::move(d));
     }
   }
@@ -405,7 +411,8 @@ Catalog read_catalog(const std::string& file) {
     yaml::expect_sequence(file, rules, "rules");
     for (const auto& n : rules) {
       yaml::expect_map(file, n, "rule");
-      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats"});
+      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats",
+                                  "labels", "parameters", "instantiation"});
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
       const Model model = model_of(n);
       const auto left = yaml::require(file, n, "left"), right = yaml::require(file, n, "right");
@@ -425,9 +432,12 @@ Catalog read_catalog(const std::string& file) {
         yaml::expect_sequence(file, vs, "variants");
         for (const auto& v : vs) {
           yaml::expect_map(file, v, "variant");
-          yaml::allow_keys(file, v, {"name", "note", "verdict", "remove", "add", "nodes"});
+          yaml::allow_keys(file, v, {"name", "note", "verdict", "remove", "add", "nodes", "labels", "parameters", "instantiation"});
           const auto vname = name + "/" + yaml::as_string(file, yaml::require(file, v, "name"), "variant name");
-          add_rule(c, file, v, vname, model, edit_side(file, left, v, "left"), edit_side(file, right, v, "right"), n);
+          const auto* base_rule = c.find_rule(name);
+          const std::optional<RuleTerms> base_terms = base_rule->terms;
+          add_rule(c, file, v, vname, model, edit_side(file, left, v, "left"), edit_side(file, right, v, "right"), n,
+                   base_terms ? &*base_terms : nullptr);
         }
       }
     }

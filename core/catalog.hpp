@@ -9,6 +9,7 @@
 #include "core/jerboa_scheme.hpp"
 #include "core/map.hpp"
 #include "core/rule.hpp"
+#include "core/rule_terms.hpp"
 
 namespace dartcheck {
 
@@ -80,12 +81,18 @@ struct CatalogRule {
   /// What an import left out of this rule while keeping it (an ignored
   /// precondition, embedding parameters...), one sentence each.
   std::vector<std::string> caveats;
+  /// Embedding terms on L's and R's nodes (003 Sec. 6); unset for a
+  /// purely topological rule.
+  std::optional<RuleTerms> terms;
 };
 
 struct Catalog {
   std::string file;
   std::string modeler;  // the Jerboa modeler's name, for imported files
   std::vector<EmbeddingDecl> embeddings;
+  /// `embeddings` with their value types, for catalogs whose rules carry
+  /// terms (a declared type dartcheck does not know is an error there).
+  std::vector<EmbeddingSignature> signatures;
   std::vector<SkippedRule> skipped;
   std::vector<MapSource> maps;
   std::vector<CatalogRule> rules;

@@ -223,7 +223,7 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
   if (parameter.empty()) words = ArcWords{};
   else words.scheme = true;
   CatalogRule cr{std::move(*rule), trimmed(r.child_value("comment")), {}, at, std::nullopt, {}, words,
-                 parameter.empty() ? std::nullopt : std::optional<JerboaLabels>(std::move(labels)), {}, std::move(caveats)};
+                 parameter.empty() ? std::nullopt : std::optional<JerboaLabels>(std::move(labels)), {}, std::move(caveats), std::nullopt};
   for (const auto* side : {&left, &right})
     for (const auto& n : side->nodes)
       for (const auto& e : n.xml.children("expr")) {

@@ -1,6 +1,7 @@
 #include "core/scheme_application.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -67,33 +68,50 @@ std::uint32_t PatternGraphs::step(std::size_t p, const ConjWord& w) const {
   return shift[static_cast<std::size_t>(std::find(gens.begin(), gens.end(), w) - gens.begin())][p];
 }
 
+namespace {
+
+// Generator index of each arc's word, forward (L, R) and backward (L).
+struct ArcGenerators {
+  std::vector<int> left_fwd, left_bwd, right_fwd;
+  ArcGenerators(const Rule& core, const ArcWords& words, const std::vector<ConjWord>& gens) {
+    const ConjugateRewriting rw(core.model());
+    auto gen_of = [&](const ConjWord& w) { return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin()); };
+    const TopoGraph &L = core.left(), &R = core.right();
+    left_fwd.resize(L.arc_count());
+    left_bwd.resize(L.arc_count());
+    right_fwd.resize(R.arc_count());
+    for (ArcId e = 0; e < L.arc_count(); ++e) {
+      left_fwd[e] = gen_of(arc_word(words.left, e));
+      left_bwd[e] = gen_of(rw.conjugate(arc_word(words.left, e)));
+    }
+    for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd[e] = gen_of(arc_word(words.right, e));
+  }
+};
+
+}  // namespace
+
 Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts) {
+  auto found = match_scheme(core, words, g, hook_darts);
+  if (!found.ok()) return refuse<SchemeDerivation>(found.refusal, std::move(found.why));
+  return {rewrite_scheme(core, words, g, *found.value), Refusal::none, {}};
+}
+
+Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
   const TopoGraph &L = core.left(), &R = core.right();
   if (hook_darts.size() != core.hooks().size())
-    return refuse<SchemeDerivation>(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
+    return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
                                                   core.hooks().size() == 1 ? "" : "s"));
   for (Dart h : hook_darts)
-    if (h >= g.size()) return refuse<SchemeDerivation>(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
-  const ConjugateRewriting rw(core.model());
+    if (h >= g.size()) return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
   auto found = pattern_graphs(core.model(), words, g, hook_darts);
-  if (!found.ok()) return refuse<SchemeDerivation>(found.refusal, std::move(found.why));
+  if (!found.ok()) return refuse<SchemeMatch>(found.refusal, std::move(found.why));
   const PatternGraphs& pg = *found.value;
-  const std::vector<ConjWord>& gens = pg.gens;
   const auto& shift = pg.shift;
-  const auto& patterns = pg.darts;
-  const std::vector<Dart>& pattern = patterns[0];
+  const std::vector<Dart>& pattern = pg.darts[0];
   const std::size_t np = pattern.size();
-  // The generator of a word (-1 for ε, which does not move).
-  auto gen_of = [&](const ConjWord& w) {
-    return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
-  };
   auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
-  std::vector<int> left_fwd(L.arc_count()), left_bwd(L.arc_count()), right_fwd(R.arc_count());
-  for (ArcId e = 0; e < L.arc_count(); ++e) {
-    left_fwd[e] = gen_of(arc_word(words.left, e));
-    left_bwd[e] = gen_of(rw.conjugate(arc_word(words.left, e)));
-  }
-  for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd[e] = gen_of(arc_word(words.right, e));
+  const ArcGenerators ag(core, words, pg.gens);
+  const auto &left_fwd = ag.left_fwd, &left_bwd = ag.left_bwd;
 
   // The match: m[x][p] is the image of product node (p, x), propagated from
   // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
@@ -101,7 +119,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   std::vector<std::pair<std::uint32_t, NodeId>> queue;
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
     const NodeId hook = core.hooks()[h];
-    if (m[hook][0] != no_dart) return refuse<SchemeDerivation>(Refusal::bad_hooks, "two hooks name one node of L");
+    if (m[hook][0] != no_dart) return refuse<SchemeMatch>(Refusal::bad_hooks, "two hooks name one node of L");
     m[hook][0] = hook_darts[h];
     queue.emplace_back(0, hook);
   }
@@ -125,13 +143,13 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
         continue;
       }
       if (there == no_dart)
-        return refuse<SchemeDerivation>(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source),
+        return refuse<SchemeMatch>(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source),
                                                      a.label, L.name(a.target), pattern[p], here, a.label));
       if (m[y][q] == no_dart) {
         m[y][q] = there;
         queue.emplace_back(q, y);
       } else if (m[y][q] != there) {
-        return refuse<SchemeDerivation>(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q],
+        return refuse<SchemeMatch>(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q],
                                                      L.name(y), m[y][q], there));
       }
     }
@@ -142,10 +160,10 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
     for (std::size_t p = 0; p < np; ++p) {
       const Dart d = m[x][p];
       if (d == no_dart)
-        return refuse<SchemeDerivation>(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) "
+        return refuse<SchemeMatch>(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) "
                                                          "is not connected, so the hooks do not fix the match (002 Sec. 6.3)",
                                                          pattern[p], L.name(x)));
-      if (taken[d]) return refuse<SchemeDerivation>(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
+      if (taken[d]) return refuse<SchemeMatch>(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
       taken[d] = true;
     }
   // Arc injectivity: two arcs of L out of one node with one label share
@@ -153,7 +171,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   for (ArcId e = 0; e < L.arc_count(); ++e)
     for (ArcId f = e + 1; f < L.arc_count(); ++f)
       if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label)
-        return refuse<SchemeDerivation>(Refusal::not_injective,
+        return refuse<SchemeMatch>(Refusal::not_injective,
                       fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source)));
   // Dangling: a deleted node needs an L arc in and out for every dimension
   // its darts carry.
@@ -167,7 +185,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
       }
       for (std::size_t p = 0; p < np; ++p)
         if ((!out && g.link(i, m[x][p]) != no_dart) || (!in && g.inverse_link(i, m[x][p]) != no_dart))
-          return refuse<SchemeDerivation>(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[x][p], L.name(x), i));
+          return refuse<SchemeMatch>(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[x][p], L.name(x), i));
     }
   }
   // Representability, per scheme arc (the same for every pattern node).
@@ -176,7 +194,7 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
     const auto& a = R.arc(e);
     for (ArcId f = e + 1; f < R.arc_count(); ++f)
       if (!core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label)
-        return refuse<SchemeDerivation>(Refusal::not_representable, fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source)));
+        return refuse<SchemeMatch>(Refusal::not_representable, fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source)));
     const NodeId x = core.to_left(a.source);
     if (x == no_node) continue;
     bool freed = false, kept = false;
@@ -184,12 +202,23 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
     for (ArcId f = 0; f < R.arc_count(); ++f) kept |= core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label;
     for (std::size_t p = 0; p < np && !freed; ++p)
       if (kept || g.link(a.label, m[x][p]) != no_dart)
-        return refuse<SchemeDerivation>(Refusal::not_representable, fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label,
+        return refuse<SchemeMatch>(Refusal::not_representable, fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label,
                                                               R.name(a.source), m[x][p], a.label));
   }
+  return {SchemeMatch{std::move(*found.value), std::move(m)}, Refusal::none, {}};
+}
+
+SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g, const SchemeMatch& match) {
+  const TopoGraph &L = core.left(), &R = core.right();
+  const auto& m = match.node;
+  const std::size_t np = match.pattern.darts[0].size();
+  const auto& shift = match.pattern.shift;
+  auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
+  const ArcGenerators ag(core, words, match.pattern.gens);
+  const auto& right_fwd = ag.right_fwd;
 
   // Rewrite: delete the instances of L \ K, place R's nodes, add R \ K.
-  SchemeDerivation out{np, np * L.node_count(), 0, {}};
+  SchemeDerivation out{np, np * L.node_count(), 0, {}, {}};
   for (ArcId e = 0; e < L.arc_count(); ++e)
     if (!core.preserved_left_arc(e))
       for (std::size_t p = 0; p < np; ++p) g.remove_link(L.arc(e).label, m[L.arc(e).source][p]);
@@ -219,7 +248,14 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   }
   holes.erase(holes.begin(), holes.begin() + static_cast<std::ptrdiff_t>(reuse));
   out.moved = compact(g, std::move(holes));
-  return {std::move(out), Refusal::none, {}};
+  if (!out.moved.empty()) {
+    std::unordered_map<Dart, Dart> renumbered(out.moved.begin(), out.moved.end());
+    for (auto& darts : c)
+      for (Dart& d : darts)
+        if (const auto it = renumbered.find(d); it != renumbered.end()) d = it->second;
+  }
+  out.comatch = std::move(c);
+  return out;
 }
 
 }  // namespace dartcheck

@@ -30,12 +30,27 @@ struct PatternGraphs {
 /// (not-combinatorial) or when two hooks' pattern graphs differ (no-match).
 Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
 
+/// The match of the instantiated L: node[x][p] is the dart matched by
+/// product node (p, x), p a position in the first hook's pattern.
+struct SchemeMatch {
+  PatternGraphs pattern;
+  std::vector<std::vector<Dart>> node;
+};
+
 struct SchemeDerivation {
   std::size_t pattern_nodes = 0;  // |P_v|
   std::size_t matched_darts = 0;  // |P_v| · |V_L|
   std::size_t added_darts = 0;
   std::vector<std::pair<Dart, Dart>> moved;  // renumbered darts of H
+  /// comatch[y][p]: the dart of H of product node (p, y), y in R.
+  std::vector<std::vector<Dart>> comatch;
 };
+
+/// Everything apply_scheme checks before it writes: the match and its
+/// refusals. `g` is not modified.
+Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
+/// The rewrite of apply_scheme along a match from match_scheme on `g`.
+SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g, const SchemeMatch& match);
 
 /// Rewrites `g` at the hook darts, one per connected component of L (the
 /// order of core.hooks()). With several hooks the pattern graphs of the

@@ -108,7 +108,7 @@ Tally random_agreement(const Model& model, std::uint32_t seed, int count, const 
   Tally t;
   for (int k = 0; k < count; ++k) {
     const Rule rule = k % 3 != 2 ? random_combinatorial_rule(rng, model, model) : random_rule(rng, model, model);
-    CatalogRule entry{rule, "", {}, {}, std::nullopt, {}, {}, std::nullopt, {}, {}};
+    CatalogRule entry{rule, "", {}, {}, std::nullopt, {}, {}, std::nullopt, {}, {}, std::nullopt};
     const RuleProof p = prove_rule(entry, o);
     ++t.rules;
     for (const auto& c : p.constraints) {
@@ -192,7 +192,7 @@ TEST(ProveSmallModelBound, Theorems1And2AgreeWithBruteForcePastTheBound) {
     const Rule rule = random_combinatorial_rule(rng, cls, cls);
     if (!combinatorial(check_rule(rule))) continue;
     const HConstraint c{theorem2 ? RuleCondition::non_orientation : RuleCondition::incident_arcs, 0};
-    const CatalogRule entry{rule, "", {}, {}, std::nullopt, {}, {}, std::nullopt, {}, {}};
+    const CatalogRule entry{rule, "", {}, {}, std::nullopt, {}, {}, std::nullopt, {}, {}, std::nullopt};
     const RuleProof p = prove_rule(entry, o);
     const ConstraintProof* cp = nullptr;
     for (const auto& x : p.constraints)

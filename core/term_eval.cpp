@@ -1,0 +1,83 @@
+#include "core/term_eval.hpp"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include <fmt/format.h>
+
+namespace dartcheck {
+
+TermEvaluator::TermEvaluator(const EmbeddedMap& g) : g_(g), outer_(g.map), inner_(g.map) {}
+
+const Embedding& TermEvaluator::embedding(const std::string& name) const {
+  const Embedding* e = g_.find(name);
+  if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", name));
+  return *e;
+}
+
+Dart TermEvaluator::node(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {
+  if (t.kind == Term::Kind::variable) {
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (names[k] == t.name) return darts[k];
+    throw EvaluationError(fmt::format("node variable '{}' is not bound", t.name));
+  }
+  // t is x.alpha_i (the checker admits no other Node term).
+  const Dart d = node(t.args[0], names, darts);
+  if (!g_.map.model().contains(t.dim)) throw EvaluationError(fmt::format("alpha{} is not a dimension of the map", t.dim));
+  const Dart n = g_.map.link(t.dim, d);
+  if (n == no_dart) throw EvaluationError(fmt::format("{}: dart {} has no {}-arc", t.str(), d, t.dim));
+  return n;
+}
+
+Multiset TermEvaluator::collect(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
+  const Embedding& e = embedding(name);
+  std::vector<Dim> within;  // <o> ∩ <o'>: the pi-orbits inside the <o'>-orbit
+  for (Dim i : e.signature.orbit)
+    if (std::find(orbit.begin(), orbit.end(), i) != orbit.end()) within.push_back(i);
+  const auto outer_gens = dims_generators(orbit), inner_gens = dims_generators(within);
+  orbit_ = outer_.orbit(d, outer_gens);  // copied: the inner walks reuse no state of it
+  Multiset out;
+  std::unordered_set<Dart> done;
+  for (Dart x : orbit_) {
+    if (done.contains(x)) continue;
+    const auto& piece = inner_.orbit(x, inner_gens);
+    const Value* v = nullptr;
+    for (Dart y : piece) {
+      done.insert(y);
+      if (!v) v = e.value(y);
+    }
+    if (!v) throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", name, fmt::join(orbit, ","), name, x));
+    out.push_back(*v);
+  }
+  return out;
+}
+
+Operand TermEvaluator::eval(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {
+  switch (t.kind) {
+    case Term::Kind::literal:
+    case Term::Kind::parameter: return t.literal;
+    case Term::Kind::access: {
+      const Dart d = node(t.args[0], names, darts);
+      const Value* v = embedding(t.name).value(d);
+      if (!v) throw EvaluationError(fmt::format("{}: dart {} has no {} value", t.str(), d, t.name));
+      return *v;
+    }
+    case Term::Kind::collect: return collect(t.name, t.orbit, node(t.args[0], names, darts));
+    case Term::Kind::variable:
+    case Term::Kind::neighbour: throw EvaluationError(fmt::format("'{}' is a node, not a value", t.str()));
+    case Term::Kind::call: break;
+  }
+  if (!t.function) throw EvaluationError(fmt::format("'{}' was not type-checked", t.str()));
+  std::vector<Operand> args;
+  args.reserve(t.args.size());
+  for (const Term& a : t.args) args.push_back(eval(a, names, darts));
+  return t.function->apply(args);
+}
+
+Value TermEvaluator::value(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {
+  Operand r = eval(t, names, darts);
+  if (auto* v = std::get_if<Value>(&r)) return std::move(*v);
+  throw EvaluationError(fmt::format("'{}' is a multiset, not a value", t.str()));
+}
+
+}  // namespace dartcheck

@@ -1,0 +1,64 @@
+// Embedding values (003 Sec. 3.4): the carrier sets of the user types an
+// embedding pi : <o> -> tau may take, and their multisets tau• (the result
+// of a collect operator). Values compare exactly: two darts of one orbit
+// agree when the same term gave both, bit for bit.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace dartcheck {
+
+/// The value types of the signature (003 Sec. 3.4 names point_2D,
+/// vector_2D, color; Sec. 9.2 adds point_3D, boolean, string).
+enum class ValueType : std::uint8_t { point2, point3, vector2, vector3, color, real, integer, boolean, string };
+
+std::string_view type_name(ValueType t);
+/// "point2", "point_2D", "Point2" ... (case and '_' ignored, "2d" = "2"),
+/// "float"/"double" = real, "int" = integer, "bool" = boolean.
+std::optional<ValueType> type_by_name(std::string_view name);
+/// Number of coordinates of a geometric type (color: 3), 0 otherwise.
+int coordinates(ValueType t);
+
+/// A sort of the term language: a value type, its multiset, or Node.
+struct Sort {
+  enum Kind : std::uint8_t { value, multiset, node } kind = value;
+  ValueType type = ValueType::real;
+  static Sort of(ValueType t) { return {value, t}; }
+  static Sort bag(ValueType t) { return {multiset, t}; }
+  static Sort node_sort() { return {node, ValueType::real}; }
+  std::string str() const;
+  friend bool operator==(const Sort&, const Sort&) = default;
+};
+
+struct Value {
+  ValueType type = ValueType::real;
+  std::array<double, 3> x{};  // coordinates; real in x[0]
+  std::int64_t i = 0;         // integer, boolean
+  std::string s;              // string
+
+  static Value real(double v);
+  static Value integer(std::int64_t v);
+  static Value boolean(bool v);
+  static Value text(std::string v);
+  static Value coords(ValueType t, std::array<double, 3> c);
+
+  /// "(0.5, 0.5)" for points and vectors, "rgb(1, 0, 0)" for colors,
+  /// the number, true/false, or the quoted string.
+  std::string str() const;
+  friend bool operator==(const Value&, const Value&) = default;
+};
+
+/// Parses a value of type t from text: "1 2", "1, 2", "(1, 2)", "[1,2]"
+/// for coordinates; a number, true/false, or any text for strings.
+/// Returns nullopt (and the reason) when the text is not such a value.
+std::optional<Value> parse_value(ValueType t, std::string_view text, std::string* why = nullptr);
+
+/// A multiset tau• (003 Sec. 3.4): elements in collection order.
+using Multiset = std::vector<Value>;
+
+}  // namespace dartcheck
