@@ -25,7 +25,7 @@ struct Checked {
   const CatalogRule* entry;
   RuleVerdict verdict;
   std::vector<std::string> failures;  // topological conditions, then embedding checks
-  std::vector<EmbeddingVerdict> embedding;  // catalogs that declare embeddings
+  std::vector<EmbeddingCheck> embedding;  // catalogs that declare embeddings
   std::optional<HostSearch> search;  // failing DPO rules only
   std::optional<FuzzReport> scheme_search;  // every scheme
   bool unsound = false;  // judged consistent, yet broke a map
@@ -82,7 +82,7 @@ int check(const CheckOptions& o) {
     Checked c{&entry, {}, {}, {}, {}, {}, false, 0, true};
     const auto t0 = std::chrono::steady_clock::now();
     c.verdict = check_rule(entry.rule, entry.words);
-    if (!catalog.embeddings.empty()) c.embedding = check_embedding_presence(entry.rule, entry.words, catalog.embeddings, entry.expressions);
+    c.embedding = embedding_checks(catalog, entry);
     c.millis = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     for (const auto& v : c.verdict.conditions)
       if (!v.holds) c.failures.push_back(v.name());
@@ -138,7 +138,8 @@ int check(const CheckOptions& o) {
         const auto& e = c.embedding[m];
         std::vector<std::string> texts;
         for (const auto& w : e.witnesses) texts.push_back(w.text);
-        fmt::print("{}{{\"check\": \"{}\", \"holds\": {}, \"witnesses\": {}}}", m ? ", " : "", json_escape(e.name()), e.holds, json_strings(texts));
+        fmt::print("{}{{\"check\": \"{}\", \"holds\": {}, \"required\": {}, \"source\": \"{}\", \"witnesses\": {}}}", m ? ", " : "",
+                   json_escape(e.name), e.holds, e.required, e.source, json_strings(texts));
       }
       fmt::print("], \"caveats\": {}}}{}\n", json_strings(c.entry->caveats), k + 1 < rows.size() ? "," : "");
     }
@@ -193,7 +194,7 @@ int check(const CheckOptions& o) {
                      w.text);
       }
       for (const auto& e : c.embedding)
-        for (const auto& w : e.witnesses) fmt::print("{:<{}}    {}: {}\n", "", width, e.name(), w.text);
+        for (const auto& w : e.witnesses) fmt::print("{:<{}}    {}{}: {}\n", "", width, e.name, e.required ? "" : " (not required)", w.text);
       if (c.scheme_search && c.scheme_search->counterexample)
         fmt::print("{:<{}}    host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)\n", "", width,
                    c.scheme_search->counterexample->origin, c.entry->rule.name());
@@ -205,8 +206,8 @@ int check(const CheckOptions& o) {
   for (const auto& sk : catalog.skipped)
     if (o.rule.empty()) fmt::print("{:<{}}  skipped ({}): {}\n", sk.name, width, sk.location.str(), sk.why);
   if (embedded)
-    fmt::print("\nembeddings: defined/merge/one-value are Jerboa's presence checks (003 Thm 2): sufficient, not necessary; expressions are "
-               "compared as text, never evaluated\n");
+    fmt::print("\nembeddings: {}{}\n", sufficiency_note,
+               catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated");
   fmt::print("\n{} rules, {} consistent, {} with failing conditions; {} verdict{} differ{} from the catalog\n", rows.size(),
              std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return c.failures.empty(); }),
              std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.failures.empty(); }), mismatches,

@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "checkers/embedding_presence.hpp"
+#include "cli/embedding_checks.hpp"
 #include "checkers/violation.hpp"
 #include "cli/commands.hpp"
 #include "cli/counterexample_files.hpp"
@@ -39,7 +39,7 @@ struct RuleReport {
   const CatalogRule* entry = nullptr;
   RuleVerdict verdict;
   std::vector<std::string> failures;  // topological, then embedding-presence checks
-  std::vector<EmbeddingVerdict> embedding;
+  std::vector<EmbeddingCheck> embedding;
   bool matches_record = true;
   std::optional<FuzzReport> fuzz;
   std::string fuzz_replay;
@@ -228,8 +228,8 @@ std::string rule_section(const RuleReport& r, Pictures& pictures) {
   }
   for (const auto& c : r.embedding) {
     if (c.holds) continue;
-    failing += fmt::format("<li id=\"{}\"><b>{}</b> fails (Jerboa's presence check, 003 Thm 2: sufficient, not necessary)\n<ul class=\"witnesses\">\n",
-                           reports::html_id(name + "." + c.name()), html_text(c.name()));
+    failing += fmt::format("<li id=\"{}\"><b>{}</b> fails{} ({}: sufficient, not necessary)\n<ul class=\"witnesses\">\n",
+                           reports::html_id(name + "." + c.name), html_text(c.name), c.required ? "" : " (not required)", c.source);
     for (const auto& w : c.witnesses) failing += fmt::format("<li>{}</li>\n", html_text(w.text));
     failing += "</ul></li>\n";
   }
@@ -296,7 +296,7 @@ int report(const ReportOptions& o) {
     r.entry = &e;
     r.verdict = check_rule(e.rule, e.words);
     r.failures = static_failures(r.verdict);
-    if (!catalog.embeddings.empty()) r.embedding = check_embedding_presence(e.rule, e.words, catalog.embeddings, e.expressions);
+    r.embedding = embedding_checks(catalog, e);
     for (const auto& name : failing_names(r.embedding)) r.failures.push_back(name);
     r.matches_record = matches_record(e, r.verdict, r.embedding);
     rows.push_back(std::move(r));

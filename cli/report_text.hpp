@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "checkers/embedding_presence.hpp"
+#include "cli/embedding_checks.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "checkers/violation.hpp"
 #include "core/catalog.hpp"
@@ -31,9 +31,9 @@ std::string json_strings(const std::vector<std::string>& v);
 std::string cell(const RuleVerdict& v, RuleCondition kind);
 
 /// Whether the static verdict's failing conditions, with the failing
-/// embedding-presence checks, are exactly those the catalog records (none,
+/// embedding checks (cli/embedding_checks), are exactly those the catalog records (none,
 /// when it records none). Throws InputError at the verdict when it names a
 /// condition the rule does not have.
-bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::vector<EmbeddingVerdict>& embedding = {});
+bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::vector<EmbeddingCheck>& embedding = {});
 
 }  // namespace dartcheck::cli

@@ -290,7 +290,7 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
     fail_at(file, hn ? hn : v, fmt::format("rule '{}': {}", name, e.what()));
   }
   CatalogRule cr{std::move(*rule), v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}, words, std::move(labels), {}, {}, std::nullopt};
-  if (v["labels"] || v["parameters"] || v["instantiation"] || base_terms) {
+  if (v["labels"] || v["parameters"] || v["instantiation"] || v["embeddings"] || base_terms) {
     if (c.signatures.size() != c.embeddings.size())
       fail_at(file, v["labels"] ? v["labels"] : v, "labels need typed embeddings: declare each under 'embeddings' with a type (point2, color, ...)");
     cr.terms = read_rule_terms(file, v, cr.rule, c.signatures, base_terms);
@@ -412,7 +412,7 @@ Catalog read_catalog(const std::string& file) {
     for (const auto& n : rules) {
       yaml::expect_map(file, n, "rule");
       yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats",
-                                  "labels", "parameters", "instantiation"});
+                                  "labels", "parameters", "instantiation", "embeddings"});
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
       const Model model = model_of(n);
       const auto left = yaml::require(file, n, "left"), right = yaml::require(file, n, "right");
@@ -432,7 +432,7 @@ Catalog read_catalog(const std::string& file) {
         yaml::expect_sequence(file, vs, "variants");
         for (const auto& v : vs) {
           yaml::expect_map(file, v, "variant");
-          yaml::allow_keys(file, v, {"name", "note", "verdict", "remove", "add", "nodes", "labels", "parameters", "instantiation"});
+          yaml::allow_keys(file, v, {"name", "note", "verdict", "remove", "add", "nodes", "labels", "parameters", "instantiation", "embeddings"});
           const auto vname = name + "/" + yaml::as_string(file, yaml::require(file, v, "name"), "variant name");
           const auto* base_rule = c.find_rule(name);
           const std::optional<RuleTerms> base_terms = base_rule->terms;

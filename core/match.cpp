@@ -15,6 +15,9 @@ std::string_view refusal_name(Refusal r) {
     case Refusal::dangling: return "dangling";
     case Refusal::not_representable: return "not-representable";
     case Refusal::disconnected: return "disconnected-instance";
+    case Refusal::label_mismatch: return "label-mismatch";
+    case Refusal::overlap: return "overlap";
+    case Refusal::no_value: return "no-value";
   }
   return "?";
 }

@@ -29,6 +29,9 @@ enum class Refusal {
   dangling,           // a deleted dart keeps an arc outside the match
   not_representable,  // H would give a dart two i-arcs (not a dense map)
   disconnected,       // schemes: ι(L, P_v) is not connected, so hooks do not fix the match (002 Sec. 6.3)
+  label_mismatch,     // embedded rules: a term of L differs from the value of its matched dart
+  overlap,            // embedded rules: the match merges two pi-orbits of L (003 Lemma 3)
+  no_value,           // embedded rules: a term has no value on the map (an unlabeled dart, center of nothing)
 };
 
 std::string_view refusal_name(Refusal r);

@@ -1,5 +1,6 @@
 #include "core/rule_terms.hpp"
 
+#include <algorithm>
 #include <functional>
 
 #include <fmt/format.h>
@@ -100,6 +101,19 @@ RuleTerms read_rule_terms(const std::string& file, const YAML::Node& rule, const
   RuleTerms r;
   if (base) r = *base;
   r.embeddings = embeddings;
+  if (const auto only = rule["embeddings"]) {
+    // The embeddings of the objects this rule transforms (default: all).
+    yaml::expect_sequence(file, only, "embeddings");
+    r.embeddings.clear();
+    for (const auto& n : only) {
+      const auto name = yaml::as_string(file, n, "embedding name");
+      const auto it = std::find_if(embeddings.begin(), embeddings.end(), [&](const EmbeddingSignature& e) { return e.name == name; });
+      if (it == embeddings.end()) fail_at(file, n, fmt::format("embeddings: no embedding named '{}' under the catalog's 'embeddings'", name));
+      r.embeddings.push_back(*it);
+    }
+  } else if (base) {
+    r.embeddings = base->embeddings;
+  }
   TermScope scope;
   scope.model = &topology.model();
   scope.embeddings = &r.embeddings;
