@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/embedded_map.hpp"
 #include "core/map_embedding.hpp"
 
 namespace dartcheck {
@@ -16,7 +17,8 @@ struct OrbitConflict {
   std::size_t size = 0;                              // darts in the orbit
   std::vector<std::pair<Dart, std::string>> values;  // distinct values, a dart carrying each
   std::vector<Dart> unlabeled;                       // darts without a value in an orbit that has one
-  std::string describe(const MapEmbedding& e) const;
+  std::string describe(const MapEmbedding& e) const { return describe(e.name, e.orbit); }
+  std::string describe(const std::string& embedding, const std::vector<Dim>& orbit) const;
 };
 
 struct EmbeddingConsistency {
@@ -30,5 +32,9 @@ struct EmbeddingConsistency {
 /// dart the input gave two values (MapEmbedding::reassigned) counts as
 /// two values in its orbit.
 EmbeddingConsistency check_embedding(const Map& map, const MapEmbedding& e);
+
+/// The same on a typed embedding. With `total` (an embedded G-map, Def. 6:
+/// pi is a total function), an orbit without any value is a conflict too.
+EmbeddingConsistency check_embedding(const Map& map, const Embedding& e, bool total);
 
 }  // namespace dartcheck

@@ -92,7 +92,7 @@ int fuzz(const FuzzCommand& c) {
   std::vector<std::string> replays(reports.size());
   if (!c.out.empty())
     for (std::size_t k = 0; k < reports.size(); ++k)
-      if (reports[k].counterexample)
+      if (reports[k].counterexample && !rules[k]->terms)  // embedded hosts: not written yet (their values are replayed by --seed)
         replays[k] = write_counterexample(c.out, file_stem(reports[k].rule), c.catalog, reports[k].rule,
                                           {{"seed", std::to_string(o.seed)}, {"class", std::string(fuzz_class_name(reports[k].verdict))}},
                                           reports[k].static_failures, *reports[k].counterexample);
@@ -133,9 +133,11 @@ int fuzz(const FuzzCommand& c) {
       const auto& cx = *r.counterexample;
       fmt::print("{:<{}}  found in {}\n", "", width, cx.origin);
       if (!cx.unrepresentable.empty()) fmt::print("{:<{}}  H has no dense form: {}\n", "", width, cx.unrepresentable);
+      for (std::size_t e = 0; e < cx.embedding_failures.size() && e < 4; ++e) fmt::print("{:<{}}  H: {}\n", "", width, cx.embedding_failures[e]);
+      if (cx.embedding_failures.size() > 4) fmt::print("{:<{}}  H: ... {} more\n", "", width, cx.embedding_failures.size() - 4);
       if (!replays[k].empty())
         fmt::print("{:<{}}  replay: {}\n", "", width, replays[k]);
-      else
+      else if (!rules[k]->terms)
         fmt::print("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
     }
   }

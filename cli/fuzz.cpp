@@ -1,5 +1,7 @@
 #include "cli/fuzz.hpp"
 
+#include "cli/embedded_fuzz.hpp"
+
 #include <algorithm>
 #include <random>
 #include <span>
@@ -28,6 +30,7 @@ std::vector<std::string> Counterexample::broken() const {
   std::vector<std::string> b;
   for (const auto& v : violations) b.push_back(constraint_name(v));
   if (!unrepresentable.empty()) b.push_back("not-representable");
+  for (const auto& e : broken_embeddings) b.push_back(fmt::format("embedding({})", e));
   std::sort(b.begin(), b.end());
   b.erase(std::unique(b.begin(), b.end()), b.end());
   return b;
@@ -109,7 +112,7 @@ std::optional<Counterexample> apply_and_check(const CatalogRule& entry, const Ma
       for (NodeId v = 0; v < rule.left().node_count(); ++v) match.emplace_back(rule.left().name(v), r.value->match.node[v]);
   }
   if (refusal != Refusal::none && refusal != Refusal::not_representable) return std::nullopt;
-  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false};
+  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}};
   if (refusal == Refusal::not_representable) {
     cx.unrepresentable = std::move(why);
     return cx;
@@ -355,6 +358,7 @@ class Fuzzer {
 }  // namespace
 
 FuzzReport fuzz_rule(const CatalogRule& entry, const std::vector<Map>& seeds, const FuzzOptions& o) {
+  if (entry.terms) return fuzz_embedded_rule(entry, seeds, o);
   FuzzReport out;
   out.rule = entry.rule.name();
   const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);

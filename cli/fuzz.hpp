@@ -51,6 +51,11 @@ struct Counterexample {
   std::string origin;                               // which phase found it, and how it was shrunk
   bool minimal = false;                             // every smaller host of the exhaustive class was tried
   std::vector<std::string> broken() const;          // "I(1)", "C(0,2)", ... sorted, unique
+  /// Embedded rules: H's orbits with two values or unlabeled darts, and
+  /// the extended rule's conflicts (003 Def. 6, 13), as sentences, and
+  /// the embeddings they concern ("embedding(pos)").
+  std::vector<std::string> embedding_failures;
+  std::vector<std::string> broken_embeddings;
 };
 
 struct FuzzReport {

@@ -1,0 +1,21 @@
+// Differential testing of an embedded rule or rule scheme (003): random
+// valid maps with random values per orbit (generators/random_embedding),
+// application by core/embedded_application, then the result checked for
+// topological validity and embedding consistency (every dart labeled, one
+// value per orbit, Def. 6). Set against the static verdict (topological
+// conditions plus Theorem 2 / Theorem 4): a rule that passes them and
+// yields an orbit with two values or an unlabeled dart is a soundness bug.
+//
+// L's terms restrict the match (the labeled match of the evaluated rule):
+// before each attempt, the host orbits of closed L terms (concrete values,
+// Fig. 13a) and, on every other attempt, of the other L terms are set to
+// the terms' values, so rules that match only given values still apply.
+#pragma once
+
+#include "cli/fuzz.hpp"
+
+namespace dartcheck::cli {
+
+FuzzReport fuzz_embedded_rule(const CatalogRule& entry, const std::vector<Map>& seeds, const FuzzOptions& options);
+
+}  // namespace dartcheck::cli
