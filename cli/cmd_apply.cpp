@@ -1,7 +1,14 @@
 #include <fmt/format.h>
 #include <fstream>
 
+#include <random>
+
+#include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
+#include "core/embedded_application.hpp"
+#include "core/mesh_io.hpp"
+#include "generators/mesh_map.hpp"
+#include "generators/random_embedding.hpp"
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
 #include "cli/resolve.hpp"
@@ -13,6 +20,60 @@
 
 namespace dartcheck::cli {
 
+namespace {
+
+// An embedded rule (003): the host's values come from the mesh file
+// (positions) or are drawn per orbit (seed 1); the rule's new values are
+// printed, and H is checked for validity and embedding consistency.
+int apply_terms(const ApplyOptions& o, const CatalogRule& rule, Map map) {
+  const RuleTerms& terms = *rule.terms;
+  std::mt19937 rng(1);
+  std::optional<EmbeddedMap> host;
+  if (is_mesh_path(o.map))
+    for (const auto& e : terms.embeddings)
+      if (!host && (e.type == ValueType::point2 || e.type == ValueType::point3)) {
+        host = mesh_with_positions(rule.rule.model(), read_mesh(o.map), e);
+        fmt::print("values: {} from the mesh's vertex positions\n", e.name);
+      }
+  if (!host) host.emplace(std::move(map));
+  for (const auto& e : terms.embeddings) {
+    if (host->find(e.name)) continue;
+    Embedding& added = host->embeddings[host->add_embedding(e)];
+    const EmbeddedMap drawn = embed_randomly(host->map, {e}, rng);
+    added = drawn.embeddings[0];
+    fmt::print("values: {} drawn at random, one per <{}>-orbit (seed 1)\n", e.name, fmt::join(e.orbit, ","));
+  }
+  auto result = apply_embedded(rule.rule, rule.words, terms, *host, o.hooks);
+  if (!result.ok()) {
+    fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
+    return violation;
+  }
+  fmt::print("applied ({} instantiation): {} darts matched, {} added; result has {} darts\n",
+             terms.instantiation == Instantiation::direct ? "direct" : "extended", result.value->matched, result.value->added, host->map.size());
+  for (const auto& w : result.value->written) fmt::print("  {}.{} = {} (dart {})\n", w.node, w.embedding, w.value.str(), w.dart);
+  for (const auto& c : result.value->conflicts) fmt::print("  conflict: {}\n", c);
+  const auto report = check_map(host->map);
+  print_validity(stdout, host->map, report, o.limit);
+  bool consistent = result.value->conflicts.empty();
+  for (const Embedding& e : host->embeddings) {
+    const auto c = check_embedding(host->map, e, true);
+    fmt::print("embedding {} <{}>: {} orbits, {}\n", e.signature.name, fmt::join(e.signature.orbit, ","), c.orbits,
+               c.consistent() ? "consistent (every dart labeled, one value per orbit)" : fmt::format("{} inconsistent orbits", c.conflicts.size()));
+    for (std::size_t k = 0; k < c.conflicts.size() && (o.limit == 0 || k < o.limit); ++k)
+      fmt::print("  {}\n", c.conflicts[k].describe(e.signature.name, e.signature.orbit));
+    consistent &= c.consistent();
+  }
+  if (!o.output.empty()) {
+    std::ofstream out(o.output);
+    if (!out) throw InputError(o.output, 0, 0, "cannot write the result map");
+    write_map(out, host->map);
+    fmt::print("written: {} (topology only; the values are printed above)\n", o.output);
+  }
+  return report.valid() && consistent ? ok : violation;
+}
+
+}  // namespace
+
 int apply(const ApplyOptions& o) {
   const Catalog catalog = read_catalog(o.catalog);
   const CatalogRule* rule = catalog.find_rule(o.rule);
@@ -22,6 +83,7 @@ int apply(const ApplyOptions& o) {
     throw InputError("<command line>", 0, 0,
                      fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, map.model().name, o.rule, rule->rule.model().name));
   fmt::print("rule: {} ({})\nhost: {}\n", o.rule, rule->rule.model().name, describe_target(o.map, map));
+  if (rule->terms) return apply_terms(o, *rule, std::move(map));
   if (rule->words.scheme) {
     // A rule scheme: instantiated on the pattern graph of the hook dart.
     auto result = apply_scheme(rule->rule, rule->words, map, o.hooks);
