@@ -103,7 +103,10 @@ int check(const CheckOptions& o) {
       fo.max_darts = 64;
       fo.static_check = [&](const CatalogRule&) { return c.verdict; };
       c.scheme_search = fuzz_rule(entry, extra, fo);
-      c.unsound = !topological_failure && c.scheme_search->counterexample;
+      // Unsound: a broken constraint whose conditions all hold (embedding
+      // failures count against the embedding conditions).
+      if (const auto& cx = c.scheme_search->counterexample)
+        c.unsound = !topological_failure && (!cx->violations.empty() || !cx->unrepresentable.empty() || failing_names(c.embedding).empty());
       if (c.unsound) c.matches_record = false;
     } else if (topological_failure && o.confirm_darts > 0) {
       c.search = search_hosts(entry.rule, entry.rule.model(), o.confirm_darts, {}, 200'000);
