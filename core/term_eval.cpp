@@ -1,6 +1,7 @@
 #include "core/term_eval.hpp"
 
 #include <algorithm>
+#include <tuple>
 #include <unordered_set>
 
 #include <fmt/format.h>
@@ -49,6 +50,10 @@ Multiset TermEvaluator::collect(const std::string& name, const std::vector<Dim>&
     if (!v) throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", name, fmt::join(orbit, ","), name, x));
     out.push_back(*v);
   }
+  // A multiset has no order; a canonical one makes every function of it
+  // (center's floating-point sum) the same from whichever dart of the
+  // orbit the traversal starts.
+  std::sort(out.begin(), out.end(), [](const Value& a, const Value& b) { return std::tie(a.x, a.i, a.s) < std::tie(b.x, b.i, b.s); });
   return out;
 }
 

@@ -1,0 +1,103 @@
+// Shared by the programs that time dartcheck against a peer library on
+// one OFF input (bench_quad_subdivision, bench_triangulation): the input
+// torus, resident-memory probes, medians, and one child process per peer
+// so that each peak RSS is its own.
+#pragma once
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace {
+
+// A closed quad torus of r x c faces: V = rc, E = 2rc, F = rc; 8rc darts in
+// a 2-G-map, 4rc in a 2-O-map.
+void write_torus_off(const std::string& path, int r, int c) {
+  std::ofstream out(path);
+  out << "OFF\n" << r * c << " " << r * c << " 0\n";
+  const double pi = 3.14159265358979;
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < c; ++j) {
+      const double u = 2 * pi * i / r, v = 2 * pi * j / c;
+      out << (3 + std::cos(v)) * std::cos(u) << " " << (3 + std::cos(v)) * std::sin(u) << " " << std::sin(v) << "\n";
+    }
+  auto id = [&](int i, int j) { return ((i + r) % r) * c + (j + c) % c; };
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < c; ++j) out << "4 " << id(i, j) << " " << id(i + 1, j) << " " << id(i + 1, j + 1) << " " << id(i, j + 1) << "\n";
+}
+
+long rss_kib() {
+  long pages = 0, resident = 0;
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (f) {
+    if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+    std::fclose(f);
+  }
+  return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+long peak_kib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
+struct Result {
+  double median_ms = 0;
+  double peak_mib = 0;
+  std::size_t out_elements = 0;  // darts (dartcheck, CGAL) or halfedges (OpenMesh)
+  bool ok = false;
+};
+
+// Runs `subdivide` (which copies its input untimed and returns the
+// subdivision time and the output size) once for memory, then `runs` times.
+template <class F>
+Result measure(int runs, F subdivide) {
+  Result r;
+  const long base = rss_kib();
+  double ms = 0;
+  r.ok = subdivide(ms, r.out_elements);
+  r.peak_mib = static_cast<double>(std::max(0L, peak_kib() - base)) / 1024.0;
+  std::vector<double> times;
+  for (int k = 0; k < runs; ++k) {
+    std::size_t n = 0;
+    subdivide(ms, n);
+    times.push_back(ms);
+  }
+  std::sort(times.begin(), times.end());
+  r.median_ms = times[times.size() / 2];
+  return r;
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Runs `run` in a forked child and reads its Result back through a pipe.
+Result run_in_child(const std::function<Result()>& run) {
+  int pipefd[2];
+  if (pipe(pipefd) != 0) return {};
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(pipefd[0]);
+    const Result res = run();
+    if (write(pipefd[1], &res, sizeof res) != sizeof res) _exit(1);
+    _exit(0);
+  }
+  close(pipefd[1]);
+  Result res;
+  if (read(pipefd[0], &res, sizeof res) != sizeof res) res = {};
+  close(pipefd[0]);
+  waitpid(pid, nullptr, 0);
+  return res;
+}
+
+}  // namespace
