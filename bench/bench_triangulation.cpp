@@ -79,14 +79,7 @@ Result run_cgal(const std::string& off, int runs, std::size_t faces) {
 
 int main(int argc, char** argv) {
   int runs = 5, r = 148, c = 85;  // 148 x 85 quads: 100,640 G-map darts
-  for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
-    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc) std::sscanf(argv[++k], "%dx%d", &r, &c);
-    else {
-      std::fprintf(stderr, "usage: %s [--runs N] [--grid RxC]\n", argv[0]);
-      return 2;
-    }
-  }
+  if (!torus_arguments(argc, argv, runs, r, c)) return 2;
   const std::string off = "/tmp/dartcheck-bench-triangulation-" + std::to_string(getpid()) + ".off";
   write_torus_off(off, r, c);
   std::printf("input: quad torus %dx%d: F=%d, %d G-map darts, %d CGAL darts; median of %d runs\n\n", r, c, r * c, 8 * r * c, 4 * r * c, runs);

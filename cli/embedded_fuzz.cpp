@@ -18,12 +18,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::uint64_t stream(std::uint64_t seed, const std::string& name) {
-  std::uint64_t h = 0x9e3779b97f4a7c15ULL ^ seed;
-  for (unsigned char c : name) h = (h ^ c) * 1099511628211ULL;
-  return h;
-}
-
 // The darts L's nodes match at `hooks` (first pattern copy for schemes),
 // or nothing when L does not match there.
 std::vector<std::vector<Dart>> match_darts(const CatalogRule& entry, const Map& g, std::span<const Dart> hooks) {
@@ -72,7 +66,7 @@ FuzzReport fuzz_embedded_rule(const CatalogRule& entry, const std::vector<Map>& 
   const bool static_holds = out.static_failures.empty();
   const Model& model = entry.rule.model();
   const auto start = Clock::now();
-  std::mt19937 rng(static_cast<std::mt19937::result_type>(stream(o.seed, out.rule)));
+  std::mt19937 rng(static_cast<std::mt19937::result_type>(rule_seed(o.seed, out.rule)));
 
   // Hosts: the given maps of the model, then random maps growing to
   // max_darts (in rounds, so small hosts come first).

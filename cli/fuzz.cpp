@@ -36,6 +36,14 @@ std::vector<std::string> Counterexample::broken() const {
   return b;
 }
 
+// A stable per-rule stream: the same rule gets the same hosts whether it is
+// fuzzed alone (--rule) or with its whole catalog.
+std::uint64_t rule_seed(std::uint64_t seed, const std::string& name) {
+  std::uint64_t h = 1469598103934665603ULL ^ seed;
+  for (unsigned char c : name) h = (h ^ c) * 1099511628211ULL;
+  return h;
+}
+
 std::vector<std::string> static_failures(const RuleVerdict& v) {
   std::vector<std::string> f;
   for (const auto& c : v.conditions)
@@ -46,14 +54,6 @@ std::vector<std::string> static_failures(const RuleVerdict& v) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// A stable per-rule stream: the same rule gets the same hosts whether it is
-// fuzzed alone (--rule) or with its whole catalog.
-std::uint64_t rule_seed(std::uint64_t seed, const std::string& name) {
-  std::uint64_t h = 1469598103934665603ULL ^ seed;
-  for (unsigned char c : name) h = (h ^ c) * 1099511628211ULL;
-  return h;
-}
 
 Map map_of(const Model& model, std::size_t n, const std::vector<std::vector<NodeId>>& sigma) {
   Map g(model, n);

@@ -112,6 +112,10 @@ std::string outcome_text(const FuzzReport& r);
 std::optional<Counterexample> apply_and_check(const CatalogRule& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
                                               Refusal& refusal);
 
+/// A stable per-rule random stream: the same rule gets the same hosts
+/// whether it is fuzzed alone (--rule) or with its whole catalog.
+std::uint64_t rule_seed(std::uint64_t seed, const std::string& name);
+
 /// The static failures the default checker finds ("I(0)", "C(0,2)", ...).
 std::vector<std::string> static_failures(const RuleVerdict& v);
 
