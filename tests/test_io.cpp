@@ -1,6 +1,8 @@
 // YAML maps, catalogs and meshes: round trips and error positions.
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -19,7 +21,10 @@ std::string data(const std::string& f) { return std::string(DARTCHECK_SOURCE_DIR
 
 // Parses YAML text as if it were a file, returning the InputError position.
 std::string error_of(const std::string& text, bool catalog = false) {
-  const auto path = std::filesystem::temp_directory_path() / (catalog ? "dartcheck-test-catalog.yaml" : "dartcheck-test-map.yaml");
+  // ctest runs each test in its own process, in parallel: one file per test.
+  const auto path = std::filesystem::temp_directory_path() /
+                    (std::string(catalog ? "dartcheck-test-catalog-" : "dartcheck-test-map-") + ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                     "-" + std::to_string(::getpid()) + ".yaml");
   std::ofstream(path) << text;
   try {
     if (catalog)
