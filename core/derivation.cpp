@@ -92,6 +92,15 @@ Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> h
   for (auto& x : d.comatch)
     for (auto [from, to] : d.moved)
       if (x == from) x = to;
+  // Map::relocate finds the arc into a moved dart through the dart's own
+  // link when the dimension is non-oriented. A rule that breaks O can add
+  // an arc x -i-> y whose reverse is missing; such arcs start at R's darts,
+  // so those are redirected here.
+  for (Dart x : d.comatch)
+    for (Dim i : g.model().dims)
+      if (!g.model().is_oriented(i))
+        for (auto [from, to] : d.moved)
+          if (g.link(i, x) == from) g.set_link_raw(i, x, to);
   return {std::move(d), Refusal::none, {}};
 }
 
