@@ -1,6 +1,8 @@
 #include "core/derivation.hpp"
 
 #include <algorithm>
+#include <unordered_map>
+
 #include <fmt/format.h>
 
 namespace dartcheck {
@@ -35,7 +37,7 @@ std::string representability(const Rule& rule, const Map& g, const Match& m) {
 
 }  // namespace
 
-std::vector<std::pair<Dart, Dart>> compact(Map& g, std::vector<Dart> holes) {
+std::vector<std::pair<Dart, Dart>> compact(Map& g, std::vector<Dart> holes, std::span<const Dart> sources) {
   // While holes remain, drop the last dart if it is a hole, otherwise move
   // it into the smallest hole. holes[lo, hi) are unfilled.
   std::vector<std::pair<Dart, Dart>> moved;
@@ -53,6 +55,20 @@ std::vector<std::pair<Dart, Dart>> compact(Map& g, std::vector<Dart> holes) {
     --size;
   }
   g.truncate(size);
+  if (!moved.empty() && !sources.empty()) {
+    const std::unordered_map<Dart, Dart> to(moved.begin(), moved.end());
+    auto renumbered = [&](Dart d) {
+      const auto it = to.find(d);
+      return it == to.end() ? d : it->second;
+    };
+    for (Dart s : sources) {
+      const Dart x = renumbered(s);
+      if (x >= g.size()) continue;  // a deleted dart
+      for (Dim i : g.model().dims)
+        if (!g.model().is_oriented(i))
+          if (const Dart e = g.link(i, x); e != no_dart && e != renumbered(e)) g.set_link_raw(i, x, renumbered(e));
+    }
+  }
   return moved;
 }
 
@@ -88,19 +104,10 @@ Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> h
   for (ArcId e = 0; e < R.arc_count(); ++e)
     if (!rule.preserved_right_arc(e)) g.set_link(R.arc(e).label, d.comatch[R.arc(e).source], d.comatch[R.arc(e).target]);
 
-  d.moved = compact(g, std::move(holes));
+  d.moved = compact(g, std::move(holes), d.comatch);
   for (auto& x : d.comatch)
     for (auto [from, to] : d.moved)
       if (x == from) x = to;
-  // Map::relocate finds the arc into a moved dart through the dart's own
-  // link when the dimension is non-oriented. A rule that breaks O can add
-  // an arc x -i-> y whose reverse is missing; such arcs start at R's darts,
-  // so those are redirected here.
-  for (Dart x : d.comatch)
-    for (Dim i : g.model().dims)
-      if (!g.model().is_oriented(i))
-        for (auto [from, to] : d.moved)
-          if (g.link(i, x) == from) g.set_link_raw(i, x, to);
   return {std::move(d), Refusal::none, {}};
 }
 

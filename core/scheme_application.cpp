@@ -247,7 +247,9 @@ SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g,
     for (std::size_t p = 0; p < np; ++p) g.set_link(a.label, c[a.source][p], c[a.target][step(p, right_fwd[e])]);
   }
   holes.erase(holes.begin(), holes.begin() + static_cast<std::ptrdiff_t>(reuse));
-  out.moved = compact(g, std::move(holes));
+  std::vector<Dart> sources;
+  for (const auto& darts : c) sources.insert(sources.end(), darts.begin(), darts.end());
+  out.moved = compact(g, std::move(holes), sources);
   if (!out.moved.empty()) {
     std::unordered_map<Dart, Dart> renumbered(out.moved.begin(), out.moved.end());
     for (auto& darts : c)
