@@ -45,6 +45,20 @@
 
 namespace {
 
+// [--runs N] [--grid RxC]; false (after the usage line) on anything else.
+bool torus_arguments(int argc, char** argv, int& runs, int& r, int& c) {
+  for (int k = 1; k < argc; ++k) {
+    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc) std::sscanf(argv[++k], "%dx%d", &r, &c);
+    else {
+      std::fprintf(stderr, "usage: %s [--runs N] [--grid RxC]\n", argv[0]);
+      return false;
+    }
+  }
+  return true;
+}
+
+
 using LCC = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3>;
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
 

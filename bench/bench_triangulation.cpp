@@ -1,20 +1,29 @@
-// Face triangulation with barycentric positions (003 Fig. 20, issue 8) on a
-// ~100,000-dart closed quad torus read from an OFF file, in one program:
-//   - dartcheck: the embedding catalog's triangulation-jerboa-pos scheme
-//     (n2 labeled center(pos<0,1>(n0))) applied by apply_embedded at one
-//     dart of every face: match, term evaluation, non-overlap check,
-//     rewrite, propagation of the new positions;
+// Face triangulation with barycentric positions (003 Fig. 20, issue 8) on
+// a real OFF mesh (by default CGAL's ChineseDragon-10kv: 19,994 triangles,
+// 119,964 2-G-map darts) or on a quad torus (--grid), in one program:
+//   - dartcheck, the embedding catalog's schemes with pos terms
+//     (n2 labeled center(pos<0,1>(n0)), extended instantiation):
+//       per face: triangulation-jerboa-pos applied at one dart of every
+//         face by one EmbeddedRewriter (match, evaluation, non-overlap,
+//         rewrite, propagation, per application);
+//       all faces: triangulation-all-faces-pos applied once (hook orbit
+//         <0,1,2>, as Jerboa applies a scheme to a whole orbit);
+//     each with every instance evaluated (the dynamic check) and with one
+//     evaluation per orbit (allowed because the rule passes (A));
 //   - CGAL: Linear_cell_complex_for_combinatorial_map<2,3>,
-//     insert_barycenter_in_cell<2> on every face (topology + barycenter
-//     point).
+//     insert_barycenter_in_cell<2> on every face (topology + barycenter).
 // Each peer runs in a child process ("peak MiB" is its own growth of the
 // peak RSS while triangulating once); times are medians of --runs
-// triangulations of a fresh copy (copy not timed). Both results are
-// checked: dartcheck's map valid with a consistent pos embedding, CGAL's
-// is_valid(), and both with four triangles per quad.
+// triangulations of a fresh copy (copy not timed). Every result is
+// checked: dartcheck's map valid with a consistent, total pos embedding
+// and every new vertex at its face's barycenter; CGAL's is_valid(); both
+// with one triangle per old edge side.
 //
-//   build/bench/bench_triangulation [--runs N] [--grid RxC]
+//   build/bench/bench_triangulation [--runs N] [--mesh FILE.off | --grid RxC]
+#include <array>
+#include <cmath>
 #include <cstring>
+#include <functional>
 
 #include <CGAL/Linear_cell_complex_constructors.h>
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
@@ -25,23 +34,54 @@
 #include "core/catalog.hpp"
 #include "core/embedded_application.hpp"
 #include "core/orbit.hpp"
+#include "core/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
 
 namespace {
 
 using LCC = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3>;
 
-Result run_dartcheck(const std::string& off, int runs, std::size_t faces) {
+// Each new vertex must sit at the barycenter of its old face, computed
+// here from the input's positions. In H, an old dart d keeps its number
+// (n0), its 1-neighbour is its new edge dart (n1) and that dart's
+// 0-neighbour a copy of the centre (n2). The mean over the face's darts is
+// the mean of its corners: both darts of a corner carry its position.
+bool centres_are_barycenters(const dartcheck::EmbeddedMap& input, const dartcheck::EmbeddedMap& g) {
+  using namespace dartcheck;
+  OrbitWalker walker(input.map);
+  const Embedding &before = input.embeddings[0], &after = g.embeddings[0];
+  std::vector<bool> seen(input.map.size());
+  for (Dart d = 0; d < input.map.size(); ++d) {
+    if (seen[d]) continue;
+    std::array<double, 3> sum{};
+    const auto& face = walker.orbit(d, dims_generators({0, 1}));
+    for (Dart x : face) {
+      seen[x] = true;
+      for (std::size_t k = 0; k < 3; ++k) sum[k] += before.value(x)->x[k];
+    }
+    const Value* v = after.value(g.map.link(0, g.map.link(1, d)));
+    if (!v) return false;
+    for (std::size_t k = 0; k < 3; ++k)
+      if (std::abs(v->x[k] - sum[k] / static_cast<double>(face.size())) > 1e-9) return false;
+  }
+  return true;
+}
+
+enum class Scope { per_face, all_faces };
+
+Result run_dartcheck(const std::string& off, int runs, std::size_t triangles, Scope scope, dartcheck::Evaluation evaluation) {
   using namespace dartcheck;
   const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
-  const CatalogRule& s = *catalog.find_rule("triangulation-jerboa-pos");
-  const EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), s.terms->embeddings[0]);
-  // One hook per face; triangulation only appends darts, so they stay valid.
+  const CatalogRule& s = *catalog.find_rule(scope == Scope::per_face ? "triangulation-jerboa-pos" : "triangulation-all-faces-pos");
+  const Mesh mesh = read_mesh(off);
+  const EmbeddedMap input = mesh_with_positions(Model::gmap(2), mesh, s.terms->embeddings[0]);
+  // One hook per face (triangulation only appends darts, so they stay
+  // valid), or one per connected component.
   std::vector<Dart> hooks;
   {
     OrbitWalker walker(input.map);
     std::vector<bool> seen(input.map.size());
-    const auto gens = dims_generators({0, 1});
+    const auto gens = dims_generators(scope == Scope::per_face ? std::vector<Dim>{0, 1} : std::vector<Dim>{0, 1, 2});
     for (Dart d = 0; d < input.map.size(); ++d)
       if (!seen[d]) {
         hooks.push_back(d);
@@ -52,10 +92,14 @@ Result run_dartcheck(const std::string& off, int runs, std::size_t faces) {
     EmbeddedMap g = input;
     bool ok = true;
     const auto t0 = std::chrono::steady_clock::now();
-    for (Dart h : hooks) ok &= apply_embedded(s.rule, s.words, *s.terms, g, std::span(&h, 1), false).ok();
+    {
+      EmbeddedRewriter rewriter(s.rule, s.words, *s.terms, g, evaluation);
+      for (Dart h : hooks) ok &= rewriter.apply(std::span(&h, 1), false).ok();
+    }
     ms = since(t0);
     out = g.map.size();
-    return ok && count_cells(g.map).cells[2] == faces && check_map(g.map).valid() && check_embedding(g.map, g.embeddings[0], true).consistent();
+    return ok && count_cells(g.map).cells[2] == triangles && check_map(g.map).valid() && check_embedding(g.map, g.embeddings[0], true).consistent() &&
+           centres_are_barycenters(input, g);
   });
 }
 
@@ -78,18 +122,56 @@ Result run_cgal(const std::string& off, int runs, std::size_t faces) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int runs = 5, r = 148, c = 85;  // 148 x 85 quads: 100,640 G-map darts
-  if (!torus_arguments(argc, argv, runs, r, c)) return 2;
-  const std::string off = "/tmp/dartcheck-bench-triangulation-" + std::to_string(getpid()) + ".off";
-  write_torus_off(off, r, c);
-  std::printf("input: quad torus %dx%d: F=%d, %d G-map darts, %d CGAL darts; median of %d runs\n\n", r, c, r * c, 8 * r * c, 4 * r * c, runs);
-  const std::size_t triangles = 4 * static_cast<std::size_t>(r * c);  // each quad becomes four triangles
-  const Result d = run_in_child([&] { return run_dartcheck(off, runs, triangles); });
-  const Result g = run_in_child([&] { return run_cgal(off, runs, triangles); });
-  std::remove(off.c_str());
+  int runs = 5, r = 0, c = 0;
+  std::string off = DARTCHECK_BENCH_MESH;
+  for (int k = 1; k < argc; ++k) {
+    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--mesh") && k + 1 < argc) off = argv[++k];
+    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc && std::sscanf(argv[++k], "%dx%d", &r, &c) == 2) continue;
+    else {
+      std::fprintf(stderr, "usage: %s [--runs N] [--mesh FILE.off | --grid RxC]\n", argv[0]);
+      return 2;
+    }
+  }
+  std::string temporary;
+  if (r > 0) {
+    off = temporary = "/tmp/dartcheck-bench-triangulation-" + std::to_string(getpid()) + ".off";
+    write_torus_off(off, r, c);
+  }
+  // A k-gon becomes k triangles: one per side, so as many as the input's
+  // G-map darts / 2 (= its CGAL darts).
+  std::size_t sides = 0;
+  const dartcheck::Mesh mesh = dartcheck::read_mesh(off);
+  for (const auto& f : mesh.faces) sides += f.size();
+  std::printf("input: %s: V=%zu, F=%zu, %zu G-map darts, %zu CGAL darts; median of %d runs\n\n", off.c_str(), mesh.positions.size(),
+              mesh.faces.size(), 2 * sides, sides, runs);
+  using dartcheck::Evaluation;
+  struct Peer {
+    const char* name;
+    std::function<Result()> run;
+  };
+  const std::vector<Peer> peers{
+      {"dartcheck triangulation-jerboa-pos, per face, every instance evaluated",
+       [&] { return run_dartcheck(off, runs, sides, Scope::per_face, Evaluation::every_instance); }},
+      {"dartcheck triangulation-jerboa-pos, per face, one evaluation per orbit",
+       [&] { return run_dartcheck(off, runs, sides, Scope::per_face, Evaluation::one_per_orbit); }},
+      {"dartcheck triangulation-all-faces-pos, once, every instance evaluated",
+       [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::every_instance); }},
+      {"dartcheck triangulation-all-faces-pos, once, one evaluation per orbit",
+       [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::one_per_orbit); }},
+      {"CGAL LCC insert_barycenter_in_cell<2> on every face", [&] { return run_cgal(off, runs, sides); }},
+  };
+  std::vector<Result> results;
+  for (const Peer& p : peers) results.push_back(run_in_child(p.run));
+  if (!temporary.empty()) std::remove(temporary.c_str());
+  const Result& g = results.back();
+  bool ok = true;
   std::printf("| peer | output darts | median ms | peak MiB | ms / CGAL | MiB / CGAL | result valid |\n|---|---|---|---|---|---|---|\n");
-  for (const auto& [name, x] : {std::pair{"dartcheck triangulation-jerboa-pos (2-G-map, pos terms)", d}, std::pair{"CGAL LCC insert_barycenter_in_cell<2>", g}})
-    std::printf("| %s | %zu | %.1f | %.1f | %.2fx | %.2fx | %s |\n", name, x.out_elements, x.median_ms, x.peak_mib, x.median_ms / g.median_ms,
+  for (std::size_t k = 0; k < peers.size(); ++k) {
+    const Result& x = results[k];
+    ok &= x.ok;
+    std::printf("| %s | %zu | %.1f | %.1f | %.2fx | %.2fx | %s |\n", peers[k].name, x.out_elements, x.median_ms, x.peak_mib, x.median_ms / g.median_ms,
                 g.peak_mib > 0 ? x.peak_mib / g.peak_mib : 0.0, x.ok ? "yes" : "NO");
-  return d.ok && g.ok ? 0 : 1;
+  }
+  return ok ? 0 : 1;
 }

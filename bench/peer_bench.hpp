@@ -83,19 +83,6 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// [--runs N] [--grid RxC]; false (after the usage line) on anything else.
-bool torus_arguments(int argc, char** argv, int& runs, int& r, int& c) {
-  for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
-    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc) std::sscanf(argv[++k], "%dx%d", &r, &c);
-    else {
-      std::fprintf(stderr, "usage: %s [--runs N] [--grid RxC]\n", argv[0]);
-      return false;
-    }
-  }
-  return true;
-}
-
 // Runs `run` in a forked child and reads its Result back through a pipe.
 Result run_in_child(const std::function<Result()>& run) {
   int pipefd[2];

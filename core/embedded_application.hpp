@@ -22,6 +22,7 @@
 //   the inconsistency.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -46,8 +47,42 @@ struct EmbeddedDerivation {
   std::vector<std::string> conflicts;        // orbits given two values (Def. 13 undefined)
 };
 
-/// Applies the rule at `hook_darts`. On refusal `g` is unchanged. With
-/// `record`, `written` lists every value the rule wrote.
+/// How the terms of R are evaluated under `extended` instantiation.
+enum class Evaluation : std::uint8_t {
+  /// Every instance of every labeled R node; instances of one orbit that
+  /// disagree are reported as conflicts. The dynamic check (fuzz) uses it.
+  every_instance,
+  /// One instance per orbit of the instantiated R (its arcs in <o> join
+  /// instances that share a pi-orbit of H); the others take its value.
+  /// Only for a rule whose (A) holds (checkers/embedding_conditions):
+  /// then the instances of one orbit have one value (003 Thm 2, 4), so
+  /// nothing is lost but the evaluations. A `direct` rule ignores it.
+  one_per_orbit,
+};
+
+/// Applies one embedded rule many times to one map, keeping its
+/// traversal marks, per-dart tables and evaluator between applications:
+/// a loop of small applications on a large map costs the darts each one
+/// touches, not the size of the map. The rule, words, terms and map must
+/// outlive it; the map may change between applications.
+class EmbeddedRewriter {
+ public:
+  EmbeddedRewriter(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g,
+                   Evaluation evaluation = Evaluation::every_instance);
+  ~EmbeddedRewriter();
+  EmbeddedRewriter(const EmbeddedRewriter&) = delete;
+  EmbeddedRewriter& operator=(const EmbeddedRewriter&) = delete;
+
+  /// Applies the rule at `hook_darts`. On refusal the map is unchanged.
+  /// With `record`, `written` lists every value the rule wrote.
+  Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record = true);
+
+ private:
+  struct Context;
+  std::unique_ptr<Context> c_;
+};
+
+/// One application with a fresh context (EmbeddedRewriter::apply).
 Outcome<EmbeddedDerivation> apply_embedded(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g,
                                            std::span<const Dart> hook_darts, bool record = true);
 

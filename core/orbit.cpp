@@ -1,5 +1,7 @@
 #include "core/orbit.hpp"
 
+#include <array>
+
 namespace dartcheck {
 
 std::vector<Word> dims_generators(const std::vector<Dim>& dims) {
@@ -24,9 +26,32 @@ std::vector<Word> cell_generators(const Model& model, int k) {
 OrbitWalker::OrbitWalker(const Map& map) : map_(map), marks_((map.size() + 63) / 64, 0) {}
 
 void OrbitWalker::traverse(Dart d, std::span<const Word> generators) {
+  fit();
   const std::size_t first = visited_.size();
   visited_.push_back(d);
   mark(d);
+  // G-map orbits (one letter per generator, at most 4) read the links
+  // directly: the common case of every embedding and cell orbit.
+  std::array<Dim, 4> dims{};
+  bool letters = generators.size() <= dims.size();
+  for (std::size_t k = 0; letters && k < generators.size(); ++k) {
+    letters = generators[k].size() == 1;
+    if (letters) dims[k] = generators[k][0];
+  }
+  if (letters) {
+    const std::size_t n = generators.size();
+    for (std::size_t k = first; k < visited_.size(); ++k) {
+      const Dart x = visited_[k];
+      for (std::size_t j = 0; j < n; ++j) {
+        const Dart y = map_.link(dims[j], x);
+        if (y != no_dart && !marked(y)) {
+          mark(y);
+          visited_.push_back(y);
+        }
+      }
+    }
+    return;
+  }
   for (std::size_t k = first; k < visited_.size(); ++k) {
     const Dart x = visited_[k];
     for (const Word& w : generators) {
@@ -48,6 +73,7 @@ const std::vector<Dart>& OrbitWalker::orbit(Dart d, std::span<const Word> genera
 
 std::size_t OrbitWalker::count_orbits(std::span<const Word> generators) {
   std::size_t count = 0;
+  fit();
   visited_.clear();
   for (Dart d = 0; d < map_.size(); ++d)
     if (!marked(d)) {

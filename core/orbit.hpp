@@ -35,8 +35,9 @@ std::vector<Word> cell_generators(const Model& model, int k);
 std::vector<Word> dims_generators(const std::vector<Dim>& dims);
 
 /// Traverses orbits with a reusable visited mark: one bit per dart,
-/// allocated once; each traversal clears only the darts it marked, so a call
-/// costs time proportional to the orbit, not to the map.
+/// allocated once (and grown when the map grows); each traversal clears
+/// only the darts it marked, so a call costs time proportional to the
+/// orbit, not to the map.
 class OrbitWalker {
  public:
   explicit OrbitWalker(const Map& map);
@@ -52,6 +53,11 @@ class OrbitWalker {
   void mark(Dart d) { marks_[d >> 6] |= std::uint64_t{1} << (d & 63); }
   void unmark(Dart d) { marks_[d >> 6] &= ~(std::uint64_t{1} << (d & 63)); }
   void traverse(Dart d, std::span<const Word> generators);
+  // The map may have grown since the walker was made (a walker kept across
+  // rule applications).
+  void fit() {
+    if (marks_.size() * 64 < map_.size()) marks_.resize((map_.size() + 63) / 64, 0);
+  }
 
   const Map& map_;
   std::vector<std::uint64_t> marks_;

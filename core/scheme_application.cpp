@@ -15,7 +15,8 @@ Outcome<T> refuse(Refusal r, std::string why) {
 
 }  // namespace
 
-Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
+                                      DartTable* scratch) {
   const ConjugateRewriting rw(model);
   PatternGraphs out;
   // W: the words of the scheme, each with its conjugate (P_v takes the
@@ -31,41 +32,44 @@ Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words,
   // component of L, Sec. 6.3) every P_{v_k} is walked in the same order
   // and must give the same tables: the pattern graphs are isomorphic, and
   // darts[k][p] is the image of pattern node p under that isomorphism.
-  constexpr std::uint32_t none = 0xffffffffU;
-  std::vector<std::uint32_t> index(g.size(), none);
+  constexpr std::uint32_t none = DartTable::none;
+  DartTable local;
+  DartTable& index = scratch ? *scratch : local;
+  const DartTable::ClearOnExit emptied{index};
   out.shift.resize(out.gens.size());
   out.darts.resize(hook_darts.size());
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
     std::vector<Dart>& pattern = out.darts[h];
     pattern.push_back(hook_darts[h]);
-    index[hook_darts[h]] = 0;
+    index.set(hook_darts[h], 0);
     for (std::size_t k = 0; k < pattern.size(); ++k)
       for (std::size_t w = 0; w < out.gens.size(); ++w) {
         const Dart t = follow(g, pattern[k], out.gens[w]);
         if (t == no_dart)
           return refuse<PatternGraphs>(Refusal::not_combinatorial, fmt::format("dart {} has no {}-path: the host is not combinatorial",
                                                                                pattern[k], out.gens[w].str()));
-        if (index[t] == none) {
-          index[t] = static_cast<std::uint32_t>(pattern.size());
+        std::uint32_t at = index.get(t);
+        if (at == none) {
+          at = static_cast<std::uint32_t>(pattern.size());
+          index.set(t, at);
           pattern.push_back(t);
         }
         if (h == 0) {
-          out.shift[w].push_back(index[t]);
-        } else if (out.shift[w][k] != index[t]) {
+          out.shift[w].push_back(at);
+        } else if (out.shift[w][k] != at) {
           return refuse<PatternGraphs>(Refusal::no_match,
                                        fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one "
                                                    "pattern for every component of L)",
                                                    hook_darts[0], hook_darts[h]));
         }
       }
-    for (Dart d : pattern) index[d] = none;
+    index.clear();
   }
   return {std::move(out), Refusal::none, {}};
 }
 
-std::uint32_t PatternGraphs::step(std::size_t p, const ConjWord& w) const {
-  if (w.empty()) return static_cast<std::uint32_t>(p);
-  return shift[static_cast<std::size_t>(std::find(gens.begin(), gens.end(), w) - gens.begin())][p];
+int PatternGraphs::generator(const ConjWord& w) const {
+  return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
 }
 
 namespace {
@@ -96,14 +100,15 @@ Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, 
   return {rewrite_scheme(core, words, g, *found.value), Refusal::none, {}};
 }
 
-Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
+Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
+                                  DartTable* scratch) {
   const TopoGraph &L = core.left(), &R = core.right();
   if (hook_darts.size() != core.hooks().size())
     return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
                                                   core.hooks().size() == 1 ? "" : "s"));
   for (Dart h : hook_darts)
     if (h >= g.size()) return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
-  auto found = pattern_graphs(core.model(), words, g, hook_darts);
+  auto found = pattern_graphs(core.model(), words, g, hook_darts, scratch);
   if (!found.ok()) return refuse<SchemeMatch>(found.refusal, std::move(found.why));
   const PatternGraphs& pg = *found.value;
   const auto& shift = pg.shift;
@@ -155,7 +160,9 @@ Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const
     }
   }
   // Injectivity on nodes; every product node matched (ι(L, P_v) connected).
-  std::vector<bool> taken(g.size(), false);
+  DartTable local;
+  DartTable& taken = scratch ? *scratch : local;
+  const DartTable::ClearOnExit emptied{taken};
   for (NodeId x = 0; x < L.node_count(); ++x)
     for (std::size_t p = 0; p < np; ++p) {
       const Dart d = m[x][p];
@@ -163,8 +170,9 @@ Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const
         return refuse<SchemeMatch>(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) "
                                                          "is not connected, so the hooks do not fix the match (002 Sec. 6.3)",
                                                          pattern[p], L.name(x)));
-      if (taken[d]) return refuse<SchemeMatch>(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
-      taken[d] = true;
+      if (taken.get(d) != DartTable::none)
+        return refuse<SchemeMatch>(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
+      taken.set(d, 1);
     }
   // Arc injectivity: two arcs of L out of one node with one label share
   // their images.

@@ -10,6 +10,7 @@
 
 #include <span>
 
+#include "core/dart_table.hpp"
 #include "core/derivation.hpp"
 
 namespace dartcheck {
@@ -23,12 +24,21 @@ struct PatternGraphs {
   std::vector<std::vector<Dart>> darts;
   std::vector<std::vector<std::uint32_t>> shift;
   /// The position of p·w for a word w of the scheme (ε stays at p).
-  std::uint32_t step(std::size_t p, const ConjWord& w) const;
+  std::uint32_t step(std::size_t p, const ConjWord& w) const { return step(p, generator(w)); }
+  /// The index of w in gens, -1 for ε: step(p, generator(w)) spares the
+  /// search when one word is followed from every position.
+  int generator(const ConjWord& w) const;
+  std::uint32_t step(std::size_t p, int generator) const {
+    return generator < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(generator)][p];
+  }
 };
 
 /// Refuses when a word has no path from a pattern dart
 /// (not-combinatorial) or when two hooks' pattern graphs differ (no-match).
-Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
+/// `scratch` (empty, left empty) spares a table the size of the map when
+/// a caller applies many schemes to one large map.
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
+                                      DartTable* scratch = nullptr);
 
 /// The match of the instantiated L: node[x][p] is the dart matched by
 /// product node (p, x), p a position in the first hook's pattern.
@@ -47,8 +57,9 @@ struct SchemeDerivation {
 };
 
 /// Everything apply_scheme checks before it writes: the match and its
-/// refusals. `g` is not modified.
-Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
+/// refusals. `g` is not modified; `scratch` as for pattern_graphs.
+Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
+                                  DartTable* scratch = nullptr);
 /// The rewrite of apply_scheme along a match from match_scheme on `g`.
 SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g, const SchemeMatch& match);
 

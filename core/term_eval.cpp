@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <tuple>
-#include <unordered_set>
 
 #include <fmt/format.h>
 
@@ -30,21 +29,26 @@ Dart TermEvaluator::node(const Term& t, std::span<const std::string> names, std:
   return n;
 }
 
-Multiset TermEvaluator::collect(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
+const Multiset& TermEvaluator::collect(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
   const Embedding& e = embedding(name);
-  std::vector<Dim> within;  // <o> ∩ <o'>: the pi-orbits inside the <o'>-orbit
-  for (Dim i : e.signature.orbit)
-    if (std::find(orbit.begin(), orbit.end(), i) != orbit.end()) within.push_back(i);
-  const auto outer_gens = dims_generators(orbit), inner_gens = dims_generators(within);
-  orbit_ = outer_.orbit(d, outer_gens);  // copied: the inner walks reuse no state of it
+  auto memo = std::find_if(memo_.begin(), memo_.end(), [&](const CollectMemo& m) { return m.embedding == name && m.orbit == orbit; });
+  if (memo == memo_.end()) {
+    std::vector<Dim> within;  // <o> ∩ <o'>: the pi-orbits inside the <o'>-orbit
+    for (Dim i : e.signature.orbit)
+      if (std::find(orbit.begin(), orbit.end(), i) != orbit.end()) within.push_back(i);
+    memo = memo_.insert(memo_.end(), CollectMemo{name, orbit, dims_generators(orbit), dims_generators(within), {}, {}});
+  }
+  if (const std::uint32_t k = memo->bag_of.get(d); k != DartTable::none) return memo->bags[k];
+
+  orbit_ = outer_.orbit(d, memo->outer);  // copied: the inner walks reuse no state of it
   Multiset out;
-  std::unordered_set<Dart> done;
+  const DartTable::ClearOnExit emptied{done_};
   for (Dart x : orbit_) {
-    if (done.contains(x)) continue;
-    const auto& piece = inner_.orbit(x, inner_gens);
+    if (done_.get(x) != DartTable::none) continue;
+    const auto& piece = inner_.orbit(x, memo->inner);
     const Value* v = nullptr;
     for (Dart y : piece) {
-      done.insert(y);
+      done_.set(y, 1);
       if (!v) v = e.value(y);
     }
     if (!v) throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", name, fmt::join(orbit, ","), name, x));
@@ -54,7 +58,17 @@ Multiset TermEvaluator::collect(const std::string& name, const std::vector<Dim>&
   // (center's floating-point sum) the same from whichever dart of the
   // orbit the traversal starts.
   std::sort(out.begin(), out.end(), [](const Value& a, const Value& b) { return std::tie(a.x, a.i, a.s) < std::tie(b.x, b.i, b.s); });
-  return out;
+  const auto k = static_cast<std::uint32_t>(memo->bags.size());
+  memo->bags.push_back(std::move(out));
+  for (Dart x : orbit_) memo->bag_of.set(x, k);
+  return memo->bags.back();
+}
+
+void TermEvaluator::forget() {
+  for (CollectMemo& m : memo_) {
+    m.bag_of.clear();
+    m.bags.clear();
+  }
 }
 
 Operand TermEvaluator::eval(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {

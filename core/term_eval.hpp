@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dart_table.hpp"
 #include "core/embedded_map.hpp"
 #include "core/orbit.hpp"
 #include "core/term_functions.hpp"
@@ -17,7 +18,11 @@
 namespace dartcheck {
 
 /// Evaluates checked terms against one map; reuses its traversal marks
-/// across calls, so evaluating many terms costs the orbits they read.
+/// across calls, so evaluating many terms costs the orbits they read. A
+/// collect is memorised for every dart of the <o'>-orbit it walked (the
+/// multiset is the same from any of them), so the copies of one term in
+/// one orbit collect it once: the map must not change while the evaluator
+/// is used, or forget() must be called after the change.
 class TermEvaluator {
  public:
   explicit TermEvaluator(const EmbeddedMap& g);
@@ -27,16 +32,30 @@ class TermEvaluator {
   /// an alpha_i has no arc, or a function has no value.
   Value value(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
   /// The multiset of a collect term.
-  Multiset collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
+  const Multiset& collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
+  /// Drops the memorised collects (after a change of the map).
+  void forget();
 
  private:
   Operand eval(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
   Dart node(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
   const Embedding& embedding(const std::string& name) const;
 
+  // The collects of one (embedding, <o'>): bag_of[d] indexes `bags` for
+  // every dart of an <o'>-orbit already walked.
+  struct CollectMemo {
+    std::string embedding;
+    std::vector<Dim> orbit;
+    std::vector<Word> outer, inner;  // generators of <o'> and <o> ∩ <o'>
+    DartTable bag_of;
+    std::vector<Multiset> bags;
+  };
+
   const EmbeddedMap& g_;
   OrbitWalker outer_, inner_;
   std::vector<Dart> orbit_;
+  DartTable done_;
+  std::vector<CollectMemo> memo_;
 };
 
 }  // namespace dartcheck
