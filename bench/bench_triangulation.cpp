@@ -34,6 +34,7 @@
 #include "core/catalog.hpp"
 #include "core/embedded_application.hpp"
 #include "core/orbit.hpp"
+#include "core/scheme_application.hpp"
 #include "core/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
 
@@ -103,6 +104,30 @@ Result run_dartcheck(const std::string& off, int runs, std::size_t triangles, Sc
   });
 }
 
+// The floor of the all-faces rows: the same scheme's topology alone.
+Result run_topology(const std::string& off, int runs, std::size_t triangles) {
+  using namespace dartcheck;
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  const CatalogRule& s = *catalog.find_rule("triangulation-all-faces-pos");
+  const Map input = build_mesh(Model::gmap(2), read_mesh(off));
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    Map g = input;
+    const auto t0 = std::chrono::steady_clock::now();
+    bool ok = true;
+    OrbitWalker walker(g);
+    const auto gens = dims_generators({0, 1, 2});
+    std::vector<bool> seen(g.size());
+    for (Dart d = 0; d < input.size(); ++d)
+      if (!seen[d]) {
+        for (Dart x : walker.orbit(d, gens)) seen[x] = true;
+        ok &= apply_scheme(s.rule, s.words, g, std::span(&d, 1)).ok();
+      }
+    ms = since(t0);
+    out = g.size();
+    return ok && count_cells(g).cells[2] == triangles && check_map(g).valid();
+  });
+}
+
 Result run_cgal(const std::string& off, int runs, std::size_t faces) {
   LCC input;
   std::ifstream in(off);
@@ -159,6 +184,7 @@ int main(int argc, char** argv) {
        [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::every_instance); }},
       {"dartcheck triangulation-all-faces-pos, once, one evaluation per orbit",
        [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::one_per_orbit); }},
+      {"dartcheck triangulation-all-faces-pos, topology only (apply_scheme, no terms)", [&] { return run_topology(off, runs, sides); }},
       {"CGAL LCC insert_barycenter_in_cell<2> on every face", [&] { return run_cgal(off, runs, sides); }},
   };
   std::vector<Result> results;
