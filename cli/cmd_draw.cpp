@@ -9,6 +9,7 @@
 #include "checkers/graph_constraints.hpp"
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
+#include "cli/embedding_checks.hpp"
 #include "cli/resolve.hpp"
 #include "core/graph_derivation.hpp"
 #include "core/input_error.hpp"
@@ -39,8 +40,11 @@ int draw(const DrawOptions& o) {
   const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
   const CatalogRule* entry = catalog.find_rule(o.rule);
   const RuleVerdict verdict = check_rule(entry->rule, entry->words);
-  const auto witnesses = reports::failed_witnesses(verdict);
-  write_picture(reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr), o.output, o.engine);
+  auto witnesses = reports::failed_witnesses(verdict);
+  const auto embedded = embedding_picture(*entry, embedding_checks(catalog, *entry));
+  witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
+  write_picture(reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms), o.output,
+                o.engine);
   return ok;
 }
 

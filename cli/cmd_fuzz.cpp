@@ -13,6 +13,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
+#include "cli/embedded_fuzz.hpp"
 #include "cli/counterexample_files.hpp"
 #include "cli/fuzz.hpp"
 #include "cli/report_text.hpp"
@@ -90,12 +91,15 @@ int fuzz(const FuzzCommand& c) {
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::vector<std::string> replays(reports.size());
-  if (!c.out.empty())
-    for (std::size_t k = 0; k < reports.size(); ++k)
-      if (reports[k].counterexample && !rules[k]->terms)  // embedded hosts: not written yet (their values are replayed by --seed)
-        replays[k] = write_counterexample(c.out, file_stem(reports[k].rule), c.catalog, reports[k].rule,
-                                          {{"seed", std::to_string(o.seed)}, {"class", std::string(fuzz_class_name(reports[k].verdict))}},
-                                          reports[k].static_failures, *reports[k].counterexample);
+  for (std::size_t k = 0; k < reports.size(); ++k) {
+    if (!reports[k].counterexample) continue;
+    if (rules[k]->terms)
+      replays[k] = embedded_replay(c.catalog, reports[k], o.seed);
+    else if (!c.out.empty())
+      replays[k] = write_counterexample(c.out, file_stem(reports[k].rule), c.catalog, reports[k].rule,
+                                        {{"seed", std::to_string(o.seed)}, {"class", std::string(fuzz_class_name(reports[k].verdict))}},
+                                        reports[k].static_failures, *reports[k].counterexample);
+  }
 
   auto count = [&](FuzzClass v) { return std::count_if(reports.begin(), reports.end(), [&](const FuzzReport& r) { return r.verdict == v; }); };
   std::size_t applications = 0;

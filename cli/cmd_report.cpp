@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/embedded_fuzz.hpp"
 #include "cli/embedding_checks.hpp"
 #include "checkers/violation.hpp"
 #include "cli/commands.hpp"
@@ -103,6 +104,11 @@ std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const
     p.broken.assign(cx.result->size(), false);
     for (const auto& viol : cx.violations)
       if (viol.element < p.broken.size()) p.broken[viol.element] = true;
+    // Embedded rules: the orbits with two values or an unlabeled dart,
+    // each dart tagged with its value.
+    for (std::size_t d = 0; d < cx.orbit_values.size() && d < p.broken.size(); ++d)
+      if (!cx.orbit_values[d].empty()) p.broken[d] = true;
+    p.result_tags = cx.orbit_values;
     p.broken_label = fmt::format("filled: breaks {}", fmt::join(cx.broken(), ", "));
   } else {
     p.no_result = cx.unrepresentable;
@@ -209,7 +215,10 @@ std::string rule_section(const RuleReport& r, Pictures& pictures) {
   if (!e.note.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_text(e.note));
   out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(static_verdict_text(r)), html_text(recorded_text(e)),
                      r.matches_record ? "" : " <span class=\"mismatch\">(MISMATCH)</span>");
-  out += pictures.add(reports::rule_dot(e.rule, e.words, reports::failed_witnesses(r.verdict), labels_of(e)), "rules/" + stem + ".svg");
+  auto embedded = embedding_picture(e, r.embedding);
+  auto witnesses = reports::failed_witnesses(r.verdict);
+  witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
+  out += pictures.add(reports::rule_dot(e.rule, e.words, witnesses, labels_of(e), embedded.terms), "rules/" + stem + ".svg");
 
   // Every failing condition with its witnesses; skipped ones with the reason.
   std::string failing;
@@ -320,7 +329,9 @@ int report(const ReportOptions& o) {
     std::size_t applications = 0;
     for (std::size_t k = 0; k < rows.size(); ++k) {
       applications += found[k].applications;
-      if (found[k].counterexample)
+      if (found[k].counterexample && rows[k].entry->terms)
+        rows[k].fuzz_replay = embedded_replay(o.catalog, found[k], fo.seed);
+      else if (found[k].counterexample)
         rows[k].fuzz_replay = write_counterexample(cx_dir.string(), file_stem(found[k].rule) + ".fuzz", o.catalog, found[k].rule,
                                                    {{"seed", std::to_string(fo.seed)}, {"class", std::string(fuzz_class_name(found[k].verdict))}},
                                                    found[k].static_failures, *found[k].counterexample);

@@ -8,6 +8,7 @@
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
 #include "core/embedded_application.hpp"
+#include "core/orbit.hpp"
 #include "core/term_eval.hpp"
 #include "generators/random_embedding.hpp"
 #include "generators/random_maps.hpp"
@@ -51,6 +52,18 @@ void plant(const CatalogRule& entry, EmbeddedMap& g, std::span<const Dart> hooks
     } catch (const EvaluationError&) {
       return;  // the attempt will be refused with the reason
     }
+  }
+}
+
+// Tags every dart of the pi-orbit of d in H with its value (or "none"),
+// for the counterexample picture.
+void mark_orbit(const EmbeddedMap& h, const Embedding& e, Dart d, std::vector<std::string>& tags) {
+  tags.resize(h.map.size());
+  OrbitWalker walker(h.map);
+  for (Dart x : walker.orbit(d, dims_generators(e.signature.orbit))) {
+    const Value* v = e.value(x);
+    const std::string tag = v ? fmt::format("{} {}", e.signature.name, v->str()) : fmt::format("{}: none", e.signature.name);
+    tags[x] = tags[x].empty() ? tag : fmt::format("{}\n{}", tags[x], tag);
   }
 }
 
@@ -110,12 +123,15 @@ FuzzReport fuzz_embedded_rule(const CatalogRule& entry, const std::vector<Map>& 
         continue;
       }
       ++out.applications;
-      Counterexample cx{planted.map, hooks, {}, h.map, {}, {}, {}, false, {}, {}};
+      Counterexample cx{planted.map, hooks, {}, h.map, {}, {}, {}, false, {}, {}, {}};
       cx.violations = check_map(h.map).violations;
       for (const auto& c : d.value->conflicts) cx.embedding_failures.push_back(c);
       for (const Embedding& e : h.embeddings) {
         const auto r = check_embedding(h.map, e, true);
-        for (const auto& c : r.conflicts) cx.embedding_failures.push_back(c.describe(e.signature.name, e.signature.orbit));
+        for (const auto& c : r.conflicts) {
+          cx.embedding_failures.push_back(c.describe(e.signature.name, e.signature.orbit));
+          mark_orbit(h, e, c.dart, cx.orbit_values);
+        }
         if (!r.consistent()) cx.broken_embeddings.push_back(e.signature.name);
       }
       if (cx.violations.empty() && cx.embedding_failures.empty()) continue;

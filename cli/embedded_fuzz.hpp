@@ -12,10 +12,20 @@
 // the terms' values, so rules that match only given values still apply.
 #pragma once
 
+#include <fmt/format.h>
+
 #include "cli/fuzz.hpp"
 
 namespace dartcheck::cli {
 
 FuzzReport fuzz_embedded_rule(const CatalogRule& entry, const std::vector<Map>& seeds, const FuzzOptions& options);
+
+/// The command that finds an embedded counterexample again. Map files do
+/// not carry values, so a host file would replay with other values: the
+/// fuzz itself is the replay (one stream per rule and seed, stopped at
+/// the counterexample's application).
+inline std::string embedded_replay(const std::string& catalog, const FuzzReport& r, std::uint64_t seed) {
+  return fmt::format("dartcheck fuzz {} --rule {} --seed {} --runs {}", catalog, r.rule, seed, r.applications);
+}
 
 }  // namespace dartcheck::cli

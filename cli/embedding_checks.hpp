@@ -9,6 +9,7 @@
 
 #include "checkers/rule_conditions.hpp"
 #include "core/catalog.hpp"
+#include "reports/rule_dot.hpp"
 
 namespace dartcheck::cli {
 
@@ -23,6 +24,15 @@ struct EmbeddingCheck {
 std::vector<EmbeddingCheck> embedding_checks(const Catalog& catalog, const CatalogRule& entry);
 /// Names of the required checks that fail.
 std::vector<std::string> failing_names(const std::vector<EmbeddingCheck>& checks);
+
+/// What a rule picture shows of the checks (reports/rule_dot): the
+/// witnesses of the checks that fail (required or not), the rule's terms,
+/// and the embeddings of the failing checks ("pos" for "A(pos)").
+struct EmbeddingPicture {
+  std::vector<RuleWitness> witnesses;
+  reports::TermLines terms;
+};
+EmbeddingPicture embedding_picture(const CatalogRule& entry, const std::vector<EmbeddingCheck>& checks);
 
 /// The sentence every report of embedding checks carries.
 inline constexpr const char* sufficiency_note =

@@ -112,7 +112,7 @@ std::optional<Counterexample> apply_and_check(const CatalogRule& entry, const Ma
       for (NodeId v = 0; v < rule.left().node_count(); ++v) match.emplace_back(rule.left().name(v), r.value->match.node[v]);
   }
   if (refusal != Refusal::none && refusal != Refusal::not_representable) return std::nullopt;
-  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}};
+  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}, {}};
   if (refusal == Refusal::not_representable) {
     cx.unrepresentable = std::move(why);
     return cx;

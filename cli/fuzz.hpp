@@ -56,6 +56,10 @@ struct Counterexample {
   /// the embeddings they concern ("embedding(pos)").
   std::vector<std::string> embedding_failures;
   std::vector<std::string> broken_embeddings;
+  /// Per dart of H (empty for topological counterexamples): the values of
+  /// the darts of every orbit with two values or an unlabeled dart
+  /// ("pos (1, 1)", "pos: none"), empty for the other darts.
+  std::vector<std::string> orbit_values;
 };
 
 struct FuzzReport {

@@ -19,7 +19,7 @@ std::string counterexample_dot(const Rule& rule, const ArcWords& words, const st
   std::optional<TopoGraph> result;
   if (p.result) {
     result = to_graph(*p.result);
-    GraphPicture h{"H:", fmt::format("H: result, {} dart{}", p.result->size(), p.result->size() == 1 ? "" : "s"), p.broken, p.broken_label, {}};
+    GraphPicture h{"H:", fmt::format("H: result, {} dart{}", p.result->size(), p.result->size() == 1 ? "" : "s"), p.broken, p.broken_label, p.result_tags};
     body += graph_cluster(*result, p.result->model(), h);
   } else {
     body += fmt::format("  subgraph \"cluster_H:\" {{\n    label=\"H\"; color=\"#9e9e9e\";\n    \"H:none\" [shape=note, label={}];\n  }}\n",

@@ -22,6 +22,7 @@ struct CounterexamplePicture {
   std::string match_label;              // what the filled darts of G are
   const Map* result = nullptr;          // H; null when H has no dense form
   std::vector<bool> broken;             // per dart of H
+  std::vector<std::string> result_tags;  // per dart of H: e.g. its value in a conflicting orbit, may be empty
   std::string broken_label;             // which constraints, for the panel's title
   std::string no_result;                // why H is not drawn, when result is null
 };

@@ -25,6 +25,8 @@ inline constexpr std::string_view deleted_color = "#d32f2f";
 inline constexpr std::string_view added_color = "#2e7d32";
 inline constexpr std::string_view highlight_fill = "#ffd54f";
 inline constexpr std::string_view highlight_line = "#ff6f00";
+/// The terms under an embedded rule's nodes.
+inline constexpr std::string_view term_color = "#455a64";
 
 /// An HTML-like label (for `label=<...>`) with one colored entry per
 /// dimension of the model.

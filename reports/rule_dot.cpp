@@ -35,8 +35,26 @@ std::vector<Step> steps(const std::string& text) {
 }
 
 // One side of the rule, as a cluster.
+// A node's label: its name, its orbit type (Jerboa-style schemes) and its
+// terms. Plain text without terms, an HTML-like label with them.
+std::string node_label(const std::string& name, const std::string& type, const TermLines& terms, bool left, bool lit) {
+  std::vector<const NodeTerm*> lines;
+  if (terms.terms)
+    for (const NodeTerm& t : left ? terms.terms->left : terms.terms->right)
+      if (t.node == name) lines.push_back(&t);
+  if (lines.empty()) return fmt::format("label={}", quote(type.empty() ? name : name + "\n" + type));
+  std::string html = html_escape(name);
+  if (!type.empty()) html += fmt::format("<br/><font point-size=\"9\">{}</font>", html_escape(type));
+  for (const NodeTerm* t : lines) {
+    const bool hot = lit && contains(terms.failing, t->embedding);
+    html += fmt::format("<br/><font point-size=\"9\" color=\"{}\">{}{}: {}{}</font>", hot ? highlight_line : term_color, hot ? "<b>" : "",
+                        html_escape(t->embedding), html_escape(t->term.str()), hot ? "</b>" : "");
+  }
+  return fmt::format("label=<{}>, shape=box, style=\"rounded{}\"", html, lit ? ",filled" : "");
+}
+
 std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses,
-                         const std::string& prefix, const JerboaLabels* labels) {
+                         const std::string& prefix, const JerboaLabels* labels, const TermLines& terms) {
   const TopoGraph& g = left ? rule.left() : rule.right();
   const std::vector<ConjWord>& ws = left ? words.left : words.right;
   const Model& model = rule.model();
@@ -69,10 +87,12 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     const auto color = kept ? preserved_color : left ? deleted_color : added_color;
     const bool lit = contains(lit_nodes, g.name(v));
     const auto* types = labels ? (left ? &labels->left : &labels->right) : nullptr;
-    const std::string text = types && v < types->size() ? g.name(v) + "\n" + orbit_type_str((*types)[v]) : g.name(v);
-    out += fmt::format("      {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), quote(text),
-                       color, color, hook ? ", peripheries=2" : "",
-                       lit ? fmt::format(", style=filled, fillcolor=\"{}\", penwidth=2, witness=\"true\"", highlight_fill) : "");
+    const std::string type = types && v < types->size() ? orbit_type_str((*types)[v]) : "";
+    const std::string label = node_label(g.name(v), type, terms, left, lit);
+    const bool boxed = label.find("shape=box") != std::string::npos;  // the style is in the label's attributes
+    out += fmt::format("      {} [{}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), label, color, color,
+                       hook ? ", peripheries=2" : "",
+                       lit ? fmt::format("{}, fillcolor=\"{}\", penwidth=2, witness=\"true\"", boxed ? "" : ", style=filled", highlight_fill) : "");
   }
   std::vector<bool> drawn(g.arc_count(), false);
   for (ArcId e = 0; e < g.arc_count(); ++e) {
@@ -115,10 +135,10 @@ std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v) {
 }
 
 std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
-                         const JerboaLabels* labels) {
+                         const JerboaLabels* labels, const TermLines& terms) {
   std::string out = fmt::format("  subgraph {} {{\n    label={}; color=\"white\";\n", quote("cluster_" + prefix + "rule"), quote(rule.name()));
-  out += side_cluster(rule, words, true, witnesses, prefix, labels);
-  out += side_cluster(rule, words, false, witnesses, prefix, labels);
+  out += side_cluster(rule, words, true, witnesses, prefix, labels, terms);
+  out += side_cluster(rule, words, false, witnesses, prefix, labels, terms);
   // R right of L: an invisible node ranked after every node of L and
   // before every node of R (without it, L and R can end up stacked when
   // their preserved nodes sit at different depths, as in Fig. 26d).
@@ -136,13 +156,17 @@ std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vec
   return out + "  }\n";
 }
 
-std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels) {
+std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,
+                     const TermLines& terms) {
   std::string legend = fmt::format(R"(<font color="{}">preserved</font>  <font color="{}">deleted</font>  <font color="{}">added</font>  )"
-                                   R"(double border: hook{})",
-                                   preserved_color, deleted_color, added_color, witnesses.empty() ? "" : "  filled: witness");
+                                   R"(double border: hook{}{})",
+                                   preserved_color, deleted_color, added_color, witnesses.empty() ? "" : "  filled: witness",
+                                   terms.terms ? fmt::format(R"(  embedding: term{})", terms.failing.empty() ? ""
+                                                                                         : fmt::format(R"(, <font color="{}"><b>bold</b></font>: failing)", highlight_line))
+                                               : "");
   return fmt::format("digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; label=<{}>; labelloc=b;\n"
                      "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n{}}}\n",
-                     quote(rule.name()), legend, rule_cluster(rule, words, witnesses, "", labels));
+                     quote(rule.name()), legend, rule_cluster(rule, words, witnesses, "", labels, terms));
 }
 
 }  // namespace dartcheck::reports

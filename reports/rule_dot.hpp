@@ -6,7 +6,10 @@
 // its node in L. The witnesses of failed conditions are highlighted and
 // carry the attribute witness="true" (nodes and arcs), for tools and
 // tests. A Jerboa-style scheme's nodes show their orbit types; the loops
-// those types stand for are then drawn only when they are witnesses.
+// those types stand for are then drawn only when they are witnesses. An
+// embedded rule's nodes list their terms, one line "pi: term" per
+// embedding (003 Sec. 6); on witness nodes the lines of the failing
+// embeddings are highlighted.
 #pragma once
 
 #include <string>
@@ -15,8 +18,16 @@
 #include "checkers/rule_conditions.hpp"
 #include "core/jerboa_scheme.hpp"
 #include "core/rule.hpp"
+#include "core/rule_terms.hpp"
 
 namespace dartcheck::reports {
+
+/// The terms to draw under the nodes, and the embeddings whose conditions
+/// fail (their lines are highlighted on witness nodes).
+struct TermLines {
+  const RuleTerms* terms = nullptr;
+  std::vector<std::string> failing;
+};
 
 /// The witnesses of every condition of `v` that fails.
 std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v);
@@ -24,10 +35,10 @@ std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v);
 /// A cluster holding L and R (to embed in a larger picture); node ids are
 /// prefix + "L:" + name and prefix + "R:" + name.
 std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
-                         const JerboaLabels* labels = nullptr);
+                         const JerboaLabels* labels = nullptr, const TermLines& terms = {});
 
 /// A whole picture of the rule, titled with its name.
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {},
-                     const JerboaLabels* labels = nullptr);
+                     const JerboaLabels* labels = nullptr, const TermLines& terms = {});
 
 }  // namespace dartcheck::reports

@@ -14,12 +14,14 @@
 #include <memory>
 #include <set>
 
+#include "checkers/embedding_conditions.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "core/catalog.hpp"
 #include "core/graph_derivation.hpp"
 #include "generators/shapes.hpp"
 #include "reports/counterexample_dot.hpp"
 #include "reports/graph_dot.hpp"
+#include "reports/dot_text.hpp"
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
 
@@ -96,6 +98,47 @@ TEST(RuleDot, BrokenVariantsHighlightTheirWitnesses) {
   }
   EXPECT_GE(rules, 50);
   EXPECT_GE(with_arcs, 20);
+}
+
+// Embedded rules (issue 8): each node's label lists its terms, one line
+// "pi: term" per embedding; the witness nodes of a failing embedding
+// condition are highlighted and their lines of that embedding are bold.
+TEST(RuleDot, EmbeddedRulesShowTermsAndHighlightFailingOnes) {
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  int failing = 0;
+  for (const auto& e : catalog.rules) {
+    reports::TermLines lines{&*e.terms, {}};
+    std::vector<RuleWitness> witnesses;
+    bool required = false;
+    for (const auto& c : check_term_conditions(e.rule, e.words, *e.terms))
+      if (!c.holds) {
+        lines.failing.push_back(c.embedding);
+        witnesses.insert(witnesses.end(), c.witnesses.begin(), c.witnesses.end());
+        required |= c.required;
+      }
+    failing += required;
+    const std::string dot = reports::rule_dot(e.rule, e.words, witnesses, nullptr, lines);
+    const Graph g = parse(dot);
+    ASSERT_TRUE(g) << e.rule.name() << "\n" << dot;
+    const std::set<std::string> lit = marked(g.get(), "witness");
+    for (const auto& [side, terms] : {std::pair{'L', &e.terms->left}, std::pair{'R', &e.terms->right}})
+      for (const NodeTerm& t : *terms) {
+        const std::string id = std::string(1, side) + ":" + t.node;
+        Agnode_t* n = agnode(g.get(), const_cast<char*>(id.c_str()), 0);
+        ASSERT_TRUE(n) << e.rule.name() << ": " << id;
+        const std::string label = agget(n, const_cast<char*>("label"));
+        const std::string line = reports::html_escape(t.embedding + ": " + t.term.str());
+        EXPECT_NE(label.find(line), std::string::npos) << e.rule.name() << ": " << id << " label " << label << " lacks " << line;
+        const bool bold = label.find("<b>" + line + "</b>") != std::string::npos;
+        const bool hot = lit.contains(id) && std::find(lines.failing.begin(), lines.failing.end(), t.embedding) != lines.failing.end();
+        EXPECT_EQ(bold, hot) << e.rule.name() << ": " << id << " " << line;
+      }
+    for (const auto& w : witnesses)
+      for (const auto& n : w.nodes) EXPECT_TRUE(lit.contains(std::string(1, w.side) + ":" + n)) << e.rule.name() << ": " << n;
+    const std::string svg = reports::render(dot, "svg");
+    EXPECT_EQ(svg_nodes(svg), e.rule.left().node_count() + e.rule.right().node_count()) << e.rule.name();
+  }
+  EXPECT_EQ(failing, 19);  // the catalog's rules recorded with failing (required) embedding conditions
 }
 
 TEST(RuleSvg, EverySeedRuleRendersWithOneNodePerRuleNode) {
