@@ -53,6 +53,20 @@ bool own_value(const NodeTerm& t) {
   return t.term.kind == Term::Kind::access && t.term.name == t.embedding && t.term.args[0].kind == Term::Kind::variable && t.term.args[0].name == t.node;
 }
 
+// The pi-orbits of one side of the instantiated rule: instance x * np + p
+// joined to its neighbours through the side's arcs in <o>.
+UnionFind instantiated_orbits(const TopoGraph& side, const std::vector<ConjWord>& words, const Instances& in, const std::vector<Dim>& orbit) {
+  const std::size_t np = in.np;
+  UnionFind uf(side.node_count() * np);
+  for (ArcId a = 0; a < side.arc_count(); ++a) {
+    const auto& arc = side.arc(a);
+    if (!in_orbit(orbit, arc.label)) continue;
+    const int w = in.generator(arc_word(words, a));
+    for (std::size_t p = 0; p < np; ++p) uf.unite(arc.source * np + p, arc.target * np + in.step(p, w));
+  }
+  return uf;
+}
+
 }  // namespace
 
 struct EmbeddedRewriter::Context {
@@ -90,13 +104,7 @@ struct EmbeddedRewriter::Context {
 std::string EmbeddedRewriter::Context::overlap(const Instances& in, const EmbeddingSignature& e) {
   const TopoGraph& L = rule.left();
   const std::size_t np = in.np;
-  UnionFind uf(L.node_count() * np);
-  for (ArcId a = 0; a < L.arc_count(); ++a) {
-    const auto& arc = L.arc(a);
-    if (!in_orbit(e.orbit, arc.label)) continue;
-    const int w = in.generator(arc_word(words.left, a));
-    for (std::size_t p = 0; p < np; ++p) uf.unite(arc.source * np + p, arc.target * np + in.step(p, w));
-  }
+  UnionFind uf = instantiated_orbits(L, words.left, in, e.orbit);
   // orbit_of[d]: the pi-orbit of G of each matched dart, numbered as met;
   // owner[o]: an instance of L in G orbit o.
   const DartTable::ClearOnExit emptied{orbit_of};
@@ -127,16 +135,8 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, const Embedd
 // y * np + p: its arcs in <o> are links of H, so one class lies in one
 // pi-orbit of H.
 std::vector<std::size_t> EmbeddedRewriter::Context::orbit_classes(const Instances& in, const EmbeddingSignature& e) const {
-  const TopoGraph& R = rule.right();
-  const std::size_t np = in.np;
-  UnionFind uf(R.node_count() * np);
-  for (ArcId a = 0; a < R.arc_count(); ++a) {
-    const auto& arc = R.arc(a);
-    if (!in_orbit(e.orbit, arc.label)) continue;
-    const int w = in.generator(arc_word(words.right, a));
-    for (std::size_t p = 0; p < np; ++p) uf.unite(arc.source * np + p, arc.target * np + in.step(p, w));
-  }
-  std::vector<std::size_t> root(R.node_count() * np);
+  UnionFind uf = instantiated_orbits(rule.right(), words.right, in, e.orbit);
+  std::vector<std::size_t> root(uf.up.size());
   for (std::size_t k = 0; k < root.size(); ++k) root[k] = uf.find(k);
   return root;
 }
