@@ -10,9 +10,10 @@
 #include <random>
 
 #include "checkers/map_validity.hpp"
-#include "cli/fuzz.hpp"
-#include "core/derivation.hpp"
-#include "core/scheme_application.hpp"
+#include "analysis/fuzz.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/derivation.hpp"
+#include "rewriting/scheme_application.hpp"
 #include "generators/random_maps.hpp"
 
 using namespace dartcheck;
@@ -61,14 +62,14 @@ void ApplyAndCheck(benchmark::State& state, const char* rule_name) {
 
 void FuzzRule(benchmark::State& state, const char* rule_name) {
   const CatalogRule& r = *catalog().find_rule(rule_name);
-  cli::FuzzOptions o;
+  analysis::FuzzOptions o;
   o.runs = 20'000;
   o.max_darts = static_cast<std::size_t>(state.range(0));
   o.exhaustive_hosts = 0;
   std::size_t applications = 0;
   for (auto _ : state) {
     ++o.seed;
-    const auto report = cli::fuzz_rule(r, {}, o);
+    const auto report = analysis::fuzz_rule(r, {}, o);
     applications += report.applications;
   }
   state.counters["applications/s"] = benchmark::Counter(static_cast<double>(applications), benchmark::Counter::kIsRate);

@@ -13,7 +13,7 @@
 
 #include <fmt/format.h>
 
-#include "core/catalog.hpp"
+#include "io/catalog.hpp"
 #include "proofs/rule_prover.hpp"
 #include "proofs/scheme_encoding.hpp"
 

@@ -37,9 +37,9 @@
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 
 #include "checkers/map_validity.hpp"
-#include "core/catalog.hpp"
+#include "io/catalog.hpp"
 #include "core/orbit.hpp"
-#include "core/scheme_application.hpp"
+#include "rewriting/scheme_application.hpp"
 #include "generators/mesh_map.hpp"
 #include "bench/peer_bench.hpp"
 

@@ -31,11 +31,11 @@
 #include "bench/peer_bench.hpp"
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
-#include "core/catalog.hpp"
-#include "core/embedded_application.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/embedded_application.hpp"
 #include "core/orbit.hpp"
-#include "core/scheme_application.hpp"
-#include "core/mesh_io.hpp"
+#include "rewriting/scheme_application.hpp"
+#include "io/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
 
 namespace {

@@ -35,7 +35,7 @@
 #include <vector>
 
 #include "checkers/rule_conditions.hpp"
-#include "core/rule_terms.hpp"
+#include "rewriting/rule_terms.hpp"
 
 namespace dartcheck {
 

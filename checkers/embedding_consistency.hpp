@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/embedded_map.hpp"
+#include "rewriting/embedded_map.hpp"
 #include "core/map_embedding.hpp"
 
 namespace dartcheck {

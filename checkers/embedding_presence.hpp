@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "checkers/rule_conditions.hpp"
-#include "core/catalog.hpp"
+#include "rewriting/operation.hpp"
 
 namespace dartcheck {
 

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "checkers/graph_constraints.hpp"
-#include "core/graph_derivation.hpp"
+#include "rewriting/graph_derivation.hpp"
 
 namespace dartcheck {
 namespace {

@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "checkers/violation.hpp"
-#include "core/rule.hpp"
+#include "rewriting/rule.hpp"
 
 namespace dartcheck {
 

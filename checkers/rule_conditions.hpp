@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/conjugate_words.hpp"
-#include "core/rule.hpp"
+#include "rewriting/rule.hpp"
 
 namespace dartcheck {
 

@@ -5,20 +5,22 @@
 
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
-#include "core/embedded_application.hpp"
-#include "core/mesh_io.hpp"
+#include "rewriting/embedded_application.hpp"
+#include "io/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_embedding.hpp"
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
-#include "cli/resolve.hpp"
-#include "core/catalog.hpp"
-#include "core/derivation.hpp"
-#include "core/scheme_application.hpp"
+#include "analysis/map_sources.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/derivation.hpp"
+#include "rewriting/scheme_application.hpp"
 #include "core/input_error.hpp"
-#include "core/map_io.hpp"
+#include "io/map_io.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 
 namespace {
 

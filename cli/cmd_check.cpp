@@ -12,13 +12,17 @@
 #include "checkers/host_search.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "cli/commands.hpp"
+#include "analysis/verdict_record.hpp"
+#include "cli/options.hpp"
 #include "cli/report_text.hpp"
-#include "cli/resolve.hpp"
-#include "cli/fuzz.hpp"
-#include "core/catalog.hpp"
+#include "analysis/map_sources.hpp"
+#include "analysis/fuzz.hpp"
+#include "io/catalog.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 namespace {
 
 struct Checked {
@@ -101,7 +105,7 @@ int check(const CheckOptions& o) {
       FuzzOptions fo;
       fo.runs = 2000;
       fo.max_darts = 64;
-      fo.static_check = [&](const CatalogRule&) { return c.verdict; };
+      fo.static_check = [&](const Operation&) { return c.verdict; };
       c.scheme_search = fuzz_rule(entry, extra, fo);
       // Unsound: a broken constraint whose conditions all hold (embedding
       // failures count against the embedding conditions).

@@ -5,11 +5,14 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/resolve.hpp"
-#include "core/catalog_writer.hpp"
+#include "cli/options.hpp"
+#include "analysis/map_sources.hpp"
+#include "io/catalog_writer.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 
 int convert(const ConvertOptions& o) {
   const Catalog catalog = read_command_catalog(o.input, "", "text");

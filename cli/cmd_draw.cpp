@@ -9,15 +9,19 @@
 #include "checkers/graph_constraints.hpp"
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
-#include "cli/embedding_checks.hpp"
-#include "cli/resolve.hpp"
-#include "core/graph_derivation.hpp"
+#include "cli/embedding_picture.hpp"
+#include "cli/options.hpp"
+#include "analysis/embedding_checks.hpp"
+#include "analysis/map_sources.hpp"
+#include "rewriting/graph_derivation.hpp"
 #include "core/input_error.hpp"
 #include "reports/graph_dot.hpp"
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 namespace {
 
 void write_picture(const std::string& dot, const std::string& file, const std::string& engine) {

@@ -13,15 +13,18 @@
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
-#include "cli/embedded_fuzz.hpp"
-#include "cli/counterexample_files.hpp"
-#include "cli/fuzz.hpp"
+#include "cli/options.hpp"
+#include "analysis/embedded_fuzz.hpp"
+#include "analysis/counterexample_files.hpp"
+#include "analysis/fuzz.hpp"
 #include "cli/report_text.hpp"
-#include "cli/resolve.hpp"
+#include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
-#include "core/map_io.hpp"
+#include "io/map_io.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 namespace {
 
 // The user's maps, built once per model that the fuzzed rules rewrite.
@@ -70,7 +73,7 @@ int fuzz(const FuzzCommand& c) {
   if (!c.time.empty()) seconds = parse_duration(c.time, "--time");
   o.runs = c.runs ? *c.runs : seconds ? SIZE_MAX : 10'000;
 
-  std::vector<const CatalogRule*> rules;
+  std::vector<const Operation*> rules;
   std::vector<Model> models;
   for (const auto& e : catalog.rules) {
     if (!c.rule.empty() && e.rule.name() != c.rule) continue;

@@ -9,15 +9,18 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "cli/counterexample_files.hpp"
-#include "cli/fuzz.hpp"
-#include "cli/prove_replay.hpp"
+#include "cli/options.hpp"
+#include "analysis/counterexample_files.hpp"
+#include "analysis/fuzz.hpp"
+#include "analysis/prove_replay.hpp"
 #include "cli/report_text.hpp"
-#include "cli/resolve.hpp"
+#include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
 #include "proofs/rule_prover.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 namespace {
 
 using proofs::Agreement;

@@ -14,23 +14,28 @@
 
 #include <fmt/format.h>
 
-#include "cli/embedded_fuzz.hpp"
-#include "cli/embedding_checks.hpp"
+#include "analysis/embedded_fuzz.hpp"
+#include "analysis/embedding_checks.hpp"
 #include "checkers/violation.hpp"
 #include "cli/commands.hpp"
-#include "cli/counterexample_files.hpp"
-#include "cli/fuzz.hpp"
-#include "cli/prove_replay.hpp"
+#include "cli/embedding_picture.hpp"
+#include "analysis/verdict_record.hpp"
+#include "cli/options.hpp"
+#include "analysis/counterexample_files.hpp"
+#include "analysis/fuzz.hpp"
+#include "analysis/prove_replay.hpp"
 #include "cli/report_text.hpp"
-#include "cli/resolve.hpp"
+#include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
-#include "core/scheme_application.hpp"
+#include "rewriting/scheme_application.hpp"
 #include "reports/counterexample_dot.hpp"
 #include "reports/html_page.hpp"
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 namespace {
 
 namespace fs = std::filesystem;
@@ -298,7 +303,7 @@ int report(const ReportOptions& o) {
   if (ec || !fs::is_directory(dir)) throw InputError(o.output, 0, 0, fmt::format("-o: cannot create the directory ({})", ec.message()));
 
   std::vector<RuleReport> rows;
-  std::vector<const CatalogRule*> rules;
+  std::vector<const Operation*> rules;
   for (const auto& e : catalog.rules) {
     if (!o.rule.empty() && e.rule.name() != o.rule) continue;
     RuleReport r;

@@ -4,13 +4,15 @@
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
-#include "cli/resolve.hpp"
-#include "core/catalog.hpp"
-#include "core/derivation.hpp"
+#include "analysis/map_sources.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/derivation.hpp"
 #include "core/orbit.hpp"
-#include "core/scheme_application.hpp"
+#include "rewriting/scheme_application.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 
 int run(const RunOptions& o) {
   const Catalog catalog = read_catalog(o.catalog);

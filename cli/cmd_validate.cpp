@@ -2,13 +2,15 @@
 
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
-#include "core/jerboa_jba.hpp"
+#include "io/jerboa_jba.hpp"
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
-#include "cli/resolve.hpp"
+#include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck::cli {
+
+using namespace analysis;  // the engines the commands call
 namespace {
 
 // A Jerboa G-map: the map's constraints, then each embedding's consistency

@@ -6,7 +6,7 @@
 #include "core/conjugate_words.hpp"
 #include "core/input_error.hpp"
 #include "generators/random_maps.hpp"
-#include "core/map_io.hpp"
+#include "io/map_io.hpp"
 #include "proofs/word_congruence.hpp"
 
 #include <random>

@@ -86,22 +86,4 @@ std::string cell(const RuleVerdict& v, RuleCondition kind) {
   return skipped ? "skipped" : "ok";
 }
 
-bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::vector<EmbeddingCheck>& embedding) {
-  std::vector<std::string> got;
-  for (const auto& c : v.conditions)
-    if (!c.holds) got.push_back(c.name());
-  for (const auto& name : failing_names(embedding)) got.push_back(name);
-  if (!entry.expected_failures) return got.empty();
-  for (const auto& name : *entry.expected_failures)
-    if (!v.find(name) && std::none_of(embedding.begin(), embedding.end(), [&](const EmbeddingCheck& e) { return e.name == name; })) {
-      const auto& at = entry.verdict_location;
-      throw InputError(at.file, at.line, at.column,
-                       fmt::format("rule '{}': verdict names '{}', which is not a condition of {}", entry.rule.name(), name, entry.rule.model().name));
-    }
-  auto want = *entry.expected_failures;
-  std::sort(want.begin(), want.end());
-  std::sort(got.begin(), got.end());
-  return want == got;
-}
-
 }  // namespace dartcheck::cli

@@ -6,10 +6,8 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/embedding_checks.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "checkers/violation.hpp"
-#include "core/catalog.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::cli {
@@ -29,11 +27,5 @@ std::string json_strings(const std::vector<std::string>& v);
 /// The conditions of one kind, as a table cell: "ok", "fails 1,2",
 /// "skipped" or "-" (the model has none of that kind).
 std::string cell(const RuleVerdict& v, RuleCondition kind);
-
-/// Whether the static verdict's failing conditions, with the failing
-/// embedding checks (cli/embedding_checks), are exactly those the catalog records (none,
-/// when it records none). Throws InputError at the verdict when it names a
-/// condition the rule does not have.
-bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::vector<EmbeddingCheck>& embedding = {});
 
 }  // namespace dartcheck::cli

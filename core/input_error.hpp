@@ -5,10 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-namespace YAML {
-class Node;
-}
-
 namespace dartcheck {
 
 class InputError : public std::runtime_error {
@@ -24,10 +20,12 @@ class InputError : public std::runtime_error {
   int line_, column_;
 };
 
-/// Throws an InputError at the position of a YAML node.
-[[noreturn]] void fail_at(const std::string& file, const YAML::Node& node, const std::string& message);
-
-/// Loads a YAML file, turning parser errors into InputError.
-YAML::Node load_yaml_file(const std::string& file);
+/// Where something was read: file, 1-based line and column (0 = unknown).
+struct SourceLocation {
+  std::string file;
+  int line = 0, column = 0;
+  /// "file:line:column"
+  std::string str() const;
+};
 
 }  // namespace dartcheck

@@ -1,9 +1,9 @@
 // Polygon meshes (OFF/OBJ) as maps: faces sewn along shared edges.
 #pragma once
 
-#include "core/embedded_map.hpp"
+#include "rewriting/embedded_map.hpp"
 #include "core/map.hpp"
-#include "core/mesh_io.hpp"
+#include "io/mesh_io.hpp"
 
 namespace dartcheck {
 

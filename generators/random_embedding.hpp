@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "core/embedded_map.hpp"
+#include "rewriting/embedded_map.hpp"
 
 namespace dartcheck {
 

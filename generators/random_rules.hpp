@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/rule.hpp"
+#include "rewriting/rule.hpp"
 
 namespace dartcheck {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "checkers/rule_conditions.hpp"
-#include "core/rule.hpp"
+#include "rewriting/rule.hpp"
 
 namespace dartcheck::proofs {
 

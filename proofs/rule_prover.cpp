@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "checkers/graph_constraints.hpp"
-#include "core/graph_derivation.hpp"
-#include "core/scheme_instantiation.hpp"
+#include "rewriting/graph_derivation.hpp"
+#include "rewriting/scheme_instantiation.hpp"
 #include "proofs/scheme_encoding.hpp"
 
 namespace dartcheck::proofs {
@@ -175,7 +175,7 @@ void replay(const Rule& rule, const HostClass& cls, const HConstraint& c, ClassA
 
 // A scheme's replay: the pattern graph of dart 0 in the solver's map, the
 // instantiated rule ι(S, P_v) built as a DPO rule, and derive() on it.
-void replay_scheme(const CatalogRule& entry, const HostClass& cls, const HConstraint& c, ClassAnswer& a) {
+void replay_scheme(const Operation& entry, const HostClass& cls, const HConstraint& c, ClassAnswer& a) {
   const Model& model = entry.rule.model();
   const Map host = host_map(model, *a.host);
   a.host_graph = to_graph(host);
@@ -219,7 +219,7 @@ std::string scheme_never_applies(const Rule& core) {
 
 class ClassRun {
  public:
-  ClassRun(z3::context& ctx, const CatalogRule& entry, HostClass cls, const ProveOptions& o)
+  ClassRun(z3::context& ctx, const Operation& entry, HostClass cls, const ProveOptions& o)
       : ctx_(ctx), entry_(entry), rule_(entry.rule), cls_(std::move(cls)), o_(o) {
     const auto start = Clock::now();
     setup(rule_, o);
@@ -300,7 +300,7 @@ class ClassRun {
   }
 
   z3::context& ctx_;
-  const CatalogRule& entry_;
+  const Operation& entry_;
   const Rule& rule_;
   HostClass cls_;
   const ProveOptions& o_;
@@ -420,7 +420,7 @@ void judge_scheme(ConstraintProof& p, const RuleVerdict& v) {
 
 }  // namespace
 
-RuleProof prove_rule(const CatalogRule& entry, const ProveOptions& o) {
+RuleProof prove_rule(const Operation& entry, const ProveOptions& o) {
   const auto start = Clock::now();
   const Rule& rule = entry.rule;
   RuleProof p;

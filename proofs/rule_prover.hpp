@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/catalog.hpp"
+#include "rewriting/operation.hpp"
 #include "core/graph.hpp"
 #include "proofs/dpo_encoding.hpp"
 
@@ -85,7 +85,7 @@ struct RuleProof {
   std::size_t count(Agreement a) const;
 };
 
-RuleProof prove_rule(const CatalogRule& entry, const ProveOptions& options);
+RuleProof prove_rule(const Operation& entry, const ProveOptions& options);
 
 /// The host of a solver answer as a D-graph of the class: the encoded links
 /// plus, on the other dimensions, L's arcs (Theorem 1) or L's arcs

@@ -22,7 +22,7 @@
 // join touched ones), C's ijij-path at every present dart.
 #pragma once
 
-#include "core/rule.hpp"
+#include "rewriting/rule.hpp"
 #include "proofs/host_encoding.hpp"
 
 namespace dartcheck::proofs {

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "core/graph_derivation.hpp"
+#include "rewriting/graph_derivation.hpp"
 #include "reports/dot_text.hpp"
 #include "reports/graph_dot.hpp"
 #include "reports/rule_dot.hpp"

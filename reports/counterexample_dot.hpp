@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "checkers/rule_conditions.hpp"
-#include "core/jerboa_scheme.hpp"
+#include "rewriting/jerboa_scheme.hpp"
 #include "core/map.hpp"
-#include "core/rule.hpp"
+#include "rewriting/rule.hpp"
 
 namespace dartcheck::reports {
 

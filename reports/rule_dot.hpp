@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "checkers/rule_conditions.hpp"
-#include "core/jerboa_scheme.hpp"
-#include "core/rule.hpp"
-#include "core/rule_terms.hpp"
+#include "rewriting/jerboa_scheme.hpp"
+#include "rewriting/rule.hpp"
+#include "rewriting/rule_terms.hpp"
 
 namespace dartcheck::reports {
 

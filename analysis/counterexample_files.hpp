@@ -1,0 +1,26 @@
+// The files a counterexample leaves behind, shared by `dartcheck fuzz` and
+// `dartcheck prove`: DIR/STEM.host.yaml (the host map), STEM.result.yaml
+// (H, when it has a dense form) and STEM.counterexample.yaml (rule, match,
+// broken constraints, violations and the `dartcheck apply` command that
+// replays it).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/fuzz.hpp"
+
+namespace dartcheck::analysis {
+
+/// Rule names may hold '/' (variants): file names use '.' instead.
+std::string file_stem(const std::string& name);
+
+/// Writes the three files; `fields` are extra (key, value) lines of the
+/// counterexample file (seed, class, constraint...). Returns the replay
+/// command.
+std::string write_counterexample(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule,
+                                 const std::vector<std::pair<std::string, std::string>>& fields,
+                                 const std::vector<std::string>& static_failures, const Counterexample& cx);
+
+}  // namespace dartcheck::analysis

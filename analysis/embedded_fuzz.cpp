@@ -1,0 +1,167 @@
+#include "analysis/embedded_fuzz.hpp"
+
+#include <random>
+
+#include <fmt/format.h>
+
+#include "checkers/embedding_conditions.hpp"
+#include "checkers/embedding_consistency.hpp"
+#include "checkers/map_validity.hpp"
+#include "rewriting/embedded_application.hpp"
+#include "core/orbit.hpp"
+#include "rewriting/term_eval.hpp"
+#include "generators/random_embedding.hpp"
+#include "generators/random_maps.hpp"
+
+namespace dartcheck::analysis {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The darts L's nodes match at `hooks` (first pattern copy for schemes),
+// or nothing when L does not match there.
+std::vector<std::vector<Dart>> match_darts(const Operation& entry, const Map& g, std::span<const Dart> hooks) {
+  if (entry.words.scheme) {
+    auto m = match_scheme(entry.rule, entry.words, g, hooks);
+    return m.ok() ? m.value->node : std::vector<std::vector<Dart>>{};
+  }
+  auto m = match_from_hooks(entry.rule, g, hooks);
+  std::vector<std::vector<Dart>> r;
+  if (m.ok())
+    for (Dart d : m.value->node) r.push_back({d});
+  return r;
+}
+
+// Gives the host orbits of L's matched darts the values of L's terms
+// (closed terms always, others when `all`), so the labeled match holds.
+void plant(const Operation& entry, EmbeddedMap& g, std::span<const Dart> hooks, bool all) {
+  const auto darts = match_darts(entry, g.map, hooks);
+  if (darts.empty()) return;
+  const TopoGraph& L = entry.rule.left();
+  for (const NodeTerm& t : entry.terms->left) {
+    if (!all && !t.term.variables().empty()) continue;
+    const NodeId x = *L.find(t.node);
+    std::vector<Dart> column;
+    for (const auto& d : darts) column.push_back(d[0]);
+    try {
+      TermEvaluator ev(g);
+      Value v = ev.value(t.term, L.names(), column);
+      for (std::size_t k = 0; k < g.embeddings.size(); ++k)
+        if (g.embeddings[k].signature.name == t.embedding) g.label_orbit(k, darts[x][0], v);
+    } catch (const EvaluationError&) {
+      return;  // the attempt will be refused with the reason
+    }
+  }
+}
+
+// Tags every dart of the pi-orbit of d in H with its value (or "none"),
+// for the counterexample picture.
+void mark_orbit(const EmbeddedMap& h, const Embedding& e, Dart d, std::vector<std::string>& tags) {
+  tags.resize(h.map.size());
+  OrbitWalker walker(h.map);
+  for (Dart x : walker.orbit(d, dims_generators(e.signature.orbit))) {
+    const Value* v = e.value(x);
+    const std::string tag = v ? fmt::format("{} {}", e.signature.name, v->str()) : fmt::format("{}: none", e.signature.name);
+    tags[x] = tags[x].empty() ? tag : fmt::format("{}\n{}", tags[x], tag);
+  }
+}
+
+}  // namespace
+
+FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& seeds, const FuzzOptions& o) {
+  FuzzReport out;
+  out.rule = entry.rule.name();
+  const RuleTerms& terms = *entry.terms;
+  const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);
+  out.static_failures = static_failures(verdict);
+  for (const auto& name : failing_names(check_term_conditions(entry.rule, entry.words, terms))) out.static_failures.push_back(name);
+  const bool static_holds = out.static_failures.empty();
+  const Model& model = entry.rule.model();
+  const auto start = Clock::now();
+  std::mt19937 rng(static_cast<std::mt19937::result_type>(rule_seed(o.seed, out.rule)));
+
+  // Hosts: the given maps of the model, then random maps growing to
+  // max_darts (in rounds, so small hosts come first).
+  std::vector<Map> given;
+  for (const Map& m : seeds)
+    if (m.model() == model) given.push_back(m);
+  std::size_t next_given = 0, faces = 1;
+  auto next_host = [&]() -> std::optional<Map> {
+    if (next_given < given.size()) return given[next_given++];
+    if (!has_random_generator(model)) return std::nullopt;
+    for (int tries = 0; tries < 8; ++tries) {
+      Map m = build_random_map(model, draw_recipe(rng, static_cast<std::uint32_t>(faces), model.dimension()));
+      faces = faces % 12 + 1;
+      if (m.size() <= o.max_darts && m.size() > 0) return m;
+    }
+    return std::nullopt;
+  };
+
+  std::size_t attempts = 0;
+  while (out.applications < o.runs && attempts < o.runs * 20) {
+    if (o.deadline && Clock::now() > *o.deadline) {
+      out.out_of_time = true;
+      break;
+    }
+    auto host = next_host();
+    if (!host) break;
+    ++out.hosts;
+    out.largest_host = std::max(out.largest_host, host->size());
+    const EmbeddedMap g = embed_randomly(std::move(*host), terms.embeddings, rng);
+    const std::size_t tries = std::min<std::size_t>(2 * g.map.size(), 24);
+    std::uniform_int_distribution<Dart> pick(0, static_cast<Dart>(g.map.size() - 1));
+    for (std::size_t t = 0; t < tries && out.applications < o.runs; ++t, ++attempts) {
+      std::vector<Dart> hooks;
+      for (std::size_t k = 0; k < entry.rule.hooks().size(); ++k) hooks.push_back(pick(rng));
+      EmbeddedMap h = g;
+      plant(entry, h, hooks, t % 2 == 0);
+      const EmbeddedMap planted = h;
+      auto d = apply_embedded(entry.rule, entry.words, terms, h, hooks, false);
+      if (!d.ok()) {
+        ++out.refusals[std::string(refusal_name(d.refusal))];
+        continue;
+      }
+      ++out.applications;
+      Counterexample cx{planted.map, hooks, {}, h.map, {}, {}, {}, false, {}, {}, {}};
+      cx.violations = check_map(h.map).violations;
+      for (const auto& c : d.value->conflicts) cx.embedding_failures.push_back(c);
+      for (const Embedding& e : h.embeddings) {
+        const auto r = check_embedding(h.map, e, true);
+        for (const auto& c : r.conflicts) {
+          cx.embedding_failures.push_back(c.describe(e.signature.name, e.signature.orbit));
+          mark_orbit(h, e, c.dart, cx.orbit_values);
+        }
+        if (!r.consistent()) cx.broken_embeddings.push_back(e.signature.name);
+      }
+      if (cx.violations.empty() && cx.embedding_failures.empty()) continue;
+      cx.origin = fmt::format("random {}-dart {} with random values (host {} of the run)", planted.map.size(), model.name, out.hosts);
+      out.counterexample = std::move(cx);
+      break;
+    }
+    if (out.counterexample) break;
+  }
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (out.counterexample) {
+    out.verdict = static_holds ? FuzzClass::soundness_bug : FuzzClass::confirmed;
+    return out;
+  }
+  std::vector<std::string> refused;
+  for (const auto& [why, count] : out.refusals) refused.push_back(fmt::format("{} {}", count, why));
+  const std::string refusals = refused.empty() ? "" : fmt::format(" (refused: {})", fmt::join(refused, ", "));
+  if (static_holds) {
+    out.verdict = FuzzClass::consistent;
+    if (out.applications == 0) out.reason = fmt::format("never applied{}", refusals);
+    return out;
+  }
+  out.verdict = FuzzClass::unconfirmed;
+  out.reason = out.applications == 0
+                   ? fmt::format("never applied{}", refusals)
+                   : fmt::format("no failure in {} applications on {} random embedded maps of up to {} darts: the static conditions are sufficient, "
+                                 "not necessary{}",
+                                 out.applications, out.hosts, out.largest_host, refusals);
+  if (out.out_of_time) out.reason += " (stopped by --time)";
+  return out;
+}
+
+}  // namespace dartcheck::analysis

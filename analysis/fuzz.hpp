@@ -1,0 +1,126 @@
+// Differential testing of one rule or rule scheme: apply it at many matches
+// on valid maps of its model, check every result dynamically, and set the
+// outcome against the static verdict (002 Theorems 1-6).
+//
+// Hosts come in three phases, smallest first, so the first failure found
+// is a small one:
+//  1. every map of the model on n darts, n growing, that contains L at the
+//     identity (DPO rules: darts 0..|L|-1 are L's nodes) or, for schemes,
+//     every map on n darts with every dart as hook; a failure found here
+//     is minimal when every smaller n was enumerated completely;
+//  2. the catalog's maps of the model and the maps given by the user;
+//  3. random valid maps from recipes (1-3-G-maps, 2-3-O-maps), whose
+//     recipe is shrunk greedily on failure while the failure persists.
+// Everything is deterministic for a seed; only --time can cut a phase
+// short, and the report says so.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "checkers/rule_conditions.hpp"
+#include "checkers/violation.hpp"
+#include "rewriting/operation.hpp"
+#include "rewriting/match.hpp"
+
+namespace dartcheck::analysis {
+
+/// How the static and dynamic verdicts combine.
+enum class FuzzClass {
+  consistent,     // static holds, no failure found
+  confirmed,      // static fails, failure found
+  unconfirmed,    // static fails, no failure found within the budget
+  soundness_bug,  // static holds, failure found
+};
+std::string_view fuzz_class_name(FuzzClass c);
+
+/// One failing application.
+struct Counterexample {
+  Map host;
+  std::vector<Dart> hooks;
+  std::vector<std::pair<std::string, Dart>> match;  // L node -> dart (DPO rules)
+  std::optional<Map> result;                        // H; empty when H has no dense form
+  std::vector<Violation> violations;                // what H breaks
+  std::string unrepresentable;                      // why H has no dense form, if so
+  std::string origin;                               // which phase found it, and how it was shrunk
+  bool minimal = false;                             // every smaller host of the exhaustive class was tried
+  std::vector<std::string> broken() const;          // "I(1)", "C(0,2)", ... sorted, unique
+  /// Embedded rules: H's orbits with two values or unlabeled darts, and
+  /// the extended rule's conflicts (003 Def. 6, 13), as sentences, and
+  /// the embeddings they concern ("embedding(pos)").
+  std::vector<std::string> embedding_failures;
+  std::vector<std::string> broken_embeddings;
+  /// Per dart of H (empty for topological counterexamples): the values of
+  /// the darts of every orbit with two values or an unlabeled dart
+  /// ("pos (1, 1)", "pos: none"), empty for the other darts.
+  std::vector<std::string> orbit_values;
+};
+
+struct FuzzReport {
+  std::string rule;
+  std::vector<std::string> static_failures;
+  FuzzClass verdict = FuzzClass::consistent;
+  std::string reason;  // why no failure was found (unconfirmed, or consistent but never applied)
+  std::size_t applications = 0;  // derivations that took place and were checked
+  std::size_t hosts = 0;         // host maps tried
+  std::size_t largest_host = 0;  // darts
+  std::size_t exhaustive_darts = 0;  // every host of up to this many darts was tried (0: none completely)
+  std::map<std::string, std::size_t> refusals;  // refusal name -> count (no-match, dangling, ...)
+  bool out_of_time = false;
+  double seconds = 0;
+  std::optional<Counterexample> counterexample;
+};
+
+struct FuzzProgress {
+  const std::string* rule;
+  std::size_t applications, hosts;
+  double seconds;
+};
+
+struct FuzzOptions {
+  std::uint64_t seed = 1;
+  std::size_t runs = 10'000;  // applications per rule; the search stops at this count
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+  std::size_t max_darts = 128;             // largest random host
+  std::size_t exhaustive_hosts = 20'000;   // phase 1 budget for the models with a random generator
+  /// The static verdict to set the dynamic one against; `check_rule` by
+  /// default. Tests plant weakened checkers here.
+  std::function<RuleVerdict(const Operation&)> static_check;
+  std::function<void(const FuzzProgress&)> progress;  // called about every 4096 attempts
+};
+
+/// Fuzzes one rule; `seeds` are the given maps (any model: those of
+/// another model are skipped).
+FuzzReport fuzz_rule(const Operation& rule, const std::vector<Map>& seeds, const FuzzOptions& options);
+
+/// Fuzzes each rule in turn. With `seconds`, the rules share that budget:
+/// each gets an equal part of what is left (options.deadline is set per
+/// rule). `progress` prints a progress line on stderr.
+std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, const std::vector<Map>& seeds, FuzzOptions options,
+                                   std::optional<double> seconds, bool progress);
+
+/// The outcome in one line: "consistent (checked ...)", "confirmed: at
+/// hook 3 of a 6-dart map, H breaks C(0,2) (minimal)", ...
+std::string outcome_text(const FuzzReport& r);
+
+/// One application on a copy of g (into `scratch`), checked with
+/// check_map: the counterexample if H is invalid or has no dense form,
+/// nullopt if H is valid or the rule does not apply (`refusal` says why;
+/// not_representable comes with a counterexample).
+std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
+                                              Refusal& refusal);
+
+/// A stable per-rule random stream: the same rule gets the same hosts
+/// whether it is fuzzed alone (--rule) or with its whole catalog.
+std::uint64_t rule_seed(std::uint64_t seed, const std::string& name);
+
+/// The static failures the default checker finds ("I(0)", "C(0,2)", ...).
+std::vector<std::string> static_failures(const RuleVerdict& v);
+
+}  // namespace dartcheck::analysis

@@ -1,0 +1,24 @@
+// The maps a catalog, a file or a shape name: what the commands and the
+// fuzz engine run rules on.
+#pragma once
+
+#include <string>
+
+#include "io/catalog.hpp"
+#include "core/map.hpp"
+
+namespace dartcheck::analysis {
+
+/// Builds a catalog map: explicit, shape or mesh. Errors carry the map's
+/// position in the catalog.
+Map build_source(const MapSource& source);
+
+/// A map named by TARGET: a name in `catalog` (if given), a .yaml/.yml map
+/// file, an .off/.obj mesh, or a shape spec such as grid:3x4. `model` is
+/// used for meshes and shapes. Throws InputError.
+Map resolve_map(const std::string& target, const Model& model, const Catalog* catalog);
+
+/// A short human label for a target ("cube (2-gmap)").
+std::string describe_target(const std::string& target, const Map& map);
+
+}  // namespace dartcheck::analysis

@@ -1,0 +1,17 @@
+#include "cli/embedding_picture.hpp"
+
+namespace dartcheck::cli {
+
+EmbeddingPicture embedding_picture(const Operation& entry, const std::vector<analysis::EmbeddingCheck>& checks) {
+  EmbeddingPicture out;
+  out.terms.terms = entry.terms ? &*entry.terms : nullptr;
+  for (const auto& c : checks) {
+    if (c.holds) continue;
+    out.witnesses.insert(out.witnesses.end(), c.witnesses.begin(), c.witnesses.end());
+    const std::size_t open = c.name.find('('), close = c.name.rfind(')');
+    if (open != std::string::npos && close > open) out.terms.failing.push_back(c.name.substr(open + 1, close - open - 1));
+  }
+  return out;
+}
+
+}  // namespace dartcheck::cli

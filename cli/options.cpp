@@ -1,0 +1,33 @@
+#include "cli/options.hpp"
+
+#include <fmt/format.h>
+
+#include "core/input_error.hpp"
+
+namespace dartcheck::cli {
+
+Catalog read_command_catalog(const std::string& file, const std::string& rule, const std::string& format) {
+  if (format != "text" && format != "json")
+    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", format));
+  Catalog catalog = read_catalog(file);
+  if (!rule.empty() && !catalog.find_rule(rule))
+    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", rule, file));
+  return catalog;
+}
+
+double parse_duration(const std::string& text, const std::string& option) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  const std::string unit = text.substr(used);
+  double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : -1;
+  if (used == 0 || scale < 0 || !(v > 0))
+    throw InputError("<command line>", 0, 0, fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, text));
+  return v * scale;
+}
+
+}  // namespace dartcheck::cli

@@ -1,0 +1,109 @@
+#include "io/catalog_writer.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+namespace dartcheck {
+namespace {
+
+// The side's arcs in catalog notation: a non-oriented pair (or a loop) as
+// "a -d- b", anything else as "a -d-> b". A Jerboa side lists its explicit
+// arcs only: the orbit types on its nodes stand for the implicit loops.
+std::vector<std::string> arcs_of(const TopoGraph& g, const std::vector<ConjWord>& words, bool jerboa, const Model& model) {
+  std::vector<std::string> out;
+  std::vector<bool> done(g.arc_count(), false);
+  for (ArcId e = 0; e < g.arc_count(); ++e) {
+    if (done[e] || (jerboa && !arc_word(words, e).empty())) continue;
+    done[e] = true;
+    const auto& a = g.arc(e);
+    bool pair = a.source == a.target && !model.is_oriented(a.label);
+    for (ArcId f = e + 1; f < g.arc_count() && !pair && !model.is_oriented(a.label); ++f) {
+      const auto& b = g.arc(f);
+      if (!done[f] && b.label == a.label && b.source == a.target && b.target == a.source && arc_word(words, f) == arc_word(words, e))
+        done[f] = pair = true;
+    }
+    out.push_back(fmt::format("{} -{}{} {}", g.name(a.source), a.label, pair ? "-" : "->", g.name(a.target)));
+  }
+  return out;
+}
+
+void side(YAML::Emitter& y, const TopoGraph& g, const std::vector<ConjWord>& words, const std::vector<OrbitType>* labels, const Model& model) {
+  y << YAML::BeginMap << YAML::Key << "nodes";
+  if (labels) {
+    y << YAML::Flow << YAML::BeginMap;
+    for (NodeId v = 0; v < g.node_count(); ++v) y << YAML::Key << g.name(v) << YAML::Value << YAML::DoubleQuoted << orbit_type_str((*labels)[v]);
+    y << YAML::EndMap;
+  } else {
+    y << YAML::Flow << YAML::BeginSeq;
+    for (NodeId v = 0; v < g.node_count(); ++v) y << g.name(v);
+    y << YAML::EndSeq;
+  }
+  const auto arcs = arcs_of(g, words, labels != nullptr, model);
+  if (!arcs.empty()) {
+    y << YAML::Key << "arcs" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const auto& a : arcs) y << YAML::DoubleQuoted << a;
+    y << YAML::EndSeq;
+  }
+  y << YAML::EndMap;
+}
+
+}  // namespace
+
+std::string catalog_yaml(const Catalog& c) {
+  YAML::Emitter y;
+  y << YAML::BeginMap;
+  if (!c.modeler.empty()) y << YAML::Key << "modeler" << YAML::Value << c.modeler;
+  y << YAML::Key << "description" << YAML::Value << fmt::format("converted by dartcheck from {}", c.file);
+  if (!c.embeddings.empty()) {
+    y << YAML::Key << "embeddings" << YAML::Value << YAML::BeginSeq;
+    for (const auto& e : c.embeddings)
+      y << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << e.name << YAML::Key << "type" << YAML::Value << e.type << YAML::Key
+        << "orbit" << YAML::Value << YAML::DoubleQuoted << fmt::format("<{}>", fmt::join(e.orbit, ",")) << YAML::EndMap;
+    y << YAML::EndSeq;
+  }
+  if (!c.skipped.empty()) {
+    y << YAML::Key << "skipped" << YAML::Value << YAML::BeginSeq;
+    for (const auto& s : c.skipped)
+      y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "why" << YAML::Value << s.why << YAML::EndMap;
+    y << YAML::EndSeq;
+  }
+  y << YAML::Key << "rules" << YAML::Value << YAML::BeginSeq;
+  for (const auto& r : c.rules) {
+    const Rule& rule = r.rule;
+    y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << rule.name() << YAML::Key << "model" << YAML::Value << rule.model().name;
+    if (!r.note.empty()) y << YAML::Key << "note" << YAML::Value << r.note;
+    if (!rule.hooks().empty()) {
+      y << YAML::Key << "hooks" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (NodeId h : rule.hooks()) y << rule.left().name(h);
+      y << YAML::EndSeq;
+    }
+    y << YAML::Key << "left" << YAML::Value;
+    side(y, rule.left(), r.words.left, r.jerboa ? &r.jerboa->left : nullptr, rule.model());
+    y << YAML::Key << "right" << YAML::Value;
+    side(y, rule.right(), r.words.right, r.jerboa ? &r.jerboa->right : nullptr, rule.model());
+    if (!r.expressions.empty()) {
+      y << YAML::Key << "expressions" << YAML::Value << YAML::BeginMap;
+      // Grouped by node, in the order the nodes first carry one.
+      std::vector<std::string> nodes;
+      for (const auto& x : r.expressions)
+        if (std::find(nodes.begin(), nodes.end(), x.node) == nodes.end()) nodes.push_back(x.node);
+      for (const auto& n : nodes) {
+        y << YAML::Key << n << YAML::Value << YAML::BeginMap;
+        for (const auto& x : r.expressions)
+          if (x.node == n) y << YAML::Key << x.embedding << YAML::Value << YAML::DoubleQuoted << x.code;
+        y << YAML::EndMap;
+      }
+      y << YAML::EndMap;
+    }
+    if (!r.caveats.empty()) {
+      y << YAML::Key << "caveats" << YAML::Value << YAML::BeginSeq;
+      for (const auto& x : r.caveats) y << x;
+      y << YAML::EndSeq;
+    }
+    y << YAML::EndMap;
+  }
+  y << YAML::EndSeq << YAML::EndMap;
+  return std::string(y.c_str()) + "\n";
+}
+
+}  // namespace dartcheck

@@ -1,0 +1,118 @@
+#include "io/yaml_util.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <fstream>
+
+namespace dartcheck {
+
+void fail_at(const std::string& file, const YAML::Node& node, const std::string& message) {
+  const YAML::Mark m = node.Mark();
+  throw InputError(file, m.line + 1, m.column + 1, message);
+}
+
+YAML::Node load_yaml_file(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file, 0, 0, "cannot open file");
+  try {
+    return YAML::Load(in);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file, e.mark.line + 1, e.mark.column + 1, "malformed YAML: " + e.msg);
+  }
+}
+
+}  // namespace dartcheck
+
+namespace dartcheck::yaml {
+
+YAML::Node require(const std::string& file, const YAML::Node& map, const char* key) {
+  YAML::Node n = map[key];
+  if (!n) fail_at(file, map, fmt::format("missing key '{}'", key));
+  return n;
+}
+
+void expect_map(const std::string& file, const YAML::Node& n, std::string_view what) {
+  if (!n.IsMap()) fail_at(file, n, fmt::format("{}: expected a mapping", what));
+}
+
+void expect_sequence(const std::string& file, const YAML::Node& n, std::string_view what) {
+  if (!n.IsSequence()) fail_at(file, n, fmt::format("{}: expected a list", what));
+}
+
+void allow_keys(const std::string& file, const YAML::Node& map, std::initializer_list<std::string_view> allowed) {
+  for (const auto& kv : map) {
+    const auto key = kv.first.Scalar();
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      fail_at(file, kv.first, fmt::format("unknown key '{}' (expected one of: {})", key, fmt::join(allowed, ", ")));
+  }
+}
+
+long long as_int(const std::string& file, const YAML::Node& n, std::string_view what, long long lo, long long hi) {
+  long long v = 0;
+  if (!n.IsScalar() || !YAML::convert<long long>::decode(n, v))
+    fail_at(file, n, fmt::format("{}: expected an integer, got '{}'", what, n.IsScalar() ? n.Scalar() : std::string("a collection")));
+  if (v < lo || v > hi) fail_at(file, n, fmt::format("{}: {} is out of range [{}, {}]", what, v, lo, hi));
+  return v;
+}
+
+std::string as_string(const std::string& file, const YAML::Node& n, std::string_view what) {
+  if (!n.IsScalar()) fail_at(file, n, fmt::format("{}: expected a string", what));
+  return n.Scalar();
+}
+
+std::vector<Dim> read_dims(const std::string& file, const YAML::Node& n, const char* what) {
+  expect_sequence(file, n, what);
+  std::vector<Dim> dims;
+  for (const auto& d : n) dims.push_back(static_cast<Dim>(as_int(file, d, what, 0, max_dimension)));
+  return dims;
+}
+
+Model custom_model(const std::string& file, const std::string& name, const YAML::Node& n, bool named) {
+  expect_map(file, n, "model");
+  if (named)
+    allow_keys(file, n, {"name", "dims", "non_oriented", "exchangeable", "partial", "loop_free"});
+  else
+    allow_keys(file, n, {"dims", "non_oriented", "exchangeable", "partial", "loop_free"});
+  Model m;
+  m.name = name;
+  m.dims = read_dims(file, require(file, n, "dims"), "dims");
+  std::sort(m.dims.begin(), m.dims.end());
+  if (m.dims.empty() || std::adjacent_find(m.dims.begin(), m.dims.end()) != m.dims.end())
+    fail_at(file, n["dims"], "dims: expected a non-empty list of distinct dimensions");
+  auto subset = [&](const char* key) {
+    DimSet s = 0;
+    if (auto v = n[key]) {
+      const auto dims = read_dims(file, v, key);
+      for (std::size_t k = 0; k < dims.size(); ++k) {
+        if (!m.contains(dims[k])) fail_at(file, v[k], fmt::format("{}: {} is not in dims", key, dims[k]));
+        s |= dim_bit(dims[k]);
+      }
+    }
+    return s;
+  };
+  m.non_oriented = subset("non_oriented");
+  m.partial = subset("partial");
+  if (auto e = n["exchangeable"]) {
+    expect_sequence(file, e, "exchangeable");
+    for (const auto& p : e) {
+      const auto pair = read_dims(file, p, "exchangeable pair");
+      if (pair.size() != 2 || !m.contains(pair[0]) || !m.contains(pair[1])) fail_at(file, p, "exchangeable: expected a pair [i, j] of dims");
+      m.exchangeable.emplace_back(pair[0], pair[1]);
+    }
+  }
+  if (auto l = n["loop_free"]) {
+    if (!l.IsScalar() || (l.Scalar() != "true" && l.Scalar() != "false")) fail_at(file, l, "loop_free: expected true or false");
+    m.loop_free = l.Scalar() == "true";
+  }
+  return m;
+}
+
+Model as_model(const std::string& file, const YAML::Node& n) {
+  if (n.IsMap()) return custom_model(file, as_string(file, require(file, n, "name"), "model name"), n, true);
+  const std::string name = as_string(file, n, "model");
+  auto m = Model::by_name(name);
+  if (!m) fail_at(file, n, fmt::format("unknown model '{}' (expected {})", name, Model::known_names()));
+  return *m;
+}
+
+}  // namespace dartcheck::yaml

@@ -1,0 +1,335 @@
+#include "rewriting/embedded_application.hpp"
+
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "core/dart_table.hpp"
+#include "core/orbit.hpp"
+#include "rewriting/term_eval.hpp"
+
+namespace dartcheck {
+
+namespace {
+
+template <class T>
+Outcome<T> refuse(Refusal r, std::string why) {
+  return {std::nullopt, r, std::move(why)};
+}
+
+// The instantiated L: node (p, x) matched to dart[x][p]. A DPO rule is a
+// scheme with one pattern position.
+struct Instances {
+  std::size_t np = 1;
+  std::vector<std::vector<Dart>> dart;
+  const PatternGraphs* pattern = nullptr;  // schemes only
+
+  std::vector<Dart> column(std::size_t p) const {
+    std::vector<Dart> c;
+    for (const auto& d : dart) c.push_back(d[p]);
+    return c;
+  }
+  std::string name(const TopoGraph& side, NodeId x, std::size_t p) const {
+    return pattern ? fmt::format("{}@{}", side.name(x), pattern->darts[0][p]) : side.name(x);
+  }
+  int generator(const ConjWord& w) const { return pattern ? pattern->generator(w) : -1; }
+  std::uint32_t step(std::size_t p, int generator) const { return pattern ? pattern->step(p, generator) : static_cast<std::uint32_t>(p); }
+};
+
+struct UnionFind {
+  std::vector<std::size_t> up;
+  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
+  std::size_t find(std::size_t x) {
+    while (up[x] != x) x = up[x] = up[up[x]];
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b) { up[find(a)] = find(b); }
+};
+
+bool in_orbit(const std::vector<Dim>& orbit, Dim d) { return std::find(orbit.begin(), orbit.end(), d) != orbit.end(); }
+
+// `x.pi` on node x for its own pi label: its value is the matched dart's.
+bool own_value(const NodeTerm& t) {
+  return t.term.kind == Term::Kind::access && t.term.name == t.embedding && t.term.args[0].kind == Term::Kind::variable && t.term.args[0].name == t.node;
+}
+
+// The pi-orbits of one side of the instantiated rule: instance x * np + p
+// joined to its neighbours through the side's arcs in <o>.
+UnionFind instantiated_orbits(const TopoGraph& side, const std::vector<ConjWord>& words, const Instances& in, const std::vector<Dim>& orbit) {
+  const std::size_t np = in.np;
+  UnionFind uf(side.node_count() * np);
+  for (ArcId a = 0; a < side.arc_count(); ++a) {
+    const auto& arc = side.arc(a);
+    if (!in_orbit(orbit, arc.label)) continue;
+    const int w = in.generator(arc_word(words, a));
+    for (std::size_t p = 0; p < np; ++p) uf.unite(arc.source * np + p, arc.target * np + in.step(p, w));
+  }
+  return uf;
+}
+
+}  // namespace
+
+struct EmbeddedRewriter::Context {
+  const Rule& rule;
+  const ArcWords& words;
+  const RuleTerms& terms;
+  EmbeddedMap& g;
+  Evaluation evaluation;
+  std::vector<NodeId> left_node, right_node;  // of terms.left[k], terms.right[k]
+  // keeps[k]: R term k repeats the L label of its preserved node (same
+  // embedding, same term), so its value is the matched dart's stored one.
+  std::vector<bool> keeps;
+  TermEvaluator ev;
+  OrbitWalker walker;
+  DartTable scratch, orbit_of, given;  // each left empty between applications
+
+  Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
+      : rule(r), words(w), terms(t), g(map), evaluation(e), ev(map), walker(map.map) {
+    for (const NodeTerm& x : t.left) left_node.push_back(*r.left().find(x.node));
+    for (const NodeTerm& x : t.right) {
+      right_node.push_back(*r.right().find(x.node));
+      const NodeId l = r.to_left(right_node.back());
+      const Term* before = l == no_node ? nullptr : t.find('L', r.left().name(l), x.embedding);
+      keeps.push_back(before && before->same(x.term));
+    }
+  }
+
+  Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
+  std::string overlap(const Instances& in, const EmbeddingSignature& e);
+  std::vector<std::size_t> orbit_classes(const Instances& in, const EmbeddingSignature& e) const;
+};
+
+// Lemma 3: instances of L in different pi-orbits of the instantiated L
+// must match darts in different pi-orbits of G.
+std::string EmbeddedRewriter::Context::overlap(const Instances& in, const EmbeddingSignature& e) {
+  const TopoGraph& L = rule.left();
+  const std::size_t np = in.np;
+  UnionFind uf = instantiated_orbits(L, words.left, in, e.orbit);
+  // orbit_of[d]: the pi-orbit of G of each matched dart, numbered as met;
+  // owner[o]: an instance of L in G orbit o.
+  const DartTable::ClearOnExit emptied{orbit_of};
+  const auto gens = dims_generators(e.orbit);
+  std::vector<std::size_t> owner;
+  for (NodeId x = 0; x < L.node_count(); ++x)
+    for (std::size_t p = 0; p < np; ++p) {
+      const Dart d = in.dart[x][p];
+      std::uint32_t o = orbit_of.get(d);
+      if (o == DartTable::none) {
+        o = static_cast<std::uint32_t>(owner.size());
+        for (Dart y : walker.orbit(d, gens)) orbit_of.set(y, o);
+        owner.push_back(x * np + p);
+        continue;
+      }
+      const std::size_t k = x * np + p, first = owner[o];
+      if (uf.find(first) != uf.find(k)) {
+        return fmt::format("nodes {} and {} are in different {}-orbits <{}> of L, but their darts {} and {} share one {}-orbit of the map (003 Lemma 3, "
+                           "non-overlap): the extended rule would give that orbit the labels of both",
+                           in.name(L, static_cast<NodeId>(first / np), first % np), in.name(L, x, p), e.name, fmt::join(e.orbit, ","),
+                           in.dart[first / np][first % np], d, e.name);
+      }
+    }
+  return {};
+}
+
+// The pi-orbits of the instantiated R, as union-find roots of instance
+// y * np + p: its arcs in <o> are links of H, so one class lies in one
+// pi-orbit of H.
+std::vector<std::size_t> EmbeddedRewriter::Context::orbit_classes(const Instances& in, const EmbeddingSignature& e) const {
+  UnionFind uf = instantiated_orbits(rule.right(), words.right, in, e.orbit);
+  std::vector<std::size_t> root(uf.up.size());
+  for (std::size_t k = 0; k < root.size(); ++k) root[k] = uf.find(k);
+  return root;
+}
+
+Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  // 1. The match (nothing is written yet).
+  Instances in;
+  std::optional<SchemeMatch> scheme_match;
+  if (words.scheme) {
+    auto m = match_scheme(rule, words, g.map, hook_darts, &scratch);
+    if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
+    scheme_match = std::move(*m.value);
+    in.np = scheme_match->pattern.darts[0].size();
+    in.dart = scheme_match->node;
+    in.pattern = &scheme_match->pattern;
+  } else {
+    auto m = match_from_hooks(rule, g.map, hook_darts);
+    if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
+    for (Dart d : m.value->node) in.dart.push_back({d});
+  }
+  const std::size_t np = in.np, nl = L.node_count();
+
+  // 2. Evaluation (Def. 10) on G, and the labeled match of L. binding[p]
+  //    holds the darts of L's nodes in pattern copy p.
+  ev.forget();
+  std::vector<Dart> flat(np * nl);
+  for (NodeId x = 0; x < nl; ++x)
+    for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.dart[x][p];
+  auto binding = [&](std::size_t p) { return std::span<const Dart>(flat.data() + p * nl, nl); };
+  const std::vector<std::string>& names = L.names();
+  try {
+    for (std::size_t k = 0; k < terms.left.size(); ++k) {
+      const NodeTerm& t = terms.left[k];
+      const NodeId x = left_node[k];
+      const Embedding* e = g.find(t.embedding);
+      const bool trivial = own_value(t);
+      for (std::size_t p = 0; p < np; ++p) {
+        const Value* have = e ? e->value(in.dart[x][p]) : nullptr;
+        if (trivial && have) continue;
+        const Value want = ev.value(t.term, names, binding(p));
+        if (!have || !(*have == want))
+          return refuse<EmbeddedDerivation>(Refusal::label_mismatch,
+                                            fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding, t.term.str(),
+                                                        want.str(), in.dart[x][p], have ? have->str() : "no value"));
+      }
+    }
+  } catch (const EvaluationError& e) {
+    return refuse<EmbeddedDerivation>(Refusal::no_value, fmt::format("a term of L has no value: {}", e.what()));
+  }
+  const bool extended = terms.instantiation == Instantiation::extended;
+  if (extended)
+    for (const EmbeddingSignature* e : terms.used())
+      if (auto why = overlap(in, *e); !why.empty()) return refuse<EmbeddedDerivation>(Refusal::overlap, std::move(why));
+
+  // Where the value of each labeled instance of R is: source[k][p] is a
+  // stored value of G (a label kept from L) or an evaluated one. One
+  // evaluation per class of the instantiated R when asked.
+  struct Source {
+    std::uint32_t index = Embedding::none;
+    bool stored = false;
+  };
+  std::vector<Value> evaluated;
+  std::vector<std::vector<Source>> source(terms.right.size(), std::vector<Source>(np));
+  try {
+    for (const EmbeddingSignature* sig : terms.used()) {
+      const Embedding* e = g.find(sig->name);
+      std::vector<std::size_t> cls;
+      if (extended && evaluation == Evaluation::one_per_orbit) cls = orbit_classes(in, *sig);
+      std::vector<Source> from(cls.size());  // class root -> its value
+      for (std::size_t k = 0; k < terms.right.size(); ++k) {
+        const NodeTerm& t = terms.right[k];
+        if (t.embedding != sig->name) continue;
+        const NodeId x = rule.to_left(right_node[k]);
+        for (std::size_t p = 0; p < np; ++p) {
+          Source* first = cls.empty() ? nullptr : &from[cls[right_node[k] * np + p]];
+          if (first && first->index != Embedding::none) {
+            source[k][p] = *first;
+            continue;
+          }
+          if (keeps[k]) {
+            source[k][p] = {e->slot[in.dart[x][p]], true};  // present: checked by the labeled match
+          } else {
+            source[k][p] = {static_cast<std::uint32_t>(evaluated.size()), false};
+            evaluated.push_back(ev.value(t.term, names, binding(p)));
+          }
+          if (first) *first = source[k][p];
+        }
+      }
+    }
+  } catch (const EvaluationError& e) {
+    return refuse<EmbeddedDerivation>(Refusal::no_value, fmt::format("a term of R has no value: {}", e.what()));
+  }
+
+  // 3. The topological rewrite.
+  EmbeddedDerivation out;
+  std::vector<std::vector<Dart>> comatch(R.node_count());
+  if (words.scheme) {
+    SchemeDerivation d = rewrite_scheme(rule, words, g.map, *scheme_match);
+    out.matched = d.matched_darts;
+    out.added = d.added_darts;
+    out.moved = std::move(d.moved);
+    comatch = std::move(d.comatch);
+  } else {
+    auto d = apply_rule(rule, g.map, hook_darts);
+    if (!d.ok()) return refuse<EmbeddedDerivation>(d.refusal, std::move(d.why));
+    out.matched = L.node_count();
+    for (NodeId y = 0; y < R.node_count(); ++y) {
+      comatch[y] = {d.value->comatch[y]};
+      out.added += rule.to_left(y) == no_node;
+    }
+    out.moved = std::move(d.value->moved);
+  }
+  g.follow(out.moved);
+  // Added darts may reuse deleted darts' slots: they start unlabeled.
+  for (NodeId y = 0; y < R.node_count(); ++y)
+    if (rule.to_left(y) == no_node)
+      for (Dart d : comatch[y])
+        for (Embedding& e : g.embeddings) e.set_index(d, Embedding::none);
+
+  // 4. Labels. A preserved node labeled in L and not in R loses its value
+  //    (unless a label of R reaches it); R's labels are written next.
+  for (std::size_t k = 0; k < terms.left.size(); ++k) {
+    const NodeTerm& t = terms.left[k];
+    const NodeId y = rule.to_right(left_node[k]);
+    if (y == no_node || terms.find('R', t.node, t.embedding)) continue;
+    Embedding* e = g.find(t.embedding);
+    const auto gens = dims_generators(e->signature.orbit);
+    for (Dart d : comatch[y]) {
+      if (!extended) {
+        e->set_index(d, Embedding::none);
+        continue;
+      }
+      for (Dart x : walker.orbit(d, gens)) e->set_index(x, Embedding::none);
+    }
+  }
+  for (const EmbeddingSignature* sig : terms.used()) {
+    Embedding* e = g.find(sig->name);
+    const auto gens = dims_generators(sig->orbit);
+    // given[d]: the writer (index into `writers`) of d's orbit in this
+    // application.
+    struct Writer {
+      std::uint32_t value;
+      std::size_t k, p;
+    };
+    std::vector<Writer> writers;
+    const DartTable::ClearOnExit emptied{given};
+    for (std::size_t k = 0; k < terms.right.size(); ++k) {
+      const NodeTerm& t = terms.right[k];
+      if (t.embedding != sig->name) continue;
+      const NodeId y = right_node[k];
+      for (std::size_t p = 0; p < np; ++p) {
+        const Dart d = comatch[y][p];
+        const Source from = source[k][p];
+        const Value& v = from.stored ? e->pool[from.index] : evaluated[from.index];
+        if (record) out.written.push_back({sig->name, in.name(R, y, p), d, v});
+        auto stored = [&] { return from.stored ? from.index : e->store(v); };
+        if (!extended) {
+          e->set_index(d, stored());
+          continue;
+        }
+        if (const std::uint32_t w = given.get(d); w != DartTable::none) {
+          const Writer& first = writers[w];
+          if ((from.stored && first.value == from.index) || e->pool[first.value] == v) continue;  // the orbit already has this value
+          out.conflicts.push_back(fmt::format("the {}-orbit of dart {} gets {} from {} and {} from {}: the extended rule breaks (A), so the propagation "
+                                              "of 003 Def. 12 does not exist",
+                                              sig->name, d, e->pool[first.value].str(), in.name(R, right_node[first.k], first.p), v.str(), in.name(R, y, p)));
+          e->set_index(d, stored());  // H shows both values
+          continue;
+        }
+        const std::uint32_t idx = stored();
+        const auto w = static_cast<std::uint32_t>(writers.size());
+        writers.push_back({idx, k, p});
+        for (Dart x : walker.orbit(d, gens)) {
+          e->set_index(x, idx);
+          given.set(x, w);
+        }
+      }
+    }
+  }
+  return {std::move(out), Refusal::none, {}};
+}
+
+EmbeddedRewriter::EmbeddedRewriter(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g, Evaluation evaluation)
+    : c_(std::make_unique<Context>(rule, words, terms, g, evaluation)) {}
+
+EmbeddedRewriter::~EmbeddedRewriter() = default;
+
+Outcome<EmbeddedDerivation> EmbeddedRewriter::apply(std::span<const Dart> hook_darts, bool record) { return c_->apply(hook_darts, record); }
+
+Outcome<EmbeddedDerivation> apply_embedded(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g,
+                                           std::span<const Dart> hook_darts, bool record) {
+  return EmbeddedRewriter(rule, words, terms, g).apply(hook_darts, record);
+}
+
+}  // namespace dartcheck

@@ -1,0 +1,89 @@
+// Application of an embedded rule or rule scheme to an embedded G-map
+// (003 Def. 10-13). The rule's topology is a DPO rule or a (W,D) /
+// Jerboa-style scheme (002 Sec. 6); its terms (core/rule_terms.hpp) are
+// evaluated on the map before the rewrite, with each node variable bound
+// to the dart its node matched (for a scheme, in the same pattern copy).
+//
+// Checks before any write: L's terms must equal the values of the matched
+// darts (the labeled match of the evaluated rule), every term must have a
+// value, and, for `extended` instantiation, the match must not merge two
+// pi-orbits of L (Lemma 3, non-overlap) for any embedding the rule labels.
+//
+// Writes after the topological rewrite:
+// - `direct`: each labeled instance of an R node gives its value to its
+//   own dart; a preserved node labeled in L but not in R loses its value
+//   (K is unlabeled there, 003 Def. 1), an unlabeled added node has none.
+// - `extended`: each labeled instance gives its value to its whole
+//   pi-orbit in H, which is the orbit of the extended rule R^{⊕m} (the
+//   o-completion of the match, Def. 11) propagated through the quotient
+//   (Def. 12). When two instances give one orbit two values, the extended
+//   rule breaks (A) and the propagation does not exist (Def. 13): the
+//   conflict is reported and H keeps both values, so the map itself shows
+//   the inconsistency.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rewriting/derivation.hpp"
+#include "rewriting/embedded_map.hpp"
+#include "rewriting/rule_terms.hpp"
+#include "rewriting/scheme_application.hpp"
+
+namespace dartcheck {
+
+struct WrittenValue {
+  std::string embedding, node;  // node: "y" for a DPO rule, "y@d" for pattern dart d of a scheme
+  Dart dart = no_dart;          // in H
+  Value value;
+};
+
+struct EmbeddedDerivation {
+  std::size_t matched = 0, added = 0;
+  std::vector<std::pair<Dart, Dart>> moved;  // renumbered darts of H
+  std::vector<WrittenValue> written;         // in R's node order (with `record`)
+  std::vector<std::string> conflicts;        // orbits given two values (Def. 13 undefined)
+};
+
+/// How the terms of R are evaluated under `extended` instantiation.
+enum class Evaluation : std::uint8_t {
+  /// Every instance of every labeled R node; instances of one orbit that
+  /// disagree are reported as conflicts. The dynamic check (fuzz) uses it.
+  every_instance,
+  /// One instance per orbit of the instantiated R (its arcs in <o> join
+  /// instances that share a pi-orbit of H); the others take its value.
+  /// Only for a rule whose (A) holds (checkers/embedding_conditions):
+  /// then the instances of one orbit have one value (003 Thm 2, 4), so
+  /// nothing is lost but the evaluations. A `direct` rule ignores it.
+  one_per_orbit,
+};
+
+/// Applies one embedded rule many times to one map, keeping its
+/// traversal marks, per-dart tables and evaluator between applications:
+/// a loop of small applications on a large map costs the darts each one
+/// touches, not the size of the map. The rule, words, terms and map must
+/// outlive it; the map may change between applications.
+class EmbeddedRewriter {
+ public:
+  EmbeddedRewriter(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g,
+                   Evaluation evaluation = Evaluation::every_instance);
+  ~EmbeddedRewriter();
+  EmbeddedRewriter(const EmbeddedRewriter&) = delete;
+  EmbeddedRewriter& operator=(const EmbeddedRewriter&) = delete;
+
+  /// Applies the rule at `hook_darts`. On refusal the map is unchanged.
+  /// With `record`, `written` lists every value the rule wrote.
+  Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record = true);
+
+ private:
+  struct Context;
+  std::unique_ptr<Context> c_;
+};
+
+/// One application with a fresh context (EmbeddedRewriter::apply).
+Outcome<EmbeddedDerivation> apply_embedded(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g,
+                                           std::span<const Dart> hook_darts, bool record = true);
+
+}  // namespace dartcheck

@@ -1,0 +1,98 @@
+#include "rewriting/rule.hpp"
+
+#include <fmt/format.h>
+#include <numeric>
+#include <stdexcept>
+
+namespace dartcheck {
+namespace {
+
+void check_side(const TopoGraph& g, const Model& model, const char* side) {
+  for (NodeId v = 0; v < g.node_count(); ++v)
+    for (NodeId w = v + 1; w < g.node_count(); ++w)
+      if (g.name(v) == g.name(w)) throw std::invalid_argument(fmt::format("{} declares node '{}' twice", side, g.name(v)));
+  for (const auto& a : g.arcs())
+    if (!model.contains(a.label))
+      throw std::invalid_argument(fmt::format("{} has an arc {} -{}-> {} whose label is not a dimension of {}", side, g.name(a.source), a.label,
+                                              g.name(a.target), model.name));
+}
+
+// Marks which arcs of `a` have a partner in `b` with the same endpoints (by
+// name), label and word, pairing occurrences one to one.
+std::vector<bool> kept_arcs(const TopoGraph& a, const TopoGraph& b, const std::vector<ConjWord>& wa, const std::vector<ConjWord>& wb) {
+  std::vector<bool> kept(a.arc_count(), false), used(b.arc_count(), false);
+  for (ArcId e = 0; e < a.arc_count(); ++e) {
+    const auto& x = a.arc(e);
+    for (ArcId f = 0; f < b.arc_count(); ++f) {
+      const auto& y = b.arc(f);
+      const bool same_word = (wa.empty() ? ConjWord{} : wa[e]) == (wb.empty() ? ConjWord{} : wb[f]);
+      if (!used[f] && y.label == x.label && same_word && b.name(y.source) == a.name(x.source) && b.name(y.target) == a.name(x.target)) {
+        used[f] = kept[e] = true;
+        break;
+      }
+    }
+  }
+  return kept;
+}
+
+}  // namespace
+
+std::vector<int> Rule::components(const TopoGraph& g, int* count) {
+  std::vector<NodeId> parent(g.node_count());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](NodeId v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& a : g.arcs()) parent[find(a.source)] = find(a.target);
+  std::vector<int> id(g.node_count(), -1), comp(g.node_count());
+  int n = 0;
+  for (NodeId v = 0; v < g.node_count(); ++v) {
+    NodeId r = find(v);
+    if (id[r] < 0) id[r] = n++;
+    comp[v] = id[r];
+  }
+  if (count) *count = n;
+  return comp;
+}
+
+Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks)
+    : Rule(std::move(name), std::move(model), std::move(left), std::move(right), std::move(hooks), {}, {}) {}
+
+Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks,
+           const std::vector<ConjWord>& left_words, const std::vector<ConjWord>& right_words)
+    : name_(std::move(name)), model_(std::move(model)), left_(std::move(left)), right_(std::move(right)) {
+  if ((!left_words.empty() && left_words.size() != left_.arc_count()) || (!right_words.empty() && right_words.size() != right_.arc_count()))
+    throw std::invalid_argument("a rule scheme needs one word per arc");
+  check_side(left_, model_, "L");
+  check_side(right_, model_, "R");
+  for (NodeId v = 0; v < left_.node_count(); ++v) left_to_right_.push_back(right_.find(left_.name(v)).value_or(no_node));
+  for (NodeId v = 0; v < right_.node_count(); ++v) right_to_left_.push_back(left_.find(right_.name(v)).value_or(no_node));
+  left_arc_kept_ = kept_arcs(left_, right_, left_words, right_words);
+  right_arc_kept_ = kept_arcs(right_, left_, right_words, left_words);
+
+  int count = 0;
+  const auto comp = components(left_, &count);
+  std::vector<int> hooked(static_cast<std::size_t>(count), -1);
+  for (const auto& h : hooks) {
+    auto v = left_.find(h);
+    if (!v) throw std::invalid_argument(fmt::format("hook '{}' is not a node of L", h));
+    if (hooked[comp[*v]] >= 0)
+      throw std::invalid_argument(fmt::format("hooks '{}' and '{}' are in the same connected component of L (one hook per component)",
+                                              left_.name(static_cast<NodeId>(hooked[comp[*v]])), h));
+    hooked[comp[*v]] = static_cast<int>(*v);
+    hooks_.push_back(*v);
+  }
+  for (NodeId v = 0; v < left_.node_count(); ++v)
+    if (hooked[comp[v]] < 0)
+      throw std::invalid_argument(fmt::format("the connected component of L containing '{}' has no hook (one hook per component)", left_.name(v)));
+}
+
+Rule Rule::inverse(std::vector<std::string> hooks) const { return Rule(name_ + "^-1", model_, right_, left_, std::move(hooks)); }
+
+const ConjWord& arc_word(const std::vector<ConjWord>& words, ArcId e) {
+  static const ConjWord eps;
+  return words.empty() ? eps : words[e];
+}
+
+}  // namespace dartcheck

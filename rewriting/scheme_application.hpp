@@ -1,0 +1,76 @@
+// Application of a rule scheme to a dense map (002 Sec. 6.3): the pattern
+// graph P_v of the hook dart (the darts reachable along the words of the
+// scheme, 002 Def. 20), the instantiated rule ι(S, P_v) = π_D(E_D(P_v) × S)
+// (Def. 19), its unique match sending (v, hook) to v, and the direct
+// derivation. The instantiated rule is never built as a graph: node (p, x)
+// of the product is the pair (pattern node, scheme node), so application
+// costs O(|P_v| · (|L| + |R|)) link operations, linear in the size of the
+// instantiated rule.
+#pragma once
+
+#include <span>
+
+#include "core/dart_table.hpp"
+#include "rewriting/derivation.hpp"
+
+namespace dartcheck {
+
+/// The pattern graphs of the hook darts (002 Def. 20): W's words and their
+/// conjugates as generators, the darts of each P_{v_k} in BFS order
+/// (darts[k][0] is the hook dart), and shift[w][p], the position of p·w
+/// in P_v. With several hooks every pattern has the same shift tables.
+struct PatternGraphs {
+  std::vector<ConjWord> gens;
+  std::vector<std::vector<Dart>> darts;
+  std::vector<std::vector<std::uint32_t>> shift;
+  /// The position of p·w for a word w of the scheme (ε stays at p).
+  std::uint32_t step(std::size_t p, const ConjWord& w) const { return step(p, generator(w)); }
+  /// The index of w in gens, -1 for ε: step(p, generator(w)) spares the
+  /// search when one word is followed from every position.
+  int generator(const ConjWord& w) const;
+  std::uint32_t step(std::size_t p, int generator) const {
+    return generator < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(generator)][p];
+  }
+};
+
+/// Refuses when a word has no path from a pattern dart
+/// (not-combinatorial) or when two hooks' pattern graphs differ (no-match).
+/// `scratch` (empty, left empty) spares a table the size of the map when
+/// a caller applies many schemes to one large map.
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
+                                      DartTable* scratch = nullptr);
+
+/// The match of the instantiated L: node[x][p] is the dart matched by
+/// product node (p, x), p a position in the first hook's pattern.
+struct SchemeMatch {
+  PatternGraphs pattern;
+  std::vector<std::vector<Dart>> node;
+};
+
+struct SchemeDerivation {
+  std::size_t pattern_nodes = 0;  // |P_v|
+  std::size_t matched_darts = 0;  // |P_v| · |V_L|
+  std::size_t added_darts = 0;
+  std::vector<std::pair<Dart, Dart>> moved;  // renumbered darts of H
+  /// comatch[y][p]: the dart of H of product node (p, y), y in R.
+  std::vector<std::vector<Dart>> comatch;
+};
+
+/// Everything apply_scheme checks before it writes: the match and its
+/// refusals. `g` is not modified; `scratch` as for pattern_graphs.
+Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
+                                  DartTable* scratch = nullptr);
+/// The rewrite of apply_scheme along a match from match_scheme on `g`.
+SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g, const SchemeMatch& match);
+
+/// Rewrites `g` at the hook darts, one per connected component of L (the
+/// order of core.hooks()). With several hooks the pattern graphs of the
+/// hook darts must be isomorphic, hook onto hook (002 Sec. 6.3); each
+/// component of L is then instantiated on its own hook's pattern. Refuses,
+/// leaving `g` unchanged, when a word has no path from a pattern node
+/// (not-combinatorial), when the instantiated L does not match (no-match,
+/// not-injective, or pattern graphs that differ), breaks the dangling
+/// condition, or would give a dart two i-arcs (not-representable).
+Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts);
+
+}  // namespace dartcheck

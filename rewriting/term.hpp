@@ -1,0 +1,97 @@
+// Embedding terms (003 Sec. 3.4, 6.3, Def. 8): the labels of rule scheme
+// nodes. A term is built from node variables (the names of L's nodes),
+// the G-map operators `x.pi` (embedding access), `x.alpha_i` (neighbour)
+// and `pi<o'>(x)` (collect: one pi-value per pi-orbit inside the
+// <o'>-orbit of x, a multiset), rule parameters, literals and user
+// functions (core/term_functions.hpp).
+//
+// Grammar (precedence climbing, left-associative):
+//   sum     := product (('+' | '-') product)*
+//   product := unary (('*' | '/') unary)*
+//   unary   := '-' unary | postfix
+//   postfix := primary ('.' name)*          name: alpha_i, alphai, or an embedding
+//   primary := number | "string" | true | false | '(' sum ')'
+//            | name '<' dims '>' '(' sum ')'   collect (also name_<dims>)
+//            | name '(' sum (',' sum)* ')'     function call
+//            | name                            node variable or parameter
+//
+// Two terms are equal when their trees are (003 Sec. 6.1: "embedding
+// labels of rule schemes will be compared via the strict syntactic
+// equality of terms"); `str()` prints the canonical text of the tree.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/model.hpp"
+#include "rewriting/value.hpp"
+
+namespace dartcheck {
+
+struct Function;
+
+struct Term {
+  enum class Kind : std::uint8_t { variable, parameter, literal, access, neighbour, collect, call };
+  Kind kind = Kind::literal;
+  std::string name;        // variable, parameter, embedding (access, collect) or function
+  Dim dim = 0;             // neighbour
+  std::vector<Dim> orbit;  // collect, ascending
+  std::vector<Term> args;  // access/neighbour/collect: the node term; call: the arguments
+  Value literal;           // literal; a parameter's value once resolved
+  std::size_t offset = 0;  // 0-based position in the source text
+  bool implicit = false;   // a conversion the checker inserted (printed as its argument)
+
+  // Set by type checking.
+  Sort sort;
+  const Function* function = nullptr;
+
+  std::string str() const;
+  /// Syntactic equality: same tree (offsets and resolved data ignored).
+  bool same(const Term& o) const;
+  /// The node variables the term reads, sorted, without repeats.
+  std::vector<std::string> variables() const;
+};
+
+/// A parse or type error at a 0-based offset of the term's text.
+class TermError : public std::runtime_error {
+ public:
+  TermError(std::size_t offset, const std::string& message) : std::runtime_error(message), offset_(offset) {}
+  std::size_t offset() const { return offset_; }
+
+ private:
+  std::size_t offset_;
+};
+
+/// Parses a term; throws TermError naming the offending token.
+Term parse_term(const std::string& text);
+
+/// An embedding operation pi : <o> -> tau as the term language sees it.
+struct EmbeddingSignature {
+  std::string name;
+  ValueType type;
+  std::vector<Dim> orbit;
+};
+
+class FunctionRegistry;
+
+/// What a term may refer to.
+struct TermScope {
+  const Model* model = nullptr;                      // alpha_i must name one of its dimensions
+  const std::vector<EmbeddingSignature>* embeddings = nullptr;
+  std::vector<std::string> variables;                // node variables: L's node names
+  std::map<std::string, Value> parameters;           // rule parameters
+  const FunctionRegistry* functions = nullptr;
+  const EmbeddingSignature* find_embedding(const std::string& name) const;
+};
+
+/// Type-checks `t` in place (sorts, overloads, parameters resolved,
+/// integer-to-real conversions inserted) and returns its sort. Throws
+/// TermError at the offending sub-term.
+Sort check_term(Term& t, const TermScope& scope);
+
+}  // namespace dartcheck

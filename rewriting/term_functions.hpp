@@ -1,0 +1,56 @@
+// The user signature Omega_pi and its algebra (003 Sec. 3.4): function
+// names with a profile s1 x ... x sm -> s and their implementation. The
+// built-in algebra covers the paper's examples (point/vector arithmetic,
+// midpoint, center, barycenter, mix) and scalar arithmetic; a modeler
+// registers its own functions with `add`.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "rewriting/value.hpp"
+
+namespace dartcheck {
+
+/// An argument of a function: a value or a multiset.
+using Operand = std::variant<Value, Multiset>;
+
+/// Thrown by a function that has no value at its arguments (center of an
+/// empty multiset); evaluation reports it with the term.
+class EvaluationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Function {
+  std::string name;
+  std::vector<Sort> params;
+  Sort result;
+  std::function<Value(std::span<const Operand>)> apply;
+  std::string profile() const;  // "midpoint : point2 x point2 -> point2"
+};
+
+class FunctionRegistry {
+ public:
+  /// The built-in algebra.
+  static const FunctionRegistry& builtin();
+  FunctionRegistry() = default;
+
+  /// Registers an overload; a second one with the same name and
+  /// parameters replaces the first. `result` must be a value sort.
+  void add(std::string name, std::vector<Sort> params, Sort result, std::function<Value(std::span<const Operand>)> apply);
+
+  /// The overload of `name` whose parameters equal `args`, or nullptr.
+  const Function* find(const std::string& name, const std::vector<Sort>& args) const;
+  /// Every overload of `name` (for error messages).
+  std::vector<const Function*> overloads(const std::string& name) const;
+
+ private:
+  std::vector<Function> functions_;
+};
+
+}  // namespace dartcheck

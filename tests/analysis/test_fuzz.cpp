@@ -1,0 +1,197 @@
+// dartcheck fuzz on the seed catalog, against verdicts derived by hand
+// (the catalog's `verdict` fields), with planted checker bugs, and the
+// replay of every counterexample.
+//
+// Expectations:
+//  - a rule the catalog records as consistent survives 10,000 applications
+//    (issue 4), except the reconstructed Fig. 26d and Fig. 28 schemes, which
+//    no host can match: their L has two components whose instances are
+//    disconnected for any pattern of more than one dart (each (p, x) links
+//    only to (p·w, y) within one pattern step) and not injective for a
+//    one-dart pattern (a -(ε,1)-> b would send a and b to that dart);
+//  - a broken variant is confirmed by a host of at most 16 darts, unless
+//    every match on a valid map is refused: L fails I on a deleted node
+//    (dangling(i): a valid host always has the i-arc L lacks, 002 Fact 1),
+//    or the scheme never applies (above), or it is Fig. 21, whose O_S(2)
+//    failure has no counterexample on small maps (issue 3's finding).
+#include <algorithm>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "checkers/map_validity.hpp"
+#include "analysis/fuzz.hpp"
+#include "analysis/map_sources.hpp"
+#include "rewriting/derivation.hpp"
+#include "io/map_io.hpp"
+#include "rewriting/scheme_application.hpp"
+#include "io/yaml_util.hpp"
+
+using namespace dartcheck;
+using namespace dartcheck::analysis;
+
+namespace {
+
+const Catalog& seed_catalog() {
+  static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
+  return c;
+}
+
+// The catalog's maps (explicit, shapes, meshes), as `dartcheck fuzz`
+// passes them.
+std::vector<Map> catalog_maps() {
+  std::vector<Map> maps;
+  for (const auto& s : seed_catalog().maps) maps.push_back(build_source(s));
+  return maps;
+}
+
+bool never_applicable(const std::string& name) { return name.rfind("fig26d-scheme", 0) == 0 || name.rfind("fig28-scheme", 0) == 0; }
+
+bool refused_by_dangling(const CatalogRule& r) {
+  return r.expected_failures && std::any_of(r.expected_failures->begin(), r.expected_failures->end(),
+                                            [](const std::string& f) { return f.rfind("dangling", 0) == 0; });
+}
+
+FuzzOptions options(std::size_t runs, std::uint64_t seed = 11) {
+  FuzzOptions o;
+  o.seed = seed;
+  o.runs = runs;
+  return o;
+}
+
+// Applies the rule to the counterexample's host again and checks that the
+// same H and the same violations come out.
+void expect_replays(const Operation& r, const Counterexample& cx) {
+  Map h = cx.host;
+  Refusal refusal;
+  if (r.words.scheme)
+    refusal = apply_scheme(r.rule, r.words, h, cx.hooks).refusal;
+  else
+    refusal = apply_rule(r.rule, h, cx.hooks).refusal;
+  if (!cx.unrepresentable.empty()) {
+    EXPECT_EQ(refusal, Refusal::not_representable) << r.rule.name();
+    return;
+  }
+  ASSERT_EQ(refusal, Refusal::none) << r.rule.name();
+  ASSERT_TRUE(cx.result.has_value());
+  EXPECT_TRUE(h == *cx.result) << r.rule.name();
+  EXPECT_EQ(check_map(h).violations, cx.violations) << r.rule.name();
+  // The host file reads back to the same map (custom models inline).
+  const std::string text = map_to_yaml(cx.host);
+  const Map back = read_map("<host>", YAML::Load(text));
+  EXPECT_TRUE(back == cx.host) << r.rule.name() << "\n" << text;
+}
+
+}  // namespace
+
+TEST(Fuzz, SeedCatalogAgainstHandVerdicts) {
+  const auto maps = catalog_maps();
+  std::size_t consistent = 0, confirmed = 0, largest = 0;
+  for (const auto& r : seed_catalog().rules) {
+    ASSERT_TRUE(r.expected_failures) << r.rule.name() << ": every seed rule records its verdict";
+    const FuzzReport f = fuzz_rule(r, maps, options(10'000));
+    EXPECT_NE(f.verdict, FuzzClass::soundness_bug) << r.rule.name();
+    if (r.expected_failures->empty()) {
+      ++consistent;
+      EXPECT_EQ(f.verdict, FuzzClass::consistent) << r.rule.name();
+      if (never_applicable(r.rule.name())) {
+        EXPECT_EQ(f.applications, 0U) << r.rule.name();
+      } else {
+        EXPECT_EQ(f.applications, 10'000U) << r.rule.name();
+      }
+      continue;
+    }
+    if (refused_by_dangling(r) || never_applicable(r.rule.name())) {
+      EXPECT_EQ(f.verdict, FuzzClass::unconfirmed) << r.rule.name();
+      EXPECT_EQ(f.applications, 0U) << r.rule.name();
+      EXPECT_EQ(f.refusals.count("not-representable"), 0U) << r.rule.name();
+      if (refused_by_dangling(r)) {
+        EXPECT_GT(f.refusals.count("dangling"), 0U) << r.rule.name();
+      }
+      continue;
+    }
+    if (r.rule.name() == "fig21-scheme") {
+      EXPECT_EQ(f.verdict, FuzzClass::unconfirmed);
+      EXPECT_GE(f.applications, 10'000U);
+      continue;
+    }
+    ++confirmed;
+    ASSERT_EQ(f.verdict, FuzzClass::confirmed) << r.rule.name() << ": " << f.reason;
+    const auto& cx = *f.counterexample;
+    EXPECT_LE(cx.host.size(), 16U) << r.rule.name();
+    largest = std::max(largest, cx.host.size());
+    expect_replays(r, cx);
+  }
+  // 23 consistent rules and 51 confirmed variants in the catalog's verdicts.
+  EXPECT_EQ(consistent, 23U);
+  EXPECT_EQ(confirmed, 51U);
+  RecordProperty("largest_counterexample", static_cast<int>(largest));
+}
+
+// A checker deliberately weakened: one family of conditions is never
+// reported. Every broken variant whose only failing family is that one is
+// then called consistent, and the fuzzer must print SOUNDNESS BUG for it.
+// (Weakening the dangling condition is not caught this way: those rules
+// never apply, which the fuzzer reports as "consistent; never applied".)
+TEST(Fuzz, PlantedCheckerBugsAreCaught) {
+  const auto maps = catalog_maps();
+  for (RuleCondition family : {RuleCondition::incident_arcs, RuleCondition::non_orientation, RuleCondition::cycle}) {
+    FuzzOptions o = options(2'000);
+    o.static_check = [family](const Operation& r) {
+      RuleVerdict v = check_rule(r.rule, r.words);
+      std::erase_if(v.conditions, [&](const ConditionVerdict& c) { return c.condition == family; });
+      return v;
+    };
+    std::size_t planted = 0;
+    for (const auto& r : seed_catalog().rules) {
+      const auto full = static_failures(check_rule(r.rule, r.words));
+      if (full.empty() || never_applicable(r.rule.name()) || r.rule.name() == "fig21-scheme") continue;
+      const auto weakened = static_failures(o.static_check(r));
+      if (!weakened.empty()) continue;  // other families still fail
+      ++planted;
+      const FuzzReport f = fuzz_rule(r, maps, o);
+      EXPECT_EQ(f.verdict, FuzzClass::soundness_bug) << r.rule.name() << " with " << condition_name(family, 0) << " ignored";
+    }
+    EXPECT_GE(planted, 5U) << condition_name(family, 0);
+  }
+  FuzzOptions o = options(2'000);
+  o.static_check = [](const Operation& r) {
+    RuleVerdict v = check_rule(r.rule, r.words);
+    std::erase_if(v.conditions, [](const ConditionVerdict& c) { return c.condition == RuleCondition::dangling; });
+    return v;
+  };
+  const FuzzReport f = fuzz_rule(*seed_catalog().find_rule("delete-free-edge-dangling"), maps, o);
+  EXPECT_EQ(f.verdict, FuzzClass::consistent);
+  EXPECT_EQ(f.applications, 0U);
+  EXPECT_NE(f.reason.find("never applied"), std::string::npos);
+}
+
+// One seed, one answer: the same hosts, applications and counterexample.
+TEST(Fuzz, DeterministicForASeed) {
+  const auto maps = catalog_maps();
+  for (const char* name : {"face-extrusion-omap/broken-word", "quad-subdivision-gmap", "fig18b-broken-swapped-ends"}) {
+    const auto& r = *seed_catalog().find_rule(name);
+    const FuzzReport a = fuzz_rule(r, maps, options(3'000, 5)), b = fuzz_rule(r, maps, options(3'000, 5));
+    EXPECT_EQ(a.applications, b.applications) << name;
+    EXPECT_EQ(a.hosts, b.hosts) << name;
+    ASSERT_EQ(a.counterexample.has_value(), b.counterexample.has_value()) << name;
+    if (a.counterexample) {
+      EXPECT_TRUE(a.counterexample->host == b.counterexample->host) << name;
+      EXPECT_EQ(a.counterexample->hooks, b.counterexample->hooks) << name;
+    }
+  }
+}
+
+// Random phase and shrinking alone: with no enumeration, the 3-O-map face
+// extrusion with a wrong word is still confirmed, and the shrunk host is
+// no larger than the one first found.
+TEST(Fuzz, ShrinkingKeepsTheFailure) {
+  const auto& r = *seed_catalog().find_rule("face-extrusion-omap/broken-word");
+  FuzzOptions o = options(10'000, 3);
+  o.exhaustive_hosts = 0;
+  const FuzzReport f = fuzz_rule(r, {}, o);
+  ASSERT_EQ(f.verdict, FuzzClass::confirmed) << f.reason;
+  EXPECT_NE(f.counterexample->origin.find("random recipe"), std::string::npos);
+  EXPECT_LE(f.counterexample->host.size(), 16U);
+  expect_replays(r, *f.counterexample);
+}

@@ -1,0 +1,262 @@
+// Pictures: the DOT of every rule with failing conditions highlights the
+// checker's witnesses (read back with Graphviz's own parser, cgraph),
+// every seed rule and a map render to well-formed SVG with one node per
+// rule node or dart (read with pugixml), Jerboa nodes show their orbit
+// types, and a counterexample's three panels highlight the match and the
+// broken darts.
+#include <gtest/gtest.h>
+
+#include <graphviz/cgraph.h>
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "checkers/embedding_conditions.hpp"
+#include "checkers/rule_conditions.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/graph_derivation.hpp"
+#include "generators/shapes.hpp"
+#include "reports/counterexample_dot.hpp"
+#include "reports/graph_dot.hpp"
+#include "reports/dot_text.hpp"
+#include "reports/render.hpp"
+#include "reports/rule_dot.hpp"
+
+using namespace dartcheck;
+
+namespace {
+
+const Catalog& seed_catalog() {
+  static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
+  return c;
+}
+
+using Graph = std::unique_ptr<Agraph_t, int (*)(Agraph_t*)>;
+
+Graph parse(const std::string& dot) { return Graph(agmemread(dot.c_str()), agclose); }
+
+// Names of the nodes (and "source->target" of the edges) that carry
+// attr="true".
+std::set<std::string> marked(Agraph_t* g, const char* attr) {
+  std::set<std::string> out;
+  for (Agnode_t* n = agfstnode(g); n; n = agnxtnode(g, n)) {
+    const char* v = agget(n, const_cast<char*>(attr));
+    if (v && std::string(v) == "true") out.insert(agnameof(n));
+    for (Agedge_t* e = agfstout(g, n); e; e = agnxtout(g, e)) {
+      const char* ev = agget(e, const_cast<char*>(attr));
+      if (ev && std::string(ev) == "true") out.insert(std::string(agnameof(agtail(e))) + "->" + agnameof(aghead(e)));
+    }
+  }
+  return out;
+}
+
+std::size_t svg_nodes(const std::string& svg) {
+  pugi::xml_document doc;
+  const auto r = doc.load_string(svg.c_str());
+  EXPECT_TRUE(r) << r.description();
+  return doc.select_nodes("//g[@class='node']").size();
+}
+
+}  // namespace
+
+// Every node a witness names, on its side, is highlighted; so is every
+// arc a witness names (when the arc is drawn: completion arcs of the
+// cycle condition are not); nothing else is.
+TEST(RuleDot, BrokenVariantsHighlightTheirWitnesses) {
+  int rules = 0, with_arcs = 0;
+  for (const auto& e : seed_catalog().rules) {
+    const RuleVerdict v = check_rule(e.rule, e.words);
+    if (v.consistent()) continue;
+    ++rules;
+    const auto witnesses = reports::failed_witnesses(v);
+    const Graph g = parse(reports::rule_dot(e.rule, e.words, witnesses));
+    ASSERT_TRUE(g) << e.rule.name();
+    const std::set<std::string> lit = marked(g.get(), "witness");
+    std::set<std::string> named;
+    for (const auto& w : witnesses)
+      for (const auto& n : w.nodes) {
+        const std::string id = std::string(1, w.side) + ":" + n;
+        named.insert(id);
+        EXPECT_TRUE(lit.contains(id)) << e.rule.name() << ": witness node " << id << " not highlighted";
+      }
+    bool arcs = false;
+    for (const auto& x : lit) arcs = arcs || x.find("->") != std::string::npos;
+    with_arcs += arcs;
+    for (const auto& x : lit) {
+      if (x.find("->") != std::string::npos) continue;
+      // A highlighted node is named by a witness or lies on a witness arc.
+      bool on_arc = named.contains(x);
+      for (const auto& w : witnesses)
+        for (const auto& a : w.arcs)
+          on_arc = on_arc || (x[0] == w.side && a.find(x.substr(2)) != std::string::npos);
+      EXPECT_TRUE(on_arc) << e.rule.name() << ": " << x << " highlighted but in no witness";
+    }
+    EXPECT_FALSE(lit.empty()) << e.rule.name() << ": a failing rule with nothing highlighted";
+  }
+  EXPECT_GE(rules, 50);
+  EXPECT_GE(with_arcs, 20);
+}
+
+// Embedded rules (issue 8): each node's label lists its terms, one line
+// "pi: term" per embedding; the witness nodes of a failing embedding
+// condition are highlighted and their lines of that embedding are bold.
+TEST(RuleDot, EmbeddedRulesShowTermsAndHighlightFailingOnes) {
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  int failing = 0;
+  for (const auto& e : catalog.rules) {
+    reports::TermLines lines{&*e.terms, {}};
+    std::vector<RuleWitness> witnesses;
+    bool required = false;
+    for (const auto& c : check_term_conditions(e.rule, e.words, *e.terms))
+      if (!c.holds) {
+        lines.failing.push_back(c.embedding);
+        witnesses.insert(witnesses.end(), c.witnesses.begin(), c.witnesses.end());
+        required |= c.required;
+      }
+    failing += required;
+    const std::string dot = reports::rule_dot(e.rule, e.words, witnesses, nullptr, lines);
+    const Graph g = parse(dot);
+    ASSERT_TRUE(g) << e.rule.name() << "\n" << dot;
+    const std::set<std::string> lit = marked(g.get(), "witness");
+    for (const auto& [side, terms] : {std::pair{'L', &e.terms->left}, std::pair{'R', &e.terms->right}})
+      for (const NodeTerm& t : *terms) {
+        const std::string id = std::string(1, side) + ":" + t.node;
+        Agnode_t* n = agnode(g.get(), const_cast<char*>(id.c_str()), 0);
+        ASSERT_TRUE(n) << e.rule.name() << ": " << id;
+        const std::string label = agget(n, const_cast<char*>("label"));
+        const std::string line = reports::html_escape(t.embedding + ": " + t.term.str());
+        EXPECT_NE(label.find(line), std::string::npos) << e.rule.name() << ": " << id << " label " << label << " lacks " << line;
+        const bool bold = label.find("<b>" + line + "</b>") != std::string::npos;
+        const bool hot = lit.contains(id) && std::find(lines.failing.begin(), lines.failing.end(), t.embedding) != lines.failing.end();
+        EXPECT_EQ(bold, hot) << e.rule.name() << ": " << id << " " << line;
+      }
+    for (const auto& w : witnesses)
+      for (const auto& n : w.nodes) EXPECT_TRUE(lit.contains(std::string(1, w.side) + ":" + n)) << e.rule.name() << ": " << n;
+    const std::string svg = reports::render(dot, "svg");
+    EXPECT_EQ(svg_nodes(svg), e.rule.left().node_count() + e.rule.right().node_count()) << e.rule.name();
+  }
+  EXPECT_EQ(failing, 19);  // the catalog's rules recorded with failing (required) embedding conditions
+}
+
+TEST(RuleSvg, EverySeedRuleRendersWithOneNodePerRuleNode) {
+  for (const auto& e : seed_catalog().rules) {
+    const std::string svg = reports::render(reports::rule_dot(e.rule, e.words), "svg");
+    EXPECT_EQ(svg_nodes(svg), e.rule.left().node_count() + e.rule.right().node_count()) << e.rule.name();
+  }
+}
+
+// A G-map's links are involutions: each pair of darts is one undirected
+// edge, and each dart one node.
+TEST(MapSvg, CubeRendersOneNodePerDartAndOneEdgePerPair) {
+  const Map cube = build_shape(Model::gmap(2), parse_shape("cube"));
+  const TopoGraph g = to_graph(cube);
+  reports::GraphPicture p;
+  p.title = "cube";
+  const std::string dot = reports::graph_dot(g, cube.model(), p);
+  const Graph parsed = parse(dot);
+  ASSERT_TRUE(parsed);
+  EXPECT_EQ(static_cast<std::size_t>(agnnodes(parsed.get())), cube.size());
+  std::size_t pairs = 0;
+  for (const auto& a : g.arcs()) pairs += a.source <= a.target;  // one per involution pair, loops once
+  EXPECT_EQ(static_cast<std::size_t>(agnedges(parsed.get())), pairs);
+  EXPECT_EQ(svg_nodes(reports::render(dot, "svg")), cube.size());
+}
+
+TEST(Render, BadDotAndUnknownFormatAreErrorsNotCrashes) {
+  EXPECT_THROW(reports::render("digraph { a -> ", "svg"), std::runtime_error);
+  EXPECT_THROW(reports::render("digraph { a -> b }", "nosuchformat"), std::runtime_error);
+  EXPECT_THROW(reports::format_of("picture.txt"), std::invalid_argument);
+  EXPECT_EQ(reports::format_of("x.gv"), "dot");
+}
+
+// Jerboa-style schemes show each node's orbit type, and the loops those
+// types stand for are left out unless they are witnesses.
+TEST(RuleDot, JerboaNodesShowTheirOrbitTypes) {
+  int schemes = 0;
+  for (const auto& e : seed_catalog().rules) {
+    if (!e.jerboa) continue;
+    ++schemes;
+    const RuleVerdict v = check_rule(e.rule, e.words);
+    const Graph g = parse(reports::rule_dot(e.rule, e.words, reports::failed_witnesses(v), &*e.jerboa));
+    ASSERT_TRUE(g) << e.rule.name();
+    for (bool left : {true, false}) {
+      const TopoGraph& side = left ? e.rule.left() : e.rule.right();
+      const auto& types = left ? e.jerboa->left : e.jerboa->right;
+      ASSERT_EQ(types.size(), side.node_count()) << e.rule.name();
+      for (NodeId n = 0; n < side.node_count(); ++n) {
+        const std::string id = std::string(left ? "L:" : "R:") + side.name(n);
+        Agnode_t* node = agnode(g.get(), const_cast<char*>(id.c_str()), 0);
+        ASSERT_NE(node, nullptr) << id;
+        EXPECT_EQ(std::string(agget(node, const_cast<char*>("label"))), side.name(n) + "\\n" + orbit_type_str(types[n])) << e.rule.name();
+      }
+    }
+    for (Agnode_t* n = agfstnode(g.get()); n; n = agnxtnode(g.get(), n))
+      for (Agedge_t* x = agfstout(g.get(), n); x; x = agnxtout(g.get(), x)) {
+        const char* lit = agget(x, const_cast<char*>("witness"));
+        const std::string label = agget(x, const_cast<char*>("label"));
+        if (aghead(x) == agtail(x) && label.starts_with("(") && !label.starts_with("(ε") && !(lit && std::string(lit) == "true"))
+          ADD_FAILURE() << e.rule.name() << ": implicit loop " << label << " at " << agnameof(n) << " drawn";
+      }
+  }
+  EXPECT_GE(schemes, 5);
+}
+
+namespace {
+
+// Centers of the SVG's nodes by title (Graphviz writes <title>id</title>
+// then the node's ellipse or polygon).
+std::map<std::string, double> node_x(const std::string& svg) {
+  pugi::xml_document doc;
+  EXPECT_TRUE(doc.load_string(svg.c_str()));
+  std::map<std::string, double> out;
+  for (const auto& n : doc.select_nodes("//g[@class='node']")) {
+    const auto e = n.node().child("ellipse");
+    if (e) out[n.node().child_value("title")] = e.attribute("cx").as_double();
+  }
+  return out;
+}
+
+}  // namespace
+
+// The three panels: G with exactly the matched darts filled, H with
+// exactly the broken darts filled, the rule; laid out G, H, rule from left
+// to right; one SVG node per dart of G and H and per rule node.
+TEST(CounterexampleDot, ThreePanelsHighlightMatchAndBrokenDarts) {
+  const Map cube = build_shape(Model::gmap(2), parse_shape("cube"));
+  const CatalogRule& e = *seed_catalog().find_rule("insert-vertex-sewn-edge/missing-1");
+  reports::CounterexamplePicture p;
+  p.title = "test";
+  p.host = &cube;
+  p.match_tags.assign(cube.size(), "");
+  p.match_tags[0] = "a";
+  p.match_tags[7] = "b";
+  p.result = &cube;
+  p.broken.assign(cube.size(), false);
+  p.broken[2] = p.broken[5] = true;
+  const RuleVerdict v = check_rule(e.rule, e.words);
+  const std::string dot = reports::counterexample_dot(e.rule, e.words, reports::failed_witnesses(v), p);
+  const Graph g = parse(dot);
+  ASSERT_TRUE(g);
+  EXPECT_EQ(marked(g.get(), "highlight"), (std::set<std::string>{"G:0", "G:7", "H:2", "H:5"}));
+  EXPECT_FALSE(marked(g.get(), "witness").empty());
+  for (const char* cluster : {"cluster_G:", "cluster_H:"}) {
+    Agraph_t* sub = agsubg(g.get(), const_cast<char*>(cluster), 0);
+    ASSERT_NE(sub, nullptr) << cluster;
+    EXPECT_EQ(static_cast<std::size_t>(agnnodes(sub)), cube.size()) << cluster;
+  }
+  const auto x = node_x(reports::render(dot, "svg"));
+  double g_max = -1e9, h_min = 1e9, h_max = -1e9, rule_min = 1e9;
+  std::size_t darts = 0, rule_nodes = 0;
+  for (const auto& [id, cx] : x) {
+    if (id.starts_with("G:")) g_max = std::max(g_max, cx), ++darts;
+    if (id.starts_with("H:")) h_min = std::min(h_min, cx), h_max = std::max(h_max, cx), ++darts;
+    if (id.starts_with("rule:")) rule_min = std::min(rule_min, cx), ++rule_nodes;
+  }
+  EXPECT_EQ(darts, 2 * cube.size());
+  EXPECT_EQ(rule_nodes, e.rule.left().node_count() + e.rule.right().node_count());
+  EXPECT_LT(g_max, h_min);
+  EXPECT_LT(h_max, rule_min);
+}

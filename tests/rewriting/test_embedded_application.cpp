@@ -1,0 +1,146 @@
+// Embedded rule application (003 Def. 11-13): one evaluation per orbit and a
+// kept rewriter agree with fresh applications, Lemma 3's overlap refusal,
+// and the position triangulation of a mesh against the mesh file's
+// barycenters.
+#include <algorithm>
+#include <fstream>
+#include <numeric>
+#include <optional>
+#include <random>
+#include <set>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "checkers/embedding_conditions.hpp"
+#include "checkers/embedding_consistency.hpp"
+#include "checkers/map_validity.hpp"
+#include "checkers/rule_conditions.hpp"
+#include "analysis/embedded_fuzz.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/embedded_application.hpp"
+#include "core/input_error.hpp"
+#include "io/mesh_io.hpp"
+#include "core/orbit.hpp"
+#include "rewriting/term_eval.hpp"
+#include "generators/mesh_map.hpp"
+#include "generators/random_embedding.hpp"
+#include "generators/random_maps.hpp"
+#include "generators/random_rules.hpp"
+#include "tests/embedding_support.hpp"
+
+namespace dartcheck {
+namespace {
+
+using namespace testing_support;
+
+// Every embedding's value at every dart (none: nullopt), to compare two
+// maps whose value pools differ.
+std::vector<std::vector<std::optional<Value>>> values_of(const EmbeddedMap& g) {
+  std::vector<std::vector<std::optional<Value>>> out;
+  for (const Embedding& e : g.embeddings) {
+    out.emplace_back();
+    for (Dart d = 0; d < g.map.size(); ++d) out.back().push_back(e.value(d) ? std::optional(*e.value(d)) : std::nullopt);
+  }
+  return out;
+}
+
+TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWrite) {
+  // 003 Thm 2 and 4: when a rule passes the conditions, the instances of
+  // one orbit of the extended rule have one value, so evaluating one per
+  // orbit (Evaluation::one_per_orbit) writes what evaluating every
+  // instance writes. And a rewriter kept across applications on a
+  // changing map (tables left empty, walkers grown) acts as fresh
+  // applications do. Three applications in a row on random embedded maps.
+  std::mt19937 rng(11);
+  std::size_t compared = 0, rules = 0;
+  for (const auto& r : embedding_catalog().rules) {
+    if (!static_failures_of(r).empty()) continue;
+    ++rules;
+    for (int round = 0; round < 80; ++round) {
+      EmbeddedMap fresh = embed_randomly(build_random_map(r.rule.model(), draw_recipe(rng, 1 + round % 8, 2)), embedding_catalog().signatures, rng);
+      EmbeddedMap reused = fresh;
+      EmbeddedRewriter rewriter(r.rule, r.words, *r.terms, reused, Evaluation::one_per_orbit);
+      for (int step = 0; step < 3; ++step) {
+        std::vector<Dart> hooks;
+        for (std::size_t h = 0; h < r.rule.hooks().size(); ++h)
+          hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(fresh.map.size() - 1))(rng));
+        const auto a = apply_embedded(r.rule, r.words, *r.terms, fresh, hooks);
+        const auto b = rewriter.apply(hooks);
+        ASSERT_EQ(a.refusal, b.refusal) << r.rule.name() << ": " << a.why << " / " << b.why;
+        if (!a.ok()) continue;
+        ASSERT_TRUE(a.value->conflicts.empty()) << r.rule.name() << ": " << a.value->conflicts.front();
+        ASSERT_EQ(fresh.map, reused.map) << r.rule.name();
+        ASSERT_EQ(values_of(fresh), values_of(reused)) << r.rule.name();
+        ASSERT_EQ(a.value->written.size(), b.value->written.size()) << r.rule.name();
+        for (std::size_t k = 0; k < a.value->written.size(); ++k) ASSERT_EQ(a.value->written[k].value, b.value->written[k].value) << r.rule.name();
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(rules, 14u);
+  EXPECT_GT(compared, 300u);
+}
+
+TEST(EmbeddingCatalog, FaceStretchingOverlapsOnATriangle) {
+  // Fig. 33-34: on a square the two opposite half-edges are four vertices;
+  // on a triangle two of their ends are one vertex (Lemma 3).
+  const Operation& r = *embedding_catalog().find_rule("fig32-face-stretching");
+  std::mt19937 rng(1);
+  for (int n : {3, 4}) {
+    Map m(Model::gmap(2), 2 * static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+      m.sew(0, 2 * k, 2 * k + 1);
+      m.sew(1, 2 * k + 1, (2 * k + 2) % (2 * n));
+    }
+    for (Dart d = 0; d < m.size(); ++d) m.sew(2, d, d);
+    EmbeddedMap g = embed_randomly(std::move(m), {signatures[0]}, rng);
+    const std::vector<Dart> hooks{0, 4};  // edges 0 and 2
+    const auto d = apply_embedded(r.rule, r.words, *r.terms, g, hooks);
+    if (n == 3) {
+      EXPECT_EQ(d.refusal, Refusal::overlap) << d.why;
+    } else {
+      ASSERT_TRUE(d.ok()) << d.why;
+      EXPECT_TRUE(check_embedding(g.map, g.embeddings[0], true).consistent());
+    }
+  }
+}
+
+// --- Triangulation of a mesh ---------------------------------------------
+
+TEST(EmbeddingApplication, TriangulatingAMeshPutsEachCentreAtItsFaceBarycenter) {
+  const Operation& r = *embedding_catalog().find_rule("triangulation-jerboa-pos");
+  for (const char* file : {"unit-square.off", "cube.off"}) {
+    const Mesh mesh = read_mesh(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/meshes/" + file);
+    EmbeddedMap g = mesh_with_positions(Model::gmap(2), mesh, signatures[0]);
+    // The first dart of face f is the sum of the sizes of the faces before
+    // it, doubled (build_surface); triangulation adds darts at the end, so
+    // these numbers survive.
+    Dart first = 0;
+    for (const auto& f : mesh.faces) {
+      std::array<double, 2> centre{};
+      for (auto v : f)
+        for (std::size_t k = 0; k < 2; ++k) centre[k] += mesh.positions[v][k] / static_cast<double>(f.size());
+      const std::vector<Dart> hook{first};
+      const auto d = apply_embedded(r.rule, r.words, *r.terms, g, hook);
+      ASSERT_TRUE(d.ok()) << d.why;
+      std::size_t centres = 0;
+      for (const auto& w : d.value->written) {
+        if (w.node.rfind("n2@", 0) != 0) continue;
+        EXPECT_NEAR(w.value.x[0], centre[0], 1e-12);
+        EXPECT_NEAR(w.value.x[1], centre[1], 1e-12);
+        ++centres;
+      }
+      EXPECT_EQ(centres, 2 * f.size());
+      first += static_cast<Dart>(2 * f.size());
+    }
+    EXPECT_TRUE(check_map(g.map).valid());
+    EXPECT_TRUE(check_embedding(g.map, g.embeddings[0], true).consistent());
+    std::size_t triangles = 0;
+    for (const auto& f : mesh.faces) triangles += f.size();
+    EXPECT_EQ(count_cells(g.map).cells[2], triangles) << file;
+  }
+}
+
+}  // namespace
+}  // namespace dartcheck

@@ -1,0 +1,253 @@
+// Rule scheme application (002 Sec. 6.3) on dense maps, checked against
+// what the operation must give. Quad subdivision of a mesh with V vertices,
+// E edges, F faces and face degrees summing to S: a vertex per vertex, edge
+// and face (V + E + F); every edge split in two plus one inner edge per
+// face corner (2E + S); a quad per face corner (S); 4 darts per dart. On a
+// quad mesh S = 4F: 2E + 4F edges and 4F faces, the figures.
+#include <algorithm>
+#include <map>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "checkers/map_validity.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/derivation.hpp"
+#include "core/isomorphism.hpp"
+#include "core/orbit.hpp"
+#include "rewriting/scheme_application.hpp"
+#include "generators/mesh_map.hpp"
+#include "generators/random_maps.hpp"
+#include "generators/shapes.hpp"
+
+using namespace dartcheck;
+
+namespace {
+const CatalogRule& entry(const std::string& name) {
+  static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
+  return *c.find_rule(name);
+}
+
+void expect_quad_subdivision(const std::string& scheme, Map g) {
+  const auto before = count_cells(g);
+  const std::size_t darts = g.size();
+  const std::size_t V = before.cells[0], E = before.cells[1], F = before.cells[2];
+  // A face of degree k has 2k darts in a G-map, k in an O-map.
+  const std::size_t S = g.model().is_generalized() ? darts / 2 : darts;
+  const auto& s = entry(scheme);
+  const Dart hook = 0;
+  auto out = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+  ASSERT_TRUE(out.ok()) << out.why;
+  EXPECT_EQ(out.value->pattern_nodes, darts) << "a connected map: P_v is every dart";
+  EXPECT_EQ(g.size(), 4 * darts);
+  const auto report = check_map(g);
+  EXPECT_TRUE(report.valid()) << report.violations.size() << " violations";
+  const auto after = count_cells(g);
+  EXPECT_EQ(after.cells, (std::vector<std::size_t>{V + E + F, 2 * E + S, S}));
+  if (S == 4 * F) {
+    EXPECT_EQ(after.cells, (std::vector<std::size_t>{V + E + F, 2 * E + 4 * F, 4 * F}));
+  }
+  EXPECT_EQ(after.components, before.components);
+}
+}  // namespace
+
+TEST(QuadSubdivision, GmapCube) { expect_quad_subdivision("quad-subdivision-gmap", build_shape(Model::gmap(2), {"cube", {}})); }
+TEST(QuadSubdivision, GmapGridWithBoundary) {
+  // An open grid: the boundary edges are free (2-loops); the counts still
+  // hold for V, E, F of the open surface.
+  expect_quad_subdivision("quad-subdivision-gmap", build_shape(Model::gmap(2), {"grid", {2, 3}}));
+}
+TEST(QuadSubdivision, GmapTriangleMesh) {
+  expect_quad_subdivision("quad-subdivision-gmap", build_shape(Model::gmap(2), {"tetrahedron", {}}));
+}
+TEST(QuadSubdivision, OmapCube) { expect_quad_subdivision("quad-subdivision-omap", build_shape(Model::omap(2), {"cube", {}})); }
+TEST(QuadSubdivision, OmapPrism) { expect_quad_subdivision("quad-subdivision-omap", build_shape(Model::omap(2), {"prism", {5}})); }
+TEST(QuadSubdivision, OmapMesh) {
+  expect_quad_subdivision("quad-subdivision-omap",
+                          load_mesh(Model::omap(2), std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/meshes/cube.off"));
+}
+
+// The broken variants are refused or produce invalid maps, as their
+// failing conditions predict.
+TEST(QuadSubdivision, BrokenWordBreaksTheCycleConstraint) {
+  Map g = build_shape(Model::gmap(2), {"cube", {}});
+  const auto& s = entry("quad-subdivision-gmap-broken-word");
+  const Dart hook = 0;
+  auto out = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+  ASSERT_TRUE(out.ok()) << out.why;
+  const auto report = check_map(g);
+  ASSERT_FALSE(report.valid());
+  for (const auto& v : report.violations) EXPECT_EQ(v.constraint, Constraint::cycle) << "only C(0,2) is predicted to fail";
+}
+
+// Cone extrusion of an isolated k-gon (002 Sec. 10.2): a pyramid, closed:
+// k + 1 vertices, 2k edges, k + 1 faces; 4 darts per edge in a G-map (8k),
+// 2 in an O-map (4k).
+void expect_cone(const std::string& scheme, const Model& model, int k) {
+  Map g = build_shape(model, {"polygon", {k}});
+  const auto& s = entry(scheme);
+  const Dart hook = 0;
+  auto out = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+  ASSERT_TRUE(out.ok()) << out.why;
+  const auto n = static_cast<std::size_t>(k);
+  EXPECT_EQ(g.size(), (model.is_generalized() ? 8 : 4) * n);
+  const auto report = check_map(g);
+  EXPECT_TRUE(report.valid()) << report.violations.size() << " violations";
+  const auto cells = count_cells(g);
+  EXPECT_EQ(cells.cells, (std::vector<std::size_t>{n + 1, 2 * n, n + 1}));
+  EXPECT_EQ(cells.euler(), 2);
+}
+TEST(ConeExtrusion, Gmap) {
+  for (int k : {3, 4, 6}) expect_cone("cone-extrusion-gmap", Model::gmap(2), k);
+}
+TEST(ConeExtrusion, Omap) {
+  for (int k : {3, 4, 6}) expect_cone("cone-extrusion-omap", Model::omap(2), k);
+}
+
+// ---- Jerboa notation (000 Sec. 4.3, 002 Sec. 10.1) ------------------------
+
+namespace {
+// The arcs of one side as (source, target, dimension, word), with node
+// names renamed, sorted: two sides are the same scheme side iff equal.
+std::vector<std::string> arcs_of(const TopoGraph& g, const std::vector<ConjWord>& words, const std::map<std::string, std::string>& rename) {
+  std::vector<std::string> out;
+  for (ArcId e = 0; e < g.arc_count(); ++e) {
+    auto name = [&](NodeId v) {
+      auto it = rename.find(g.name(v));
+      return it == rename.end() ? g.name(v) : it->second;
+    };
+    out.push_back(name(g.arc(e).source) + " -(" + words[e].str() + "," + std::to_string(g.arc(e).label) + ")-> " + name(g.arc(e).target));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+Map apply_at(const CatalogRule& s, Map g, Dart hook) {
+  auto out = s.words.scheme ? apply_scheme(s.rule, s.words, g, std::span(&hook, 1)).refusal : apply_rule(s.rule, g, std::span(&hook, 1)).refusal;
+  EXPECT_EQ(out, Refusal::none) << s.rule.name();
+  return g;
+}
+}  // namespace
+
+// 002 Sec. 10.1: "we can write the rule scheme of Figure 29 in Jerboa".
+// The Jerboa entry, translated, is the (W,D) entry arc for arc.
+TEST(JerboaNotation, QuadSubdivisionTranslatesToFigure29) {
+  const auto& j = entry("quad-subdivision-jerboa");
+  const auto& w = entry("quad-subdivision-gmap");
+  const std::map<std::string, std::string> rename{{"n0", "a"}, {"n1", "b"}, {"n2", "c"}, {"n3", "d"}};
+  EXPECT_EQ(arcs_of(j.rule.left(), j.words.left, rename), arcs_of(w.rule.left(), w.words.left, {}));
+  EXPECT_EQ(arcs_of(j.rule.right(), j.words.right, rename), arcs_of(w.rule.right(), w.words.right, {}));
+}
+
+// 000 Sec. 4.3.2: the folded vertex insertion (Fig. 8(b), parameter <0,2>)
+// unfolds on a free edge into Fig. 7(a) and on a sewn edge into Fig. 7(c);
+// so does Fig. 8(a) (parameter <2>). Applied at the same dart, the scheme
+// and the DPO rule give isomorphic maps.
+TEST(JerboaNotation, FoldedVertexInsertionUnfoldsToFigure7) {
+  const Map square = build_shape(Model::gmap(2), {"polygon", {4}});
+  const Map cube = build_shape(Model::gmap(2), {"cube", {}});
+  const Map grid = build_shape(Model::gmap(2), {"grid", {2, 2}});
+  for (const char* folded : {"insert-vertex-jerboa", "insert-vertex-jerboa-2"}) {
+    EXPECT_TRUE(isomorphic(apply_at(entry(folded), square, 0), apply_at(entry("insert-vertex-free-edge"), square, 0))) << folded;
+    EXPECT_TRUE(isomorphic(apply_at(entry(folded), cube, 0), apply_at(entry("insert-vertex-sewn-edge"), cube, 0))) << folded;
+    for (Dart d = 0; d < grid.size(); ++d) {
+      const bool free = grid.link(2, d) == d;
+      const Map folded_result = apply_at(entry(folded), grid, d);
+      const Map dpo_result = apply_at(entry(free ? "insert-vertex-free-edge" : "insert-vertex-sewn-edge"), grid, d);
+      EXPECT_TRUE(isomorphic(folded_result, dpo_result)) << folded << " at dart " << d;
+      EXPECT_TRUE(check_map(folded_result).valid());
+    }
+  }
+}
+
+// ---- Edge rounding (002 Sec. 10.2, Fig. 34) -------------------------------
+// On a closed surface every edge and every vertex becomes a face: V' = 2E
+// (one vertex per corner, and corners number 2E), E' = 4E, F' = V + E + F,
+// 4 darts per dart; Euler characteristic unchanged.
+void expect_edge_rounding(const std::string& scheme, Map g) {
+  const auto before = count_cells(g);
+  const std::size_t darts = g.size(), V = before.cells[0], E = before.cells[1], F = before.cells[2];
+  const auto& s = entry(scheme);
+  const Dart hook = 0;
+  auto out = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+  ASSERT_TRUE(out.ok()) << out.why;
+  EXPECT_EQ(g.size(), 4 * darts);
+  const auto report = check_map(g);
+  EXPECT_TRUE(report.valid()) << report.violations.size() << " violations";
+  const auto after = count_cells(g);
+  EXPECT_EQ(after.cells, (std::vector<std::size_t>{2 * E, 4 * E, V + E + F}));
+  EXPECT_EQ(after.euler(), before.euler());
+}
+TEST(EdgeRounding, Gmap) {
+  expect_edge_rounding("edge-rounding-gmap", build_shape(Model::gmap(2), {"cube", {}}));
+  expect_edge_rounding("edge-rounding-gmap", build_shape(Model::gmap(2), {"tetrahedron", {}}));
+  expect_edge_rounding("edge-rounding-gmap", build_shape(Model::gmap(2), {"prism", {5}}));
+  expect_edge_rounding("edge-rounding-gmap", load_mesh(Model::gmap(2), std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/meshes/cube.off"));
+}
+TEST(EdgeRounding, Omap) {
+  expect_edge_rounding("edge-rounding-omap", build_shape(Model::omap(2), {"cube", {}}));
+  expect_edge_rounding("edge-rounding-omap", build_shape(Model::omap(2), {"tetrahedron", {}}));
+  expect_edge_rounding("edge-rounding-omap", build_shape(Model::omap(2), {"prism", {5}}));
+  expect_edge_rounding("edge-rounding-omap", load_mesh(Model::omap(2), std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/meshes/cube.off"));
+}
+// The pyramid of Fig. 35 is the cone extrusion of a square (Fig. 31 (1),
+// (2)): 5 vertices, 8 edges, 5 faces become 16, 32, 18.
+TEST(EdgeRounding, PyramidOfFigure35) {
+  Map g = apply_at(entry("cone-extrusion-gmap"), build_shape(Model::gmap(2), {"polygon", {4}}), 0);
+  g = apply_at(entry("edge-rounding-gmap"), g, 0);
+  EXPECT_TRUE(check_map(g).valid());
+  EXPECT_EQ(count_cells(g).cells, (std::vector<std::size_t>{16, 32, 18}));
+}
+
+// ---- Face extrusion (002 Sec. 10.2, Fig. 36, 37) --------------------------
+// Extruding a face of degree k adds a prism: k vertices, 2k edges, k + 1
+// faces (top and k sides; the base is shared), one volume. New darts per
+// dart of the face: 6 in a 3-G-map (b..g), 10 in a 3-O-map (d..o).
+void expect_face_extrusion(const std::string& scheme, Map g, Dart hook) {
+  const auto before = count_cells(g);
+  const auto& s = entry(scheme);
+  auto out = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+  ASSERT_TRUE(out.ok()) << out.why;
+  const bool gmap = g.model().is_generalized();
+  // A face of degree k has 2k darts (G) or k darts (O) on one side.
+  // P_v holds the face's darts (G: 2k, the pattern of the single node a).
+  const std::size_t k = gmap ? out.value->pattern_nodes / 2 : out.value->added_darts / 10;
+  EXPECT_EQ(out.value->added_darts, gmap ? 12 * k : 10 * k);
+  const auto report = check_map(g);
+  ASSERT_TRUE(report.valid()) << report.violations.size() << " violations";
+  const auto after = count_cells(g);
+  ASSERT_EQ(after.cells.size(), 4u);
+  EXPECT_EQ(after.cells, (std::vector<std::size_t>{before.cells[0] + k, before.cells[1] + 2 * k, before.cells[2] + k + 1, before.cells[3] + 1}));
+}
+TEST(FaceExtrusion, GmapCubeAndStackedCubes) {
+  expect_face_extrusion("face-extrusion-gmap", build_shape(Model::gmap(3), {"cube", {}}), 0);
+  expect_face_extrusion("face-extrusion-gmap", build_shape(Model::gmap(3), {"prism", {5}}), 0);
+  const Map stacked = build_shape(Model::gmap(3), {"stacked-cubes", {}});
+  for (Dart d = 0; d < stacked.size(); ++d)
+    if (stacked.link(3, d) == d) expect_face_extrusion("face-extrusion-gmap", stacked, d);
+}
+// On random 3-O-maps (every face is 3-sewn): the L of Fig. 37 matches every
+// face, and the result is a valid 3-O-map with one more volume.
+RC_GTEST_PROP(FaceExtrusion, OmapOnRandomMaps, ()) {
+  const auto recipe = *gen_map_recipe(1, 6);
+  const Map g = build_random_map(Model::omap(3), recipe);
+  const auto before = count_cells(g);
+  const auto& s = entry("face-extrusion-omap");
+  std::size_t applied = 0;
+  for (Dart hook = 0; hook < g.size(); ++hook) {
+    Map h = g;
+    auto out = apply_scheme(s.rule, s.words, h, std::span(&hook, 1));
+    // L's nodes a, b = a·3 and c = b·2 must match distinct darts: a face
+    // whose far side is 2-sewn to itself (2-loops) is refused, and only so.
+    if (!out.ok()) {
+      RC_ASSERT(out.refusal == Refusal::not_injective);
+      continue;
+    }
+    ++applied;
+    RC_ASSERT(check_map(h).valid());
+    const auto after = count_cells(h);
+    const std::size_t k = out.value->added_darts / 10;
+    RC_ASSERT(out.value->added_darts % 10 == 0u);
+    RC_ASSERT(after.cells == (std::vector<std::size_t>{before.cells[0] + k, before.cells[1] + 2 * k, before.cells[2] + k + 1, before.cells[3] + 1}));
+  }
+  RC_CLASSIFY(applied > 0, "applied somewhere");
+}

@@ -1,0 +1,158 @@
+// The term language of embedded rules (003 Sec. 6): canonical text and
+// syntactic equality, error offsets, user functions, and collect operators
+// against a brute-force traversal.
+#include <algorithm>
+#include <fstream>
+#include <numeric>
+#include <optional>
+#include <random>
+#include <set>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "checkers/embedding_conditions.hpp"
+#include "checkers/embedding_consistency.hpp"
+#include "checkers/map_validity.hpp"
+#include "checkers/rule_conditions.hpp"
+#include "analysis/embedded_fuzz.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/embedded_application.hpp"
+#include "core/input_error.hpp"
+#include "io/mesh_io.hpp"
+#include "core/orbit.hpp"
+#include "rewriting/term_eval.hpp"
+#include "generators/mesh_map.hpp"
+#include "generators/random_embedding.hpp"
+#include "generators/random_maps.hpp"
+#include "generators/random_rules.hpp"
+#include "tests/embedding_support.hpp"
+
+namespace dartcheck {
+namespace {
+
+using namespace testing_support;
+
+Term checked(const std::string& text, std::vector<std::string> vars = {"a", "b"}, const FunctionRegistry* f = nullptr) {
+  static const Model model = Model::gmap(2);
+  TermScope scope;
+  scope.model = &model;
+  scope.embeddings = &signatures;
+  scope.variables = std::move(vars);
+  scope.parameters["v"] = Value::coords(ValueType::vector2, {1, 0, 0});
+  scope.functions = f;
+  Term t = parse_term(text);
+  check_term(t, scope);
+  return t;
+}
+
+std::size_t error_offset(const std::string& text) {
+  try {
+    checked(text);
+  } catch (const TermError& e) {
+    return e.offset();
+  }
+  return std::string::npos;
+}
+
+TEST(Terms, CanonicalTextAndSyntacticEquality) {
+  // Spacing and redundant parentheses do not matter; operands do.
+  EXPECT_TRUE(checked("a.pos+v").same(checked("(a.pos) + v")));
+  EXPECT_FALSE(checked("a.pos + v").same(checked("b.pos + v")));
+  EXPECT_EQ(checked("midpoint(a.pos,b.pos)+ v").str(), "midpoint(a.pos, b.pos) + v");
+  EXPECT_EQ(checked("col_<0,1,2>(a.alpha_2)").str(), "col<0,1,2>(a.alpha2)");
+  // a - (b - c) keeps its parentheses, (a - b) - c needs none.
+  EXPECT_EQ(parse_term("1 - (2 - 3)").str(), "1 - (2 - 3)");
+  EXPECT_EQ(parse_term("(1 - 2) - 3").str(), "1 - 2 - 3");
+  EXPECT_EQ(parse_term("2 * (1 + 3)").str(), "2 * (1 + 3)");
+  // An integer stands for a real; the conversion is invisible.
+  EXPECT_EQ(checked("point2(0, 1)").str(), "point2(0, 1)");
+  EXPECT_TRUE(checked("point2(0, 1)").same(checked("point2(0,1)")));
+  EXPECT_EQ(checked("a.pos").variables(), std::vector<std::string>{"a"});
+  EXPECT_EQ(checked("midpoint(b.pos, a.alpha0.pos)").variables(), (std::vector<std::string>{"a", "b"}));
+}
+
+TEST(Terms, ErrorsNameTheOffendingToken) {
+  EXPECT_EQ(error_offset("a.pos + * b"), 8u);          // '*' where a term starts
+  EXPECT_EQ(error_offset("midpoint(a.pos, "), 16u);    // the end of the term
+  EXPECT_EQ(error_offset("c.pos"), 0u);                // not a node of L
+  EXPECT_EQ(error_offset("a.color"), 2u);              // no such embedding
+  EXPECT_EQ(error_offset("a.alpha7.pos"), 2u);         // not a dimension of a 2-G-map
+  EXPECT_EQ(error_offset("mix(a.col, a.pos)"), 0u);    // no profile color x point2
+  EXPECT_EQ(error_offset("center(a.pos)"), 0u);        // center takes a multiset
+  EXPECT_EQ(error_offset("a.pos $ b"), 6u);
+  EXPECT_EQ(error_offset("pos<0,x>(a)"), 6u);
+  try {
+    checked("mix(a.col, a.pos)");
+  } catch (const TermError& e) {
+    EXPECT_NE(std::string(e.what()).find("mix : color x color -> color"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Terms, UserFunctionsRegisteredWithTheirProfile) {
+  FunctionRegistry f = FunctionRegistry::builtin();
+  f.add("scale", {Sort::of(ValueType::point2), Sort::of(ValueType::real)}, Sort::of(ValueType::point2), [](std::span<const Operand> a) {
+    const Value& p = std::get<Value>(a[0]);
+    const double s = std::get<Value>(a[1]).x[0];
+    return Value::coords(ValueType::point2, {p.x[0] * s, p.x[1] * s, 0});
+  });
+  EmbeddedMap g(Map(Model::gmap(2), 1));
+  for (Dim i : {0, 1, 2}) g.map.sew(i, 0, 0);
+  g.add_embedding(signatures[0]);
+  g.embeddings[0].set(0, Value::coords(ValueType::point2, {2, 3, 0}));
+  const Term t = checked("scale(a.pos, 2) + v", {"a"}, &f);
+  TermEvaluator ev(g);
+  const std::vector<std::string> names{"a"};
+  const std::vector<Dart> darts{0};
+  EXPECT_EQ(ev.value(t, names, darts), Value::coords(ValueType::point2, {5, 6, 0}));  // (4, 6) + (1, 0)
+  EXPECT_THROW(checked("scale(a.pos, 2)"), TermError);  // unknown to the built-in registry
+}
+
+// The multiset of pi<o'>(d) by brute force: the darts reachable from d
+// through links in o' (a plain worklist over Map::link), split into
+// classes joined by links in o ∩ o', one value per class.
+std::multiset<std::string> brute_collect(const EmbeddedMap& g, const Embedding& e, const std::vector<Dim>& o2, Dart d) {
+  std::vector<Dart> orbit{d};
+  std::set<Dart> in{d};
+  for (std::size_t k = 0; k < orbit.size(); ++k)
+    for (Dim i : o2)
+      if (const Dart n = g.map.link(i, orbit[k]); n != no_dart && in.insert(n).second) orbit.push_back(n);
+  std::map<Dart, Dart> up;
+  for (Dart x : orbit) up[x] = x;
+  std::function<Dart(Dart)> root = [&](Dart x) { return up[x] == x ? x : up[x] = root(up[x]); };
+  for (Dart x : orbit)
+    for (Dim i : o2)
+      if (std::find(e.signature.orbit.begin(), e.signature.orbit.end(), i) != e.signature.orbit.end()) up[root(x)] = root(g.map.link(i, x));
+  std::multiset<std::string> r;
+  for (Dart x : orbit)
+    if (root(x) == x) r.insert(e.value(x)->str());
+  return r;
+}
+
+TEST(Terms, CollectEqualsBruteForceOnRandomEmbeddedMaps) {
+  // Def. 9: pi<o'>(v) = the labels of the quotient by pi of <o'>(v).
+  std::mt19937 rng(7);
+  const Model model = Model::gmap(2);
+  std::size_t compared = 0;
+  for (int round = 0; round < 200; ++round) {
+    const EmbeddedMap g = embed_randomly(build_random_map(model, draw_recipe(rng, 1 + round % 6, 2)), signatures, rng);
+    TermEvaluator ev(g);
+    for (int k = 0; k < 5; ++k) {
+      const Dart d = std::uniform_int_distribution<Dart>(0, static_cast<Dart>(g.map.size() - 1))(rng);
+      std::vector<Dim> o2;
+      for (Dim i : {0, 1, 2})
+        if (rng() % 2) o2.push_back(i);
+      for (const Embedding& e : g.embeddings) {
+        Multiset m = ev.collect(e.signature.name, o2, d);
+        std::multiset<std::string> got;
+        for (const Value& v : m) got.insert(v.str());
+        ASSERT_EQ(got, brute_collect(g, e, o2, d)) << e.signature.name << " at dart " << d;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 2000u);
+}
+
+}  // namespace
+}  // namespace dartcheck
