@@ -25,4 +25,12 @@ bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::v
   return want == got;
 }
 
+bool contradicts_record(const CatalogRule& entry, bool broke_a_map) {
+  return broke_a_map && entry.expected_failures && entry.expected_failures->empty();
+}
+
+std::string contradiction_line(const CatalogRule& entry, const std::string& how) {
+  return fmt::format("{}: {}: the catalog records verdict 'consistent', but {}", entry.location.str(), entry.rule.name(), how);
+}
+
 }  // namespace dartcheck::analysis

@@ -1,6 +1,7 @@
 // Comparing a rule's verdicts with the verdict its catalog records.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "analysis/embedding_checks.hpp"
@@ -14,5 +15,13 @@ namespace dartcheck::analysis {
 /// when it records none). Throws InputError at the verdict when it names a
 /// condition the rule does not have.
 bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::vector<EmbeddingCheck>& embedding = {});
+
+/// Whether a broken map found dynamically (fuzz, prove) contradicts the
+/// verdict the catalog records: it records 'consistent' (no failing
+/// condition), yet the rule broke a map.
+bool contradicts_record(const CatalogRule& entry, bool broke_a_map);
+
+/// The line every command prints for such a contradiction.
+std::string contradiction_line(const CatalogRule& entry, const std::string& how);
 
 }  // namespace dartcheck::analysis

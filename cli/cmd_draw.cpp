@@ -64,7 +64,11 @@ int draw_map(const DrawMapOptions& o) {
     if (v.element < map.size()) p.highlight[v.element] = true;
   if (!report.valid()) p.highlight_label = fmt::format("filled: {} violations", report.violations.size());
   write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, o.engine);
-  return report.valid() ? ok : violation;
+  if (report.valid()) return ok;
+  // Every non-zero exit says why.
+  fmt::print(stderr, "INVALID {}: {} violation{} (drawn filled; validate-map lists them)\n", map.model().name, report.violations.size(),
+             report.violations.size() == 1 ? "" : "s");
+  return violation;
 }
 
 }  // namespace dartcheck::cli

@@ -13,6 +13,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
+#include "analysis/verdict_record.hpp"
 #include "cli/options.hpp"
 #include "analysis/embedded_fuzz.hpp"
 #include "analysis/counterexample_files.hpp"
@@ -74,10 +75,12 @@ int fuzz(const FuzzCommand& c) {
   o.runs = c.runs ? *c.runs : seconds ? SIZE_MAX : 10'000;
 
   std::vector<const Operation*> rules;
+  std::vector<const CatalogRule*> entries;
   std::vector<Model> models;
   for (const auto& e : catalog.rules) {
     if (!c.rule.empty() && e.rule.name() != c.rule) continue;
     rules.push_back(&e);
+    entries.push_back(&e);
     if (std::find(models.begin(), models.end(), e.rule.model()) == models.end()) models.push_back(e.rule.model());
   }
   std::vector<Map> seeds;
@@ -108,6 +111,13 @@ int fuzz(const FuzzCommand& c) {
   std::size_t applications = 0;
   for (const auto& r : reports) applications += r.applications;
   const auto bugs = count(FuzzClass::soundness_bug);
+  // A broken map contradicts a recorded 'consistent' (exit 1, as check).
+  std::vector<std::string> contradictions;
+  for (std::size_t k = 0; k < reports.size(); ++k)
+    if (contradicts_record(*entries[k], reports[k].counterexample.has_value()))
+      contradictions.push_back(contradiction_line(*entries[k], fmt::format("fuzz broke a map ({})", fuzz_class_name(reports[k].verdict))));
+  for (const auto& line : contradictions) fmt::print(stderr, "MISMATCH: {}\n", line);
+  const int status = bugs ? soundness_bug : contradictions.empty() ? ok : violation;
 
   if (c.format == "json") {
     fmt::print("{{\"catalog\": \"{}\", \"seed\": {}, \"seconds\": {:.3f}, \"rules\": [\n", json_escape(c.catalog), o.seed, total);
@@ -126,7 +136,7 @@ int fuzz(const FuzzCommand& c) {
     }
     fmt::print("], \"consistent\": {}, \"confirmed\": {}, \"unconfirmed\": {}, \"soundness_bugs\": {}, \"applications\": {}}}\n",
                count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, applications);
-    return bugs ? soundness_bug : ok;
+    return status;
   }
 
   std::size_t width = 4;
@@ -150,7 +160,9 @@ int fuzz(const FuzzCommand& c) {
   }
   fmt::print("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
              reports.size(), count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, bugs == 1 ? "" : "s", applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
-  return bugs ? soundness_bug : ok;
+  if (!contradictions.empty())
+    fmt::print("{} rule{} the verdict the catalog records\n", contradictions.size(), contradictions.size() == 1 ? " contradicts" : "s contradict");
+  return status;
 }
 
 }  // namespace dartcheck::cli

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "analysis/verdict_record.hpp"
 #include "cli/options.hpp"
 #include "analysis/counterexample_files.hpp"
 #include "analysis/fuzz.hpp"
@@ -85,6 +86,21 @@ int prove(const ProveCommand& c) {
       counts[static_cast<int>(a)] += p.count(a);
   }
   const std::size_t disagreements = counts[static_cast<int>(Agreement::disagree)];
+  // A map the solver breaks contradicts a recorded 'consistent' (exit 1, as check).
+  std::vector<std::string> contradictions;
+  {
+    std::size_t k = 0;
+    for (const auto& e : catalog.rules) {
+      if (!c.rule.empty() && e.rule.name() != c.rule) continue;
+      const auto& p = proofs[k++];
+      const bool broken = std::any_of(p.constraints.begin(), p.constraints.end(), [](const proofs::ConstraintProof& cp) {
+        return cp.model.status == Status::counterexample || (cp.theorem && cp.theorem->status == Status::counterexample);
+      });
+      if (contradicts_record(e, broken)) contradictions.push_back(contradiction_line(e, "the solver found a host it breaks"));
+    }
+  }
+  for (const auto& line : contradictions) fmt::print(stderr, "MISMATCH: {}\n", line);
+  const int status = disagreements ? soundness_bug : contradictions.empty() ? ok : violation;
 
   if (c.format == "json") {
     fmt::print("{{\"catalog\": \"{}\", \"max_darts\": {}, \"rlimit\": {}, \"seconds\": {:.3f}, \"rules\": [\n", json_escape(c.catalog), o.max_darts,
@@ -105,7 +121,7 @@ int prove(const ProveCommand& c) {
     }
     fmt::print("], \"in_scope\": {}, \"agree\": {}, \"disagree\": {}, \"unresolved\": {}, \"not_compared\": {}}}\n", scoped, counts[0], counts[1],
                counts[2], counts[3]);
-    return disagreements ? soundness_bug : ok;
+    return status;
   }
 
   for (std::size_t k = 0; k < proofs.size(); ++k) {
@@ -131,7 +147,9 @@ int prove(const ProveCommand& c) {
   fmt::print("\n{} rules ({} in the solver's scope); {} constraints agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
              "{:.1f} s\n",
              proofs.size(), scoped, counts[0], counts[1], counts[2], counts[3], o.max_darts, o.rlimit, total);
-  return disagreements ? soundness_bug : ok;
+  if (!contradictions.empty())
+    fmt::print("{} rule{} the verdict the catalog records\n", contradictions.size(), contradictions.size() == 1 ? " contradicts" : "s contradict");
+  return status;
 }
 
 }  // namespace dartcheck::cli

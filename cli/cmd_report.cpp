@@ -384,8 +384,18 @@ int report(const ReportOptions& o) {
   std::ofstream out(index, std::ios::binary);
   if (!out || !out.write(page.data(), static_cast<std::streamsize>(page.size()))) throw InputError(index.string(), 0, 0, "cannot write the report");
   fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes)\n", index.string(), rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size());
-  if (unsound) return soundness_bug;
-  return std::all_of(rows.begin(), rows.end(), [](const RuleReport& r) { return r.matches_record; }) ? ok : violation;
+  // Every non-zero exit says why.
+  if (unsound) {
+    fmt::print(stderr, "SOUNDNESS BUG: a rule the static checker accepts broke a map, or the solver disagrees with it (see the report)\n");
+    return soundness_bug;
+  }
+  std::size_t mismatches = 0;
+  for (const auto& r : rows)
+    if (!r.matches_record) {
+      ++mismatches;
+      fmt::print(stderr, "MISMATCH: {}: {}: the static verdict differs from the verdict the catalog records\n", r.entry->location.str(), r.entry->rule.name());
+    }
+  return mismatches ? violation : ok;
 }
 
 }  // namespace dartcheck::cli

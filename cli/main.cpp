@@ -4,7 +4,9 @@
 #include <yaml-cpp/exceptions.h>
 
 #include "cli/commands.hpp"
+#include "cli/suggest.hpp"
 #include "core/input_error.hpp"
+#include "core/limits.hpp"
 #include "generators/shapes.hpp"
 
 using namespace dartcheck;
@@ -12,21 +14,32 @@ using namespace dartcheck;
 int main(int argc, char** argv) {
   CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("dartcheck ") + DARTCHECK_VERSION);
+  // Counts and seeds: CLI11 would read "-5" into an unsigned option as 2^64 - 5.
+  const CLI::Validator counts(
+      [](std::string& text) { return text.starts_with('-') ? "expected a number >= 0, got " + text : std::string(); }, "NUMBER >= 0");
+  // Input limits (core/limits.hpp), for the whole run, before input is read.
+  auto& lim = limits();
+  app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--limit-term-depth", lim.term_depth, "deepest nesting of a term")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->check(CLI::PositiveNumber);
 
   cli::ValidateOptions validate;
   auto* v = app.add_subcommand("validate-map", "Check a map against its model: cells and every violation");
   v->add_option("map", validate.target, fmt::format("a map file (.yaml, .jba, .off, .obj) or a shape ({})", shape_usage()))->required();
   v->add_option("--model", validate.model, "model for meshes and shapes (2-gmap, 3-gmap, 2-omap, ...)")->capture_default_str();
-  v->add_option("--limit", validate.limit, "violations to print (0 = all)")->capture_default_str();
+  v->add_option("--limit", validate.limit, "violations to print (0 = all)")->capture_default_str()->check(counts);
 
   cli::ApplyOptions apply;
   auto* a = app.add_subcommand("apply", "Apply a DPO rule at hook darts, validate and write the result");
   a->add_option("catalog", apply.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   a->add_option("--rule", apply.rule, "rule name")->required();
   a->add_option("--map", apply.map, "catalog map name, map file, mesh or shape")->required();
-  a->add_option("--hook", apply.hooks, "hook dart, one per hook of the rule (repeat)")->required();
+  a->add_option("--hook", apply.hooks, "hook dart, one per hook of the rule (repeat)")->required()->check(counts);
   a->add_option("-o,--output", apply.output, "write the result map (YAML) here");
-  a->add_option("--limit", apply.limit, "violations to print (0 = all)")->capture_default_str();
+  a->add_option("--limit", apply.limit, "violations to print (0 = all)")->capture_default_str()->check(counts);
 
   cli::RunOptions run;
   auto* r = app.add_subcommand("run", "Build every catalog map and check every rule example against its expected outcome");
@@ -40,23 +53,23 @@ int main(int argc, char** argv) {
   c->add_flag("--explain", check.explain, "print the witnesses of every failing condition and the counterexample map");
   c->add_option("--confirm-darts", check.confirm_darts,
                 "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
-      ->capture_default_str();
+      ->capture_default_str()->check(counts);
 
   cli::WordsOptions words;
   auto* w = app.add_subcommand("words", "Normal forms of a word in R_{N,E} (002 Sec. 9.2), or whether two words are congruent");
   w->add_option("model", words.model, "model giving N and E (2-gmap, 3-omap, ...)")->required();
   w->add_option("word", words.word, "a word: digits are dimensions, ~d is the conjugate of d, ε the empty word")->required();
   w->add_option("word2", words.other, "a second word: test w <->* w2 instead");
-  w->add_option("--prove", words.prove_darts, "with WORD2: ask Z3 for a map of up to this many darts on which the two paths differ");
+  w->add_option("--prove", words.prove_darts, "with WORD2: ask Z3 for a map of up to this many darts on which the two paths differ")->check(counts);
 
   cli::FuzzCommand fuzz;
   auto* f = app.add_subcommand("fuzz", "Apply every rule at many matches on enumerated, given and random maps; set failures against the static verdict");
   f->add_option("catalog", fuzz.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   f->add_option("--rule", fuzz.rule, "fuzz only this rule");
   f->add_option("--time", fuzz.time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
-  f->add_option("--runs", fuzz.runs, "applications per rule (default 10000 without --time)");
-  f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)");
-  f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str();
+  f->add_option("--runs", fuzz.runs, "applications per rule (default 10000 without --time)")->check(counts);
+  f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)")->check(counts);
+  f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str()->check(counts);
   f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
   f->add_option("--out", fuzz.out, "write each counterexample here: host, match, result and a replay command");
   f->add_option("--format", fuzz.format, "text or json")->capture_default_str();
@@ -65,12 +78,12 @@ int main(int argc, char** argv) {
   auto* p = app.add_subcommand("prove", "Ask Z3 for a host whose derived map breaks a constraint (bounded), and set the answer against the static verdict");
   p->add_option("catalog", prove.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   p->add_option("--rule", prove.rule, "prove only this rule");
-  p->add_option("--max-darts", prove.max_darts, "search hosts of up to this many darts")->capture_default_str();
+  p->add_option("--max-darts", prove.max_darts, "search hosts of up to this many darts")->capture_default_str()->check(counts);
   p->add_option("--scheme-darts", prove.scheme_darts,
                 "for rule schemes, hosts of up to this many darts (at most --max-darts): H has that many darts per node of R")
-      ->capture_default_str();
-  p->add_option("--rlimit", prove.rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str();
-  p->add_option("--timeout", prove.timeout, "also stop a query after this many seconds (answers then depend on the machine)");
+      ->capture_default_str()->check(counts);
+  p->add_option("--rlimit", prove.rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str()->check(counts);
+  p->add_option("--timeout", prove.timeout, "also stop a query after this many seconds (answers then depend on the machine)")->check(counts);
   p->add_option("--out", prove.out, "write each counterexample on a map of the model here, with a replay command");
   p->add_option("--format", prove.format, "text or json")->capture_default_str();
   p->add_flag("--explain", prove.explain, "print the hosts and derived graphs of theorem-class counterexamples");
@@ -91,8 +104,8 @@ int main(int argc, char** argv) {
   rp->add_option("-o,--output", report.output, "directory for index.html and the SVG pictures")->required();
   rp->add_option("--rule", report.rule, "only this rule");
   rp->add_option("--fuzz", report.fuzz, "fuzz every rule within this total time (30s, 2m, ...) and draw the counterexamples");
-  rp->add_option("--prove", report.prove_darts, "ask Z3 for counterexamples of up to K darts and draw them");
-  rp->add_option("--seed", report.seed, "random seed of --fuzz (default: drawn and printed)");
+  rp->add_option("--prove", report.prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->check(counts);
+  rp->add_option("--seed", report.seed, "random seed of --fuzz (default: drawn and printed)")->check(counts);
   rp->add_option("--engine", report.engine, "Graphviz layout engine")->capture_default_str();
   cli::DrawMapOptions draw_map;
   auto* dm = app.add_subcommand("draw-map", "Draw a map: one node per dart, links colored by dimension, invalid darts highlighted");
@@ -105,6 +118,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
+    if (code != 0) cli::suggest_subcommand(app, argc, argv);
     return code == 0 ? 0 : cli::bad_input;
   }
   try {
@@ -123,10 +137,14 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;
   } catch (const YAML::Exception& e) {
-    fmt::print(stderr, "error: {}:{}:{}: {}\n", "<yaml>", e.mark.line + 1, e.mark.column + 1, e.msg);
+    // Readers turn YAML errors into positioned InputErrors; this is a last resort.
+    fmt::print(stderr, "error: YAML at line {}, column {}: {}\n", e.mark.line + 1, e.mark.column + 1, printable(e.msg));
+    return cli::bad_input;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "error: out of memory (the input is larger than this machine can hold; see --limit-darts)\n");
     return cli::bad_input;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    fmt::print(stderr, "error: {}\n", printable(e.what()));
     return cli::bad_input;
   }
   return cli::bad_input;

@@ -1,5 +1,7 @@
 #include "core/conjugate_words.hpp"
 
+#include "core/limits.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -31,6 +33,8 @@ ConjWord parse_conj_word(std::string_view text, const Model& model) {
   auto fail = [&](std::size_t at, const std::string& what) {
     throw std::invalid_argument(fmt::format("word '{}', character {}: {}", text, at + 1, what));
   };
+  if (text.size() > limits().word_length)
+    throw std::invalid_argument(over_limit("a word's length", text.size(), limits().word_length, "--limit-word-length"));
   while (k < text.size()) {
     const char c = text[k];
     if (c == '~') {

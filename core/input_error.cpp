@@ -9,8 +9,35 @@ static std::string position(const std::string& file, int line, int column) {
   return column > 0 ? fmt::format("{}:{}:{}", file, line, column) : fmt::format("{}:{}", file, line);
 }
 
+// The length of the UTF-8 sequence starting at s[k], 0 if it is not one.
+static std::size_t utf8_length(std::string_view s, std::size_t k) {
+  const auto b = static_cast<unsigned char>(s[k]);
+  const std::size_t n = b < 0x80 ? 1 : (b >> 5) == 0x6 ? 2 : (b >> 4) == 0xe ? 3 : (b >> 3) == 0x1e ? 4 : 0;
+  if (n == 0 || k + n > s.size()) return 0;
+  for (std::size_t j = 1; j < n; ++j)
+    if ((static_cast<unsigned char>(s[k + j]) >> 6) != 0x2) return 0;
+  return n;
+}
+
+std::string printable(std::string_view text) {
+  std::string out;
+  for (std::size_t k = 0; k < text.size();) {
+    const auto b = static_cast<unsigned char>(text[k]);
+    const std::size_t n = utf8_length(text, k);
+    if ((b < 0x20 && b != '\t') || b == 0x7f || n == 0) {
+      out += fmt::format("\\x{:02x}", b);
+      ++k;
+    } else {
+      out.append(text.substr(k, n));
+      k += n;
+    }
+  }
+  return out;
+}
+
+// Messages may quote the input: they are made printable here, once for all.
 InputError::InputError(std::string file, int line, int column, const std::string& message)
-    : std::runtime_error(position(file, line, column) + ": " + message), file_(std::move(file)), line_(line), column_(column) {}
+    : std::runtime_error(printable(position(file, line, column)) + ": " + printable(message)), file_(std::move(file)), line_(line), column_(column) {}
 
 std::string SourceLocation::str() const { return fmt::format("{}:{}:{}", file, line, column); }
 

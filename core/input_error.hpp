@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace dartcheck {
 
@@ -19,6 +20,10 @@ class InputError : public std::runtime_error {
   std::string file_;
   int line_, column_;
 };
+
+/// `text` with control characters and bytes that are not UTF-8 written as
+/// \xNN, so that a binary file's bytes never reach a terminal.
+std::string printable(std::string_view text);
 
 /// Where something was read: file, 1-based line and column (0 = unknown).
 struct SourceLocation {

@@ -3,11 +3,17 @@
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
+#include "core/limits.hpp"
 #include "generators/polygon_soup.hpp"
 
 namespace dartcheck {
 
 Map build_mesh(const Model& model, const Mesh& mesh) {
+  std::size_t corners = 0;
+  for (const auto& f : mesh.faces) corners += f.size();
+  // A 2-G-map has two darts per face corner, an O-map one.
+  const std::size_t darts = model.is_generalized() ? 2 * corners : corners;
+  if (darts > limits().darts) throw InputError(mesh.file, 0, 0, over_limit("the mesh's darts", darts, limits().darts, "--limit-darts"));
   try {
     return build_surface(model, mesh.faces);
   } catch (const BuildError& e) {

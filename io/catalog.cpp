@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/limits.hpp"
 #include "io/jerboa_modeler.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 #include "io/map_io.hpp"
@@ -98,6 +99,8 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
   yaml::allow_keys(file, side, {"nodes", "arcs"});
   TopoGraph g;
   const auto nodes = yaml::require(file, side, "nodes");
+  if (nodes.size() > limits().rule_nodes)
+    fail_at(file, nodes, over_limit(fmt::format("{}.nodes", which).c_str(), nodes.size(), limits().rule_nodes, "--limit-rule-nodes"));
   if (jerboa) {
     // Jerboa notation: nodes map to generalized orbit types (000 Sec. 4.3).
     if (!model || !words) fail_at(file, nodes, "Jerboa node labels are allowed only in a rule");
@@ -330,8 +333,19 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
 
 }  // namespace
 
+static Catalog read_yaml_catalog(const std::string& file);
+
 Catalog read_catalog(const std::string& file) {
   if (file.ends_with(".jme")) return read_jme(file);
+  try {
+    return read_yaml_catalog(file);
+  } catch (const YAML::Exception& e) {
+    // A shape the reader did not foresee: still an error at its position.
+    throw InputError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, e.msg);
+  }
+}
+
+static Catalog read_yaml_catalog(const std::string& file) {
   const YAML::Node root = load_yaml_file(file);
   Catalog c;
   c.file = file;
@@ -416,6 +430,8 @@ Catalog read_catalog(const std::string& file) {
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
       const Model model = model_of(n);
       const auto left = yaml::require(file, n, "left"), right = yaml::require(file, n, "right");
+      yaml::expect_map(file, left, "left");
+      yaml::expect_map(file, right, "right");
       add_rule(c, file, n, name, model, left, right, n);
       auto& base = c.rules.back();
       if (const auto ex = n["examples"]) {

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
+#include "core/limits.hpp"
+#include "io/input_file.hpp"
 
 namespace dartcheck {
 namespace {
@@ -15,9 +17,7 @@ namespace {
 // Lines of the file with their numbers; every error names file:line.
 class Lines {
  public:
-  explicit Lines(const std::string& file) : file_(file), in_(file) {
-    if (!in_) throw InputError(file, 0, 0, "cannot read the file");
-  }
+  explicit Lines(const std::string& file) : file_(file), in_(open_input(file)) {}
   // The next line (without '\r'); `what` names what was expected at the end.
   std::string next(std::string_view what) {
     std::string line;
@@ -103,8 +103,9 @@ JbaFile read_jba(const std::string& file) {
   if (sizes.empty()) lines.fail("expected the dart count");
   const long long darts = number(lines, sizes[0], "dart count");
   if (darts < 0) lines.fail("dart count: expected a count");
+  if (static_cast<unsigned long long>(darts) > limits().darts)
+    lines.fail(over_limit("dart count", static_cast<std::size_t>(darts), limits().darts, "--limit-darts"));
   Map& map = out.map;
-  map.add_darts(static_cast<std::size_t>(darts));
   // Dart lines: "<id> <alpha_0> ... <alpha_n>", ids resolved once all are read.
   std::unordered_map<std::string, Dart> index;
   std::vector<std::pair<int, std::vector<std::string>>> rows;
@@ -116,6 +117,9 @@ JbaFile read_jba(const std::string& file) {
     out.ids.push_back(w[0]);
     rows.emplace_back(lines.number(), std::move(w));
   }
+  // Allocated once every dart line is read: a count the file does not back
+  // with lines costs nothing.
+  map.add_darts(static_cast<std::size_t>(darts));
   for (const auto& [line, w] : rows)
     for (int i = 0; i <= n; ++i) {
       const auto it = index.find(w[static_cast<std::size_t>(i) + 1]);

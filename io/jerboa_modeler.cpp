@@ -10,6 +10,7 @@
 #include <pugixml.hpp>
 
 #include "core/input_error.hpp"
+#include "io/input_file.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 
 namespace dartcheck {
@@ -242,8 +243,7 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
 }  // namespace
 
 Catalog read_jme(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, 0, 0, "cannot read the file");
+  std::ifstream in = open_input(file, std::ios::binary);
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string text = buffer.str();

@@ -1,19 +1,27 @@
 #include "io/map_io.hpp"
 
 #include <fmt/format.h>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
+#include "core/limits.hpp"
 #include "io/yaml_util.hpp"
 
 namespace dartcheck {
 namespace {
 
-constexpr long long max_darts = 1LL << 31;
-
 Dart as_dart(const std::string& file, const YAML::Node& n, std::size_t darts) {
   if (n.IsNull()) return no_dart;
   return static_cast<Dart>(yaml::as_int(file, n, "dart", 0, static_cast<long long>(darts) - 1));
+}
+
+// A dart where a list entry must name one (a loop, a cycle's member): '~'
+// (no dart) is an error there, not an index.
+Dart as_named_dart(const std::string& file, const YAML::Node& n, std::size_t darts, const char* where) {
+  const Dart d = as_dart(file, n, darts);
+  if (d == no_dart) fail_at(file, n, fmt::format("{}: expected a dart, found '~' (no dart)", where));
+  return d;
 }
 
 // The predecessor array a reader derives from the links when none is
@@ -39,8 +47,7 @@ void read_dimension(const std::string& file, const YAML::Node& spec, Map& m, Dim
     yaml::expect_sequence(file, pairs, "pairs");
     for (const auto& p : pairs) {
       if (!p.IsSequence() || p.size() != 2) fail_at(file, p, "a pair: expected [dart, dart]");
-      const Dart a = as_dart(file, p[0], n), b = as_dart(file, p[1], n);
-      if (a == no_dart || b == no_dart) fail_at(file, p, "a pair cannot name no dart");
+      const Dart a = as_named_dart(file, p[0], n, "a pair"), b = as_named_dart(file, p[1], n, "a pair");
       m.set_link_raw(i, a, b);
       m.set_link_raw(i, b, a);
     }
@@ -51,7 +58,7 @@ void read_dimension(const std::string& file, const YAML::Node& spec, Map& m, Dim
     } else {
       yaml::expect_sequence(file, loops, "loops (a list of darts, or 'all')");
       for (const auto& l : loops) {
-        const Dart d = as_dart(file, l, n);
+        const Dart d = as_named_dart(file, l, n, "a loop");
         m.set_link_raw(i, d, d);
       }
     }
@@ -61,7 +68,9 @@ void read_dimension(const std::string& file, const YAML::Node& spec, Map& m, Dim
     yaml::expect_sequence(file, cycles, "cycles");
     for (const auto& c : cycles) {
       yaml::expect_sequence(file, c, "a cycle");
-      for (std::size_t k = 0; k < c.size(); ++k) m.set_link_raw(i, as_dart(file, c[k], n), as_dart(file, c[(k + 1) % c.size()], n));
+      std::vector<Dart> cycle;
+      for (const auto& d : c) cycle.push_back(as_named_dart(file, d, n, "a cycle"));
+      for (std::size_t k = 0; k < cycle.size(); ++k) m.set_link_raw(i, cycle[k], cycle[(k + 1) % cycle.size()]);
     }
   }
 }
@@ -90,7 +99,10 @@ void write_model(std::ostream& out, const Model& model) {
 }  // namespace
 
 Map read_map_links(const std::string& file, const YAML::Node& node, const Model& model) {
-  const auto darts = yaml::as_int(file, yaml::require(file, node, "darts"), "darts", 0, max_darts);
+  const YAML::Node count = yaml::require(file, node, "darts");
+  const auto darts = yaml::as_int(file, count, "darts", 0, std::numeric_limits<long long>::max());
+  if (static_cast<unsigned long long>(darts) > limits().darts)
+    fail_at(file, count, over_limit("darts", static_cast<std::size_t>(darts), limits().darts, "--limit-darts"));
   Map m(model, static_cast<std::size_t>(darts));
   const YAML::Node links = yaml::require(file, node, "links");
   yaml::expect_map(file, links, "links");
@@ -120,7 +132,11 @@ Map read_map_links(const std::string& file, const YAML::Node& node, const Model&
 Map read_map(const std::string& file, const YAML::Node& node) {
   yaml::expect_map(file, node, "map");
   yaml::allow_keys(file, node, {"model", "darts", "links", "pred"});
-  return read_map_links(file, node, yaml::as_model(file, yaml::require(file, node, "model")));
+  try {
+    return read_map_links(file, node, yaml::as_model(file, yaml::require(file, node, "model")));
+  } catch (const YAML::Exception& e) {
+    throw InputError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, e.msg);
+  }
 }
 
 

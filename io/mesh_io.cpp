@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "core/input_error.hpp"
+#include "io/input_file.hpp"
 
 namespace dartcheck {
 namespace {
@@ -28,9 +29,7 @@ struct Line {
 
 class LineReader {
  public:
-  explicit LineReader(const std::string& file) : file_(file), in_(file, std::ios::binary) {
-    if (!in_) throw InputError(file, 0, 0, "cannot open file");
-  }
+  explicit LineReader(const std::string& file) : file_(file), in_(open_input(file, std::ios::binary)) {}
   // Next line with at least one token, or nullopt at the end of the file.
   std::optional<Line> next() {
     while (std::getline(in_, text_)) {

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 #include <fstream>
 
+#include "io/input_file.hpp"
+
 namespace dartcheck {
 
 void fail_at(const std::string& file, const YAML::Node& node, const std::string& message) {
@@ -12,8 +14,7 @@ void fail_at(const std::string& file, const YAML::Node& node, const std::string&
 }
 
 YAML::Node load_yaml_file(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file, 0, 0, "cannot open file");
+  std::ifstream in = open_input(file);
   try {
     return YAML::Load(in);
   } catch (const YAML::ParserException& e) {

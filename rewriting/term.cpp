@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "core/input_error.hpp"
+#include "core/limits.hpp"
 #include "rewriting/term_functions.hpp"
 
 namespace dartcheck {
@@ -58,7 +60,7 @@ class Lexer {
       ++k_;
       tok_ = {Token::punct, std::string(1, c), start};
     } else {
-      throw TermError(start, fmt::format("unexpected character '{}'", c));
+      throw TermError(start, fmt::format("unexpected character '{}'", printable(std::string_view(&c, 1))));
     }
   }
   const std::string& s_;
@@ -84,41 +86,79 @@ class Parser {
     lex_.take();
   }
 
-  static Term call(std::string op, std::size_t offset, std::vector<Term> args) {
+  // Arguments are moved in one by one: a braced list would copy them, and
+  // copying the left operand at every '+' made parsing quadratic.
+  static Term call(std::string op, std::size_t offset, Term a) {
     Term t;
     t.kind = Term::Kind::call;
     t.name = std::move(op);
     t.offset = offset;
-    t.args = std::move(args);
+    t.args.push_back(std::move(a));
+    return t;
+  }
+  static Term call(std::string op, std::size_t offset, Term a, Term b) {
+    Term t = call(std::move(op), offset, std::move(a));
+    t.args.push_back(std::move(b));
     return t;
   }
 
+  // Two bounds keep every recursion over a term (parsing, checking,
+  // evaluation, printing, destruction) off the end of the stack: the
+  // parser's own nesting (parentheses, arguments, unary signs), and the
+  // depth of the tree it builds (depth_: of the term just returned).
+  void deeper(std::size_t depth, std::size_t offset) const {
+    if (depth > limits().term_depth)
+      throw TermError(offset, over_limit("the term's nesting", depth, limits().term_depth, "--limit-term-depth"));
+  }
+  struct Nest {
+    Parser& p;
+    Nest(Parser& parser, std::size_t offset) : p(parser) { p.deeper(++p.nesting_, offset); }
+    ~Nest() { --p.nesting_; }
+    Nest(const Nest&) = delete;
+    Nest& operator=(const Nest&) = delete;
+  };
+
   Term sum() {
+    const Nest nest(*this, lex_.peek().offset);
     Term t = product();
+    std::size_t d = depth_;
     while (lex_.at("+") || lex_.at("-")) {
       const Token op = lex_.take();
-      t = call(op.text, op.offset, {std::move(t), product()});
+      Term rhs = product();
+      d = std::max(d, depth_) + 1;
+      deeper(d, op.offset);
+      t = call(op.text, op.offset, std::move(t), std::move(rhs));
     }
+    depth_ = d;
     return t;
   }
   Term product() {
     Term t = unary();
+    std::size_t d = depth_;
     while (lex_.at("*") || lex_.at("/")) {
       const Token op = lex_.take();
-      t = call(op.text, op.offset, {std::move(t), unary()});
+      Term rhs = unary();
+      d = std::max(d, depth_) + 1;
+      deeper(d, op.offset);
+      t = call(op.text, op.offset, std::move(t), std::move(rhs));
     }
+    depth_ = d;
     return t;
   }
   Term unary() {
     if (lex_.at("-")) {
       const Token op = lex_.take();
-      return call("-", op.offset, {unary()});
+      const Nest nest(*this, op.offset);
+      Term t = call("-", op.offset, unary());
+      deeper(++depth_, op.offset);
+      return t;
     }
     return postfix();
   }
   Term postfix() {
     Term t = primary();
     while (lex_.at(".")) {
+      deeper(++depth_, lex_.peek().offset);
       lex_.take();
       const Token n = lex_.take();
       if (n.kind != Token::name) throw TermError(n.offset, fmt::format("expected an embedding or alpha_i after '.', found {}", describe(n)));
@@ -147,6 +187,7 @@ class Parser {
     const Token t = lex_.take();
     Term r;
     r.offset = t.offset;
+    depth_ = 1;
     switch (t.kind) {
       case Token::number: {
         const bool real = t.text.find_first_of(".eE") != std::string::npos;
@@ -188,14 +229,19 @@ class Parser {
       lex_.take();
       r.kind = Term::Kind::call;
       r.name = t.text;
+      std::size_t d = 0;
       if (!lex_.at(")")) {
         r.args.push_back(sum());
+        d = depth_;
         while (lex_.at(",")) {
           lex_.take();
           r.args.push_back(sum());
+          d = std::max(d, depth_);
         }
       }
       expect(")", fmt::format("to close the arguments of '{}'", t.text).c_str());
+      depth_ = d + 1;
+      deeper(depth_, t.offset);
       return r;
     }
     r.kind = Term::Kind::variable;
@@ -214,7 +260,11 @@ class Parser {
       const Token d = lex_.take();
       if (d.kind != Token::number || d.text.find('.') != std::string::npos)
         throw TermError(d.offset, fmt::format("expected a dimension or '>' in the orbit type of '{}', found {}", r.name, describe(d)));
-      r.orbit.push_back(std::stoi(d.text));
+      int dim = -1;
+      const auto e = std::from_chars(d.text.data(), d.text.data() + d.text.size(), dim);
+      if (e.ec != std::errc{} || e.ptr != d.text.data() + d.text.size() || dim > max_dimension)
+        throw TermError(d.offset, fmt::format("'{}' in the orbit type of '{}' is not a dimension (0 to {})", d.text, r.name, max_dimension));
+      r.orbit.push_back(dim);
       if (lex_.at(",")) lex_.take();
     }
     lex_.take();  // '>'
@@ -223,10 +273,12 @@ class Parser {
     expect("(", fmt::format("after the orbit type of the collect operator '{}'", r.name).c_str());
     r.args.push_back(sum());
     expect(")", "to close the collect operator");
+    deeper(++depth_, name.offset);
     return r;
   }
 
   Lexer lex_;
+  std::size_t nesting_ = 0, depth_ = 0;
 };
 
 bool is_infix(const Term& t) {
@@ -245,7 +297,11 @@ void collect_variables(const Term& t, std::vector<std::string>& out) {
 
 }  // namespace
 
-Term parse_term(const std::string& text) { return Parser(text).whole(); }
+Term parse_term(const std::string& text) {
+  if (text.size() > limits().term_length)
+    throw TermError(limits().term_length, over_limit("the term's length", text.size(), limits().term_length, "--limit-term-length"));
+  return Parser(text).whole();
+}
 
 std::string Term::str() const {
   auto sub = [](const Term& t, int min) { return precedence(t) < min ? fmt::format("({})", t.str()) : t.str(); };

@@ -19,6 +19,7 @@
 #include "io/catalog.hpp"
 #include "rewriting/embedded_application.hpp"
 #include "core/input_error.hpp"
+#include "core/limits.hpp"
 #include "io/mesh_io.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/term_eval.hpp"
@@ -87,6 +88,50 @@ TEST(Terms, ErrorsNameTheOffendingToken) {
   } catch (const TermError& e) {
     EXPECT_NE(std::string(e.what()).find("mix : color x color -> color"), std::string::npos) << e.what();
   }
+}
+
+// Issue 21: terms that overflowed the stack (thousands of parentheses or
+// unary minus signs), a dimension that ended in "error: stoi", and terms
+// longer than the limit; each is a TermError at its offset.
+std::string parse_error(const std::string& text) {
+  try {
+    parse_term(text);
+  } catch (const TermError& e) {
+    return fmt::format("{}: {}", e.offset(), e.what());
+  }
+  return "no error";
+}
+
+TEST(Terms, HostileTermsStopAtTheLimits) {
+  const std::string parens = std::string(30000, '(') + "a" + std::string(30000, ')');
+  EXPECT_NE(parse_error(parens).find("the term's nesting: 257 is over the limit of 256"), std::string::npos) << parse_error(parens).substr(0, 80);
+  EXPECT_EQ(parse_error(parens).rfind("256:", 0), 0u);  // the 257th '('
+  const std::string minus = std::string(60000, '-') + "a";
+  EXPECT_EQ(parse_error(minus).rfind("255: the term's nesting: 257", 0), 0u) << parse_error(minus).substr(0, 80);
+  // The depth of the tree, not only the parser's nesting: a+a+...+a is a
+  // left comb as deep as it has operators.
+  std::string sum = "a";
+  for (int k = 0; k < 255; ++k) sum += "+a";
+  EXPECT_EQ(parse_error(sum), "no error");  // depth 256
+  EXPECT_NE(parse_error(sum + "+a").find("over the limit"), std::string::npos);
+  std::string dots = "a";
+  for (int k = 0; k < 300; ++k) dots += ".alpha0";
+  EXPECT_NE(parse_error(dots).find("over the limit"), std::string::npos);
+  // Raised, the same sum parses (limits are per process, set by the CLI).
+  const Limits saved = limits();
+  limits().term_depth = 100000;
+  std::string long_sum = "a";
+  for (int k = 0; k < 20000; ++k) long_sum += "+a";
+  EXPECT_EQ(parse_error(long_sum), "no error");
+  limits() = saved;
+  EXPECT_NE(parse_error(long_sum).find("the term's nesting: 257 is over the limit"), std::string::npos) << parse_error(long_sum).substr(0, 80);
+  limits().term_length = 1000;
+  EXPECT_EQ(parse_error(long_sum), "1000: the term's length: 40001 is over the limit of 1000 (raise it with --limit-term-length)");
+  limits() = saved;
+
+  EXPECT_EQ(parse_error("pos<99999999999>(a)"), "4: '99999999999' in the orbit type of 'pos' is not a dimension (0 to 15)");
+  EXPECT_EQ(parse_error("pos<0,16>(a)").rfind("6: ", 0), 0u);
+  EXPECT_EQ(parse_error(std::string("a + \x01")), "4: unexpected character '\\x01'");
 }
 
 TEST(Terms, UserFunctionsRegisteredWithTheirProfile) {
