@@ -1,4 +1,5 @@
 #include "analysis/embedded_fuzz.hpp"
+#include "analysis/interrupt.hpp"
 
 #include <random>
 
@@ -104,6 +105,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
       out.out_of_time = true;
       break;
     }
+    if (interrupted()) break;
     auto host = next_host();
     if (!host) break;
     ++out.hosts;

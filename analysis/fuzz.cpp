@@ -1,4 +1,5 @@
 #include "analysis/fuzz.hpp"
+#include "analysis/interrupt.hpp"
 
 #include "analysis/embedded_fuzz.hpp"
 
@@ -177,7 +178,7 @@ class Fuzzer {
       out_.out_of_time = true;
       return false;
     }
-    return true;
+    return !interrupted();
   }
 
   void note_host(const Map& g) {
@@ -411,7 +412,7 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
   const auto start = std::chrono::steady_clock::now();
   std::vector<FuzzReport> reports;
   std::size_t failures = 0;
-  for (std::size_t k = 0; k < rules.size(); ++k) {
+  for (std::size_t k = 0; k < rules.size() && !interrupted(); ++k) {
     if (seconds) {
       // An equal share of what is left for each remaining rule.
       const double left = *seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -424,7 +425,15 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
                    p.seconds > 0 ? double(p.applications) / p.seconds : 0.0, failures, failures == 1 ? "" : "s");
       };
     reports.push_back(fuzz_rule(*rules[k], seeds, o));
+    if (interrupted()) {
+      reports.pop_back();  // stopped halfway: not a result
+      break;
+    }
     if (reports.back().counterexample) ++failures;
+    const auto& r = reports.back();
+    // Without a terminal (CI logs), a line per finished rule instead.
+    if (!progress)
+      fmt::print(stderr, "[{}/{}] {}: {}, {} applications, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict), r.applications, r.seconds);
   }
   if (progress) fmt::print(stderr, "\r\033[K");
   return reports;

@@ -101,7 +101,9 @@ FuzzReport fuzz_rule(const Operation& rule, const std::vector<Map>& seeds, const
 
 /// Fuzzes each rule in turn. With `seconds`, the rules share that budget:
 /// each gets an equal part of what is left (options.deadline is set per
-/// rule). `progress` prints a progress line on stderr.
+/// rule). `progress` prints a progress line on stderr (a terminal's);
+/// without it, a line per finished rule. After SIGINT/SIGTERM
+/// (analysis/interrupt) it returns the reports of the rules it finished.
 std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, const std::vector<Map>& seeds, FuzzOptions options,
                                    std::optional<double> seconds, bool progress);
 

@@ -77,6 +77,11 @@ int apply_terms(const ApplyOptions& o, const CatalogRule& rule, Map map) {
 }  // namespace
 
 int apply(const ApplyOptions& o) {
+  // The only writer is YAML: a result under another extension would be a
+  // YAML file that its readers reject (or an OFF file without positions).
+  if (!o.output.empty() && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
+    throw InputError("<command line>", 0, 0,
+                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml); it has no .jba, .off or .obj writer yet", o.output));
   const Catalog catalog = read_catalog(o.catalog);
   const CatalogRule* rule = catalog.find_rule(o.rule);
   if (!rule) throw InputError(o.catalog, 0, 0, fmt::format("no rule named '{}'", o.rule));

@@ -13,6 +13,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
+#include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/options.hpp"
 #include "analysis/embedded_fuzz.hpp"
@@ -65,6 +66,7 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
 
 int fuzz(const FuzzCommand& c) {
   const Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format);
+  catch_interrupts();
   if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
 
   FuzzOptions o;
@@ -117,7 +119,12 @@ int fuzz(const FuzzCommand& c) {
     if (contradicts_record(*entries[k], reports[k].counterexample.has_value()))
       contradictions.push_back(contradiction_line(*entries[k], fmt::format("fuzz broke a map ({})", fuzz_class_name(reports[k].verdict))));
   for (const auto& line : contradictions) fmt::print(stderr, "MISMATCH: {}\n", line);
-  const int status = bugs ? soundness_bug : contradictions.empty() ? ok : violation;
+  int status = bugs ? soundness_bug : contradictions.empty() ? ok : violation;
+  // Interrupted (SIGINT, SIGTERM): the finished rules' results are kept.
+  if (interrupted()) {
+    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", reports.size(), rules.size(), rules.size() == 1 ? "" : "s");
+    if (status != soundness_bug) status = interrupted_exit;
+  }
 
   if (c.format == "json") {
     fmt::print("{{\"catalog\": \"{}\", \"seed\": {}, \"seconds\": {:.3f}, \"rules\": [\n", json_escape(c.catalog), o.seed, total);

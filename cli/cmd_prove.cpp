@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/options.hpp"
 #include "analysis/counterexample_files.hpp"
@@ -61,6 +62,7 @@ std::string confirm_dynamically(const CatalogRule& entry, proofs::ConstraintProo
 
 int prove(const ProveCommand& c) {
   const Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format);
+  catch_interrupts();
   if (c.max_darts < 1 || c.max_darts > 256) throw InputError("<command line>", 0, 0, "--max-darts: expected 1 to 256");
   if (c.scheme_darts < 1 || c.scheme_darts > 256) throw InputError("<command line>", 0, 0, "--scheme-darts: expected 1 to 256");
   proofs::ProveOptions o;
@@ -72,8 +74,11 @@ int prove(const ProveCommand& c) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<proofs::RuleProof> proofs;
   std::vector<std::vector<std::string>> replays;
+  std::size_t selected = 0;
   for (const auto& e : catalog.rules) {
     if (!c.rule.empty() && e.rule.name() != c.rule) continue;
+    ++selected;
+    if (interrupted()) continue;  // a rule's queries finish; the next ones do not start
     proofs.push_back(proofs::prove_rule(e, o));
     replays.emplace_back();
     for (auto& cp : proofs.back().constraints) replays.back().push_back(confirm_dynamically(e, cp, c.out, c.catalog, proofs.back().static_failures));
@@ -92,6 +97,7 @@ int prove(const ProveCommand& c) {
     std::size_t k = 0;
     for (const auto& e : catalog.rules) {
       if (!c.rule.empty() && e.rule.name() != c.rule) continue;
+      if (k == proofs.size()) break;
       const auto& p = proofs[k++];
       const bool broken = std::any_of(p.constraints.begin(), p.constraints.end(), [](const proofs::ConstraintProof& cp) {
         return cp.model.status == Status::counterexample || (cp.theorem && cp.theorem->status == Status::counterexample);
@@ -100,7 +106,12 @@ int prove(const ProveCommand& c) {
     }
   }
   for (const auto& line : contradictions) fmt::print(stderr, "MISMATCH: {}\n", line);
-  const int status = disagreements ? soundness_bug : contradictions.empty() ? ok : violation;
+  int status = disagreements ? soundness_bug : contradictions.empty() ? ok : violation;
+  // Interrupted (SIGINT, SIGTERM): the finished rules' results are kept.
+  if (interrupted()) {
+    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", proofs.size(), selected, selected == 1 ? "" : "s");
+    if (status != soundness_bug) status = interrupted_exit;
+  }
 
   if (c.format == "json") {
     fmt::print("{{\"catalog\": \"{}\", \"max_darts\": {}, \"rlimit\": {}, \"seconds\": {:.3f}, \"rules\": [\n", json_escape(c.catalog), o.max_darts,

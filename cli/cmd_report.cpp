@@ -18,6 +18,7 @@
 #include "analysis/embedding_checks.hpp"
 #include "checkers/violation.hpp"
 #include "cli/commands.hpp"
+#include "analysis/interrupt.hpp"
 #include "cli/embedding_picture.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/options.hpp"
@@ -294,6 +295,7 @@ std::string rule_section(const RuleReport& r, Pictures& pictures) {
 
 int report(const ReportOptions& o) {
   const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  catch_interrupts();
   std::optional<double> seconds;
   if (!o.fuzz.empty()) seconds = parse_duration(o.fuzz, "--fuzz");
   if (o.prove_darts > 256) throw InputError("<command line>", 0, 0, "--prove: expected 0 (no proof) to 256 darts");
@@ -332,7 +334,7 @@ int report(const ReportOptions& o) {
     fmt::print(stderr, "dartcheck report: fuzzing {} rule{} for {} s, seed {}\n", rules.size(), rules.size() == 1 ? "" : "s", *seconds, fo.seed);
     auto found = fuzz_rules(rules, seeds, fo, seconds, isatty(fileno(stderr)) != 0);
     std::size_t applications = 0;
-    for (std::size_t k = 0; k < rows.size(); ++k) {
+    for (std::size_t k = 0; k < found.size(); ++k) {  // fewer than rows if interrupted
       applications += found[k].applications;
       if (found[k].counterexample && rows[k].entry->terms)
         rows[k].fuzz_replay = embedded_replay(o.catalog, found[k], fo.seed);
@@ -352,6 +354,7 @@ int report(const ReportOptions& o) {
     fmt::print(stderr, "dartcheck report: proving {} rule{} up to {} darts (schemes {})\n", rules.size(), rules.size() == 1 ? "" : "s", po.max_darts,
                po.scheme_darts);
     for (auto& r : rows) {
+      if (interrupted()) break;
       r.proof = proofs::prove_rule(*r.entry, po);
       for (auto& c : r.proof->constraints) {
         r.proof_cx.push_back(replay_solver_map(*r.entry, c));
@@ -385,6 +388,10 @@ int report(const ReportOptions& o) {
   if (!out || !out.write(page.data(), static_cast<std::streamsize>(page.size()))) throw InputError(index.string(), 0, 0, "cannot write the report");
   fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes)\n", index.string(), rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size());
   // Every non-zero exit says why.
+  if (interrupted()) {
+    fmt::print(stderr, "interrupted: the report holds the rules fuzzed or proved before the signal\n");
+    if (!unsound) return interrupted_exit;
+  }
   if (unsound) {
     fmt::print(stderr, "SOUNDNESS BUG: a rule the static checker accepts broke a map, or the solver disagrees with it (see the report)\n");
     return soundness_bug;
