@@ -174,7 +174,17 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
   const SourceLocation at = p.at(r);
   // Structural errors (orbits, arcs, dimensions) fail the file; what
   // dartcheck cannot represent skips the rule.
-  const JmeSide left = read_side(p, r.child("left"), dimension), right = read_side(p, r.child("right"), dimension);
+  JmeSide left = read_side(p, r.child("left"), dimension), right = read_side(p, r.child("right"), dimension);
+  // Every node labeled '_' in every position (<_>, <_,_>...): the orbits
+  // hold no link, each node is one dart, and the rule is the plain DPO rule
+  // on darts of orbit type <> (real modelers write single-dart rules so).
+  const auto all_removed = [](const JmeSide& s) {
+    return std::all_of(s.nodes.begin(), s.nodes.end(),
+                       [](const JmeNode& n) { return std::all_of(n.label.begin(), n.label.end(), [](const auto& x) { return !x.has_value(); }); });
+  };
+  if (all_removed(left) && all_removed(right))
+    for (auto* side : {&left, &right})
+      for (auto& n : side->nodes) n.label.clear();
   auto skip = [&](std::string why) { c.skipped.push_back({name, std::move(why), at}); };
   if (auto why = unrepresentable(r); !why.empty()) return skip(why);
 

@@ -297,3 +297,31 @@ TEST(Jba, BadInputNamesTheLine) {
   const auto cut = error_of(text.substr(0, text.find("\n20 ")), ".jba");
   EXPECT_NE(cut.find("the file ends"), std::string::npos) << cut;
 }
+
+// Issue 21: a rule whose nodes are all labeled '_' in every position (a
+// rule on single darts, as real modelers write them) is the plain DPO rule
+// on darts, not a skipped rule; a '_' hook with other labels stays skipped.
+TEST(Jme, UnderscoreLabelsEverywhereArePlainRulesOnDarts) {
+  const std::string text = slurp(samples + "JerboaRebuilt2.jme");
+  const auto begin = text.find(R"(<rule name="MergeEdge")"), end = text.find("</rule>", begin);
+  std::string merge = text.substr(begin, end - begin);
+  std::string darts = merge;
+  for (std::size_t at; (at = darts.find(R"(orbit="2,3")")) != std::string::npos;) darts.replace(at, 11, R"(orbit="-1,-1")");
+  const Catalog c = read_jme(temp_file(text.substr(0, begin) + darts + text.substr(end), ".jme"));
+  EXPECT_TRUE(c.skipped.empty());
+  const CatalogRule* r = c.find_rule("MergeEdge");
+  ASSERT_NE(r, nullptr);
+  EXPECT_FALSE(r->jerboa.has_value());
+  EXPECT_FALSE(r->words.scheme);
+  // The file's explicit arcs only (3 pairs in L, 1 in R): no implicit loop.
+  EXPECT_EQ(r->rule.left().node_count(), 4U);
+  EXPECT_EQ(r->rule.right().node_count(), 2U);
+  EXPECT_EQ(r->rule.left().arc_count(), 6U);
+  EXPECT_EQ(r->rule.right().arc_count(), 2U);
+
+  std::string mixed = merge;
+  mixed.replace(mixed.find(R"(orbit="2,3" kind="HOOK")"), 11, R"(orbit="-1,-1")");
+  const Catalog m = read_jme(temp_file(text.substr(0, begin) + mixed + text.substr(end), ".jme"));
+  ASSERT_EQ(m.skipped.size(), 1U);
+  EXPECT_NE(m.skipped[0].why.find("with '_'"), std::string::npos) << m.skipped[0].why;
+}
