@@ -160,8 +160,9 @@ Map build_volumes(const Model& model, const std::vector<Polyhedron>& volumes) {
   for (const auto& [key, uses] : shared) {
     if (uses.size() == 1) continue;
     if (uses.size() > 2) throw BuildError(fmt::format("a face with vertices {} is shared by {} volumes (at most 2 expected)", fmt::join(key, ","), uses.size()));
-    auto [v1, f1] = uses[0];
-    auto [v2, f2] = uses[1];
+    // Named, not structured bindings: clang 14 cannot capture those.
+    const std::size_t v1 = uses[0].first, f1 = uses[0].second;
+    const std::size_t v2 = uses[1].first, f2 = uses[1].second;
     const Polygon& a = volumes[v1][f1];
     const Polygon& b = volumes[v2][f2];
     const std::size_t k = a.size();

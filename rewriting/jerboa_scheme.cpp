@@ -32,8 +32,11 @@ OrbitType parse_orbit_type(std::string_view text) {
       t.emplace_back(std::nullopt);
     } else if (i < text.size() && text[i] >= '0' && text[i] <= '9') {
       int d = 0;
-      while (i < text.size() && text[i] >= '0' && text[i] <= '9') d = d * 10 + (text[i++] - '0');
-      if (d > max_dimension) fail(i - 1, fmt::format("dimension {} is above {}", d, max_dimension));
+      const std::size_t start = i;
+      // Saturated: any number above max_dimension is refused below (found
+      // by fuzz_word: "09999999999" overflowed int).
+      while (i < text.size() && text[i] >= '0' && text[i] <= '9') d = std::min(d * 10 + (text[i++] - '0'), 10 * max_dimension);
+      if (d > max_dimension) fail(i - 1, fmt::format("dimension {} is above {}", text.substr(start, i - start), max_dimension));
       if (std::find(t.begin(), t.end(), std::optional<Dim>(static_cast<Dim>(d))) != t.end())
         fail(i - 1, fmt::format("dimension {} appears twice (a relabeling is injective)", d));
       t.emplace_back(static_cast<Dim>(d));

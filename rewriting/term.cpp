@@ -118,33 +118,25 @@ class Parser {
     Nest& operator=(const Nest&) = delete;
   };
 
+  // A left-associative chain of `next` terms joined by operator `a` or `b`.
+  Term chain(Term (Parser::*next)(), const char* a, const char* b) {
+    Term t = (this->*next)();
+    std::size_t d = depth_;
+    while (lex_.at(a) || lex_.at(b)) {
+      const Token op = lex_.take();
+      Term rhs = (this->*next)();
+      d = std::max(d, depth_) + 1;
+      deeper(d, op.offset);
+      t = call(op.text, op.offset, std::move(t), std::move(rhs));
+    }
+    depth_ = d;
+    return t;
+  }
   Term sum() {
     const Nest nest(*this, lex_.peek().offset);
-    Term t = product();
-    std::size_t d = depth_;
-    while (lex_.at("+") || lex_.at("-")) {
-      const Token op = lex_.take();
-      Term rhs = product();
-      d = std::max(d, depth_) + 1;
-      deeper(d, op.offset);
-      t = call(op.text, op.offset, std::move(t), std::move(rhs));
-    }
-    depth_ = d;
-    return t;
+    return chain(&Parser::product, "+", "-");
   }
-  Term product() {
-    Term t = unary();
-    std::size_t d = depth_;
-    while (lex_.at("*") || lex_.at("/")) {
-      const Token op = lex_.take();
-      Term rhs = unary();
-      d = std::max(d, depth_) + 1;
-      deeper(d, op.offset);
-      t = call(op.text, op.offset, std::move(t), std::move(rhs));
-    }
-    depth_ = d;
-    return t;
-  }
+  Term product() { return chain(&Parser::unary, "*", "/"); }
   Term unary() {
     if (lex_.at("-")) {
       const Token op = lex_.take();

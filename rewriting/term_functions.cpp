@@ -40,7 +40,8 @@ FunctionRegistry make_builtin() {
           [t](auto a) { return Value::coords(t, {val(a, 0).x[0], val(a, 1).x[0], val(a, 2).x[0]}); });
 
   // Point and vector arithmetic, in 2D and 3D.
-  for (auto [p, v] : {std::pair{VT::point2, VT::vector2}, std::pair{VT::point3, VT::vector3}}) {
+  for (const auto& types : {std::pair{VT::point2, VT::vector2}, std::pair{VT::point3, VT::vector3}}) {
+    const VT p = types.first, v = types.second;  // named: clang 14 cannot capture structured bindings
     const Sort P = Sort::of(p), V = Sort::of(v);
     r.add("+", {P, V}, P, [p](auto a) { return combine(p, val(a, 0), 1, val(a, 1), 1); });
     r.add("+", {V, V}, V, [v](auto a) { return combine(v, val(a, 0), 1, val(a, 1), 1); });

@@ -12,6 +12,8 @@ packages=(
   # reads the screenshot.
   chromium libpng-dev
   libbenchmark-dev
+  # The libFuzzer harnesses (fuzz/, scripts/fuzz.sh): clang and its runtime.
+  clang libclang-rt-14-dev
   # Oracles, peers and real data for tests and benchmarks only.
   libcgal-dev libcgal-demo geomview assimp-testmodels libopenmesh-dev
 )

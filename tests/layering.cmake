@@ -13,8 +13,9 @@ set(layers
   "events:core,rewriting,checkers,events"
   "inference:core,rewriting,io,checkers,inference"
   "querymodify:core,rewriting,io,checkers,querymodify"
-  "analysis:core,rewriting,io,checkers,generators,proofs,events,analysis")
-set(known core rewriting io checkers generators proofs reports events inference querymodify analysis cli)
+  "analysis:core,rewriting,io,checkers,generators,proofs,events,analysis"
+  "fuzz:core,rewriting,io,checkers,generators,fuzz")
+set(known core rewriting io checkers generators proofs reports events inference querymodify analysis cli fuzz)
 set(errors 0)
 set(checked 0)
 foreach(entry IN LISTS layers)

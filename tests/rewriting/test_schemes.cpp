@@ -13,6 +13,7 @@
 #include "checkers/map_validity.hpp"
 #include "io/catalog.hpp"
 #include "rewriting/derivation.hpp"
+#include "rewriting/jerboa_scheme.hpp"
 #include "core/isomorphism.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/scheme_application.hpp"
@@ -250,4 +251,22 @@ RC_GTEST_PROP(FaceExtrusion, OmapOnRandomMaps, ()) {
     RC_ASSERT(after.cells == (std::vector<std::size_t>{before.cells[0] + k, before.cells[1] + 2 * k, before.cells[2] + k + 1, before.cells[3] + 1}));
   }
   RC_CLASSIFY(applied > 0, "applied somewhere");
+}
+
+// Jerboa orbit types (000 Sec. 4.3): hand-read parses, and the overflow
+// fuzz_word found ("09999999999" multiplied past INT_MAX: UBSan).
+TEST(OrbitType, ParsesAndRefusesLargeDimensions) {
+  const OrbitType t = parse_orbit_type("<0, _, 2>");
+  ASSERT_EQ(t.size(), 3U);
+  EXPECT_EQ(t[0], std::optional<Dim>(0));
+  EXPECT_FALSE(t[1].has_value());
+  EXPECT_EQ(t[2], std::optional<Dim>(2));
+  EXPECT_TRUE(parse_orbit_type("<>").empty());
+  try {
+    parse_orbit_type("<09999999999,_,@");
+    FAIL() << "accepted a dimension above 15";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("dimension 09999999999 is above 15"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_orbit_type("<16>"), std::invalid_argument);
 }

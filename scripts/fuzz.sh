@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (fuzz/, clang, ASan+UBSan) and runs each
+# for SECONDS (default 20) on seed corpora assembled from the catalogs, the
+# test data, ../shared/jerboa-samples and Debian's mesh packages. Prints one
+# line per target (executions, coverage, corpus) and exits non-zero on any
+# finding; a crashing input is left in BUILD/findings/<target>/.
+#   scripts/fuzz.sh [SECONDS] [BUILD]     e.g. scripts/fuzz.sh 600 build-fuzz
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-20}
+build=${2:-build-fuzz}
+root=$PWD
+
+CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDARTCHECK_FUZZ=ON -DDARTCHECK_TESTS=OFF -DDARTCHECK_BENCH=OFF >/dev/null
+cmake --build "$build" -j2 --target fuzz_targets >/dev/null
+
+# Seed corpora: copies, so that what a run adds stays in the build folder.
+seeds() {  # target, files...
+  local dir="$build/corpus/$1"; shift
+  mkdir -p "$dir"
+  for f in "$@"; do [ -f "$f" ] && cp "$f" "$dir/" || true; done
+}
+jerboa=$root/../shared/jerboa-samples
+seeds fuzz_catalog catalogs/*.yaml tests/data/*.yaml
+seeds fuzz_yaml_map tests/data/corrupt-square.yaml tests/data/hostile-*.yaml
+seeds fuzz_jba "$jerboa"/*.jba
+seeds fuzz_jme "$jerboa"/*.jme tests/data/*.jme
+seeds fuzz_term fuzz/seeds/term/*
+seeds fuzz_word fuzz/seeds/word/*
+# The mesh harness reads a model byte first.
+mkdir -p "$build/corpus/fuzz_mesh"
+for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.off; do
+  [ -f "$f" ] && { printf '0'; cat "$f"; } > "$build/corpus/fuzz_mesh/$(basename "$f")" || true
+done
+
+declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_word]=term)
+status=0
+for t in fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word; do
+  mkdir -p "$build/findings/$t"
+  log="$root/$build/findings/$t.log"
+  if (cd "$build/findings/$t" && "$root/$build/fuzz/$t" "$root/$build/corpus/$t" -dict="$root/fuzz/dict/${dict[$t]}.dict" \
+        -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 >"$log" 2>&1); then
+    result=ok
+  else
+    result=FINDING
+    status=1
+  fi
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo "?")
+  corpus=$(ls "$build/corpus/$t" | wc -l)
+  echo "$t: $result, $execs executions in ${seconds}s, coverage $cov edges, corpus $corpus inputs"
+  [ "$result" = ok ] || tail -40 "$log"
+done
+exit $status
