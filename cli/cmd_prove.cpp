@@ -99,9 +99,10 @@ int prove(const ProveCommand& c) {
       if (!c.rule.empty() && e.rule.name() != c.rule) continue;
       if (k == proofs.size()) break;
       const auto& p = proofs[k++];
-      const bool broken = std::any_of(p.constraints.begin(), p.constraints.end(), [](const proofs::ConstraintProof& cp) {
-        return cp.model.status == Status::counterexample || (cp.theorem && cp.theorem->status == Status::counterexample);
-      });
+      // Only a host that is a map of the model counts: a theorem-class host
+      // need not be one.
+      const bool broken = std::any_of(p.constraints.begin(), p.constraints.end(),
+                                      [](const proofs::ConstraintProof& cp) { return cp.model.status == Status::counterexample; });
       if (contradicts_record(e, broken)) contradictions.push_back(contradiction_line(e, "the solver found a host it breaks"));
     }
   }
