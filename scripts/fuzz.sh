@@ -6,7 +6,7 @@
 # crashing input is left in BUILD/findings/<target>/.
 #   scripts/fuzz.sh smoke [BUILD]     CI: a fixed seed and a fixed number of
 #                                     executions per target (about 20 s
-#                                     each), so a run replays exactly
+#                                     each), whatever the machine's speed
 #   scripts/fuzz.sh SECONDS [BUILD]   a campaign: e.g. 600 s per target
 set -euo pipefail
 cd "$(dirname "$0")/.."
