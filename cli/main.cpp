@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
   auto& lim = limits();
   app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--limit-term-depth", lim.term_depth, "deepest nesting of a term")->capture_default_str()->check(CLI::PositiveNumber);
+  // At most 10,000: a 25,000-deep sum overflowed the checker's recursion on an 8 MiB stack.
+  app.add_option("--limit-term-depth", lim.term_depth, "deepest nesting of a term (at most 10000)")->capture_default_str()->check(CLI::Range(1, 10000));
   app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->check(CLI::PositiveNumber);
 

@@ -19,12 +19,13 @@ static std::size_t utf8_length(std::string_view s, std::size_t k) {
   return n;
 }
 
+// Tab and newline pass: multi-line messages (a term's known profiles) use them.
 std::string printable(std::string_view text) {
   std::string out;
   for (std::size_t k = 0; k < text.size();) {
     const auto b = static_cast<unsigned char>(text[k]);
     const std::size_t n = utf8_length(text, k);
-    if ((b < 0x20 && b != '\t') || b == 0x7f || n == 0) {
+    if ((b < 0x20 && b != '\t' && b != '\n') || b == 0x7f || n == 0) {
       out += fmt::format("\\x{:02x}", b);
       ++k;
     } else {

@@ -104,5 +104,5 @@ TEST(HostileInput, DirectoriesAndBinaryFilesAreNamedAndPrintable) {
   const auto m = message_of([&] { read_catalog(binary); });
   EXPECT_EQ(m.rfind(binary, 0), 0U) << m;
   EXPECT_FALSE(has_control_bytes(m)) << m;
-  EXPECT_EQ(printable(std::string("a\x01\xff\xc3\xa9\t", 6)), "a\\x01\\xffé\t");
+  EXPECT_EQ(printable(std::string("a\x01\xff\xc3\xa9\t\n\x1b", 8)), "a\\x01\\xffé\t\n\\x1b");
 }
