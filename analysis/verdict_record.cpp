@@ -33,4 +33,8 @@ std::string contradiction_line(const CatalogRule& entry, const std::string& how)
   return fmt::format("{}: {}: the catalog records verdict 'consistent', but {}", entry.location.str(), entry.rule.name(), how);
 }
 
+std::string contradiction_summary(std::size_t rules) {
+  return fmt::format("{} rule{} the verdict the catalog records", rules, rules == 1 ? " contradicts" : "s contradict");
+}
+
 }  // namespace dartcheck::analysis

@@ -24,4 +24,7 @@ bool contradicts_record(const CatalogRule& entry, bool broke_a_map);
 /// The line every command prints for such a contradiction.
 std::string contradiction_line(const CatalogRule& entry, const std::string& how);
 
+/// "1 rule contradicts the verdict the catalog records", "2 rules contradict ...".
+std::string contradiction_summary(std::size_t rules);
+
 }  // namespace dartcheck::analysis

@@ -168,7 +168,7 @@ int fuzz(const FuzzCommand& c) {
   fmt::print("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
              reports.size(), count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, bugs == 1 ? "" : "s", applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
   if (!contradictions.empty())
-    fmt::print("{} rule{} the verdict the catalog records\n", contradictions.size(), contradictions.size() == 1 ? " contradicts" : "s contradict");
+    fmt::print("{}\n", contradiction_summary(contradictions.size()));
   return status;
 }
 

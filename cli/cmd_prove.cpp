@@ -160,7 +160,7 @@ int prove(const ProveCommand& c) {
              "{:.1f} s\n",
              proofs.size(), scoped, counts[0], counts[1], counts[2], counts[3], o.max_darts, o.rlimit, total);
   if (!contradictions.empty())
-    fmt::print("{} rule{} the verdict the catalog records\n", contradictions.size(), contradictions.size() == 1 ? " contradicts" : "s contradict");
+    fmt::print("{}\n", contradiction_summary(contradictions.size()));
   return status;
 }
 

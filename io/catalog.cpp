@@ -341,7 +341,7 @@ Catalog read_catalog(const std::string& file) {
     return read_yaml_catalog(file);
   } catch (const YAML::Exception& e) {
     // A shape the reader did not foresee: still an error at its position.
-    throw InputError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, e.msg);
+    throw yaml_input_error(file, e);
   }
 }
 

@@ -135,7 +135,7 @@ Map read_map(const std::string& file, const YAML::Node& node) {
   try {
     return read_map_links(file, node, yaml::as_model(file, yaml::require(file, node, "model")));
   } catch (const YAML::Exception& e) {
-    throw InputError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, e.msg);
+    throw yaml_input_error(file, e);
   }
 }
 

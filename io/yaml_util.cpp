@@ -22,6 +22,10 @@ YAML::Node load_yaml_file(const std::string& file) {
   }
 }
 
+InputError yaml_input_error(const std::string& file, const YAML::Exception& e) {
+  return InputError(file, e.mark.is_null() ? 0 : e.mark.line + 1, e.mark.is_null() ? 0 : e.mark.column + 1, e.msg);
+}
+
 }  // namespace dartcheck
 
 namespace dartcheck::yaml {

@@ -17,6 +17,9 @@ namespace dartcheck {
 /// Loads a YAML file, turning parser errors into InputError.
 YAML::Node load_yaml_file(const std::string& file);
 
+/// A yaml-cpp error a reader did not foresee, as an InputError at its mark.
+InputError yaml_input_error(const std::string& file, const YAML::Exception& e);
+
 }  // namespace dartcheck
 
 namespace dartcheck::yaml {
