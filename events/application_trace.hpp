@@ -1,0 +1,54 @@
+// What an application G => H leaves for event detection (004 Sec. 1, 5):
+// the match and comatch per (rule node, pattern position), the darts that
+// H renumbered, and from them the correspondence between G's and H's
+// darts. Built without touching the unmatched part of the map.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+#include "rewriting/operation.hpp"
+#include "rewriting/scheme_application.hpp"
+
+namespace dartcheck::events {
+
+struct ApplicationTrace {
+  std::size_t g_size = 0;
+  std::vector<std::vector<Dart>> match;    // [L node][p]: dart of G
+  std::vector<std::vector<Dart>> comatch;  // [R node][p]: dart of H
+  std::vector<std::pair<Dart, Dart>> moved;
+  /// The hook's pattern (schemes); a DPO rule has one position.
+  std::optional<PatternGraphs> pattern;
+  std::size_t positions() const { return match.empty() ? (comatch.empty() ? 0 : comatch[0].size()) : match[0].size(); }
+};
+
+/// Applies `op` at `hooks` to g in place (a DPO rule by apply_rule's steps,
+/// a scheme by match_scheme then rewrite_scheme) and records the trace.
+/// Refuses as the engines do, leaving g unchanged.
+Outcome<ApplicationTrace> apply_traced(const Operation& op, Map& g, std::span<const Dart> hooks);
+
+/// G's darts against H's: preserved darts by the comatch, unmatched ones by
+/// identity or their renumbering. Costs O(|matched| + |moved|).
+class Correspondence {
+ public:
+  Correspondence(const Rule& rule, const ApplicationTrace& t);
+  /// The dart of H that g became; no_dart if g was deleted.
+  Dart to_h(Dart g) const {
+    const auto it = g2h_.find(g);
+    return it == g2h_.end() ? g : it->second;
+  }
+  /// The dart of G that h was; no_dart if h was created.
+  Dart to_g(Dart h) const {
+    const auto it = h2g_.find(h);
+    return it == h2g_.end() ? h : it->second;
+  }
+  bool matched(Dart g) const { return matched_.count(g) != 0; }
+
+ private:
+  std::unordered_map<Dart, Dart> g2h_, h2g_;
+  std::unordered_map<Dart, bool> matched_;
+};
+
+}  // namespace dartcheck::events

@@ -1,0 +1,248 @@
+#include "events/event_log.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "core/orbit.hpp"
+
+namespace dartcheck::events {
+namespace {
+
+// A set of orbits in compressed form: orbit a has the darts
+// darts[start[a] .. start[a+1]) and the representative rep[a].
+struct Orbits {
+  std::vector<Dart> rep;
+  std::vector<std::size_t> start{0};
+  std::vector<Dart> darts;
+  std::size_t size() const { return rep.size(); }
+  std::span<const Dart> of(std::size_t a) const { return {darts.data() + start[a], start[a + 1] - start[a]}; }
+  void add(std::span<const Dart> members) {
+    rep.push_back(*std::min_element(members.begin(), members.end()));
+    darts.insert(darts.end(), members.begin(), members.end());
+    start.push_back(darts.size());
+  }
+};
+
+// The events between G's orbits and H's orbits (004 Def. 3.1.1-3.4.2 on
+// transformations). to_h / to_g: the correspondence; h_orbit / g_orbit:
+// the orbit index of a dart of the other side's images.
+template <class ToH, class ToG, class HOrbit, class GOrbit, class Matched>
+std::vector<LoggedEvent> derive(const Map& g, const Map& h, const OrbitKind& kind, const Orbits& go, const Orbits& ho, ToH to_h, ToG to_g,
+                                HOrbit h_orbit, GOrbit g_orbit, Matched matched, bool skip_unmatched_unchanged) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::vector<char> deleted(go.size(), 0), created(ho.size(), 0);
+  for (std::size_t a = 0; a < go.size(); ++a)
+    for (Dart d : go.of(a)) {
+      const Dart e = to_h(d);
+      if (e == no_dart)
+        deleted[a] = 1;
+      else
+        pairs.emplace_back(static_cast<std::uint32_t>(a), h_orbit(e));
+    }
+  for (std::size_t b = 0; b < ho.size(); ++b)
+    for (Dart e : ho.of(b))
+      if (to_g(e) == no_dart) {
+        created[b] = 1;
+      } else {
+        // An H orbit whose preserved darts come from a G orbit outside `go`
+        // is caught by the pair count below; g_orbit asserts membership.
+        (void)g_orbit(to_g(e));
+      }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::vector<std::uint32_t> nb(go.size(), 0), na(ho.size(), 0), only_b(go.size(), 0);
+  std::vector<std::vector<std::uint32_t>> as_of_b;
+  for (auto [a, b] : pairs) {
+    ++nb[a];
+    ++na[b];
+    only_b[a] = b;
+  }
+  std::vector<LoggedEvent> out;
+  // Splits, by G orbit (pairs are sorted by a).
+  for (std::size_t i = 0; i < pairs.size();) {
+    std::size_t j = i;
+    while (j < pairs.size() && pairs[j].first == pairs[i].first) ++j;
+    if (j - i >= 2) {
+      LoggedEvent e{Event::split, {go.rep[pairs[i].first]}, {}};
+      for (std::size_t q = i; q < j; ++q) e.after.push_back(ho.rep[pairs[q].second]);
+      std::sort(e.after.begin(), e.after.end());
+      out.push_back(std::move(e));
+    }
+    i = j;
+  }
+  // Merges, by H orbit.
+  std::vector<std::vector<Dart>> before(ho.size());
+  for (auto [a, b] : pairs)
+    if (na[b] >= 2) before[b].push_back(go.rep[a]);
+  for (std::size_t b = 0; b < ho.size(); ++b) {
+    if (na[b] >= 2) {
+      std::sort(before[b].begin(), before[b].end());
+      out.push_back({Event::merge, std::move(before[b]), {ho.rep[b]}});
+    }
+    if (na[b] == 0) out.push_back({Event::creation, {}, {ho.rep[b]}});
+  }
+  for (std::size_t a = 0; a < go.size(); ++a) {
+    if (nb[a] == 0) {
+      out.push_back({Event::deletion, {go.rep[a]}, {}});
+      continue;
+    }
+    if (nb[a] != 1 || na[only_b[a]] != 1) continue;
+    const std::uint32_t b = only_b[a];
+    bool same = !deleted[a] && !created[b] && go.of(a).size() == ho.of(b).size();
+    for (Dart d : go.of(a)) {
+      if (!same) break;
+      const Dart e = to_h(d);
+      for (const Word& w : kind.generators) {
+        const Dart dg = follow(g, d, w), dh = follow(h, e, w);
+        if ((dg == no_dart) != (dh == no_dart) || (dg != no_dart && to_h(dg) != dh)) {
+          same = false;
+          break;
+        }
+      }
+    }
+    if (same && skip_unmatched_unchanged) {
+      const auto darts = go.of(a);
+      if (std::none_of(darts.begin(), darts.end(), matched)) continue;
+    }
+    out.push_back({same ? Event::non_modification : Event::modification, {go.rep[a]}, {ho.rep[b]}});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Every orbit of the map, in order of smallest dart, and each dart's orbit.
+Orbits all_orbits(const Map& m, const OrbitKind& kind, std::vector<std::uint32_t>& orbit_of) {
+  Orbits o;
+  orbit_of.assign(m.size(), static_cast<std::uint32_t>(-1));
+  OrbitWalker walker(m);
+  for (Dart d = 0; d < m.size(); ++d) {
+    if (orbit_of[d] != static_cast<std::uint32_t>(-1)) continue;
+    const auto& darts = walker.orbit(d, kind.generators);
+    for (Dart e : darts) orbit_of[e] = static_cast<std::uint32_t>(o.size());
+    o.add(darts);
+  }
+  return o;
+}
+
+int find(std::vector<std::uint32_t>& parent, std::uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return static_cast<int>(x);
+}
+
+// The orbits of one side's instance: complete rule orbits by union-find on
+// (node, position) pairs, incomplete ones by traversal from their darts.
+void side_instance(const Map& m, const EventRule& r, const EventSide& side, const SideOrbits& so, const OrbitKind& kind,
+                   const std::vector<std::vector<Dart>>& darts, const std::optional<PatternGraphs>& pattern, Orbits& out,
+                   std::unordered_map<Dart, std::uint32_t>& orbit_of) {
+  const std::size_t np = darts.empty() ? 0 : darts[0].size();
+  std::vector<int> step_of(r.parameter.size(), -1);
+  if (pattern)
+    for (std::size_t k = 0; k < r.parameter.size(); ++k) step_of[k] = pattern->generator(r.position_words[k]);
+  std::unique_ptr<OrbitWalker> walker;
+  std::vector<std::uint32_t> parent;
+  std::vector<Dart> members;
+  for (const RuleOrbit& x : so.orbits) {
+    if (!x.complete) {
+      if (!walker) walker = std::make_unique<OrbitWalker>(m);
+      for (NodeId v : x.nodes)
+        for (Dart d : darts[v]) {
+          if (orbit_of.count(d)) continue;
+          const auto& orbit = walker->orbit(d, kind.generators);
+          for (Dart e : orbit) orbit_of[e] = static_cast<std::uint32_t>(out.size());
+          out.add(orbit);
+        }
+      continue;
+    }
+    // Local index of (node, p): position of the node in x.nodes times np + p.
+    const std::size_t nx = x.nodes.size();
+    parent.resize(nx * np);
+    std::iota(parent.begin(), parent.end(), 0U);
+    auto local = [&](NodeId v) { return static_cast<std::size_t>(std::lower_bound(x.nodes.begin(), x.nodes.end(), v) - x.nodes.begin()); };
+    auto unite = [&](std::size_t i, std::size_t j) {
+      parent[static_cast<std::size_t>(find(parent, static_cast<std::uint32_t>(i)))] = static_cast<std::uint32_t>(find(parent, static_cast<std::uint32_t>(j)));
+    };
+    for (ArcId e : side.explicit_arcs) {
+      const auto& a = side.graph->arc(e);
+      if (a.source == a.target || !has_dim(kind.dims(), a.label) || so.orbit_of[a.source] != so.orbit_of[x.nodes[0]]) continue;
+      const std::size_t s = local(a.source), t = local(a.target);
+      for (std::size_t p = 0; p < np; ++p) unite(s * np + p, t * np + p);
+    }
+    // Word generators (O-map DPO rules) join the nodes of x: one position.
+    if (!kind.single_letters())
+      for (std::size_t i = 1; i < nx; ++i) unite(0, i * np);
+    for (std::size_t i = 0; i < nx; ++i)
+      for (std::size_t k = 0; k < r.parameter.size(); ++k)
+        if (in_kind(kind, side.labels[x.nodes[i]][k]))
+          for (std::size_t p = 0; p < np; ++p) unite(i * np + p, i * np + pattern->step(p, step_of[k]));
+    // Components, in order of their first (node, position).
+    std::unordered_map<std::uint32_t, std::vector<Dart>> comps;
+    std::vector<std::uint32_t> order;
+    for (std::size_t i = 0; i < nx * np; ++i) {
+      const auto root = static_cast<std::uint32_t>(find(parent, static_cast<std::uint32_t>(i)));
+      auto& c = comps[root];
+      if (c.empty()) order.push_back(root);
+      c.push_back(darts[x.nodes[i / np]][i % np]);
+    }
+    for (std::uint32_t root : order) {
+      members = std::move(comps[root]);
+      for (Dart e : members) orbit_of[e] = static_cast<std::uint32_t>(out.size());
+      out.add(members);
+    }
+  }
+}
+
+}  // namespace
+
+EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const ApplicationTrace& t, const OrbitKind& kind) {
+  const Correspondence c(rule, t);
+  std::vector<Dart> g2h(g.size()), h2g(h.size());
+  for (Dart d = 0; d < g.size(); ++d) g2h[d] = c.to_h(d);
+  for (Dart d = 0; d < h.size(); ++d) h2g[d] = c.to_g(d);
+  std::vector<char> matched(g.size(), 0);
+  for (const auto& darts : t.match)
+    for (Dart d : darts) matched[d] = 1;
+  std::vector<std::uint32_t> g_of, h_of;
+  const Orbits go = all_orbits(g, kind, g_of), ho = all_orbits(h, kind, h_of);
+  return {kind, derive(
+                    g, h, kind, go, ho, [&](Dart d) { return g2h[d]; }, [&](Dart d) { return h2g[d]; }, [&](Dart d) { return h_of[d]; },
+                    [&](Dart d) { return g_of[d]; }, [&](Dart d) { return matched[d] != 0; }, true)};
+}
+
+EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const KindEvents& k, const ApplicationTrace& t) {
+  const Correspondence c(*r.rule, t);
+  Orbits go, ho;
+  std::unordered_map<Dart, std::uint32_t> g_of, h_of;
+  side_instance(g, r, r.left, k.left, k.kind, t.match, t.pattern, go, g_of);
+  side_instance(h, r, r.right, k.right, k.kind, t.comatch, t.pattern, ho, h_of);
+  auto lookup = [](const std::unordered_map<Dart, std::uint32_t>& m, Dart d) {
+    const auto it = m.find(d);
+    // A preserved dart outside every instantiated orbit would contradict
+    // 004 Sec. 2.2 (the rewrite changes only matched darts' links).
+    if (it == m.end()) throw std::logic_error(fmt::format("dart {} is outside the instantiated orbits", d));
+    return it->second;
+  };
+  return {k.kind, derive(
+                      g, h, k.kind, go, ho, [&](Dart d) { return c.to_h(d); }, [&](Dart d) { return c.to_g(d); },
+                      [&](Dart d) { return lookup(h_of, d); }, [&](Dart d) { return lookup(g_of, d); },
+                      [&](Dart d) { return c.matched(d); }, true)};
+}
+
+std::string event_line(const OrbitKind& kind, const LoggedEvent& e) {
+  const std::string o = kind.str();
+  auto names = [&](char side, const std::vector<Dart>& ds) {
+    std::vector<std::string> n;
+    for (Dart d : ds) n.push_back(fmt::format("{}{}({})", side, o, d));
+    return n.size() == 1 ? n[0] : fmt::format("{{{}}}", fmt::join(n, ", "));
+  };
+  switch (e.event) {
+    case Event::creation: return fmt::format("creation {}", names('H', e.after));
+    case Event::deletion: return fmt::format("deletion {}", names('G', e.before));
+    default: return fmt::format("{} {} -> {}", event_name(e.event), names('G', e.before), names('H', e.after));
+  }
+}
+
+}  // namespace dartcheck::events

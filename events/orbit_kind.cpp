@@ -1,0 +1,89 @@
+#include "events/orbit_kind.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace dartcheck::events {
+
+bool OrbitKind::single_letters() const {
+  return std::all_of(generators.begin(), generators.end(), [](const Word& w) { return w.size() == 1; });
+}
+
+DimSet OrbitKind::dims() const {
+  DimSet s = 0;
+  for (const Word& w : generators)
+    if (w.size() == 1) s |= dim_bit(w[0]);
+  return s;
+}
+
+std::string OrbitKind::str() const {
+  std::string out = "<";
+  for (std::size_t k = 0; k < generators.size(); ++k) {
+    if (k) out += ',';
+    for (Dim d : generators[k]) out += std::to_string(d);
+  }
+  return out + '>';
+}
+
+OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
+  // Accept ⟨ ⟩ as well as < >, and spaces anywhere.
+  std::string s;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text.substr(i, 3) == "\u27e8" || text.substr(i, 3) == "\u27e9") {
+      s += i + 3 <= text.size() && text.substr(i, 3) == "\u27e8" ? '<' : '>';
+      i += 2;
+    } else if (text[i] != ' ') {
+      s += text[i];
+    }
+  }
+  if (s.size() < 2 || s.front() != '<' || s.back() != '>')
+    throw std::invalid_argument(fmt::format("orbit type '{}' is not of the form <0,1>", text));
+  OrbitKind kind;
+  const std::string body = s.substr(1, s.size() - 2);
+  if (body.empty()) throw std::invalid_argument(fmt::format("orbit type '{}' is empty: give at least one dimension", text));
+  std::size_t start = 0;
+  while (start <= body.size()) {
+    const std::size_t comma = std::min(body.find(',', start), body.size());
+    const std::string entry = body.substr(start, comma - start);
+    if (entry.empty() || !std::all_of(entry.begin(), entry.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      throw std::invalid_argument(fmt::format("orbit type '{}': entry '{}' is not a dimension", text, entry));
+    Word w;
+    if (model.is_generalized()) {
+      // G-maps: an entry is one dimension (10-15 have two digits).
+      if (entry.size() > 2) throw std::invalid_argument(fmt::format("orbit type '{}': '{}' is not a dimension", text, entry));
+      w.push_back(std::stoi(entry));
+    } else {
+      // O-maps: a word of one-digit dimensions ("21": along 2, then 1).
+      for (char c : entry) w.push_back(c - '0');
+    }
+    for (Dim d : w)
+      if (!model.contains(d))
+        throw std::invalid_argument(fmt::format("orbit type '{}': {} is not a dimension of {}", text, d, model.name));
+    if (std::find(kind.generators.begin(), kind.generators.end(), w) != kind.generators.end())
+      throw std::invalid_argument(fmt::format("orbit type '{}': '{}' repeats", text, entry));
+    kind.generators.push_back(std::move(w));
+    start = comma + 1;
+  }
+  std::sort(kind.generators.begin(), kind.generators.end(),
+            [](const Word& a, const Word& b) { return a.size() != b.size() ? a.size() < b.size() : a < b; });
+  return kind;
+}
+
+std::vector<OrbitKind> all_orbit_kinds(const Model& model) {
+  std::vector<OrbitKind> out;
+  const std::size_t n = model.dims.size();
+  for (std::uint32_t mask = 1; mask < (1U << n); ++mask) {
+    OrbitKind k;
+    for (std::size_t i = 0; i < n; ++i)
+      if (mask >> i & 1U) k.generators.push_back({model.dims[i]});
+    out.push_back(std::move(k));
+  }
+  // By size, then lexicographically: <0>, <1>, <2>, <0,1>, ... as Table 1.
+  std::stable_sort(out.begin(), out.end(), [](const OrbitKind& a, const OrbitKind& b) { return a.generators.size() < b.generators.size(); });
+  if (!model.is_generalized() && model.dimension() >= 2) out.push_back({cell_generators(model, 0)});
+  return out;
+}
+
+}  // namespace dartcheck::events

@@ -1,0 +1,75 @@
+#include "events/rule_orbits.hpp"
+
+#include <numeric>
+
+#include <fmt/format.h>
+
+namespace dartcheck::events {
+namespace {
+
+int find(std::vector<int>& parent, int x) {
+  while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+  return x;
+}
+
+// The node reached from v along the explicit arcs spelling w, or no_node.
+NodeId follow_explicit(const EventSide& side, const std::vector<std::vector<ArcId>>& out, NodeId v, const Word& w) {
+  for (Dim i : w) {
+    NodeId next = no_node;
+    for (ArcId e : out[v])
+      if (side.graph->arc(e).label == i) next = side.graph->arc(e).target;
+    if (next == no_node) return no_node;
+    v = next;
+  }
+  return v;
+}
+
+}  // namespace
+
+SideOrbits side_orbits(const EventRule&, const EventSide& side, const OrbitKind& kind) {
+  const TopoGraph& g = *side.graph;
+  const std::size_t n = g.node_count();
+  std::vector<std::vector<ArcId>> out(n);
+  for (ArcId e : side.explicit_arcs) out[g.arc(e).source].push_back(e);
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<std::vector<std::string>> missing(n);
+  for (NodeId v = 0; v < n; ++v)
+    for (const Word& w : kind.generators) {
+      const NodeId t = follow_explicit(side, out, v, w);
+      if (t != no_node) {
+        parent[static_cast<std::size_t>(find(parent, static_cast<int>(v)))] = find(parent, static_cast<int>(t));
+        continue;
+      }
+      // A single letter may be an implicit link of the node's label.
+      bool implicit = false;
+      if (w.size() == 1)
+        for (const auto& l : side.labels[v]) implicit = implicit || (l && *l == w[0]);
+      if (!implicit) {
+        std::string word;
+        for (Dim d : w) word += std::to_string(d);
+        missing[v].push_back(fmt::format("{} has no {}-{}", g.name(v), word, w.size() == 1 ? "link" : "path"));
+      }
+    }
+  SideOrbits s;
+  s.orbit_of.assign(n, -1);
+  std::vector<int> index_of_root(n, -1);
+  for (NodeId v = 0; v < n; ++v) {
+    const int root = find(parent, static_cast<int>(v));
+    int& idx = index_of_root[static_cast<std::size_t>(root)];
+    if (idx < 0) {
+      idx = static_cast<int>(s.orbits.size());
+      s.orbits.emplace_back();
+    }
+    RuleOrbit& o = s.orbits[static_cast<std::size_t>(idx)];
+    o.nodes.push_back(v);
+    if (!missing[v].empty()) {
+      o.complete = false;
+      o.missing.insert(o.missing.end(), missing[v].begin(), missing[v].end());
+    }
+    s.orbit_of[v] = idx;
+  }
+  return s;
+}
+
+}  // namespace dartcheck::events
