@@ -55,6 +55,21 @@ std::multiset<std::tuple<std::string, std::string, int>> orbit_arcs(const EventS
   return out;
 }
 
+// Where a w-path from v along explicit arcs ends: the last node it reaches
+// (by name) and how many letters it followed. A path that stops early
+// leaves the pattern there.
+std::pair<std::string, std::size_t> walk(const EventSide& side, NodeId v, const Word& w) {
+  std::size_t k = 0;
+  for (; k < w.size(); ++k) {
+    NodeId next = no_node;
+    for (ArcId e : side.explicit_arcs)
+      if (side.graph->arc(e).source == v && side.graph->arc(e).label == w[k]) next = side.graph->arc(e).target;
+    if (next == no_node) break;
+    v = next;
+  }
+  return {side.graph->name(v), k};
+}
+
 }  // namespace
 
 KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
@@ -134,7 +149,16 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
           if ((in_kind(kind, a) || in_kind(kind, b)) && a != b) unchanged = false;
         }
       }
-      unchanged = unchanged && orbit_arcs(r.left, x.nodes, kind) == orbit_arcs(r.right, yo.nodes, kind);
+      if (kind.single_letters()) {
+        unchanged = unchanged && orbit_arcs(r.left, x.nodes, kind) == orbit_arcs(r.right, yo.nodes, kind);
+      } else {
+        // Word generators (O-map vertices): the orbit is unchanged when
+        // every generator path ends at the same node on both sides, or
+        // leaves the pattern from the same node after the same prefix (by
+        // an unmatched arc of a preserved node, which the rule keeps).
+        for (NodeId v : x.nodes)
+          for (const Word& w : kind.generators) unchanged = unchanged && walk(r.left, v, w) == walk(r.right, rule.to_right(v), w);
+      }
     }
     if (unchanged) {
       claims.push_back({Event::non_modification, explicit_certainty, li, false, -1, {},
