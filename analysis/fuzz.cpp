@@ -1,4 +1,5 @@
 #include "analysis/fuzz.hpp"
+#include "analysis/event_checks.hpp"
 #include "analysis/interrupt.hpp"
 
 #include "analysis/embedded_fuzz.hpp"
@@ -32,6 +33,7 @@ std::vector<std::string> Counterexample::broken() const {
   for (const auto& v : violations) b.push_back(constraint_name(v));
   if (!unrepresentable.empty()) b.push_back("not-representable");
   for (const auto& e : broken_embeddings) b.push_back(fmt::format("embedding({})", e));
+  if (!event_contradictions.empty()) b.push_back("events");
   std::sort(b.begin(), b.end());
   b.erase(std::unique(b.begin(), b.end()), b.end());
   return b;
@@ -113,7 +115,7 @@ std::optional<Counterexample> apply_and_check(const Operation& entry, const Map&
       for (NodeId v = 0; v < rule.left().node_count(); ++v) match.emplace_back(rule.left().name(v), r.value->match.node[v]);
   }
   if (refusal != Refusal::none && refusal != Refusal::not_representable) return std::nullopt;
-  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}, {}};
+  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}, {}, {}};
   if (refusal == Refusal::not_representable) {
     cx.unrepresentable = std::move(why);
     return cx;
@@ -130,7 +132,8 @@ namespace {
 class Fuzzer {
  public:
   Fuzzer(const Operation& entry, const FuzzOptions& o, FuzzReport& out)
-      : entry_(entry), rule_(entry.rule), o_(o), out_(out), rng_(static_cast<std::uint32_t>(rule_seed(o.seed, entry.rule.name()) % 4294967291U)), start_(Clock::now()) {}
+      : entry_(entry), rule_(entry.rule), o_(o), out_(out), rng_(static_cast<std::uint32_t>(rule_seed(o.seed, entry.rule.name()) % 4294967291U)), start_(Clock::now()),
+        events_(entry) {}
 
   // Where random maps exist the enumeration takes at most half of the
   // applications, so larger hosts get the other half; it resumes if the
@@ -160,6 +163,8 @@ class Fuzzer {
   std::mt19937 rng_;
   Clock::time_point start_;
   Map scratch_{Model::gmap(2)};
+  // A consistent rule's static events, checked on its first applications.
+  EventOracle events_;
   std::size_t attempts_ = 0, next_progress_ = 4096;
   // Where the enumeration stands: hosts of n_ darts, the first skip_ of
   // them already tried; host_budget_ hosts left.
@@ -199,6 +204,16 @@ class Fuzzer {
     if (refusal == Refusal::not_representable) ++out_.refusals["not-representable"];
     else if (refusal != Refusal::none) ++out_.refusals[std::string(refusal_name(refusal))];
     else ++out_.applications;
+    if (!cx && refusal == Refusal::none && out_.static_failures.empty() && events_.active() && out_.event_checks < o_.event_checks) {
+      ++out_.event_checks;
+      Map h{rule_.model()};
+      auto contradictions = events_.contradictions(g, hooks, h);
+      if (!contradictions.empty()) {
+        Counterexample e{g, {hooks.begin(), hooks.end()}, {}, std::move(h), {}, {}, {}, false, {}, {}, {}, {}};
+        e.event_contradictions = std::move(contradictions);
+        return e;
+      }
+    }
     return cx;
   }
 
@@ -393,13 +408,16 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
 std::string outcome_text(const FuzzReport& r) {
   switch (r.verdict) {
     case FuzzClass::consistent:
-      return r.reason.empty() ? fmt::format("consistent (checked {} applications on {} maps of up to {} darts)", r.applications, r.hosts,
-                                            r.largest_host)
+      return r.reason.empty() ? fmt::format("consistent (checked {} applications on {} maps of up to {} darts{})", r.applications, r.hosts,
+                                            r.largest_host, r.event_checks ? fmt::format("; events of {} cross-checked", r.event_checks) : "")
                               : fmt::format("consistent; {}", r.reason);
     case FuzzClass::unconfirmed: return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
     case FuzzClass::confirmed:
     case FuzzClass::soundness_bug: {
       const auto& cx = *r.counterexample;
+      if (!cx.event_contradictions.empty())
+        return fmt::format("{}: at hook{} {} of a {}-dart map, the event logs contradict the static events: {}", fuzz_class_name(r.verdict),
+                           cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), cx.event_contradictions[0]);
       return fmt::format("{}: at hook{} {} of a {}-dart map, H breaks {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
                          fmt::join(cx.hooks, ","), cx.host.size(), fmt::join(cx.broken(), ", "), cx.minimal ? " (minimal)" : "");
     }

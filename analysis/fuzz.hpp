@@ -60,6 +60,9 @@ struct Counterexample {
   /// the darts of every orbit with two values or an unlabeled dart
   /// ("pos (1, 1)", "pos: none"), empty for the other darts.
   std::vector<std::string> orbit_values;
+  /// A valid H whose event logs contradict the rule's static events
+  /// (analysis/event_checks): one sentence each.
+  std::vector<std::string> event_contradictions;
 };
 
 struct FuzzReport {
@@ -72,6 +75,7 @@ struct FuzzReport {
   std::size_t largest_host = 0;  // darts
   std::size_t exhaustive_darts = 0;  // every host of up to this many darts was tried (0: none completely)
   std::map<std::string, std::size_t> refusals;  // refusal name -> count (no-match, dangling, ...)
+  std::size_t event_checks = 0;  // applications whose event logs were cross-checked
   bool out_of_time = false;
   double seconds = 0;
   std::optional<Counterexample> counterexample;
@@ -89,6 +93,10 @@ struct FuzzOptions {
   std::optional<std::chrono::steady_clock::time_point> deadline;
   std::size_t max_darts = 128;             // largest random host
   std::size_t exhaustive_hosts = 20'000;   // phase 1 budget for the models with a random generator
+  /// Applications per consistent rule whose event logs are cross-checked
+  /// against its static events (004; 0: none). Each costs a traversal of
+  /// both maps per orbit type, so only the first ones are checked.
+  std::size_t event_checks = 2'000;
   /// The static verdict to set the dynamic one against; `check_rule` by
   /// default. Tests plant weakened checkers here.
   std::function<RuleVerdict(const Operation&)> static_check;

@@ -66,6 +66,7 @@ void FuzzRule(benchmark::State& state, const char* rule_name) {
   o.runs = 20'000;
   o.max_darts = static_cast<std::size_t>(state.range(0));
   o.exhaustive_hosts = 0;
+  o.event_checks = 0;  // the topological loop alone, as before events/ existed
   std::size_t applications = 0;
   for (auto _ : state) {
     ++o.seed;

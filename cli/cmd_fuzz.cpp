@@ -75,6 +75,7 @@ int fuzz(const FuzzCommand& c) {
   std::optional<double> seconds;
   if (!c.time.empty()) seconds = parse_duration(c.time, "--time");
   o.runs = c.runs ? *c.runs : seconds ? SIZE_MAX : 10'000;
+  o.event_checks = c.event_checks;
 
   std::vector<const Operation*> rules;
   std::vector<const CatalogRule*> entries;

@@ -72,6 +72,17 @@ struct CheckOptions {
 /// (all conditions hold where none is recorded), 1 otherwise.
 int check(const CheckOptions& o);
 
+struct EventsOptions {
+  std::string catalog, rule, map, format = "text";
+  std::vector<std::string> orbits;  // "<0,1>" ...; empty or "all": every orbit type
+  std::vector<Dart> hooks;
+  bool dynamic = false;
+};
+/// The events of every rule's orbits (004 Sec. 3); with a map, the event
+/// log of one application. 1 if the rule does not apply or has no event
+/// view, 3 if --dynamic contradicts a certain static event.
+int events_command(const EventsOptions& o);
+
 struct WordsOptions {
   std::string model, word;
   std::optional<std::string> other;
@@ -86,9 +97,11 @@ struct FuzzCommand {
   std::optional<std::size_t> runs;
   std::optional<std::uint64_t> seed;
   std::size_t max_darts = 128;
+  std::size_t event_checks = 2'000;  // applications per consistent rule whose event logs are cross-checked (004)
   std::vector<std::string> maps;
 };
-/// Exit 3 if a rule judged consistent broke a map, 0 otherwise (a
+/// Exit 3 if a rule judged consistent broke a map or contradicted its
+/// static events, 0 otherwise (a
 /// confirmed or unconfirmed failure agrees with the static verdict).
 int fuzz(const FuzzCommand& c);
 

@@ -56,6 +56,16 @@ int main(int argc, char** argv) {
                 "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
       ->capture_default_str()->check(counts);
 
+  cli::EventsOptions events;
+  auto* ev = app.add_subcommand("events", "Topological events of every rule (004): creation, deletion, split, merge, modification per orbit type");
+  ev->add_option("catalog", events.catalog, "YAML catalog or Jerboa .jme modeler")->required();
+  ev->add_option("--rule", events.rule, "only this rule (needed with --map)");
+  ev->add_option("--orbit", events.orbits, "orbit type such as \"<0,1>\" (repeat), or all (default)");
+  ev->add_option("--map", events.map, "apply the rule to this map (catalog map name, map file, mesh or shape) and print the event log");
+  ev->add_option("--hook", events.hooks, "hook dart, one per hook of the rule (repeat)")->check(counts);
+  ev->add_flag("--dynamic", events.dynamic, "also label every dart of both maps and set that log against the static one (exit 3 on a contradiction)");
+  ev->add_option("--format", events.format, "text or json")->capture_default_str();
+
   cli::WordsOptions words;
   auto* w = app.add_subcommand("words", "Normal forms of a word in R_{N,E} (002 Sec. 9.2), or whether two words are congruent");
   w->add_option("model", words.model, "model giving N and E (2-gmap, 3-omap, ...)")->required();
@@ -69,6 +79,9 @@ int main(int argc, char** argv) {
   f->add_option("--rule", fuzz.rule, "fuzz only this rule");
   f->add_option("--time", fuzz.time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
   f->add_option("--runs", fuzz.runs, "applications per rule (default 10000 without --time)")->check(counts);
+  f->add_option("--event-checks", fuzz.event_checks,
+                "applications per consistent rule whose event logs are set against its static events (004; 0: none)")
+      ->capture_default_str()->check(counts);
   f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)")->check(counts);
   f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str()->check(counts);
   f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
@@ -127,6 +140,7 @@ int main(int argc, char** argv) {
     if (*a) return cli::apply(apply);
     if (*r) return cli::run(run);
     if (*w) return cli::words(words);
+    if (*ev) return cli::events_command(events);
     if (*c) return cli::check(check);
     if (*f) return cli::fuzz(fuzz);
     if (*p) return cli::prove(prove);

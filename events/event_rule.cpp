@@ -52,7 +52,9 @@ EventRuleOutcome event_rule(const Operation& op) {
       std::sort(r.parameter.begin(), r.parameter.end());
     }
     if (!op.rule.model().is_generalized())
-      return {std::nullopt, "events of rule schemes are defined on G-maps (004 Sec. 2.2); an O-map scheme has no Jerboa node labels"};
+      return {std::nullopt, fmt::format("{} is not a G-map model: events of rule schemes are read from Jerboa node labels (004 Sec. 2.2), "
+                                        "which only G-map schemes have",
+                                        op.rule.model().name)};
   }
   for (Dim d : r.parameter) r.position_words.push_back(ConjWord::of_dims({d}));
   if (auto why = read_side(op.rule.left(), op.words.left, r.parameter, r.left, "L"); !why.empty()) return {std::nullopt, why};

@@ -82,7 +82,9 @@ std::vector<OrbitKind> all_orbit_kinds(const Model& model) {
   }
   // By size, then lexicographically: <0>, <1>, <2>, <0,1>, ... as Table 1.
   std::stable_sort(out.begin(), out.end(), [](const OrbitKind& a, const OrbitKind& b) { return a.generators.size() < b.generators.size(); });
-  if (!model.is_generalized() && model.dimension() >= 2) out.push_back({cell_generators(model, 0)});
+  // O-map vertices (dimensions 1..n): words j1. Other models without 0
+  // (002's plain D-graphs) have no vertex orbit.
+  if (!model.is_generalized() && model.dims.front() == 1 && model.dimension() >= 2) out.push_back({cell_generators(model, 0)});
   return out;
 }
 

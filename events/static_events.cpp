@@ -166,6 +166,17 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
                                    : fmt::format("{} keeps its nodes, o-labels and o-arcs, but the map's orbit may reach other matched parts{}", xn,
                                                  incomplete)});
     } else {
+      // Word generators: a generator path may pass through matched darts
+      // and end outside the match, so an incomplete orbit whose paths the
+      // rule changes can split or merge without any of the paper's flags
+      // (found by the fuzz cross-check on fig18b-rewire-paths, <21>).
+      if (!kind.single_letters() && !x.complete) {
+        const bool has_split = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::split; });
+        const bool has_merge = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::merge; });
+        const std::string why = fmt::format("a generator path of {} leaves the pattern and the rule changes the orbit (word orbit types){}", xn, incomplete);
+        if (!has_split) claims.push_back({Event::split, Certainty::potential, li, false, -1, {}, why});
+        if (!has_merge) claims.push_back({Event::merge, Certainty::potential, li, false, -1, {}, why});
+      }
       // Modification (Sec. 3.4.3) is what remains when no split or merge
       // happens: certain only when none was announced.
       const bool certain_other = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.certainty == Certainty::certain; });
