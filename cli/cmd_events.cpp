@@ -134,6 +134,8 @@ int events_command(const EventsOptions& o) {
   const bool json = o.format == "json";
   int status = ok;
   std::vector<std::string> json_rules;
+  std::optional<std::string> first_orbit_error;
+  std::size_t analysed = 0;
   for (const CatalogRule& rule : catalog.rules) {
     if (!o.rule.empty() && rule.rule.name() != o.rule) continue;
     const EventRuleOutcome view = event_rule(rule);
@@ -146,7 +148,18 @@ int events_command(const EventsOptions& o) {
       if (!o.rule.empty()) status = violation;
       continue;
     }
-    const std::vector<OrbitKind> kinds = requested_kinds(o.orbits, rule.rule.model());
+    // --orbit on a catalog of several models: a rule whose model lacks a
+    // dimension is skipped; the option is bad input only if it fits no rule.
+    std::vector<OrbitKind> kinds;
+    try {
+      kinds = requested_kinds(o.orbits, rule.rule.model());
+    } catch (const InputError& e) {
+      if (!o.rule.empty()) throw;
+      if (!first_orbit_error) first_orbit_error = e.what();
+      if (!json) fmt::print("rule {} ({}): skipped: {}\n", rule.rule.name(), rule.rule.model().name, e.what());
+      continue;
+    }
+    ++analysed;
     std::optional<Application> app;
     std::string where;
     if (!o.map.empty()) {
@@ -182,6 +195,7 @@ int events_command(const EventsOptions& o) {
     else
       print_text(rule, *view.rule, results, where);
   }
+  if (analysed == 0 && first_orbit_error) throw InputError("<command line>", 0, 0, first_orbit_error->substr(first_orbit_error->find("--orbit")));
   if (json) fmt::print("{{\"catalog\": \"{}\", \"rules\": [\n  {}\n]}}\n", json_escape(o.catalog), fmt::join(json_rules, ",\n  "));
   return status;
 }
