@@ -6,9 +6,9 @@
 
 #include <optional>
 #include <span>
-#include <unordered_map>
 #include <vector>
 
+#include "events/dart_index.hpp"
 #include "rewriting/operation.hpp"
 #include "rewriting/scheme_application.hpp"
 
@@ -35,20 +35,17 @@ class Correspondence {
  public:
   Correspondence(const Rule& rule, const ApplicationTrace& t);
   /// The dart of H that g became; no_dart if g was deleted.
-  Dart to_h(Dart g) const {
-    const auto it = g2h_.find(g);
-    return it == g2h_.end() ? g : it->second;
-  }
+  Dart to_h(Dart g) const { return decode(g2h_.get(g), g); }
   /// The dart of G that h was; no_dart if h was created.
-  Dart to_g(Dart h) const {
-    const auto it = h2g_.find(h);
-    return it == h2g_.end() ? h : it->second;
-  }
-  bool matched(Dart g) const { return matched_.count(g) != 0; }
+  Dart to_g(Dart h) const { return decode(h2g_.get(h), h); }
+  bool matched(Dart g) const { return matched_.get(g) != DartIndex::none; }
 
  private:
-  std::unordered_map<Dart, Dart> g2h_, h2g_;
-  std::unordered_map<Dart, bool> matched_;
+  // Stored values: a dart, or `gone` for deleted / created darts; absent
+  // darts map to themselves.
+  static constexpr std::uint32_t gone = DartIndex::none - 1;
+  static Dart decode(std::uint32_t v, Dart self) { return v == DartIndex::none ? self : v == gone ? no_dart : v; }
+  DartIndex g2h_, h2g_, matched_;
 };
 
 }  // namespace dartcheck::events

@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "core/orbit.hpp"
+#include "events/dart_index.hpp"
 
 namespace dartcheck::events {
 namespace {
@@ -137,7 +138,7 @@ int find(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 // (node, position) pairs, incomplete ones by traversal from their darts.
 void side_instance(const Map& m, const EventRule& r, const EventSide& side, const SideOrbits& so, const OrbitKind& kind,
                    const std::vector<std::vector<Dart>>& darts, const std::optional<PatternGraphs>& pattern, Orbits& out,
-                   std::unordered_map<Dart, std::uint32_t>& orbit_of) {
+                   DartIndex& orbit_of) {
   const std::size_t np = darts.empty() ? 0 : darts[0].size();
   std::vector<int> step_of(r.parameter.size(), -1);
   if (pattern)
@@ -150,9 +151,9 @@ void side_instance(const Map& m, const EventRule& r, const EventSide& side, cons
       if (!walker) walker = std::make_unique<OrbitWalker>(m);
       for (NodeId v : x.nodes)
         for (Dart d : darts[v]) {
-          if (orbit_of.count(d)) continue;
+          if (orbit_of.get(d) != DartIndex::none) continue;
           const auto& orbit = walker->orbit(d, kind.generators);
-          for (Dart e : orbit) orbit_of[e] = static_cast<std::uint32_t>(out.size());
+          for (Dart e : orbit) orbit_of.set(e, static_cast<std::uint32_t>(out.size()));
           out.add(orbit);
         }
       continue;
@@ -178,19 +179,28 @@ void side_instance(const Map& m, const EventRule& r, const EventSide& side, cons
       for (std::size_t k = 0; k < r.parameter.size(); ++k)
         if (in_kind(kind, side.labels[x.nodes[i]][k]))
           for (std::size_t p = 0; p < np; ++p) unite(i * np + p, i * np + pattern->step(p, step_of[k]));
-    // Components, in order of their first (node, position).
-    std::unordered_map<std::uint32_t, std::vector<Dart>> comps;
-    std::vector<std::uint32_t> order;
+    // Components, in order of their first (node, position): count, then
+    // place (a counting sort on the roots, no per-component allocation).
+    std::vector<std::uint32_t> slot(nx * np, DartIndex::none);
+    std::vector<std::uint32_t> sizes, order;
     for (std::size_t i = 0; i < nx * np; ++i) {
-      const auto root = static_cast<std::uint32_t>(find(parent, static_cast<std::uint32_t>(i)));
-      auto& c = comps[root];
-      if (c.empty()) order.push_back(root);
-      c.push_back(darts[x.nodes[i / np]][i % np]);
+      auto& c = slot[static_cast<std::size_t>(find(parent, static_cast<std::uint32_t>(i)))];
+      if (c == DartIndex::none) {
+        c = static_cast<std::uint32_t>(sizes.size());
+        sizes.push_back(0);
+      }
+      ++sizes[c];
+      order.push_back(c);
     }
-    for (std::uint32_t root : order) {
-      members = std::move(comps[root]);
-      for (Dart e : members) orbit_of[e] = static_cast<std::uint32_t>(out.size());
-      out.add(members);
+    std::vector<std::size_t> begin(sizes.size() + 1, 0);
+    for (std::size_t c = 0; c < sizes.size(); ++c) begin[c + 1] = begin[c] + sizes[c];
+    members.assign(nx * np, 0);
+    std::vector<std::size_t> at(begin.begin(), begin.end() - 1);
+    for (std::size_t i = 0; i < nx * np; ++i) members[at[order[i]]++] = darts[x.nodes[i / np]][i % np];
+    for (std::size_t c = 0; c < sizes.size(); ++c) {
+      const std::span<const Dart> comp(members.data() + begin[c], sizes[c]);
+      for (Dart e : comp) orbit_of.set(e, static_cast<std::uint32_t>(out.size()));
+      out.add(comp);
     }
   }
 }
@@ -215,15 +225,18 @@ EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const Applica
 EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const KindEvents& k, const ApplicationTrace& t) {
   const Correspondence c(*r.rule, t);
   Orbits go, ho;
-  std::unordered_map<Dart, std::uint32_t> g_of, h_of;
+  std::size_t matched = 0, comatched = 0;
+  for (const auto& d : t.match) matched += d.size();
+  for (const auto& d : t.comatch) comatched += d.size();
+  DartIndex g_of(matched, g.size()), h_of(comatched, h.size());
   side_instance(g, r, r.left, k.left, k.kind, t.match, t.pattern, go, g_of);
   side_instance(h, r, r.right, k.right, k.kind, t.comatch, t.pattern, ho, h_of);
-  auto lookup = [](const std::unordered_map<Dart, std::uint32_t>& m, Dart d) {
-    const auto it = m.find(d);
+  auto lookup = [](const DartIndex& m, Dart d) {
+    const std::uint32_t v = m.get(d);
     // A preserved dart outside every instantiated orbit would contradict
     // 004 Sec. 2.2 (the rewrite changes only matched darts' links).
-    if (it == m.end()) throw std::logic_error(fmt::format("dart {} is outside the instantiated orbits", d));
-    return it->second;
+    if (v == DartIndex::none) throw std::logic_error(fmt::format("dart {} is outside the instantiated orbits", d));
+    return v;
   };
   return {k.kind, derive(
                       g, h, k.kind, go, ho, [&](Dart d) { return c.to_h(d); }, [&](Dart d) { return c.to_g(d); },
