@@ -31,17 +31,6 @@ std::vector<OrbitKind> requested_kinds(const std::vector<std::string>& texts, co
   return out;
 }
 
-std::string claim_text(const EventRule& r, const KindEvents& k, const EventClaim& c) {
-  std::string s = fmt::format("{} {}", certainty_name(c.certainty), event_name(c.event));
-  if (c.implicit) s += fmt::format(" along position {} (letter {})", c.position, r.parameter[static_cast<std::size_t>(c.position)]);
-  if (!c.others.empty() && c.event == Event::merge && !c.implicit) {
-    std::vector<std::string> names;
-    for (int o : c.others) names.push_back(rule_orbit_name(r, k, true, o));
-    s += fmt::format(" with {}", fmt::join(names, ", "));
-  }
-  return s;
-}
-
 struct Application {
   Map before, after;
   ApplicationTrace trace;
@@ -64,7 +53,7 @@ void print_text(const CatalogRule& rule, const EventRule& view, const std::vecto
       for (int o = 0; o < static_cast<int>(so.orbits.size()); ++o) {
         std::vector<std::string> events;
         for (const EventClaim& c : k.claims)
-          if (c.orbit == o && (c.event == Event::creation) == (side == 1)) events.push_back(claim_text(view, k, c));
+          if (c.orbit == o && (c.event == Event::creation) == (side == 1)) events.push_back(claim_summary(view, k, c));
         if (side == 1 && events.empty()) continue;  // right orbits matter for creations only
         const RuleOrbit& ro = so.orbits[static_cast<std::size_t>(o)];
         fmt::print("    {:<22} {:<10} {}\n", rule_orbit_name(view, k, side == 0, o), ro.complete ? "complete" : "incomplete",

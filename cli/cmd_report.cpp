@@ -13,6 +13,7 @@
 #include <random>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis/embedded_fuzz.hpp"
 #include "analysis/embedding_checks.hpp"
@@ -28,6 +29,7 @@
 #include "cli/report_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
+#include "events/static_events.hpp"
 #include "rewriting/scheme_application.hpp"
 #include "reports/counterexample_dot.hpp"
 #include "reports/html_page.hpp"
@@ -212,6 +214,34 @@ std::string table_html(const std::vector<RuleReport>& rows, bool fuzzed, bool pr
   return out + "</table>\n";
 }
 
+// The rule's topological events per orbit type (004 Sec. 3), as
+// `dartcheck events` prints them: rule orbits with an event, their
+// completeness and the events with their certainty.
+std::string events_table(const Operation& op) {
+  const auto view = events::event_rule(op);
+  if (!view.rule) return fmt::format("<h3>Topological events (004)</h3>\n<p class=\"note\">Not analysed: {}</p>\n", html_text(view.why));
+  std::string rows;
+  for (const auto& kind : events::all_orbit_kinds(op.rule.model())) {
+    const auto k = events::static_events(*view.rule, kind);
+    for (int side = 0; side < 2; ++side) {
+      const auto& so = side == 0 ? k.left : k.right;
+      for (int o = 0; o < static_cast<int>(so.orbits.size()); ++o) {
+        std::vector<std::string> claims;
+        for (const auto& c : k.claims)
+          if (c.orbit == o && (c.event == events::Event::creation) == (side == 1)) claims.push_back(events::claim_summary(*view.rule, k, c));
+        if (claims.empty()) continue;
+        const auto& ro = so.orbits[static_cast<std::size_t>(o)];
+        rows += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", html_text(kind.str()),
+                            html_text(events::rule_orbit_name(*view.rule, k, side == 0, o)),
+                            html_text(ro.complete ? "complete" : fmt::format("incomplete ({})", fmt::join(ro.missing, "; "))),
+                            html_text(fmt::format("{}", fmt::join(claims, "; "))));
+      }
+    }
+  }
+  return "<h3>Topological events (004)</h3>\n<table>\n<tr><th>orbit type</th><th>rule orbit</th><th>complete</th><th>events</th></tr>\n" + rows +
+         "</table>\n";
+}
+
 std::string rule_section(const RuleReport& r, Pictures& pictures) {
   const auto& e = *r.entry;
   const std::string name = e.rule.name(), stem = file_stem(name);
@@ -255,6 +285,7 @@ std::string rule_section(const RuleReport& r, Pictures& pictures) {
     out += "</ul>\n";
   }
   for (const auto& caveat : e.caveats) out += fmt::format("<p class=\"note\">Not represented: {}</p>\n", html_text(caveat));
+  out += events_table(e);
 
   if (r.fuzz) {
     const auto& f = *r.fuzz;

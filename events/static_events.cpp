@@ -38,6 +38,17 @@ std::string rule_orbit_name(const EventRule& r, const KindEvents& k, bool left, 
   return fmt::format("{}{}({})", left ? 'L' : 'R', k.kind.str(), fmt::join(names, ","));
 }
 
+std::string claim_summary(const EventRule& r, const KindEvents& k, const EventClaim& c) {
+  std::string s = fmt::format("{} {}", certainty_name(c.certainty), event_name(c.event));
+  if (c.implicit) s += fmt::format(" along position {} (letter {})", c.position, r.parameter[static_cast<std::size_t>(c.position)]);
+  if (!c.others.empty() && c.event == Event::merge && !c.implicit) {
+    std::vector<std::string> names;
+    for (int o : c.others) names.push_back(rule_orbit_name(r, k, true, o));
+    s += fmt::format(" with {}", fmt::join(names, ", "));
+  }
+  return s;
+}
+
 namespace {
 
 // The explicit arcs of `side` inside node set `nodes` whose label is a

@@ -51,6 +51,10 @@ struct KindEvents {
 /// The events of every <o>-orbit of `r`'s two sides.
 KindEvents static_events(const EventRule& r, const OrbitKind& kind);
 
+/// "conditional split along position 1 (letter 1)", "certain merge with
+/// L<0,2>(n1)": a claim in one phrase, for tables and the CLI.
+std::string claim_summary(const EventRule& r, const KindEvents& k, const EventClaim& c);
+
 /// "L<0,1>(n0)" or "R<0,2>(n1,n2)".
 std::string rule_orbit_name(const EventRule& r, const KindEvents& k, bool left, int orbit);
 

@@ -122,6 +122,26 @@ TEST(ReportHtml, ConfirmedFailuresAreDrawn) {
   EXPECT_GE(confirmed, 40u);
 }
 
+// The events table of a rule (004 Sec. 3): the triangulation's face splits
+// implicitly along position 1, conditionally (its L<0,1>(n0) is complete),
+// as dartcheck events says and tests/events derives by hand.
+TEST(ReportHtml, EachRuleHasItsEventsTable) {
+  cli::ReportOptions o;
+  o.catalog = std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/event-operations.yaml";
+  o.output = fresh_dir("report-events").string();
+  o.rule = "triangulate-face";
+  ASSERT_EQ(cli::report(o), cli::ok);
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file((fs::path(o.output) / "index.html").c_str()));
+  bool found = false;
+  for (const auto& x : doc.select_nodes("//tr")) {
+    std::string row;
+    for (const auto& td : x.node().children("td")) row += std::string(td.text().get()) + "|";
+    found = found || row == "<0,1>|L<0,1>(n0)|complete|conditional split along position 1 (letter 1); conditional modification|";
+  }
+  EXPECT_TRUE(found);
+}
+
 TEST(ReportHtml, BadInputIsAnErrorNotACrash) {
   cli::ReportOptions o;
   o.catalog = seed_catalog;
