@@ -56,7 +56,6 @@ std::vector<LoggedEvent> derive(const Map& g, const Map& h, const OrbitKind& kin
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   std::vector<std::uint32_t> nb(go.size(), 0), na(ho.size(), 0), only_b(go.size(), 0);
-  std::vector<std::vector<std::uint32_t>> as_of_b;
   for (auto [a, b] : pairs) {
     ++nb[a];
     ++na[b];

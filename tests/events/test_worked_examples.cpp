@@ -189,5 +189,29 @@ TEST(WorkedExamples, EdgeDeletionMergesTwoFacesOrSplitsOneAtABridge) {
   EXPECT_EQ(count_cells(a.after).cells, (std::vector<std::size_t>{8, 8, 2}));
 }
 
+// Jerboa's own rules (../shared/jerboa-samples/JerboaRebuilt2.jme, a
+// 3-G-map modeler): UnSewA2 and SewA2 are Fig. 6 and 8 in 3D. Expected
+// from the paper's prose: unsewing splits the edge <0,2> for certain and
+// the surface <0,1,2> only potentially (its nodes have no 1-link);
+// sewing merges two edges for certain.
+TEST(WorkedExamples, JerboaSewAndUnsew) {
+  const Catalog jerboa = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/../shared/jerboa-samples/JerboaRebuilt2.jme");
+  auto claims = [&](const char* rule, const char* kind) {
+    const Operation& op = *jerboa.find_rule(rule);
+    const EventRule view = *event_rule(op).rule;
+    const KindEvents k = static_events(view, parse_orbit_kind(kind, op.rule.model()));
+    std::vector<std::string> out;
+    for (const auto& c : k.claims)
+      out.push_back(fmt::format("{} {} {}", event_name(c.event), certainty_name(c.certainty), rule_orbit_name(view, k, c.event != Event::creation, c.orbit)));
+    return out;
+  };
+  EXPECT_THAT(claims("UnSewA2", "<0,2>"), ElementsAre("split certain L<0,2>(n0,n1)"));
+  EXPECT_THAT(claims("UnSewA2", "<0,1,2>"), ElementsAre("split potential L<0,1,2>(n0,n1)", "modification potential L<0,1,2>(n0,n1)"));
+  EXPECT_THAT(claims("SewA2", "<0,2>"), ElementsAre("merge certain L<0,2>(n0)", "merge certain L<0,2>(n1)"));
+  // The 3-links of SewA2's nodes are implicit (<0,3>) and untouched: the
+  // <3> orbits are not modified.
+  EXPECT_THAT(claims("SewA2", "<3>"), ElementsAre("no-modification certain L<3>(n0)", "no-modification certain L<3>(n1)"));
+}
+
 }  // namespace
 }  // namespace dartcheck::events::test
