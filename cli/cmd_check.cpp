@@ -8,6 +8,7 @@
 #include <map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "checkers/host_search.hpp"
 #include "checkers/rule_conditions.hpp"
@@ -69,10 +70,102 @@ std::string model_level(const Checked& c) {
   return fmt::format("no model-level counterexample up to {} darts{}", s.largest_host, s.exhausted ? "" : " (search budget reached)");
 }
 
+std::string recorded_text(const CatalogRule& e) {
+  if (!e.expected_failures) return "no verdict recorded";
+  return e.expected_failures->empty() ? "consistent" : fmt::format("{}", fmt::join(*e.expected_failures, " "));
+}
+
+// One SARIF result per failing condition (witness sentences as the
+// message), at the rule's line in the catalog: level "error" when the
+// catalog does not record that failure, "note" when it does; plus an
+// error for a recorded failure that does not occur and for a soundness
+// bug. SARIF 2.1.0, as GitHub code scanning reads it.
+void print_sarif(const std::string& file, const std::vector<Checked>& rows) {
+  std::vector<std::string> results;
+  std::vector<std::string> rule_ids;
+  auto location = [&](const SourceLocation& at) {
+    return fmt::format("[{{\"physicalLocation\": {{\"artifactLocation\": {{\"uri\": \"{}\"}}, \"region\": {{\"startLine\": {}, \"startColumn\": {}}}}}}}]",
+                       json_escape(at.file.empty() ? file : at.file), std::max(at.line, 1), std::max(at.column, 1));
+  };
+  auto result = [&](const std::string& id, bool error, const std::string& text, const CatalogRule& e) {
+    if (std::find(rule_ids.begin(), rule_ids.end(), id) == rule_ids.end()) rule_ids.push_back(id);
+    results.push_back(fmt::format("{{\"ruleId\": \"{}\", \"level\": \"{}\", \"message\": {{\"text\": \"{}\"}}, \"locations\": {}, "
+                                  "\"properties\": {{\"rule\": \"{}\", \"recorded\": \"{}\"}}}}",
+                                  json_escape(id), error ? "error" : "note", json_escape(text), location(e.location), json_escape(e.rule.name()),
+                                  json_escape(recorded_text(e))));
+  };
+  for (const Checked& c : rows) {
+    const CatalogRule& e = *c.entry;
+    const auto recorded = [&](const std::string& name) {
+      return e.expected_failures && std::find(e.expected_failures->begin(), e.expected_failures->end(), name) != e.expected_failures->end();
+    };
+    for (const auto& v : c.verdict.conditions) {
+      if (v.holds) continue;
+      std::vector<std::string> texts;
+      for (const auto& w : v.witnesses) texts.push_back(w.text);
+      result(v.name(), !recorded(v.name()), fmt::format("rule {}: {} fails: {}", e.rule.name(), v.name(), fmt::join(texts, "; ")), e);
+    }
+    for (const auto& name : failing_names(c.embedding)) result(name, !recorded(name), fmt::format("rule {}: {} fails", e.rule.name(), name), e);
+    if (e.expected_failures)
+      for (const auto& name : *e.expected_failures)
+        if (std::find(c.failures.begin(), c.failures.end(), name) == c.failures.end())
+          result("verdict", true, fmt::format("rule {}: the catalog records {} failing, but it holds", e.rule.name(), name), e);
+    if (c.unsound) result("soundness", true, fmt::format("rule {}: {}", e.rule.name(), model_level(c)), e);
+  }
+  std::vector<std::string> rules;
+  for (const auto& id : rule_ids)
+    rules.push_back(fmt::format("{{\"id\": \"{}\", \"shortDescription\": {{\"text\": \"{}\"}}}}", json_escape(id),
+                                id == "verdict"     ? "a failure the catalog records does not occur"
+                                : id == "soundness" ? "a rule judged consistent broke a map"
+                                                    : "a consistency condition of 002 (Def. 11-16, 21-27) or an embedding condition of 003 fails"));
+  fmt::print("{{\"$schema\": \"https://json.schemastore.org/sarif-2.1.0.json\", \"version\": \"2.1.0\", \"runs\": [{{\"tool\": {{\"driver\": "
+             "{{\"name\": \"dartcheck\", \"version\": \"{}\", \"rules\": [{}]}}}}, \"results\": [\n{}\n]}}]}}\n",
+             DARTCHECK_VERSION, fmt::join(rules, ", "), fmt::join(results, ",\n"));
+}
+
+std::string xml_text(std::string_view s) {
+  std::string out;
+  for (char ch : s) {
+    switch (ch) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += (static_cast<unsigned char>(ch) < 0x20 && ch != '\n' && ch != '\t') ? ' ' : ch;
+    }
+  }
+  return out;
+}
+
+// JUnit XML: one test case per rule, failing when its verdict differs from
+// the catalog's record (what makes `check` exit 1).
+void print_junit(const std::string& file, const std::vector<Checked>& rows, std::size_t mismatches) {
+  double total = 0;
+  for (const Checked& c : rows) total += c.millis;
+  fmt::print("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"dartcheck check\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n"
+             "<testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
+             rows.size(), mismatches, total / 1000, xml_text(file), rows.size(), mismatches, total / 1000);
+  for (const Checked& c : rows) {
+    const CatalogRule& e = *c.entry;
+    const std::string verdict = c.failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(c.failures, " "));
+    fmt::print("  <testcase name=\"{}\" classname=\"{}\" file=\"{}\" line=\"{}\" time=\"{:.6f}\">", xml_text(e.rule.name()),
+               xml_text(e.rule.model().name), xml_text(e.location.file.empty() ? file : e.location.file), e.location.line, c.millis / 1000);
+    if (!c.matches_record)
+      fmt::print("\n    <failure message=\"{}\" type=\"verdict\">{}: {}; catalog records {}</failure>\n  ",
+                 xml_text(fmt::format("{}, catalog records {}", verdict, recorded_text(e))), xml_text(e.location.str()), xml_text(verdict),
+                 xml_text(recorded_text(e)));
+    fmt::print("<system-out>{}</system-out></testcase>\n", xml_text(verdict + (model_level(c).empty() ? "" : "; " + model_level(c))));
+  }
+  fmt::print("</testsuite>\n</testsuites>\n");
+}
+
 }  // namespace
 
 int check(const CheckOptions& o) {
-  const Catalog catalog = read_command_catalog(o.catalog, o.rule, o.format);
+  // SARIF and JUnit are check's own formats (code scanning and CI test
+  // reports); the catalog is read as for text.
+  const bool ci_format = o.format == "sarif" || o.format == "junit";
+  const Catalog catalog = read_command_catalog(o.catalog, o.rule, ci_format ? "text" : o.format);
 
   // The catalog's maps, built on first use.
   std::vector<std::optional<Map>> maps(catalog.maps.size());
@@ -105,6 +198,7 @@ int check(const CheckOptions& o) {
       FuzzOptions fo;
       fo.runs = 2000;
       fo.max_darts = 64;
+      fo.event_checks = 0;  // check is about consistency; events are `fuzz` and `events`
       fo.static_check = [&](const Operation&) { return c.verdict; };
       c.scheme_search = fuzz_rule(entry, extra, fo);
       // Unsound: a broken constraint whose conditions all hold (embedding
@@ -119,6 +213,14 @@ int check(const CheckOptions& o) {
   }
   const auto mismatches = std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.matches_record; });
 
+  if (o.format == "sarif") {
+    print_sarif(o.catalog, rows);
+    return mismatches ? violation : ok;
+  }
+  if (o.format == "junit") {
+    print_junit(o.catalog, rows, mismatches);
+    return mismatches ? violation : ok;
+  }
   if (o.format == "json") {
     fmt::print("{{\"catalog\": \"{}\", \"rules\": [\n", json_escape(o.catalog));
     for (std::size_t k = 0; k < rows.size(); ++k) {

@@ -50,7 +50,9 @@ int main(int argc, char** argv) {
   auto* c = app.add_subcommand("check", "Static consistency conditions of every rule (002 Def. 11-16), against the catalog's verdicts");
   c->add_option("catalog", check.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   c->add_option("--rule", check.rule, "check only this rule");
-  c->add_option("--format", check.format, "text or json")->capture_default_str();
+  c->add_option("--format", check.format, "text, json, sarif (SARIF 2.1.0, for code scanning) or junit (JUnit XML, for CI test reports)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
   c->add_flag("--explain", check.explain, "print the witnesses of every failing condition and the counterexample map");
   c->add_option("--confirm-darts", check.confirm_darts,
                 "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
