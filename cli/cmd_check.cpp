@@ -5,6 +5,7 @@
 // failure is confirmed on a real map or only per constraint.
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <map>
 
 #include <fmt/format.h>
@@ -18,6 +19,7 @@
 #include "cli/report_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "analysis/fuzz.hpp"
+#include "io/baseline.hpp"
 #include "io/catalog.hpp"
 #include "core/input_error.hpp"
 
@@ -165,7 +167,29 @@ int check(const CheckOptions& o) {
   // SARIF and JUnit are check's own formats (code scanning and CI test
   // reports); the catalog is read as for text.
   const bool ci_format = o.format == "sarif" || o.format == "junit";
-  const Catalog catalog = read_command_catalog(o.catalog, o.rule, ci_format ? "text" : o.format);
+  Catalog catalog = read_command_catalog(o.catalog, o.rule, ci_format ? "text" : o.format);
+  // A baseline replaces the recorded verdicts; its rules not checked
+  // (unreadable) must be exactly those the reader skipped.
+  std::vector<std::string> baseline_mismatches;
+  if (!o.baseline.empty()) {
+    const Baseline b = read_baseline(o.baseline);
+    for (const auto& e : b.entries) {
+      CatalogRule* r = nullptr;
+      for (auto& x : catalog.rules)
+        if (x.rule.name() == e.rule) r = &x;
+      const bool skipped = std::any_of(catalog.skipped.begin(), catalog.skipped.end(), [&](const SkippedRule& s) { return s.name == e.rule; });
+      if (!r && !skipped) throw InputError(e.location.file, e.location.line, e.location.column, fmt::format("the baseline names rule '{}', which {} does not have", e.rule, o.catalog));
+      if (r && !e.failures)
+        baseline_mismatches.push_back(fmt::format("{}: the baseline records rule '{}' as not checked, but it is read now", e.location.str(), e.rule));
+      else if (r)
+        r->expected_failures = e.failures, r->verdict_location = e.location;
+      if (skipped && e.failures)
+        baseline_mismatches.push_back(fmt::format("{}: the baseline records a verdict for rule '{}', which is not checked now", e.location.str(), e.rule));
+    }
+    for (const auto& s : catalog.skipped)
+      if (!b.find(s.name))
+        baseline_mismatches.push_back(fmt::format("rule '{}' is not checked ({}) and the baseline {} does not record it", s.name, s.why, o.baseline));
+  }
 
   // The catalog's maps, built on first use.
   std::vector<std::optional<Map>> maps(catalog.maps.size());
@@ -211,7 +235,18 @@ int check(const CheckOptions& o) {
     }
     rows.push_back(std::move(c));
   }
-  const auto mismatches = std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.matches_record; });
+  const auto mismatches = std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.matches_record; }) +
+                          static_cast<std::ptrdiff_t>(baseline_mismatches.size());
+  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", m);
+  if (!o.write_baseline.empty()) {
+    std::vector<BaselineEntry> entries;
+    for (const Checked& c : rows) entries.push_back({c.entry->rule.name(), c.failures, {}});
+    for (const auto& s : catalog.skipped) entries.push_back({s.name, std::nullopt, {}});
+    std::ofstream out(o.write_baseline);
+    if (!out) throw InputError("<command line>", 0, 0, fmt::format("--write-baseline: cannot write '{}'", o.write_baseline));
+    write_baseline(out, o.catalog, entries);
+    fmt::print(stderr, "wrote {} ({} verdicts, {} not checked)\n", o.write_baseline, rows.size(), catalog.skipped.size());
+  }
 
   if (o.format == "sarif") {
     print_sarif(o.catalog, rows);
@@ -254,7 +289,7 @@ int check(const CheckOptions& o) {
     }
     fmt::print("], \"skipped\": [");
     for (std::size_t k = 0; k < catalog.skipped.size(); ++k)
-      fmt::print("{}{{\"name\": \"{}\", \"why\": \"{}\", \"at\": \"{}\"}}", k ? ", " : "", json_escape(catalog.skipped[k].name),
+      fmt::print("{}{{\"name\": \"{}\", \"verdict\": \"not checked\", \"why\": \"{}\", \"at\": \"{}\"}}", k ? ", " : "", json_escape(catalog.skipped[k].name),
                  json_escape(catalog.skipped[k].why), json_escape(catalog.skipped[k].location.str()));
     fmt::print("], \"mismatches\": {}}}\n", mismatches);
     return mismatches ? violation : ok;
@@ -286,7 +321,7 @@ int check(const CheckOptions& o) {
     std::string record;
     if (!c.matches_record)
       record = c.entry->expected_failures
-                   ? fmt::format("   MISMATCH: catalog records {}",
+                   ? fmt::format("   MISMATCH: {} records {}", o.baseline.empty() ? "catalog" : "baseline",
                                  c.entry->expected_failures->empty() ? "consistent" : fmt::format("{}", fmt::join(*c.entry->expected_failures, " ")))
                    : "   MISMATCH: no verdict recorded, so every condition must hold";
     fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7.2f}  {}{}\n", c.entry->rule.name(), width, c.entry->rule.model().name,
@@ -313,15 +348,17 @@ int check(const CheckOptions& o) {
     }
   }
   for (const auto& sk : catalog.skipped)
-    if (o.rule.empty()) fmt::print("{:<{}}  skipped ({}): {}\n", sk.name, width, sk.location.str(), sk.why);
+    if (o.rule.empty()) fmt::print("{:<{}}  not checked ({}): {}\n", sk.name, width, sk.location.str(), sk.why);
   if (embedded)
     fmt::print("\nembeddings: {}{}\n", sufficiency_note,
                catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated");
-  fmt::print("\n{} rules, {} consistent, {} with failing conditions; {} verdict{} differ{} from the catalog\n", rows.size(),
+  fmt::print("\n{} rules, {} consistent, {} with failing conditions{}; {} verdict{} differ{} from the {}\n", rows.size(),
              std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return c.failures.empty(); }),
-             std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.failures.empty(); }), mismatches,
-             mismatches == 1 ? "" : "s", mismatches == 1 ? "s" : "");
-  return mismatches ? violation : ok;
+             std::count_if(rows.begin(), rows.end(), [](const Checked& c) { return !c.failures.empty(); }),
+             catalog.skipped.empty() || !o.rule.empty() ? "" : fmt::format(", {} not checked", catalog.skipped.size()), mismatches,
+             mismatches == 1 ? "" : "s", mismatches == 1 ? "s" : "", o.baseline.empty() ? "catalog" : "baseline");
+  // Writing a baseline records the present verdicts: not a failure.
+  return mismatches && o.write_baseline.empty() ? violation : ok;
 }
 
 }  // namespace dartcheck::cli

@@ -65,6 +65,8 @@ int run(const RunOptions& o);
 
 struct CheckOptions {
   std::string catalog, rule, format = "text";
+  std::string baseline;        // recorded verdicts from a YAML side file (io/baseline.hpp), for .jme modelers
+  std::string write_baseline;  // write this run's verdicts as a baseline
   bool explain = false;
   std::size_t confirm_darts = 2;  // extra darts beyond L for the model-level search (0: none)
 };

@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
   c->add_option("--format", check.format, "text, json, sarif (SARIF 2.1.0, for code scanning) or junit (JUnit XML, for CI test reports)")
       ->capture_default_str()
       ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
+  c->add_option("--baseline", check.baseline, "recorded verdicts from a YAML side file (for a .jme modeler, which records none)");
+  c->add_option("--write-baseline", check.write_baseline, "write this run's verdicts (and the rules not checked) as a baseline file");
   c->add_flag("--explain", check.explain, "print the witnesses of every failing condition and the counterexample map");
   c->add_option("--confirm-darts", check.confirm_darts,
                 "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
@@ -87,7 +89,8 @@ int main(int argc, char** argv) {
   f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)")->check(counts);
   f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str()->check(counts);
   f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
-  f->add_option("--out", fuzz.out, "write each counterexample here: host, match, result and a replay command");
+  // -o/--output as every other command; --out, the old spelling, stays.
+  f->add_option("-o,--output,--out", fuzz.out, "directory: write each counterexample here (host, match, result and a replay command)");
   f->add_option("--format", fuzz.format, "text or json")->capture_default_str();
 
   cli::ProveCommand prove;
@@ -100,7 +103,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(counts);
   p->add_option("--rlimit", prove.rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str()->check(counts);
   p->add_option("--timeout", prove.timeout, "also stop a query after this many seconds (answers then depend on the machine)")->check(counts);
-  p->add_option("--out", prove.out, "write each counterexample on a map of the model here, with a replay command");
+  p->add_option("-o,--output,--out", prove.out, "directory: write each counterexample on a map of the model here, with a replay command");
   p->add_option("--format", prove.format, "text or json")->capture_default_str();
   p->add_flag("--explain", prove.explain, "print the hosts and derived graphs of theorem-class counterexamples");
 

@@ -1,5 +1,7 @@
 #include "generators/shapes.hpp"
 
+#include "core/limits.hpp"
+
 #include <charconv>
 #include <fmt/format.h>
 
@@ -71,6 +73,19 @@ Map build_shape(const Model& model, const ShapeSpec& spec) {
     for (int p : spec.params)
       if (p < min) throw BuildError(fmt::format("shape '{}': parameter {} is below {}", spec.kind, p, min));
   };
+  // The darts a shape will have, bounded before anything is allocated: a
+  // face side is at most two darts (G-maps: exactly two; O-maps: one, and
+  // one more on the boundary's outer face), so 2 x sides. A grid:100000x100000
+  // is refused here, not by the allocator.
+  auto bound = [&](long double sides) {
+    const long double darts = 2 * sides;
+    if (darts > static_cast<long double>(limits().darts))
+      throw BuildError(fmt::format("shape '{}' would have up to {:.0f} darts, over the limit of {} (raise it with --limit-darts)", spec.kind,
+                                   static_cast<double>(darts), limits().darts));
+  };
+  if (spec.kind == "polygon" && spec.params.size() == 1) bound(spec.params[0]);
+  if (spec.kind == "grid" && spec.params.size() == 2) bound(4.0L * spec.params[0] * spec.params[1]);
+  if (spec.kind == "prism" && spec.params.size() == 1) bound(6.0L * spec.params[0]);
   const bool solid = model.dimension() >= 3;
   auto closed = [&](std::vector<Polygon> faces) { return solid ? build_volumes(model, {faces}) : build_surface(model, faces); };
   if (spec.kind == "polygon") {

@@ -1,0 +1,73 @@
+#include "io/baseline.hpp"
+
+#include <fmt/format.h>
+
+#include "io/yaml_util.hpp"
+
+namespace dartcheck {
+
+const BaselineEntry* Baseline::find(const std::string& rule) const {
+  for (const auto& e : entries)
+    if (e.rule == rule) return &e;
+  return nullptr;
+}
+
+Baseline read_baseline(const std::string& file) {
+  const YAML::Node root = load_yaml_file(file);
+  try {
+    yaml::expect_map(file, root, "a baseline");
+    yaml::allow_keys(file, root, {"verdicts"});
+    const YAML::Node verdicts = yaml::require(file, root, "verdicts");
+    yaml::expect_map(file, verdicts, "verdicts");
+    Baseline b{file, {}};
+    for (const auto& kv : verdicts) {
+      BaselineEntry e;
+      e.rule = yaml::as_string(file, kv.first, "a rule name");
+      e.location = {file, kv.first.Mark().line + 1, kv.first.Mark().column + 1};
+      if (b.find(e.rule)) fail_at(file, kv.first, fmt::format("rule '{}' appears twice", e.rule));
+      const YAML::Node& v = kv.second;
+      if (v.IsScalar() && v.Scalar() == "consistent") {
+        e.failures.emplace();
+      } else if (v.IsScalar() && v.Scalar() == "not checked") {
+        // no verdict: dartcheck could not read the rule
+      } else if (v.IsSequence()) {
+        e.failures.emplace();
+        for (const auto& f : v) e.failures->push_back(yaml::as_string(file, f, "a condition name such as I(1)"));
+      } else {
+        fail_at(file, v, fmt::format("verdict of '{}': expected consistent, not checked or a list such as [\"I(1)\"]", e.rule));
+      }
+      b.entries.push_back(std::move(e));
+    }
+    return b;
+  } catch (const YAML::Exception& e) {
+    throw yaml_input_error(file, e);
+  }
+}
+
+void write_baseline(std::ostream& out, const std::string& source, const std::vector<BaselineEntry>& entries) {
+  // Rule names and condition names are quoted: Jerboa names may hold
+  // anything YAML would read otherwise.
+  auto quoted = [](const std::string& s) {
+    std::string q = "\"";
+    for (char c : s) {
+      if (c == '"' || c == '\\') q += '\\';
+      q += c;
+    }
+    return q + '"';
+  };
+  out << "# dartcheck baseline of " << source << " (dartcheck check --baseline)\nverdicts:\n";
+  for (const auto& e : entries) {
+    out << "  " << quoted(e.rule) << ": ";
+    if (!e.failures) {
+      out << "not checked\n";
+    } else if (e.failures->empty()) {
+      out << "consistent\n";
+    } else {
+      out << '[';
+      for (std::size_t k = 0; k < e.failures->size(); ++k) out << (k ? ", " : "") << quoted((*e.failures)[k]);
+      out << "]\n";
+    }
+  }
+}
+
+}  // namespace dartcheck
