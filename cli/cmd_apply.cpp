@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 #include <fstream>
+#include <sstream>
 
 #include <random>
 
@@ -17,6 +18,8 @@
 #include "rewriting/scheme_application.hpp"
 #include "core/input_error.hpp"
 #include "io/map_io.hpp"
+#include "io/jerboa_jba.hpp"
+#include "events/application_trace.hpp"
 
 namespace dartcheck::cli {
 
@@ -74,14 +77,55 @@ int apply_terms(const ApplyOptions& o, const CatalogRule& rule, Map map) {
   return report.valid() && consistent ? ok : violation;
 }
 
+// -o X.jba: the result as a Jerboa G-map, with the embeddings a .jba input
+// carried. A topological rule computes no values: preserved and unmatched
+// darts keep theirs (through the dart correspondence of the application,
+// events/application_trace), new darts have none, and the summary says
+// how many are labeled.
+int apply_to_jba(const ApplyOptions& o, const CatalogRule& rule, Map map) {
+  JbaFile in{"dartcheck", Map(rule.rule.model()), {}, {}};
+  if (o.map.ends_with(".jba")) in = read_jba(o.map);
+  const Map before = map;
+  auto traced = events::apply_traced(rule, map, o.hooks);
+  if (!traced.ok()) {
+    fmt::print("not applied ({}): {}\n", refusal_name(traced.refusal), traced.why);
+    return violation;
+  }
+  fmt::print("applied: {} -> {} darts\n", before.size(), map.size());
+  const events::Correspondence c(rule.rule, *traced.value);
+  JbaFile out{in.name, map, {}, {}};
+  for (const auto& e : in.embeddings) {
+    MapEmbedding carried{e.name, e.type, e.orbit, std::vector<std::optional<std::string>>(map.size()), {}};
+    std::size_t labeled = 0;
+    for (Dart h = 0; h < map.size(); ++h)
+      if (const Dart g = c.to_g(h); g != no_dart && g < e.values.size() && e.values[g]) {
+        carried.values[h] = e.values[g];
+        ++labeled;
+      }
+    fmt::print("embedding {}: {} of {} darts keep their value; new darts have none (a topological rule computes no values)\n", e.name, labeled,
+               map.size());
+    out.embeddings.push_back(std::move(carried));
+  }
+  const auto report = check_map(map);
+  print_validity(stdout, map, report, o.limit);
+  std::ostringstream text;  // refused (not an n-G-map) before a file exists
+  write_jba(text, out, o.output);
+  std::ofstream file(o.output);
+  if (!file || !(file << text.str())) throw InputError(o.output, 0, 0, "cannot write the result map");
+  fmt::print("written: {}\n", o.output);
+  return report.valid() ? ok : violation;
+}
+
 }  // namespace
 
 int apply(const ApplyOptions& o) {
   // The only writer is YAML: a result under another extension would be a
   // YAML file that its readers reject (or an OFF file without positions).
-  if (!o.output.empty() && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
+  const bool jba_out = o.output.ends_with(".jba");
+  if (!o.output.empty() && !jba_out && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
     throw InputError("<command line>", 0, 0,
-                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml); it has no .jba, .off or .obj writer yet", o.output));
+                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml) or Jerboa .jba; it has no .off or .obj writer yet",
+                                 o.output));
   const Catalog catalog = read_catalog(o.catalog);
   const CatalogRule* rule = catalog.find_rule(o.rule);
   if (!rule) throw InputError(o.catalog, 0, 0, fmt::format("no rule named '{}'", o.rule));
@@ -90,7 +134,11 @@ int apply(const ApplyOptions& o) {
     throw InputError("<command line>", 0, 0,
                      fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, map.model().name, o.rule, rule->rule.model().name));
   fmt::print("rule: {} ({})\nhost: {}\n", o.rule, rule->rule.model().name, describe_target(o.map, map));
-  if (rule->terms) return apply_terms(o, *rule, std::move(map));
+  if (rule->terms) {
+    if (jba_out) throw InputError("<command line>", 0, 0, "-o: an embedded rule's result is written as YAML (its values are printed); use .yaml");
+    return apply_terms(o, *rule, std::move(map));
+  }
+  if (jba_out) return apply_to_jba(o, *rule, std::move(map));
   if (rule->words.scheme) {
     // A rule scheme: instantiated on the pattern graph of the hook dart.
     auto result = apply_scheme(rule->rule, rule->words, map, o.hooks);

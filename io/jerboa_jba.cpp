@@ -1,5 +1,6 @@
 #include "io/jerboa_jba.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include "core/input_error.hpp"
 #include "core/limits.hpp"
+#include "core/orbit.hpp"
 #include "io/input_file.hpp"
 
 namespace dartcheck {
@@ -152,6 +154,54 @@ JbaFile read_jba(const std::string& file) {
     }
   }
   return out;
+}
+
+void write_jba(std::ostream& out, const JbaFile& f, const std::string& path) {
+  const Map& m = f.map;
+  if (!m.model().is_generalized() || m.model() != Model::gmap(m.model().dimension()))
+    throw InputError(path, 0, 0, fmt::format("a .jba holds n-G-maps; this map is a {}", m.model().name));
+  const int n = m.model().dimension();
+  for (Dart d = 0; d < m.size(); ++d)
+    for (int i = 0; i <= n; ++i)
+      if (m.link(i, d) == no_dart) throw InputError(path, 0, 0, fmt::format("a .jba map has every link: dart {} has no alpha_{}", d, i));
+  out << "Jerboa JBA Generic Format\nversion 1\nname " << (f.name.empty() ? "dartcheck" : f.name) << "\ndimension " << n << "\nnbebd "
+      << f.embeddings.size() << '\n';
+  for (std::size_t k = 0; k < f.embeddings.size(); ++k) {
+    const auto& e = f.embeddings[k];
+    std::string orbit;
+    for (std::size_t j = 0; j < e.orbit.size(); ++j) orbit += fmt::format("{}a{}", j ? ", " : "", e.orbit[j]);
+    out << "ebdid " << k << ' ' << e.name << " <" << orbit << "> " << e.type << '\n';
+  }
+  out << m.size() << ' ' << m.size() << '\n';
+  for (Dart d = 0; d < m.size(); ++d) {
+    out << d;
+    for (int i = 0; i <= n; ++i) out << ' ' << m.link(i, d);
+    out << '\n';
+  }
+  // One record per (orbit, value): an orbit whose darts disagree keeps
+  // every value it had, as the reader found it.
+  OrbitWalker walker(m);
+  for (const auto& e : f.embeddings) {
+    std::vector<std::pair<std::string, std::vector<Dart>>> records;
+    std::vector<bool> seen(m.size(), false);
+    for (Dart d = 0; d < m.size(); ++d) {
+      if (seen[d]) continue;
+      std::vector<std::pair<std::string, std::vector<Dart>>> by_value;
+      for (Dart x : walker.orbit(d, dims_generators(e.orbit))) {
+        seen[x] = true;
+        if (x >= e.values.size() || !e.values[x]) continue;
+        auto it = std::find_if(by_value.begin(), by_value.end(), [&](const auto& r) { return r.first == *e.values[x]; });
+        if (it == by_value.end()) by_value.push_back({*e.values[x], {x}});
+        else it->second.push_back(x);
+      }
+      records.insert(records.end(), by_value.begin(), by_value.end());
+    }
+    out << e.name << ' ' << records.size() << '\n';
+    for (const auto& [value, darts] : records) {
+      for (Dart x : darts) out << x << ' ';
+      out << '\n' << value << '\n';
+    }
+  }
 }
 
 }  // namespace dartcheck

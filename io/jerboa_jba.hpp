@@ -17,6 +17,7 @@
 // with each embedding's values per dart. Errors: InputError at file:line.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,12 @@ struct JbaFile {
 };
 
 JbaFile read_jba(const std::string& file);
+
+/// Writes `f` in the format above (dart ids 0..n-1, one record per value
+/// of each orbit; unlabeled darts are left out of the records), so that
+/// read_jba gives the same map and values back. Throws InputError naming
+/// `path` if the map is not an n-G-map with every link set (a .jba holds
+/// nothing else).
+void write_jba(std::ostream& out, const JbaFile& f, const std::string& path);
 
 }  // namespace dartcheck
