@@ -426,7 +426,8 @@ std::string outcome_text(const FuzzReport& r) {
 }
 
 std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, const std::vector<Map>& seeds, FuzzOptions o,
-                                   std::optional<double> seconds, bool progress) {
+                                   std::optional<double> seconds, bool progress,
+                                   const std::function<void(std::size_t, const FuzzReport&)>& finished) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<FuzzReport> reports;
   std::size_t failures = 0;
@@ -452,6 +453,7 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
     // Without a terminal (CI logs), a line per finished rule instead.
     if (!progress)
       fmt::print(stderr, "[{}/{}] {}: {}, {} applications, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict), r.applications, r.seconds);
+    if (finished) finished(k, r);
   }
   if (progress) fmt::print(stderr, "\r\033[K");
   return reports;

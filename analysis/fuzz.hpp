@@ -112,8 +112,11 @@ FuzzReport fuzz_rule(const Operation& rule, const std::vector<Map>& seeds, const
 /// rule). `progress` prints a progress line on stderr (a terminal's);
 /// without it, a line per finished rule. After SIGINT/SIGTERM
 /// (analysis/interrupt) it returns the reports of the rules it finished.
+/// `finished(k, report)` is called as each rule finishes, so a caller can
+/// stream its results (and write its files) before the run ends.
 std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, const std::vector<Map>& seeds, FuzzOptions options,
-                                   std::optional<double> seconds, bool progress);
+                                   std::optional<double> seconds, bool progress,
+                                   const std::function<void(std::size_t, const FuzzReport&)>& finished = {});
 
 /// The outcome in one line: "consistent (checked ...)", "confirmed: at
 /// hook 3 of a 6-dart map, H breaks C(0,2) (minimal)", ...

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <random>
 
+#include <cstdio>
+
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -65,7 +67,9 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
 }  // namespace
 
 int fuzz(const FuzzCommand& c) {
-  const Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format);
+  // jsonl: one JSON object per rule on stdout as it finishes, then a summary.
+  const bool jsonl = c.format == "jsonl";
+  const Catalog catalog = read_command_catalog(c.catalog, c.rule, jsonl ? "json" : c.format);
   catch_interrupts();
   if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
 
@@ -96,19 +100,41 @@ int fuzz(const FuzzCommand& c) {
              seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
                      : fmt::format("{} applications per rule", o.runs));
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<FuzzReport> reports = fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0);
+  // Each rule's counterexample files (and, with jsonl, its result line) are
+  // written as soon as the rule finishes: a run killed later keeps them.
+  std::vector<std::string> replays(rules.size());
+  auto rule_json = [&](std::size_t k, const FuzzReport& r) {
+    std::string s = fmt::format("{{\"name\": \"{}\", \"model\": \"{}\", \"static_failures\": {}, \"class\": \"{}\", \"applications\": {}, "
+                                "\"hosts\": {}, \"largest_host\": {}, \"exhaustive_darts\": {}, \"event_checks\": {}, \"seconds\": {:.4f}, "
+                                "\"out_of_time\": {}, \"reason\": \"{}\"",
+                                json_escape(r.rule), rules[k]->rule.model().name, json_strings(r.static_failures), fuzz_class_name(r.verdict),
+                                r.applications, r.hosts, r.largest_host, r.exhaustive_darts, r.event_checks, r.seconds, r.out_of_time,
+                                json_escape(r.reason));
+    if (r.counterexample) {
+      const auto& cx = *r.counterexample;
+      s += fmt::format(", \"counterexample\": {{\"darts\": {}, \"hooks\": [{}], \"broken\": {}, \"minimal\": {}, \"origin\": \"{}\", "
+                       "\"events\": {}, \"replay\": \"{}\"}}",
+                       cx.host.size(), fmt::join(cx.hooks, ", "), json_strings(cx.broken()), cx.minimal, json_escape(cx.origin),
+                       json_strings(cx.event_contradictions), json_escape(replays[k]));
+    }
+    return s + "}";
+  };
+  auto finished = [&](std::size_t k, const FuzzReport& r) {
+    if (r.counterexample) {
+      if (rules[k]->terms)
+        replays[k] = embedded_replay(c.catalog, r, o.seed);
+      else if (!c.out.empty())
+        replays[k] = write_counterexample(c.out, file_stem(r.rule), c.catalog, r.rule,
+                                          {{"seed", std::to_string(o.seed)}, {"class", std::string(fuzz_class_name(r.verdict))}}, r.static_failures,
+                                          *r.counterexample);
+    }
+    if (c.format == "jsonl") {
+      fmt::print("{}\n", rule_json(k, r));
+      std::fflush(stdout);
+    }
+  };
+  const std::vector<FuzzReport> reports = fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  std::vector<std::string> replays(reports.size());
-  for (std::size_t k = 0; k < reports.size(); ++k) {
-    if (!reports[k].counterexample) continue;
-    if (rules[k]->terms)
-      replays[k] = embedded_replay(c.catalog, reports[k], o.seed);
-    else if (!c.out.empty())
-      replays[k] = write_counterexample(c.out, file_stem(reports[k].rule), c.catalog, reports[k].rule,
-                                        {{"seed", std::to_string(o.seed)}, {"class", std::string(fuzz_class_name(reports[k].verdict))}},
-                                        reports[k].static_failures, *reports[k].counterexample);
-  }
 
   auto count = [&](FuzzClass v) { return std::count_if(reports.begin(), reports.end(), [&](const FuzzReport& r) { return r.verdict == v; }); };
   std::size_t applications = 0;
@@ -127,21 +153,17 @@ int fuzz(const FuzzCommand& c) {
     if (status != soundness_bug) status = interrupted_exit;
   }
 
+  if (c.format == "jsonl") {
+    // The rules' lines are out already; the last line sums the run up.
+    fmt::print("{{\"summary\": {{\"catalog\": \"{}\", \"seed\": {}, \"seconds\": {:.3f}, \"rules\": {}, \"finished\": {}, \"consistent\": {}, "
+               "\"confirmed\": {}, \"unconfirmed\": {}, \"soundness_bugs\": {}, \"applications\": {}, \"interrupted\": {}}}}}\n",
+               json_escape(c.catalog), o.seed, total, rules.size(), reports.size(), count(FuzzClass::consistent), count(FuzzClass::confirmed),
+               count(FuzzClass::unconfirmed), bugs, applications, interrupted());
+    return status;
+  }
   if (c.format == "json") {
     fmt::print("{{\"catalog\": \"{}\", \"seed\": {}, \"seconds\": {:.3f}, \"rules\": [\n", json_escape(c.catalog), o.seed, total);
-    for (std::size_t k = 0; k < reports.size(); ++k) {
-      const auto& r = reports[k];
-      fmt::print("  {{\"name\": \"{}\", \"model\": \"{}\", \"static_failures\": {}, \"class\": \"{}\", \"applications\": {}, \"hosts\": {}, "
-                 "\"largest_host\": {}, \"exhaustive_darts\": {}, \"seconds\": {:.4f}, \"out_of_time\": {}, \"reason\": \"{}\"",
-                 json_escape(r.rule), rules[k]->rule.model().name, json_strings(r.static_failures), fuzz_class_name(r.verdict), r.applications,
-                 r.hosts, r.largest_host, r.exhaustive_darts, r.seconds, r.out_of_time, json_escape(r.reason));
-      if (r.counterexample) {
-        const auto& cx = *r.counterexample;
-        fmt::print(", \"counterexample\": {{\"darts\": {}, \"hooks\": [{}], \"broken\": {}, \"minimal\": {}, \"origin\": \"{}\", \"replay\": \"{}\"}}",
-                   cx.host.size(), fmt::join(cx.hooks, ", "), json_strings(cx.broken()), cx.minimal, json_escape(cx.origin), json_escape(replays[k]));
-      }
-      fmt::print("}}{}\n", k + 1 < reports.size() ? "," : "");
-    }
+    for (std::size_t k = 0; k < reports.size(); ++k) fmt::print("  {}{}\n", rule_json(k, reports[k]), k + 1 < reports.size() ? "," : "");
     fmt::print("], \"consistent\": {}, \"confirmed\": {}, \"unconfirmed\": {}, \"soundness_bugs\": {}, \"applications\": {}}}\n",
                count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, applications);
     return status;

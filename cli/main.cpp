@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
   f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
   // -o/--output as every other command; --out, the old spelling, stays.
   f->add_option("-o,--output,--out", fuzz.out, "directory: write each counterexample here (host, match, result and a replay command)");
-  f->add_option("--format", fuzz.format, "text or json")->capture_default_str();
+  f->add_option("--format", fuzz.format, "text, json, or jsonl (a JSON line per rule as it finishes, then a summary line)")->capture_default_str()->check(CLI::IsMember({"text", "json", "jsonl"}));
 
   cli::ProveCommand prove;
   auto* p = app.add_subcommand("prove", "Ask Z3 for a host whose derived map breaks a constraint (bounded), and set the answer against the static verdict");
