@@ -8,6 +8,7 @@
 #include "checkers/map_validity.hpp"
 #include "rewriting/embedded_application.hpp"
 #include "io/mesh_io.hpp"
+#include "io/mesh_writer.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_embedding.hpp"
 #include "cli/commands.hpp"
@@ -68,7 +69,18 @@ int apply_terms(const ApplyOptions& o, const CatalogRule& rule, Map map) {
       fmt::print("  {}\n", c.conflicts[k].describe(e.signature.name, e.signature.orbit));
     consistent &= c.consistent();
   }
-  if (!o.output.empty()) {
+  if (!o.output.empty() && is_mesh_path(o.output)) {
+    // The positions: the first point embedding of the rule.
+    const Embedding* pos = nullptr;
+    for (const Embedding& e : host->embeddings)
+      if (!pos && (e.signature.type == ValueType::point3 || e.signature.type == ValueType::point2)) pos = &e;
+    if (!pos) throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': the map has no point embedding for the positions", o.output));
+    std::ostringstream text;  // refused (a vertex without a position) before a file exists
+    write_mesh(text, *host, pos->signature.name, o.output);
+    std::ofstream out(o.output);
+    if (!out || !(out << text.str())) throw InputError(o.output, 0, 0, "cannot write the result mesh");
+    fmt::print("written: {} (positions from {})\n", o.output, pos->signature.name);
+  } else if (!o.output.empty()) {
     std::ofstream out(o.output);
     if (!out) throw InputError(o.output, 0, 0, "cannot write the result map");
     write_map(out, host->map);
@@ -121,11 +133,10 @@ int apply_to_jba(const ApplyOptions& o, const CatalogRule& rule, Map map) {
 int apply(const ApplyOptions& o) {
   // The only writer is YAML: a result under another extension would be a
   // YAML file that its readers reject (or an OFF file without positions).
-  const bool jba_out = o.output.ends_with(".jba");
-  if (!o.output.empty() && !jba_out && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
+  const bool jba_out = o.output.ends_with(".jba"), mesh_out = is_mesh_path(o.output);
+  if (!o.output.empty() && !jba_out && !mesh_out && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
     throw InputError("<command line>", 0, 0,
-                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml) or Jerboa .jba; it has no .off or .obj writer yet",
-                                 o.output));
+                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or OFF/OBJ meshes (.off, .obj)", o.output));
   const Catalog catalog = read_catalog(o.catalog);
   const CatalogRule* rule = catalog.find_rule(o.rule);
   if (!rule) throw InputError(o.catalog, 0, 0, fmt::format("no rule named '{}'", o.rule));
@@ -139,6 +150,11 @@ int apply(const ApplyOptions& o) {
     return apply_terms(o, *rule, std::move(map));
   }
   if (jba_out) return apply_to_jba(o, *rule, std::move(map));
+  if (mesh_out)
+    throw InputError("<command line>", 0, 0,
+                     fmt::format("-o: '{}': a mesh needs positions, and rule '{}' computes none: apply an embedded rule with a point embedding, "
+                                 "or write .yaml",
+                                 o.output, o.rule));
   if (rule->words.scheme) {
     // A rule scheme: instantiated on the pattern graph of the hook dart.
     auto result = apply_scheme(rule->rule, rule->words, map, o.hooks);

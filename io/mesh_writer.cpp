@@ -1,0 +1,73 @@
+#include "io/mesh_writer.hpp"
+
+#include <fmt/format.h>
+
+#include "core/input_error.hpp"
+#include "core/orbit.hpp"
+
+namespace dartcheck {
+
+void write_mesh(std::ostream& out, const EmbeddedMap& m, const std::string& position, const std::string& path) {
+  const Map& map = m.map;
+  const Model& model = map.model();
+  auto fail = [&](const std::string& why) { throw InputError(path, 0, 0, why); };
+  // Positions live on 2-G-maps (generators/mesh_map): O-maps have no
+  // embedded maps to write.
+  if (model != Model::gmap(2)) fail(fmt::format("a polygon mesh is written from a 2-gmap with positions; this map is a {}", model.name));
+  const Embedding* pos = m.find(position);
+  if (!pos) fail(fmt::format("the map has no embedding '{}' to give the vertices their positions", position));
+  if (pos->signature.type != ValueType::point3 && pos->signature.type != ValueType::point2)
+    fail(fmt::format("embedding '{}' holds {}, not point3 or point2", position, type_name(pos->signature.type)));
+
+  // Vertices, numbered in order of their smallest dart.
+  constexpr std::uint32_t unset = 0xffffffffU;
+  std::vector<std::uint32_t> vertex(map.size(), unset);
+  std::vector<std::array<double, 3>> points;
+  OrbitWalker walker(map);
+  const auto vertex_generators = cell_generators(model, 0);
+  for (Dart d = 0; d < map.size(); ++d) {
+    if (vertex[d] != unset) continue;
+    const Value* v = nullptr;
+    for (Dart e : walker.orbit(d, vertex_generators)) {
+      vertex[e] = static_cast<std::uint32_t>(points.size());
+      const Value* w = pos->value(e);
+      if (!w) fail(fmt::format("dart {} (vertex {}) has no {}", e, points.size(), position));
+      if (v && !(*v == *w)) fail(fmt::format("vertex {} has two {} values, {} and {} (darts {} and {})", points.size(), position, v->str(), w->str(), d, e));
+      v = w;
+    }
+    points.push_back(v->x);
+  }
+  // Faces: walk alpha1 alpha0 around each <0,1>-orbit from its smallest dart.
+  std::vector<std::vector<std::uint32_t>> faces;
+  std::vector<char> seen(map.size(), 0);
+  for (Dart d = 0; d < map.size(); ++d) {
+    if (seen[d]) continue;
+    std::vector<std::uint32_t> face;
+    Dart e = d;
+    do {
+      face.push_back(vertex[e]);
+      seen[e] = seen[map.link(0, e)] = 1;
+      e = map.link(1, map.link(0, e));
+    } while (e != d);
+    faces.push_back(std::move(face));
+  }
+  if (path.ends_with(".obj")) {
+    out << "# written by dartcheck: " << points.size() << " vertices, " << faces.size() << " faces\n";
+    for (const auto& p : points) out << fmt::format("v {} {} {}\n", p[0], p[1], p[2]);
+    for (const auto& f : faces) {
+      out << 'f';
+      for (auto v : f) out << ' ' << v + 1;
+      out << '\n';
+    }
+    return;
+  }
+  out << "OFF\n" << points.size() << ' ' << faces.size() << " 0\n";
+  for (const auto& p : points) out << fmt::format("{} {} {}\n", p[0], p[1], p[2]);
+  for (const auto& f : faces) {
+    out << f.size();
+    for (auto v : f) out << ' ' << v;
+    out << '\n';
+  }
+}
+
+}  // namespace dartcheck
