@@ -2,7 +2,7 @@
 //
 // For each scenario, one application G => H of a rule, then for every
 // orbit type of the model: the dynamic log (every dart of G and H labeled
-// with its orbit, events_log.hpp's oracle) against the instantiated log
+// with its orbit, events/event_log.hpp's oracle) against the instantiated log
 // (the rule's orbits instantiated on the match; traversal only for
 // incomplete rule orbits). Both logs are compared; the times are the
 // median of --runs runs. Scenarios (2-G-maps; 004 used 3-G-maps in Jerboa):

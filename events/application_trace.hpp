@@ -21,7 +21,6 @@ struct ApplicationTrace {
   std::vector<std::pair<Dart, Dart>> moved;
   /// The hook's pattern (schemes); a DPO rule has one position.
   std::optional<PatternGraphs> pattern;
-  std::size_t positions() const { return match.empty() ? (comatch.empty() ? 0 : comatch[0].size()) : match[0].size(); }
 };
 
 /// Applies `op` at `hooks` to g in place (a DPO rule by apply_rule's steps,
