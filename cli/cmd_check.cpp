@@ -17,6 +17,7 @@
 #include "analysis/verdict_record.hpp"
 #include "cli/options.hpp"
 #include "cli/report_text.hpp"
+#include "reports/html_page.hpp"
 #include "analysis/map_sources.hpp"
 #include "analysis/fuzz.hpp"
 #include "io/baseline.hpp"
@@ -125,20 +126,6 @@ void print_sarif(const std::string& file, const std::vector<Checked>& rows) {
              DARTCHECK_VERSION, fmt::join(rules, ", "), fmt::join(results, ",\n"));
 }
 
-std::string xml_text(std::string_view s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += (static_cast<unsigned char>(ch) < 0x20 && ch != '\n' && ch != '\t') ? ' ' : ch;
-    }
-  }
-  return out;
-}
-
 // JUnit XML: one test case per rule, failing when its verdict differs from
 // the catalog's record (what makes `check` exit 1).
 void print_junit(const std::string& file, const std::vector<Checked>& rows, std::size_t mismatches) {
@@ -146,17 +133,17 @@ void print_junit(const std::string& file, const std::vector<Checked>& rows, std:
   for (const Checked& c : rows) total += c.millis;
   fmt::print("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"dartcheck check\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n"
              "<testsuite name=\"{}\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
-             rows.size(), mismatches, total / 1000, xml_text(file), rows.size(), mismatches, total / 1000);
+             rows.size(), mismatches, total / 1000, reports::html_text(file), rows.size(), mismatches, total / 1000);
   for (const Checked& c : rows) {
     const CatalogRule& e = *c.entry;
     const std::string verdict = c.failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(c.failures, " "));
-    fmt::print("  <testcase name=\"{}\" classname=\"{}\" file=\"{}\" line=\"{}\" time=\"{:.6f}\">", xml_text(e.rule.name()),
-               xml_text(e.rule.model().name), xml_text(e.location.file.empty() ? file : e.location.file), e.location.line, c.millis / 1000);
+    fmt::print("  <testcase name=\"{}\" classname=\"{}\" file=\"{}\" line=\"{}\" time=\"{:.6f}\">", reports::html_text(e.rule.name()),
+               reports::html_text(e.rule.model().name), reports::html_text(e.location.file.empty() ? file : e.location.file), e.location.line, c.millis / 1000);
     if (!c.matches_record)
       fmt::print("\n    <failure message=\"{}\" type=\"verdict\">{}: {}; catalog records {}</failure>\n  ",
-                 xml_text(fmt::format("{}, catalog records {}", verdict, recorded_text(e))), xml_text(e.location.str()), xml_text(verdict),
-                 xml_text(recorded_text(e)));
-    fmt::print("<system-out>{}</system-out></testcase>\n", xml_text(verdict + (model_level(c).empty() ? "" : "; " + model_level(c))));
+                 reports::html_text(fmt::format("{}, catalog records {}", verdict, recorded_text(e))), reports::html_text(e.location.str()), reports::html_text(verdict),
+                 reports::html_text(recorded_text(e)));
+    fmt::print("<system-out>{}</system-out></testcase>\n", reports::html_text(verdict + (model_level(c).empty() ? "" : "; " + model_level(c))));
   }
   fmt::print("</testsuite>\n</testsuites>\n");
 }
@@ -321,8 +308,7 @@ int check(const CheckOptions& o) {
     std::string record;
     if (!c.matches_record)
       record = c.entry->expected_failures
-                   ? fmt::format("   MISMATCH: {} records {}", o.baseline.empty() ? "catalog" : "baseline",
-                                 c.entry->expected_failures->empty() ? "consistent" : fmt::format("{}", fmt::join(*c.entry->expected_failures, " ")))
+                   ? fmt::format("   MISMATCH: {} records {}", o.baseline.empty() ? "catalog" : "baseline", recorded_text(*c.entry))
                    : "   MISMATCH: no verdict recorded, so every condition must hold";
     fmt::print("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7.2f}  {}{}\n", c.entry->rule.name(), width, c.entry->rule.model().name,
                cell(v, RuleCondition::incident_arcs), cell(v, RuleCondition::dangling), cell(v, RuleCondition::non_orientation),

@@ -12,33 +12,31 @@ int find(std::vector<int>& parent, int x) {
   return x;
 }
 
-// The node reached from v along the explicit arcs spelling w, or no_node.
-NodeId follow_explicit(const EventSide& side, const std::vector<std::vector<ArcId>>& out, NodeId v, const Word& w) {
-  for (Dim i : w) {
+}  // namespace
+
+ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const Word& w) {
+  std::size_t k = 0;
+  for (; k < w.size(); ++k) {
     NodeId next = no_node;
-    for (ArcId e : out[v])
-      if (side.graph->arc(e).label == i) next = side.graph->arc(e).target;
-    if (next == no_node) return no_node;
+    for (ArcId e : side.explicit_arcs)
+      if (side.graph->arc(e).source == v && side.graph->arc(e).label == w[k]) next = side.graph->arc(e).target;
+    if (next == no_node) break;
     v = next;
   }
-  return v;
+  return {v, k};
 }
-
-}  // namespace
 
 SideOrbits side_orbits(const EventRule&, const EventSide& side, const OrbitKind& kind) {
   const TopoGraph& g = *side.graph;
   const std::size_t n = g.node_count();
-  std::vector<std::vector<ArcId>> out(n);
-  for (ArcId e : side.explicit_arcs) out[g.arc(e).source].push_back(e);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   std::vector<std::vector<std::string>> missing(n);
   for (NodeId v = 0; v < n; ++v)
     for (const Word& w : kind.generators) {
-      const NodeId t = follow_explicit(side, out, v, w);
-      if (t != no_node) {
-        parent[static_cast<std::size_t>(find(parent, static_cast<int>(v)))] = find(parent, static_cast<int>(t));
+      const ExplicitPathEnd end = follow_explicit(side, v, w);
+      if (end.letters == w.size()) {
+        parent[static_cast<std::size_t>(find(parent, static_cast<int>(v)))] = find(parent, static_cast<int>(end.node));
         continue;
       }
       // A single letter may be an implicit link of the node's label.

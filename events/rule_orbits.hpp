@@ -27,6 +27,16 @@ struct SideOrbits {
   std::vector<int> orbit_of;      // per node
 };
 
+/// Where the w-path from v along explicit arcs ends: the last node it
+/// reaches and how many letters it followed (w.size() when the whole path
+/// is in the pattern; fewer when it leaves the pattern there).
+struct ExplicitPathEnd {
+  NodeId node;
+  std::size_t letters;
+  friend bool operator==(const ExplicitPathEnd&, const ExplicitPathEnd&) = default;
+};
+ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const Word& w);
+
 /// The <o>-orbits of one side of `r`.
 SideOrbits side_orbits(const EventRule& r, const EventSide& side, const OrbitKind& kind);
 

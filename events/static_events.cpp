@@ -1,7 +1,6 @@
 #include "events/static_events.hpp"
 
 #include <algorithm>
-#include <map>
 #include <set>
 
 #include <fmt/format.h>
@@ -64,21 +63,6 @@ std::multiset<std::tuple<std::string, std::string, int>> orbit_arcs(const EventS
       out.emplace(side.graph->name(a.source), side.graph->name(a.target), a.label);
   }
   return out;
-}
-
-// Where a w-path from v along explicit arcs ends: the last node it reaches
-// (by name) and how many letters it followed. A path that stops early
-// leaves the pattern there.
-std::pair<std::string, std::size_t> walk(const EventSide& side, NodeId v, const Word& w) {
-  std::size_t k = 0;
-  for (; k < w.size(); ++k) {
-    NodeId next = no_node;
-    for (ArcId e : side.explicit_arcs)
-      if (side.graph->arc(e).source == v && side.graph->arc(e).label == w[k]) next = side.graph->arc(e).target;
-    if (next == no_node) break;
-    v = next;
-  }
-  return {side.graph->name(v), k};
 }
 
 }  // namespace
@@ -168,7 +152,11 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
         // leaves the pattern from the same node after the same prefix (by
         // an unmatched arc of a preserved node, which the rule keeps).
         for (NodeId v : x.nodes)
-          for (const Word& w : kind.generators) unchanged = unchanged && walk(r.left, v, w) == walk(r.right, rule.to_right(v), w);
+          for (const Word& w : kind.generators) {
+            // Nodes are compared by name across the two sides.
+            const ExplicitPathEnd a = follow_explicit(r.left, v, w), b = follow_explicit(r.right, rule.to_right(v), w);
+            unchanged = unchanged && a.letters == b.letters && r.left.graph->name(a.node) == r.right.graph->name(b.node);
+          }
       }
     }
     if (unchanged) {

@@ -13,6 +13,8 @@ std::string html_text(std::string_view s) {
     else if (c == '<') out += "&lt;";
     else if (c == '>') out += "&gt;";
     else if (c == '"') out += "&quot;";
+    // XML 1.0 forbids control characters but tab and newline: a space.
+    else if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') out += ' ';
     else out += c;
   }
   return out;

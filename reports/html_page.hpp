@@ -9,7 +9,8 @@
 
 namespace dartcheck::reports {
 
-/// Text or attribute value: &, <, >, " escaped.
+/// Text or attribute value (HTML and XML): &, <, >, " escaped; control
+/// characters other than tab and newline become spaces.
 std::string html_text(std::string_view s);
 
 /// An id/fragment for a name ("fig26d-scheme/missing-2" ->
