@@ -7,6 +7,7 @@
 #include "analysis/map_sources.hpp"
 #include "io/catalog.hpp"
 #include "rewriting/derivation.hpp"
+#include "core/isomorphism.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/scheme_application.hpp"
 
@@ -62,6 +63,16 @@ int run(const RunOptions& o) {
           if (cells != *e.cells) {
             got = "wrong cells";
             detail = fmt::format("cells {} expected {}", fmt::join(cells, ","), fmt::join(*e.cells, ","));
+          }
+        }
+        if (!e.isomorphic_to.empty() && got == "valid") {
+          std::size_t target = 0;
+          while (catalog.maps[target].name != e.isomorphic_to) ++target;
+          if (!isomorphic(host, built[target])) {
+            got = "not isomorphic";
+            detail = fmt::format("H is not isomorphic to map {} ({} darts)", e.isomorphic_to, built[target].size());
+          } else {
+            detail += fmt::format(", isomorphic to {}", e.isomorphic_to);
           }
         }
       }

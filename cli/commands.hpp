@@ -85,6 +85,15 @@ struct EventsOptions {
 /// view, 3 if --dynamic contradicts a certain static event.
 int events_command(const EventsOptions& o);
 
+struct InferCommand {
+  std::string before, after, orbit, kappa = "identity", model = "2-gmap", catalog, output, format = "text", undecided = "keep", name = "inferred";
+  std::optional<Dart> start;
+  bool all = false, strict = false;
+};
+/// Operation inference by folding (000): 0 if a rule was inferred, 1 if
+/// none, 3 if an inferred rule does not give the after map back (App. A).
+int infer(const InferCommand& o);
+
 struct WordsOptions {
   std::string model, word;
   std::optional<std::string> other;

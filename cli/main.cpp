@@ -117,6 +117,24 @@ int main(int argc, char** argv) {
   auto* cv = app.add_subcommand("convert", "Write a catalog (a Jerboa .jme modeler, or YAML) as a YAML catalog that checks identically");
   cv->add_option("input", convert.input, ".jme modeler or YAML catalog")->required();
   cv->add_option("-o,--output", convert.output, "the YAML catalog to write")->required();
+  cli::InferCommand infer;
+  auto* inf = app.add_subcommand("infer", "Infer the rule scheme of one before/after example by folding (000), check it and apply it back");
+  inf->add_option("--before", infer.before, "the map before: catalog map name (with --catalog), map file (.yaml, .jba, .off, .obj) or shape")->required();
+  inf->add_option("--after", infer.after, "the map after, same forms")->required();
+  inf->add_option("--orbit", infer.orbit, "the rule's parameter orbit type, e.g. \"<0,1,2>\"")->required();
+  inf->add_option("--kappa", infer.kappa, "preserved darts: identity (same dart ids) or a YAML file of pairs and orbit associations")->capture_default_str();
+  inf->add_option("--catalog", infer.catalog, "catalog whose maps --before and --after may name");
+  inf->add_option("--model", infer.model, "model for meshes and shapes")->capture_default_str();
+  inf->add_option("--start", infer.start, "fold from this dart of the before map only")->check(counts);
+  inf->add_flag("--all", infer.all, "try every start dart (one per hook orbit) and list every distinct rule");
+  inf->add_flag("--strict", infer.strict, "the paper's algorithm exactly: one relabeling candidate per position, no retry");
+  inf->add_option("--undecided", infer.undecided,
+                  "positions whose links are all loops in the hook orbit: keep (relabel, warn), free (explicit loops) or fail")
+      ->capture_default_str();
+  inf->add_option("--name", infer.name, "name of the inferred rule")->capture_default_str();
+  inf->add_option("-o,--output", infer.output, "write the rules: .yaml catalog (maps, rules, examples that `run` re-checks) or Jerboa .jme");
+  inf->add_option("--format", infer.format, "text or json")->capture_default_str();
+
   cli::ReportOptions report;
   auto* rp = app.add_subcommand("report", "Write an HTML report of a catalog: verdict table, every rule drawn, every failure pointed at");
   rp->add_option("catalog", report.catalog, "YAML catalog or Jerboa .jme modeler")->required();
@@ -146,6 +164,7 @@ int main(int argc, char** argv) {
     if (*r) return cli::run(run);
     if (*w) return cli::words(words);
     if (*ev) return cli::events_command(events);
+    if (*inf) return cli::infer(infer);
     if (*c) return cli::check(check);
     if (*f) return cli::fuzz(fuzz);
     if (*p) return cli::prove(prove);

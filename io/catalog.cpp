@@ -170,7 +170,7 @@ namespace {
 
 Example read_example(const std::string& file, const YAML::Node& n) {
   yaml::expect_map(file, n, "example");
-  yaml::allow_keys(file, n, {"map", "hooks", "expect", "cells"});
+  yaml::allow_keys(file, n, {"map", "hooks", "expect", "cells", "isomorphic-to"});
   Example e;
   e.location = where(file, n);
   e.map = yaml::as_string(file, yaml::require(file, n, "map"), "map");
@@ -188,6 +188,7 @@ Example read_example(const std::string& file, const YAML::Node& n) {
     for (const auto& x : cells) c.push_back(static_cast<std::size_t>(yaml::as_int(file, x, "cell count", 0, 1LL << 40)));
     e.cells = c;
   }
+  if (const auto iso = n["isomorphic-to"]) e.isomorphic_to = yaml::as_string(file, iso, "isomorphic-to");
   return e;
 }
 
@@ -440,6 +441,8 @@ static Catalog read_yaml_catalog(const std::string& file) {
           base.examples.push_back(read_example(file, e));
           if (!c.find_map(base.examples.back().map))
             fail_at(file, e["map"], fmt::format("example of rule '{}': no map named '{}' under 'maps'", name, base.examples.back().map));
+          if (const auto& iso = base.examples.back().isomorphic_to; !iso.empty() && !c.find_map(iso))
+            fail_at(file, e["isomorphic-to"], fmt::format("example of rule '{}': isomorphic-to names '{}', which is not under 'maps'", name, iso));
         }
       }
       if (const auto vs = n["variants"]) {

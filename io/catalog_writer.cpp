@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "io/map_io.hpp"
+
 namespace dartcheck {
 namespace {
 
@@ -49,11 +51,19 @@ void side(YAML::Emitter& y, const TopoGraph& g, const std::vector<ConjWord>& wor
 
 }  // namespace
 
-std::string catalog_yaml(const Catalog& c) {
+std::string catalog_yaml(const Catalog& c, const std::string& description) {
   YAML::Emitter y;
   y << YAML::BeginMap;
   if (!c.modeler.empty()) y << YAML::Key << "modeler" << YAML::Value << c.modeler;
-  y << YAML::Key << "description" << YAML::Value << fmt::format("converted by dartcheck from {}", c.file);
+  y << YAML::Key << "description" << YAML::Value << (description.empty() ? fmt::format("converted by dartcheck from {}", c.file) : description);
+  bool explicit_maps = false;
+  for (const auto& m : c.maps) explicit_maps |= m.map.has_value();
+  if (explicit_maps) {
+    y << YAML::Key << "maps" << YAML::Value << YAML::BeginMap;
+    for (const auto& m : c.maps)
+      if (m.map) y << YAML::Key << m.name << YAML::Value << YAML::Load(map_to_yaml(*m.map));
+    y << YAML::EndMap;
+  }
   if (!c.embeddings.empty()) {
     y << YAML::Key << "embeddings" << YAML::Value << YAML::BeginSeq;
     for (const auto& e : c.embeddings)
@@ -94,6 +104,23 @@ std::string catalog_yaml(const Catalog& c) {
         y << YAML::EndMap;
       }
       y << YAML::EndMap;
+    }
+    if (!r.examples.empty()) {
+      y << YAML::Key << "examples" << YAML::Value << YAML::BeginSeq;
+      for (const auto& e : r.examples) {
+        y << YAML::Flow << YAML::BeginMap << YAML::Key << "map" << YAML::Value << e.map << YAML::Key << "hooks" << YAML::Value << YAML::Flow
+          << YAML::BeginSeq;
+        for (Dart h : e.hooks) y << h;
+        y << YAML::EndSeq << YAML::Key << "expect" << YAML::Value << e.expect;
+        if (e.cells) {
+          y << YAML::Key << "cells" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+          for (auto x : *e.cells) y << x;
+          y << YAML::EndSeq;
+        }
+        if (!e.isomorphic_to.empty()) y << YAML::Key << "isomorphic-to" << YAML::Value << e.isomorphic_to;
+        y << YAML::EndMap;
+      }
+      y << YAML::EndSeq;
     }
     if (!r.caveats.empty()) {
       y << YAML::Key << "caveats" << YAML::Value << YAML::BeginSeq;

@@ -1,0 +1,77 @@
+#include "inference/infer.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <map>
+#include <stdexcept>
+
+namespace dartcheck::inference {
+
+std::vector<Dim> parse_inference_orbit(const std::string& text, const Model& model) {
+  const OrbitType t = parse_orbit_type(text);
+  std::vector<Dim> out;
+  for (const auto& d : t) {
+    if (!d) throw std::invalid_argument(fmt::format("the inference orbit type {} contains '_'", text));
+    if (!model.contains(*d)) throw std::invalid_argument(fmt::format("dimension {} of {} is not a dimension of {}", *d, text, model.name));
+    out.push_back(*d);
+  }
+  return out;
+}
+
+namespace {
+
+Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const InferOptions& options, const std::string& name) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Attempt a;
+  a.start = start;
+  auto folded = fold(graph, orbit, start, options.fold);
+  if (folded.failure) {
+    a.failure = std::move(folded.failure);
+  } else {
+    a.scheme = std::move(folded.scheme);
+    auto rule = to_rule(*a.scheme, graph.model(), name);
+    if (!rule.rule) {
+      a.not_a_rule = rule.why;
+    } else {
+      a.rule = std::move(rule.rule);
+      const auto verdict = check_rule(a.rule->operation.rule, a.rule->operation.words);
+      for (const auto& c : verdict.conditions)
+        if (!c.holds && c.skipped.empty()) a.ill_formed.push_back(c.name());
+      if (a.ill_formed.empty() && options.verify) a.verification = verify(graph, *a.scheme, *a.rule, start);
+    }
+  }
+  a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return a;
+}
+
+}  // namespace
+
+std::vector<Attempt> infer(const KappaGraph& graph, const std::vector<Dim>& orbit, const InferOptions& options) {
+  std::vector<Attempt> out;
+  if (options.start) {
+    if (*options.start >= graph.before().size())
+      throw std::invalid_argument(fmt::format("start dart {} is not a dart of the before map ({} darts)", *options.start, graph.before().size()));
+    out.push_back(attempt(graph, orbit, *options.start, options, options.name));
+    return out;
+  }
+  std::vector<bool> marked(graph.before().size(), false);
+  std::map<std::string, int> seen;
+  int rules = 0;
+  for (Dart a = 0; a < graph.before().size(); ++a) {
+    if (marked[a]) continue;
+    for (Dart b : orbit_darts(graph.before(), orbit, a)) marked[b] = true;
+    Attempt t = attempt(graph, orbit, a, options, rules ? fmt::format("{}-{}", options.name, rules) : options.name);
+    if (t.scheme) {
+      const auto [it, fresh] = seen.emplace(canonical_form(*t.scheme), static_cast<int>(out.size()));
+      if (!fresh) t.duplicate_of = it->second;
+    }
+    const bool found = t.inferred();
+    rules += found;
+    out.push_back(std::move(t));
+    if (found && !options.all) break;
+  }
+  return out;
+}
+
+}  // namespace dartcheck::inference

@@ -1,0 +1,50 @@
+// Operation inference (000): fold κ(G, H) from start darts of G, keep the
+// well-formed schemes (Sec. 8.2: the static checker discards the others),
+// deduplicate them (Sec. 10.3) and verify each on its example (App. A).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "checkers/rule_conditions.hpp"
+#include "inference/folding.hpp"
+#include "inference/inferred_rule.hpp"
+#include "inference/kappa_graph.hpp"
+#include "inference/verification.hpp"
+
+namespace dartcheck::inference {
+
+/// One start dart and what came of it.
+struct Attempt {
+  Dart start = 0;
+  std::optional<FoldFailure> failure;       // the folding failed
+  std::optional<GraphScheme> scheme;        // the folding succeeded
+  std::string not_a_rule;                   // the scheme is not a one-hook rule
+  std::optional<InferredRule> rule;
+  std::vector<std::string> ill_formed;      // failing conditions (Sec. 8.2), empty if well-formed
+  std::optional<Verification> verification; // App. A, for well-formed rules
+  int duplicate_of = -1;                    // index of an earlier attempt with the same scheme
+  double seconds = 0;
+  bool inferred() const { return rule && ill_formed.empty() && duplicate_of < 0 && verification && verification->holds; }
+};
+
+struct InferOptions {
+  FoldOptions fold;
+  std::optional<Dart> start;  // only this dart
+  bool all = false;           // every dart not already in an attempt's hook orbit
+  std::string name = "inferred";
+  bool verify = true;
+};
+
+/// The attempts, in order. Without `start` or `all`, darts of G are tried
+/// in increasing order, skipping those in the hook orbit of an earlier
+/// attempt (the paper's pool of unseen darts), until one gives a
+/// well-formed rule. Rule k (k > 0) is named `name`-k.
+std::vector<Attempt> infer(const KappaGraph& graph, const std::vector<Dim>& orbit, const InferOptions& options);
+
+/// Parses "<0,1,2>" as an inference orbit type: distinct dimensions of the
+/// model, no '_'. Throws std::invalid_argument.
+std::vector<Dim> parse_inference_orbit(const std::string& text, const Model& model);
+
+}  // namespace dartcheck::inference

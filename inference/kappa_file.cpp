@@ -1,0 +1,54 @@
+#include "inference/kappa_file.hpp"
+
+#include <fmt/format.h>
+
+#include "io/yaml_util.hpp"
+#include "rewriting/jerboa_scheme.hpp"
+
+namespace dartcheck::inference {
+
+KappaSpec read_kappa_file(const std::string& file, const Model& model) {
+  const YAML::Node root = load_yaml_file(file);
+  yaml::expect_map(file, root, "kappa file");
+  yaml::allow_keys(file, root, {"identity", "pairs", "orbits"});
+  KappaSpec spec;
+  constexpr long long most = (1LL << 32) - 2;
+  if (const auto id = root["identity"]) {
+    if (!id.IsScalar() || (id.Scalar() != "true" && id.Scalar() != "false")) fail_at(file, id, "identity: expected true or false");
+    spec.identity = id.Scalar() == "true";
+  }
+  if (const auto pairs = root["pairs"]) {
+    yaml::expect_sequence(file, pairs, "pairs");
+    for (const auto& p : pairs) {
+      yaml::expect_sequence(file, p, "pair [before, after]");
+      if (p.size() != 2) fail_at(file, p, fmt::format("a pair has two darts [before, after], this one {}", p.size()));
+      spec.pairs.emplace_back(static_cast<Dart>(yaml::as_int(file, p[0], "before dart", 0, most)),
+                              static_cast<Dart>(yaml::as_int(file, p[1], "after dart", 0, most)));
+    }
+  }
+  if (const auto orbits = root["orbits"]) {
+    yaml::expect_sequence(file, orbits, "orbits");
+    for (const auto& o : orbits) {
+      yaml::expect_map(file, o, "orbit association {orbit, before, after}");
+      yaml::allow_keys(file, o, {"orbit", "before", "after"});
+      KappaSpec::OrbitPair pair;
+      const auto type = yaml::require(file, o, "orbit");
+      try {
+        for (const auto& d : parse_orbit_type(yaml::as_string(file, type, "orbit type"))) {
+          if (!d || !model.contains(*d)) fail_at(file, type, fmt::format("orbit: expected dimensions of {}, no '_'", model.name));
+          pair.orbit.push_back(*d);
+        }
+      } catch (const std::invalid_argument& e) {
+        fail_at(file, type, fmt::format("orbit: {}", e.what()));
+      }
+      pair.before = static_cast<Dart>(yaml::as_int(file, yaml::require(file, o, "before"), "before dart", 0, most));
+      pair.after = static_cast<Dart>(yaml::as_int(file, yaml::require(file, o, "after"), "after dart", 0, most));
+      spec.orbits.push_back(std::move(pair));
+    }
+  }
+  if (!root["identity"] && !root["pairs"] && !root["orbits"])
+    fail_at(file, root, "the kappa file states no preserved dart (identity, pairs or orbits); an empty κ is 'pairs: []'");
+  return spec;
+}
+
+}  // namespace dartcheck::inference

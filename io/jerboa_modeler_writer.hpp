@@ -1,0 +1,21 @@
+// Writes Jerboa-style rule schemes as a Jerboa modeler editor file (.jme),
+// the format io/jerboa_modeler.hpp reads: node labels positional with -1
+// for '_', the first hook of L marked HOOK, explicit arcs as <arc> (one
+// per non-oriented pair) and <arcloop>. Reading the file back gives the
+// same rules (tests/io check it).
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "rewriting/operation.hpp"
+
+namespace dartcheck {
+
+/// Writes a modeler named `modeler` of dimension n (the rules' n-G-map
+/// model) holding `rules`, which must all carry Jerboa labels. Throws
+/// std::invalid_argument for a rule without them.
+void write_jme(std::ostream& out, const std::string& modeler, int dimension, const std::vector<const Operation*>& rules);
+
+}  // namespace dartcheck
