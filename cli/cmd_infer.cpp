@@ -45,10 +45,11 @@ std::string side_text(const TopoGraph& g, const std::vector<ConjWord>& words, co
   return fmt::format("{}{}", fmt::join(nodes, ", "), arcs.empty() ? "" : fmt::format("; arcs {}", fmt::join(arcs, ", ")));
 }
 
-std::string undecided_text(const GraphScheme& s) {
+std::string undecided_text(const GraphScheme& s, const InferredRule* rule) {
   std::vector<std::string> out;
   for (const auto& u : s.undecided)
-    out.push_back(fmt::format("n{} position {} (dimension {}) -> {}", u.node, u.position, s.orbit[u.position],
+    out.push_back(fmt::format("{}{} position {} (dimension {}) -> {}", rule ? "" : "folding node ",
+                              rule ? rule->names[static_cast<std::size_t>(u.node)] : fmt::format("n{}", u.node), u.position, s.orbit[u.position],
                               u.chosen ? std::to_string(*u.chosen) : std::string("_ with explicit loops")));
   return fmt::format("{}", fmt::join(out, "; "));
 }
@@ -152,7 +153,7 @@ int infer(const InferCommand& o) {
                            op.rule.right().node_count(), a.rule->preserved, json_escape(side_text(op.rule.left(), op.words.left, op.jerboa->left)),
                            json_escape(side_text(op.rule.right(), op.words.right, op.jerboa->right)));
       }
-      if (a.scheme && !a.scheme->undecided.empty()) row += fmt::format(", \"undecided\": \"{}\"", json_escape(undecided_text(*a.scheme)));
+      if (a.scheme && !a.scheme->undecided.empty()) row += fmt::format(", \"undecided\": \"{}\"", json_escape(undecided_text(*a.scheme, a.rule ? &*a.rule : nullptr)));
       rows.push_back(row + "}");
     }
     fmt::print("{{\"orbit\": \"{}\", \"before_darts\": {}, \"after_darts\": {}, \"preserved_darts\": {}, \"inferred\": {}, \"attempts\": [{}]}}\n",
@@ -169,7 +170,7 @@ int infer(const InferCommand& o) {
       fmt::print("    L: {}\n    R: {}\n", side_text(op.rule.left(), op.words.left, op.jerboa->left), side_text(op.rule.right(), op.words.right, op.jerboa->right));
       if (!a.scheme->undecided.empty())
         fmt::print("    warning: positions the example does not decide (every link of that dimension in the hook orbit is a loop): {}\n",
-                   undecided_text(*a.scheme));
+                   undecided_text(*a.scheme, &*a.rule));
     }
     fmt::print("{} rule(s) inferred from {} start(s)\n", inferred, attempts.size());
   }

@@ -31,12 +31,14 @@ RuleOrWhy to_rule(const GraphScheme& scheme, const Model& model, const std::stri
       if (scheme.nodes[m].after == (pass == 1) && (pass == 0 || partner[m] < 0)) number[m] = next++;
   for (std::size_t m = 0; m < count; ++m)
     if (number[m] < 0) number[m] = number[static_cast<std::size_t>(partner[m])];
+  std::vector<std::string> names(count);
+  for (std::size_t m = 0; m < count; ++m) names[m] = fmt::format("n{}", number[m]);
   std::vector<NodeId> rule_node(count);
   for (std::size_t m = 0; m < count; ++m) {
     const auto& node = scheme.nodes[m];
     const bool after = node.after;
     TopoGraph& g = after ? right : left;
-    rule_node[m] = g.add_node(fmt::format("n{}", number[m]));
+    rule_node[m] = g.add_node(names[m]);
     add_implicit_arcs(g, after ? right_words : left_words, rule_node[m], labels.parameter, node.label, model);
     (after ? labels.right : labels.left).push_back(node.label);
     (after ? node_of_right : node_of_left).push_back(static_cast<int>(m));
@@ -60,7 +62,7 @@ RuleOrWhy to_rule(const GraphScheme& scheme, const Model& model, const std::stri
   try {
     Rule rule(name, model, std::move(left), std::move(right), {"n0"}, left_words, right_words);
     Operation op{std::move(rule), ArcWords{true, std::move(left_words), std::move(right_words)}, std::move(labels), {}, {}, std::nullopt};
-    return {InferredRule{std::move(op), std::move(node_of_left), std::move(node_of_right), preserved}, {}};
+    return {InferredRule{std::move(op), std::move(node_of_left), std::move(node_of_right), preserved, std::move(names)}, {}};
   } catch (const std::invalid_argument& e) {
     return {std::nullopt, fmt::format("the inferred scheme is not a rule with one hook: {}", e.what())};
   }

@@ -20,6 +20,8 @@ struct InferredRule {
   /// node_of_left[v] / node_of_right[v]: the scheme node of rule node v.
   std::vector<int> node_of_left, node_of_right;
   std::size_t preserved = 0;
+  /// The rule's name of each folding node (index of GraphScheme::nodes).
+  std::vector<std::string> names;
 };
 
 /// Builds the rule scheme named `name`. Nodes are named n<k>, k the node's

@@ -82,6 +82,16 @@ std::string catalog_yaml(const Catalog& c, const std::string& description) {
     const Rule& rule = r.rule;
     y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << rule.name() << YAML::Key << "model" << YAML::Value << rule.model().name;
     if (!r.note.empty()) y << YAML::Key << "note" << YAML::Value << r.note;
+    if (r.expected_failures) {
+      y << YAML::Key << "verdict" << YAML::Value;
+      if (r.expected_failures->empty()) {
+        y << "consistent";
+      } else {
+        y << YAML::Flow << YAML::BeginSeq;
+        for (const auto& f : *r.expected_failures) y << YAML::DoubleQuoted << f;
+        y << YAML::EndSeq;
+      }
+    }
     if (!rule.hooks().empty()) {
       y << YAML::Key << "hooks" << YAML::Value << YAML::Flow << YAML::BeginSeq;
       for (NodeId h : rule.hooks()) y << rule.left().name(h);

@@ -16,6 +16,7 @@ std::string positional(const OrbitType& t) {
   return s;
 }
 
+// Throws std::invalid_argument for an explicit arc without its reverse.
 void write_side(pugi::xml_node parent, const char* tag, const TopoGraph& g, const std::vector<ConjWord>& words, const std::vector<OrbitType>& labels,
                 const std::vector<NodeId>& hooks) {
   auto side = parent.append_child(tag);
@@ -39,13 +40,14 @@ void write_side(pugi::xml_node parent, const char* tag, const TopoGraph& g, cons
       x.append_attribute("node") = g.name(a.source).c_str();
       continue;
     }
-    for (ArcId f = e + 1; f < g.arc_count(); ++f) {
+    bool paired = false;
+    for (ArcId f = e + 1; f < g.arc_count() && !paired; ++f) {
       const auto& b = g.arc(f);
-      if (!done[f] && b.label == a.label && b.source == a.target && b.target == a.source && arc_word(words, f).empty()) {
-        done[f] = true;
-        break;
-      }
+      if (!done[f] && b.label == a.label && b.source == a.target && b.target == a.source && arc_word(words, f).empty()) done[f] = paired = true;
     }
+    if (!paired)
+      throw std::invalid_argument(fmt::format("the arc {} -{}-> {} of <{}> has no reverse: Jerboa's arcs are non-oriented", g.name(a.source), a.label,
+                                              g.name(a.target), tag));
     auto x = arcs.append_child("arc");
     x.append_attribute("dim") = a.label;
     x.append_attribute("a") = g.name(a.source).c_str();

@@ -15,7 +15,8 @@ namespace dartcheck {
 
 /// Writes a modeler named `modeler` of dimension n (the rules' n-G-map
 /// model) holding `rules`, which must all carry Jerboa labels. Throws
-/// std::invalid_argument for a rule without them.
+/// std::invalid_argument for a rule without them or with an explicit arc
+/// whose reverse is missing (Jerboa's arcs are non-oriented).
 void write_jme(std::ostream& out, const std::string& modeler, int dimension, const std::vector<const Operation*>& rules);
 
 }  // namespace dartcheck
