@@ -1,0 +1,121 @@
+// Operation inference by folding (000): linear scaling and the paper's
+// small examples.
+//
+// Scaling (000 Sec. 8.3: O(|G| + |H|)): quad tori of n x n quads (G, 8n²
+// darts) and their quad subdivision (H, 32n² darts, applied by the
+// catalog's Jerboa scheme), κ = identity. Timed: the folding alone, and
+// the whole inference (folding, rule, static check of the rule, and the
+// App. A verification that applies the rule to G and compares with H).
+// ns per dart of κ(G, H) should be flat across sizes.
+//
+// Examples: the inferences of 000 Sec. 9 dartcheck reproduces (quad from
+// the cube, Loop and Powell-Sabin from one triangle, sqrt3 from the
+// tetrahedron), whole inference with verification, for comparison with
+// the paper's JVM figures (Powell-Sabin about 5 ms).
+// Usage: bench_inference [--runs N] [--quick]
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "generators/polygon_soup.hpp"
+#include "generators/shapes.hpp"
+#include "inference/infer.hpp"
+#include "io/catalog.hpp"
+#include "rewriting/scheme_application.hpp"
+#include "../tests/inference/soup_subdivision.hpp"
+
+using namespace dartcheck;
+using namespace dartcheck::inference;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+template <class F>
+double median_ms(int runs, F f) {
+  std::vector<double> t;
+  for (int k = 0; k < runs; ++k) {
+    const auto start = Clock::now();
+    f();
+    t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+std::vector<Polygon> torus(std::uint32_t n) {
+  std::vector<Polygon> f;
+  auto v = [n](std::uint32_t i, std::uint32_t j) { return (i % n) * n + (j % n); };
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < n; ++j) f.push_back({v(i, j), v(i, j + 1), v(i + 1, j + 1), v(i + 1, j)});
+  return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int runs = 5;
+  bool quick = false;
+  for (int k = 1; k < argc; ++k) {
+    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--quick")) quick = true;
+  }
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
+  const Operation& quad = *catalog.find_rule("quad-subdivision-jerboa");
+  const Model m = Model::gmap(2);
+  const std::vector<Dim> orbit{0, 1, 2};
+
+  fmt::print("scaling: quad subdivision of n x n quad tori, median of {} runs\n", runs);
+  fmt::print("{:>6} {:>10} {:>10} {:>11} {:>10} {:>11} {:>10}\n", "n", "|G|", "|G|+|H|", "fold ms", "ns/dart", "infer ms", "ns/dart");
+  std::vector<std::uint32_t> sizes{5, 16, 50, 160, 500};
+  if (quick) sizes = {5, 16, 50};
+  for (std::uint32_t n : sizes) {
+    Map g = build_surface(m, torus(n));
+    Map h = g;
+    const Dart hook[] = {0};
+    if (!apply_scheme(quad.rule, quad.words, h, hook).ok()) return 1;
+    KappaSpec k;
+    k.identity = true;
+    const auto graph = make_kappa_graph(g, h, k);
+    bool ok = true;
+    const double fold_ms = median_ms(runs, [&] { ok &= fold(graph, orbit, 0).scheme.has_value(); });
+    InferOptions o;
+    o.start = 0;
+    const double infer_ms = median_ms(runs, [&] { ok &= infer(graph, orbit, o).at(0).inferred(); });
+    if (!ok) {
+      fmt::print("n = {}: inference failed\n", n);
+      return 1;
+    }
+    const double darts = static_cast<double>(graph.size());
+    fmt::print("{:>6} {:>10} {:>10} {:>11.3f} {:>10.1f} {:>11.3f} {:>10.1f}\n", n, g.size(), graph.size(), fold_ms, fold_ms * 1e6 / darts, infer_ms,
+               infer_ms * 1e6 / darts);
+  }
+
+  fmt::print("\n000 Sec. 9 examples: whole inference with verification, median of {} runs\n", std::max(runs, 21));
+  struct Example {
+    const char* name;
+    std::vector<Polygon> faces;
+    inference::test::Subdivided (*subdivide)(const std::vector<Polygon>&);
+  };
+  const std::vector<Example> examples{{"quad subdivision (cube, Fig. 13)", cube_faces(), inference::test::quad_subdivision},
+                                      {"Loop (one triangle, Fig. 27)", {{0, 1, 2}}, inference::test::loop_subdivision},
+                                      {"Powell-Sabin 6-split (one triangle, Fig. 29)", {{0, 1, 2}}, inference::test::powell_sabin},
+                                      {"sqrt3 (tetrahedron, Fig. 31)", tetrahedron_faces(), inference::test::sqrt3}};
+  for (const auto& e : examples) {
+    const auto s = e.subdivide(e.faces);
+    KappaSpec k;
+    for (const auto& [b, a] : s.kappa) k.pairs.emplace_back(inference::test::soup_dart(e.faces, b), inference::test::soup_dart(s.faces, a));
+    const auto graph = make_kappa_graph(build_surface(m, e.faces), build_surface(m, s.faces), k);
+    bool ok = true;
+    const double ms = median_ms(std::max(runs, 21), [&] {
+      const auto attempts = infer(graph, orbit, {});
+      ok &= std::any_of(attempts.begin(), attempts.end(), [](const Attempt& a) { return a.inferred(); });
+    });
+    fmt::print("  {:<46} {:>6} darts  {:>9.4f} ms{}\n", e.name, graph.size(), ms, ok ? "" : "  FAILED");
+    if (!ok) return 1;
+  }
+  return 0;
+}
