@@ -214,7 +214,9 @@ class Folder {
         }
         if (options_.strict) break;
       }
-      if (!chosen && first_break != no_dart) {
+      // Outside strict mode, a position no relabeling fits is deleted: its
+      // links become explicit arcs, which Step 2.1 checks on every dart.
+      if (!chosen && first_break != no_dart && options_.strict) {
         const Dart q = position_[first_break];
         return fail(FailureKind::relabeling, v, i, first_break,
                     fmt::format("node n{}: relabeling {} -> {} holds at {} but not at {}: its {}-link does not reach {}, the copy of "

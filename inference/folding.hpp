@@ -87,7 +87,8 @@ struct FoldOptions {
   /// The paper exactly: one candidate per position (i -> i if it links
   /// (a,m) to (b_i,m), else the smallest such j), checked, no retry.
   /// Otherwise every candidate j is tried in that order and the first that
-  /// holds for every dart of the node is kept.
+  /// holds for every dart of the node is kept; if none holds, the position
+  /// is deleted (i -> _) and Step 2.1 checks the links as explicit arcs.
   bool strict = false;
   UndecidedPolicy undecided = UndecidedPolicy::keep;
 };

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <tuple>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -153,6 +154,74 @@ inline Subdivided sqrt3(const std::vector<Polygon>& faces) {
     s.kappa.push_back({{fs[1], b, a}, {base + 1, b, g2}});
   }
   return s;
+}
+
+/// Doo-Sabin (000 Sec. 9.1.5): a new vertex per face corner; each face
+/// shrinks to the face of its corners (F-face), each edge becomes a quad
+/// (E-face), each vertex a face of its corners (V-face). An old dart stays
+/// in the F-face of its face, at its corner, looking at the next corner
+/// along its side. Works on any closed surface.
+inline Subdivided doo_sabin(const std::vector<Polygon>& faces) {
+  Subdivided s;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> corner;  // (face, vertex) -> new vertex
+  std::uint32_t next = 0;
+  for (std::uint32_t f = 0; f < faces.size(); ++f) {
+    Polygon shrunk;
+    for (auto v : faces[f]) {
+      corner[{f, v}] = next;
+      shrunk.push_back(next++);
+    }
+    s.faces.push_back(shrunk);
+    const std::size_t k = faces[f].size();
+    for (std::size_t i = 0; i < k; ++i) {
+      const auto v = faces[f][i], w = faces[f][(i + 1) % k], u = faces[f][(i + k - 1) % k];
+      s.kappa.push_back({{f, v, w}, {f, corner[{f, v}], corner[{f, w}]}});
+      s.kappa.push_back({{f, v, u}, {f, corner[{f, v}], corner[{f, u}]}});
+    }
+  }
+  // The face with side a -> b, for each directed side.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> directed;
+  for (std::uint32_t f = 0; f < faces.size(); ++f)
+    for (std::size_t i = 0; i < faces[f].size(); ++i) directed[{faces[f][i], faces[f][(i + 1) % faces[f].size()]}] = f;
+  // E-faces: edge {a, b} between f (a -> b) and g (b -> a).
+  for (const auto& [ab, f] : directed) {
+    const auto [a, b] = ab;
+    if (a > b) continue;
+    const auto g = directed.at({b, a});
+    s.faces.push_back({corner[{f, a}], corner[{g, a}], corner[{g, b}], corner[{f, b}]});
+  }
+  // V-faces: the corners around each vertex v, turning from face f (side
+  // u -> v) to the face across that side (side v -> u).
+  std::map<std::uint32_t, bool> done;
+  for (std::uint32_t f0 = 0; f0 < faces.size(); ++f0)
+    for (const auto v : faces[f0]) {
+      if (done[v]) continue;
+      done[v] = true;
+      Polygon around;
+      std::uint32_t f = f0;
+      do {
+        around.push_back(corner[{f, v}]);
+        const auto& p = faces[f];
+        const std::size_t k = p.size();
+        std::size_t i = 0;
+        while (p[i] != v) ++i;
+        f = directed.at({v, p[(i + k - 1) % k]});
+      } while (f != f0);
+      s.faces.push_back(around);
+    }
+  return s;
+}
+
+/// Applies `second` after `first`, composing their κ.
+inline Subdivided iterate(const Subdivided& first, Subdivided (*second)(const std::vector<Polygon>&)) {
+  Subdivided two = second(first.faces);
+  std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, SoupDart> step;
+  for (const auto& [b, a] : two.kappa) step[{b.face, b.at, b.to}] = a;
+  Subdivided out;
+  out.faces = two.faces;
+  for (const auto& [b, a] : first.kappa)
+    if (auto it = step.find({a.face, a.at, a.to}); it != step.end()) out.kappa.push_back({b, it->second});
+  return out;
 }
 
 inline std::vector<Polygon> octahedron_faces() {

@@ -113,5 +113,32 @@ TEST(SubdivisionInference, Sqrt3FromTheTetrahedron) {
   EXPECT_EQ(count_cells(t).cells, (std::vector<std::size_t>{8, 18, 12}));
 }
 
+Subdivided doo_sabin_2(const std::vector<Polygon>& f) { return iterate(doo_sabin(f), doo_sabin); }
+Subdivided doo_sabin_3(const std::vector<Polygon>& f) { return iterate(iterate(doo_sabin(f), doo_sabin), doo_sabin); }
+
+// Doo-Sabin from the cube (Fig. 33), and the rules of its second and third
+// iterations inferred directly (Fig. 32: self-composition). By hand: every
+// new vertex has degree 4 and is a corner of one old face, so V' = the sum
+// of face degrees = 2E, E' = 2V', F' = F + E + V. Cube: (8, 12, 6) ->
+// (24, 48, 26) -> (96, 192, 98) -> (384, 768, 386).
+TEST(SubdivisionInference, DooSabinIterationsFromTheCube) {
+  const Attempt one = infer_from(cube_faces(), doo_sabin);
+  expect_like_oracle(one, tetrahedron_faces(), doo_sabin, "tetrahedron");
+  expect_like_oracle(one, mesh_faces("torus_quad.off"), doo_sabin, "torus_quad.off");
+  const Map c1 = applied(one.rule->operation, build_surface(gmap2, cube_faces()), 0);
+  EXPECT_EQ(count_cells(c1).cells, (std::vector<std::size_t>{24, 48, 26}));
+  const Attempt two = infer_from(cube_faces(), doo_sabin_2);
+  const Attempt three = infer_from(cube_faces(), doo_sabin_3);
+  ASSERT_TRUE(two.rule && three.rule);
+  const Map c2 = applied(two.rule->operation, build_surface(gmap2, cube_faces()), 0);
+  EXPECT_EQ(count_cells(c2).cells, (std::vector<std::size_t>{96, 192, 98}));
+  const Map c3 = applied(three.rule->operation, build_surface(gmap2, cube_faces()), 0);
+  EXPECT_EQ(count_cells(c3).cells, (std::vector<std::size_t>{384, 768, 386}));
+  // The third iteration's rule on the octahedron is Doo-Sabin three times.
+  expect_like_oracle(three, octahedron_faces(), doo_sabin_3, "octahedron");
+  // |R| = darts after / darts before: 48 -> 3072 darts.
+  EXPECT_EQ(three.rule->operation.rule.right().node_count(), 64u);
+}
+
 }  // namespace
 }  // namespace dartcheck::inference::test
