@@ -6,6 +6,11 @@
 #include "rewriting/jerboa_scheme.hpp"
 
 namespace dartcheck::inference {
+namespace {
+
+SourceLocation where(const std::string& file, const YAML::Node& n) { return {file, n.Mark().line + 1, n.Mark().column + 1}; }
+
+}  // namespace
 
 KappaSpec read_kappa_file(const std::string& file, const Model& model) {
   const YAML::Node root = load_yaml_file(file);
@@ -24,6 +29,7 @@ KappaSpec read_kappa_file(const std::string& file, const Model& model) {
       if (p.size() != 2) fail_at(file, p, fmt::format("a pair has two darts [before, after], this one {}", p.size()));
       spec.pairs.emplace_back(static_cast<Dart>(yaml::as_int(file, p[0], "before dart", 0, most)),
                               static_cast<Dart>(yaml::as_int(file, p[1], "after dart", 0, most)));
+      spec.pair_locations.push_back(where(file, p));
     }
   }
   if (const auto orbits = root["orbits"]) {
@@ -44,6 +50,7 @@ KappaSpec read_kappa_file(const std::string& file, const Model& model) {
       pair.before = static_cast<Dart>(yaml::as_int(file, yaml::require(file, o, "before"), "before dart", 0, most));
       pair.after = static_cast<Dart>(yaml::as_int(file, yaml::require(file, o, "after"), "after dart", 0, most));
       spec.orbits.push_back(std::move(pair));
+      spec.orbit_locations.push_back(where(file, o));
     }
   }
   if (!root["identity"] && !root["pairs"] && !root["orbits"])

@@ -75,8 +75,21 @@ KappaGraph make_kappa_graph(Map before, Map after, const KappaSpec& spec) {
   std::vector<Dart> kappa(before.size(), no_dart), inverse(after.size(), no_dart);
   if (spec.identity)
     for (Dart x = 0; x < std::min(before.size(), after.size()); ++x) associate(kappa, inverse, x, x);
-  for (const auto& [x, y] : spec.pairs) associate(kappa, inverse, x, y);
-  for (const auto& p : spec.orbits) associate_orbits(before, after, p, kappa, inverse);
+  // An entry's error at the entry's position, when it is known.
+  auto at = [](const std::vector<SourceLocation>& where, std::size_t k, const std::invalid_argument& e) {
+    if (k < where.size()) throw InputError(where[k].file, where[k].line, where[k].column, e.what());
+    throw;
+  };
+  for (std::size_t k = 0; k < spec.pairs.size(); ++k) try {
+      associate(kappa, inverse, spec.pairs[k].first, spec.pairs[k].second);
+    } catch (const std::invalid_argument& e) {
+      at(spec.pair_locations, k, e);
+    }
+  for (std::size_t k = 0; k < spec.orbits.size(); ++k) try {
+      associate_orbits(before, after, spec.orbits[k], kappa, inverse);
+    } catch (const std::invalid_argument& e) {
+      at(spec.orbit_locations, k, e);
+    }
   return KappaGraph(std::move(before), std::move(after), std::move(kappa));
 }
 

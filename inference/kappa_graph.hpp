@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/input_error.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::inference {
@@ -62,12 +63,16 @@ struct KappaSpec {
     Dart before = 0, after = 0;
   };
   std::vector<OrbitPair> orbits;
+  /// Where each pair and orbit association was read (a κ file), if known:
+  /// errors then name file:line:column.
+  std::vector<SourceLocation> pair_locations, orbit_locations;
 };
 
 /// Builds κ(G, H). Throws std::invalid_argument with a sentence when the
 /// maps have different models, a model is not a G-map (κ-graphs are
 /// defined on n-G-maps), a dart is out of range, κ is not injective or not
-/// a function, or two associated orbits differ in shape.
+/// a function, or two associated orbits differ in shape; an InputError at
+/// the entry's position instead when the spec records where it was read.
 KappaGraph make_kappa_graph(Map before, Map after, const KappaSpec& spec);
 
 }  // namespace dartcheck::inference
