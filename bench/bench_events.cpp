@@ -25,6 +25,7 @@
 
 #include "events/event_log.hpp"
 #include "generators/shapes.hpp"
+#include "bench/median.hpp"
 #include "io/catalog.hpp"
 
 using namespace dartcheck;
@@ -33,17 +34,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-template <class F>
-double median_ms(int runs, F f) {
-  std::vector<double> t;
-  for (int k = 0; k < runs; ++k) {
-    const auto start = Clock::now();
-    f();
-    t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
+using bench::median_ms;
 
 void scenario(const char* name, const Operation& op, const Map& g, std::vector<Dart> hooks, int runs) {
   const EventRule view = *event_rule(op).rule;

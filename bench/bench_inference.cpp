@@ -27,27 +27,17 @@
 #include "generators/polygon_soup.hpp"
 #include "generators/shapes.hpp"
 #include "inference/infer.hpp"
+#include "bench/median.hpp"
 #include "io/catalog.hpp"
 #include "rewriting/scheme_application.hpp"
 #include "../tests/inference/polycube.hpp"
 
 using namespace dartcheck;
 using namespace dartcheck::inference;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
-template <class F>
-double median_ms(int runs, F f) {
-  std::vector<double> t;
-  for (int k = 0; k < runs; ++k) {
-    const auto start = Clock::now();
-    f();
-    t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
+using bench::median_ms;
 
 std::vector<Polygon> torus(std::uint32_t n) {
   std::vector<Polygon> f;

@@ -64,6 +64,15 @@ class Midpoints {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> ids_;
 };
 
+/// The old darts of corner v of face f (sides towards next and prev) stay
+/// at v in the after face `sub`, looking at the new vertices `to_next` and
+/// `to_prev` of those sides.
+inline void keep_corner(Subdivided& s, std::uint32_t f, std::uint32_t v, std::uint32_t next, std::uint32_t prev, std::uint32_t sub, std::uint32_t to_next,
+                        std::uint32_t to_prev) {
+  s.kappa.push_back({{f, v, next}, {sub, v, to_next}});
+  s.kappa.push_back({{f, v, prev}, {sub, v, to_prev}});
+}
+
 /// Quad subdivision (000 Sec. 4.4; Catmull-Clark's topology): a vertex per
 /// edge and per face, the face split into one quad per corner. The old
 /// darts stay at their corners, looking at the edge midpoints.
@@ -78,9 +87,7 @@ inline Subdivided quad_subdivision(const std::vector<Polygon>& faces) {
     for (std::size_t i = 0; i < k; ++i) {
       const auto v = p[i], next = p[(i + 1) % k], prev = p[(i + k - 1) % k];
       s.faces.push_back({v, mid(v, next), center, mid(prev, v)});
-      const auto sub = base + static_cast<std::uint32_t>(i);
-      s.kappa.push_back({{f, v, next}, {sub, v, mid(v, next)}});
-      s.kappa.push_back({{f, v, prev}, {sub, v, mid(prev, v)}});
+      keep_corner(s, f, v, next, prev, base + static_cast<std::uint32_t>(i), mid(v, next), mid(prev, v));
     }
   }
   return s;
@@ -98,8 +105,7 @@ inline Subdivided loop_subdivision(const std::vector<Polygon>& faces) {
     for (std::size_t i = 0; i < 3; ++i) {
       const auto v = p[i], next = p[(i + 1) % 3], prev = p[(i + 2) % 3];
       s.faces.push_back({v, mid(v, next), mid(prev, v)});
-      s.kappa.push_back({{f, v, next}, {base + static_cast<std::uint32_t>(i), v, mid(v, next)}});
-      s.kappa.push_back({{f, v, prev}, {base + static_cast<std::uint32_t>(i), v, mid(prev, v)}});
+      keep_corner(s, f, v, next, prev, base + static_cast<std::uint32_t>(i), mid(v, next), mid(prev, v));
     }
     s.faces.push_back({mid(p[0], p[1]), mid(p[1], p[2]), mid(p[2], p[0])});
   }
@@ -175,7 +181,7 @@ inline Subdivided doo_sabin(const std::vector<Polygon>& faces) {
     const std::size_t k = faces[f].size();
     for (std::size_t i = 0; i < k; ++i) {
       const auto v = faces[f][i], w = faces[f][(i + 1) % k], u = faces[f][(i + k - 1) % k];
-      s.kappa.push_back({{f, v, w}, {f, corner[{f, v}], corner[{f, w}]}});
+      s.kappa.push_back({{f, v, w}, {f, corner[{f, v}], corner[{f, w}]}});  // the corner moves: not keep_corner
       s.kappa.push_back({{f, v, u}, {f, corner[{f, v}], corner[{f, u}]}});
     }
   }
