@@ -13,6 +13,7 @@
 #include <iostream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -147,7 +148,7 @@ TEST(InferenceRoundTrip, SubjectsRoundTripOnClosedShapes) {
     }
   }
   EXPECT_GE(trips, 20u);
-  std::cerr << "subjects " << subs.size() << ", shape round trips " << trips << "\n";
+  std::cerr << "subjects " << subs.size() << " (" << fmt::format("{}", fmt::join(names, ", ")) << "), shape round trips " << trips << "\n";
   int random_trips = 0;
   std::mt19937 rng(11);
   for (int k = 0; k < runs(); ++k) {
