@@ -1,0 +1,261 @@
+#include "querymodify/hex_subdivisions.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstdlib>
+#include <set>
+
+namespace dartcheck::querymodify {
+namespace {
+
+constexpr int bits(unsigned m) { return std::popcount(m); }
+
+// Index of each tetrahedron mask among the candidates, -1 if none.
+const std::array<int, 256>& tet_index() {
+  static const std::array<int, 256> index = [] {
+    std::array<int, 256> out{};
+    out.fill(-1);
+    const auto& c = candidate_tets();
+    for (std::size_t k = 0; k < c.size(); ++k) out[c[k]] = static_cast<int>(k);
+    return out;
+  }();
+  return index;
+}
+
+TetMask face_mask(int f) {
+  TetMask m = 0;
+  for (int v : hex_faces()[static_cast<std::size_t>(f)]) m = static_cast<TetMask>(m | (1u << v));
+  return m;
+}
+
+// The face whose 4 vertices hold triangle t, -1 if none.
+int face_of_triangle(unsigned t) {
+  for (int f = 0; f < 6; ++f)
+    if ((t & face_mask(f)) == t) return f;
+  return -1;
+}
+
+// Backtracking over sets of tetrahedra: every boundary triangle (the two
+// of each face's chosen diagonal) in exactly one, every other triangle in
+// none or two; the first open triangle is closed by each admissible
+// tetrahedron in turn.
+class Enumerator {
+ public:
+  explicit Enumerator(int diagonals) {
+    required_.fill(2);
+    for (unsigned t = 0; t < 256; ++t) {
+      if (bits(t) != 3) continue;
+      const int f = face_of_triangle(t);
+      if (f < 0) continue;
+      // Diagonal 0 of face (a, b, c, d) is a-c: triangles without b or d.
+      // Face (a, b, c, d) split by a-c has triangles abc and acd (both
+      // hold a and c), split by b-d abd and bcd. Bit f of `diagonals`: b-d.
+      const auto& q = hex_faces()[static_cast<std::size_t>(f)];
+      const bool diagonal_ac = !((diagonals >> f) & 1);
+      const bool has_ac = (t & (1u << q[0])) && (t & (1u << q[2]));
+      // The other diagonal's triangles are not on the boundary; they may
+      // still be interior triangles (a non-planar face lets the other
+      // diagonal pass inside the hex), in two tetrahedra or none.
+      required_[t] = has_ac == diagonal_ac ? 1 : 2;
+    }
+    count_.fill(0);
+  }
+
+  void run(std::set<std::uint64_t>& out) { search(0, out); }
+
+ private:
+  bool admissible(TetMask tet) const {
+    for (int v = 0; v < 8; ++v)
+      if (tet & (1u << v)) {
+        const unsigned t = tet & ~(1u << v);
+        if (count_[t] + 1 > required_[t]) return false;
+      }
+    return true;
+  }
+  void add(TetMask tet, int d) {
+    for (int v = 0; v < 8; ++v)
+      if (tet & (1u << v)) count_[tet & ~(1u << v)] = static_cast<std::uint8_t>(count_[tet & ~(1u << v)] + d);
+  }
+
+  void search(std::uint64_t chosen, std::set<std::uint64_t>& out) {
+    // The first triangle that needs one more tetrahedron.
+    int open = -1;
+    for (unsigned t = 0; t < 256 && open < 0; ++t)
+      if (bits(t) == 3 && ((required_[t] == 1 && count_[t] == 0) || (required_[t] == 2 && count_[t] == 1))) open = static_cast<int>(t);
+    if (open < 0) {
+      if (is_ball(chosen)) out.insert(chosen);
+      return;
+    }
+    const auto& c = candidate_tets();
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const TetMask tet = c[k];
+      if ((chosen >> k) & 1 || (tet & open) != static_cast<unsigned>(open) || !admissible(tet)) continue;
+      add(tet, +1);
+      search(chosen | (std::uint64_t{1} << k), out);
+      add(tet, -1);
+    }
+  }
+
+  // Every vertex link is a disk: connected, edges in one or two of its
+  // triangles, Euler characteristic 1 (all 8 vertices are on the
+  // boundary). With the boundary the hex surface, the complex is a ball.
+  static bool is_ball(std::uint64_t chosen) {
+    const auto tets = tets_of(chosen);
+    for (int v = 0; v < 8; ++v) {
+      std::vector<unsigned> triangles;
+      for (TetMask t : tets)
+        if (t & (1u << v)) triangles.push_back(t & ~(1u << v));
+      if (triangles.empty()) return false;
+      std::array<int, 256> edge_uses{};
+      unsigned vertices = 0;
+      for (unsigned t : triangles) {
+        vertices |= t;
+        for (int w = 0; w < 8; ++w)
+          if (t & (1u << w)) ++edge_uses[t & ~(1u << w)];
+      }
+      int edges = 0;
+      for (unsigned e = 0; e < 256; ++e) {
+        if (edge_uses[e] > 2) return false;
+        edges += edge_uses[e] > 0;
+      }
+      if (bits(vertices) - edges + static_cast<int>(triangles.size()) != 1) return false;
+      // Connected through shared edges.
+      std::vector<bool> seen(triangles.size(), false);
+      std::vector<std::size_t> stack{0};
+      seen[0] = true;
+      std::size_t reached = 1;
+      while (!stack.empty()) {
+        const unsigned t = triangles[stack.back()];
+        stack.pop_back();
+        for (std::size_t j = 0; j < triangles.size(); ++j)
+          if (!seen[j] && bits(t & triangles[j]) == 2) {
+            seen[j] = true;
+            ++reached;
+            stack.push_back(j);
+          }
+      }
+      if (reached != triangles.size()) return false;
+    }
+    return true;
+  }
+
+  std::array<int, 256> required_{};
+  std::array<std::uint8_t, 256> count_{};
+};
+
+}  // namespace
+
+const std::array<std::array<int, 4>, 6>& hex_faces() {
+  // x = 0, x = 1, y = 0, y = 1, z = 0, z = 1, each a cycle.
+  static const std::array<std::array<int, 4>, 6> faces{{{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}}};
+  return faces;
+}
+
+const std::vector<TetMask>& candidate_tets() {
+  static const std::vector<TetMask> tets = [] {
+    std::vector<TetMask> out;
+    for (unsigned m = 0; m < 256; ++m) {
+      if (bits(m) != 4) continue;
+      bool face = false;
+      for (int f = 0; f < 6; ++f) face |= m == face_mask(f);
+      if (!face) out.push_back(static_cast<TetMask>(m));
+    }
+    return out;
+  }();
+  return tets;
+}
+
+const std::vector<std::array<int, 8>>& cube_symmetries() {
+  static const std::vector<std::array<int, 8>> group = [] {
+    std::vector<std::array<int, 8>> rotations, reflections;
+    std::array<int, 3> axes{0, 1, 2};
+    do {
+      // The parity of the axis permutation and of the flips gives the
+      // determinant's sign.
+      const int swaps = (axes[0] != 0) + (axes[1] != 1) + (axes[2] != 2);
+      const bool odd_permutation = swaps == 2;
+      for (int flips = 0; flips < 8; ++flips) {
+        std::array<int, 8> p{};
+        for (int v = 0; v < 8; ++v) {
+          int w = 0;
+          for (int i = 0; i < 3; ++i) w |= ((v >> axes[static_cast<std::size_t>(i)]) & 1) << i;
+          p[static_cast<std::size_t>(v)] = w ^ flips;
+        }
+        const bool odd = odd_permutation != (std::popcount(static_cast<unsigned>(flips)) % 2 == 1);
+        (odd ? reflections : rotations).push_back(p);
+      }
+    } while (std::next_permutation(axes.begin(), axes.end()));
+    rotations.insert(rotations.end(), reflections.begin(), reflections.end());
+    return rotations;
+  }();
+  return group;
+}
+
+std::vector<TetMask> tets_of(std::uint64_t subdivision) {
+  std::vector<TetMask> out;
+  const auto& c = candidate_tets();
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if ((subdivision >> k) & 1) out.push_back(c[k]);
+  return out;
+}
+
+std::vector<std::uint64_t> enumerate_hex_subdivisions() {
+  std::set<std::uint64_t> found;
+  for (int diagonals = 0; diagonals < 64; ++diagonals) Enumerator(diagonals).run(found);
+  return {found.begin(), found.end()};
+}
+
+std::uint64_t canonical_subdivision(std::uint64_t subdivision, int group_size) {
+  std::uint64_t best = ~std::uint64_t{0};
+  const auto& group = cube_symmetries();
+  const auto tets = tets_of(subdivision);
+  for (int g = 0; g < group_size; ++g) {
+    std::uint64_t image = 0;
+    for (TetMask t : tets) {
+      unsigned m = 0;
+      for (int v = 0; v < 8; ++v)
+        if (t & (1u << v)) m |= 1u << group[static_cast<std::size_t>(g)][static_cast<std::size_t>(v)];
+      image |= std::uint64_t{1} << tet_index()[m];
+    }
+    best = std::min(best, image);
+  }
+  return best;
+}
+
+bool triangulates_unit_cube(std::uint64_t subdivision) {
+  const auto tets = tets_of(subdivision);
+  auto point = [](int v) { return std::array<long, 3>{v & 1, (v >> 1) & 1, (v >> 2) & 1}; };
+  // Six times the signed volume of (a, b, c, d).
+  auto det = [&](int a, int b, int c, int d) {
+    const auto pa = point(a), pb = point(b), pc = point(c), pd = point(d);
+    const long u[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]}, v[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]},
+               w[3] = {pd[0] - pa[0], pd[1] - pa[1], pd[2] - pa[2]};
+    return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+  };
+  auto vertices = [](unsigned m) {
+    std::vector<int> out;
+    for (int v = 0; v < 8; ++v)
+      if (m & (1u << v)) out.push_back(v);
+    return out;
+  };
+  long volume6 = 0;
+  for (TetMask t : tets) {
+    const auto v = vertices(t);
+    const long d = std::labs(det(v[0], v[1], v[2], v[3]));
+    if (d == 0) return false;
+    volume6 += d;
+  }
+  if (volume6 != 6) return false;
+  // Interior triangles: the opposite vertices on opposite sides.
+  for (std::size_t i = 0; i < tets.size(); ++i)
+    for (std::size_t j = i + 1; j < tets.size(); ++j) {
+      const unsigned shared = tets[i] & tets[j];
+      if (bits(shared) != 3) continue;
+      const auto tri = vertices(shared);
+      const int a = vertices(tets[i] & ~shared)[0], b = vertices(tets[j] & ~shared)[0];
+      if (det(tri[0], tri[1], tri[2], a) * det(tri[0], tri[1], tri[2], b) >= 0) return false;
+    }
+  return true;
+}
+
+}  // namespace dartcheck::querymodify
