@@ -1,0 +1,38 @@
+// Choosing among overlapping matches (001 Sec. 5.2.2).
+//
+// Two matches conflict when they share a matched dart: a dart annotated
+// with a label by both. Darts annotated ∅ (a '↔' neighbour) and darts a
+// '*' or 'ε̄' letter only looked at are not matched and do not conflict;
+// neither do two matches of the same darts found from different start
+// darts by the same query (they are one match: `distinct_matches`).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "querymodify/annotation.hpp"
+
+namespace dartcheck::querymodify {
+
+/// Greedy (Sec. 5.2.2 (1)): start darts in increasing order; from each dart
+/// not yet matched, the first match the tree finds is selected and its
+/// darts are blocked (annotated ∅) for the following searches.
+std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie);
+
+/// Every match from every start dart, overlapping ones included, and how
+/// many were found before removing those with the same query and darts.
+struct AllMatches {
+  std::size_t raw = 0;
+  std::vector<QueryMatch> distinct;
+};
+AllMatches all_matches(const Map& input, const QueryTrie& trie);
+
+/// Global (Sec. 5.2.2 (2)): the distinct matches sorted by decreasing
+/// score (ties: the order found), each selected unless it conflicts with
+/// one selected before.
+std::vector<QueryMatch> global_matches(const Map& input, const QueryTrie& trie, const std::function<double(const QueryMatch&)>& score);
+
+/// True if the two matches share a matched dart.
+bool conflict(const QueryMatch& a, const QueryMatch& b);
+
+}  // namespace dartcheck::querymodify
