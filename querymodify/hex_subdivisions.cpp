@@ -199,10 +199,13 @@ std::vector<TetMask> tets_of(std::uint64_t subdivision) {
   return out;
 }
 
-std::vector<std::uint64_t> enumerate_hex_subdivisions() {
-  std::set<std::uint64_t> found;
-  for (int diagonals = 0; diagonals < 64; ++diagonals) Enumerator(diagonals).run(found);
-  return {found.begin(), found.end()};
+const std::vector<std::uint64_t>& enumerate_hex_subdivisions() {
+  static const std::vector<std::uint64_t> all = [] {
+    std::set<std::uint64_t> found;
+    for (int diagonals = 0; diagonals < 64; ++diagonals) Enumerator(diagonals).run(found);
+    return std::vector<std::uint64_t>(found.begin(), found.end());
+  }();
+  return all;
 }
 
 std::uint64_t canonical_subdivision(std::uint64_t subdivision, int group_size) {

@@ -31,8 +31,9 @@ const std::array<std::array<int, 4>, 6>& hex_faces();
 /// the rotations (orientation-preserving).
 const std::vector<std::array<int, 8>>& cube_symmetries();
 
-/// Every subdivision, labeled (vertices fixed), in increasing order.
-std::vector<std::uint64_t> enumerate_hex_subdivisions();
+/// Every subdivision, labeled (vertices fixed), in increasing order;
+/// computed once (about 10 s) and kept.
+const std::vector<std::uint64_t>& enumerate_hex_subdivisions();
 
 /// The smallest image of a subdivision under the first `group_size`
 /// symmetries (48: the full group, 24: rotations only).

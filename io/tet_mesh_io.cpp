@@ -1,0 +1,130 @@
+#include "io/tet_mesh_io.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "io/line_reader.hpp"
+
+namespace dartcheck {
+namespace {
+
+using text_mesh::Line;
+using text_mesh::LineReader;
+using text_mesh::number;
+
+std::string extension(const std::string& file) { return std::filesystem::path(file).extension().string(); }
+
+Line need_line(LineReader& r, const std::string& what) {
+  auto l = r.next();
+  if (!l) r.fail(r.line(), 0, fmt::format("the file ends before {}", what));
+  return *l;
+}
+
+void check_tet(const LineReader& r, const Line& l, const std::array<std::uint32_t, 4>& t, std::size_t points, int first_column) {
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (t[k] >= points) r.fail(l.number, first_column, fmt::format("vertex index out of range ({} points)", points));
+    for (std::size_t j = 0; j < k; ++j)
+      if (t[j] == t[k]) r.fail(l.number, first_column, fmt::format("a tetrahedron repeats vertex {}", t[k]));
+  }
+}
+
+}  // namespace
+
+bool is_tet_mesh_path(const std::string& file) {
+  const auto e = extension(file);
+  return e == ".node" || e == ".ele" || e == ".mesh";
+}
+
+TetMesh read_tetgen(const std::string& file) {
+  const std::filesystem::path base = std::filesystem::path(file).replace_extension();
+  const std::string node = base.string() + ".node", ele = base.string() + ".ele";
+  TetMesh m;
+  m.file = file;
+  long first_index = 0;
+  {
+    LineReader r(node);
+    const Line h = need_line(r, "the .node header");
+    const auto count = number<long>(r, h, 0, "the number of points");
+    if (count < 0) r.fail(h.number, h.tokens[0].second, "a negative number of points");
+    if (h.tokens.size() > 1 && number<int>(r, h, 1, "the dimension") != 3) r.fail(h.number, h.tokens[1].second, "only 3-dimensional .node files are read");
+    for (long k = 0; k < count; ++k) {
+      const Line l = need_line(r, fmt::format("point {} of {}", k + 1, count));
+      const auto index = number<long>(r, l, 0, "a point index");
+      if (k == 0) first_index = index;
+      if (index != first_index + k) r.fail(l.number, l.tokens[0].second, fmt::format("point index {} out of sequence (expected {})", index, first_index + k));
+      m.points.push_back({number<double>(r, l, 1, "x"), number<double>(r, l, 2, "y"), number<double>(r, l, 3, "z")});
+    }
+    if (first_index != 0 && first_index != 1) r.fail(1, 0, "point indices start at 0 or 1");
+  }
+  LineReader r(ele);
+  const Line h = need_line(r, "the .ele header");
+  const auto count = number<long>(r, h, 0, "the number of tetrahedra");
+  if (count < 0) r.fail(h.number, h.tokens[0].second, "a negative number of tetrahedra");
+  const int per = h.tokens.size() > 1 ? number<int>(r, h, 1, "the nodes per tetrahedron") : 4;
+  if (per != 4 && per != 10) r.fail(h.number, h.tokens[1].second, fmt::format("{} nodes per tetrahedron (expected 4 or 10)", per));
+  for (long k = 0; k < count; ++k) {
+    const Line l = need_line(r, fmt::format("tetrahedron {} of {}", k + 1, count));
+    std::array<std::uint32_t, 4> t{};
+    for (std::size_t j = 0; j < 4; ++j) {
+      const auto v = number<long>(r, l, j + 1, "a vertex index") - first_index;
+      if (v < 0) r.fail(l.number, l.tokens[j + 1].second, "vertex index below the first point's");
+      t[j] = static_cast<std::uint32_t>(v);
+    }
+    check_tet(r, l, t, m.points.size(), l.tokens[1].second);
+    m.tets.push_back(t);
+    m.tet_lines.push_back(l.number);
+  }
+  return m;
+}
+
+TetMesh read_medit(const std::string& file) {
+  LineReader r(file);
+  TetMesh m;
+  m.file = file;
+  bool vertices = false;
+  while (auto l = r.next()) {
+    const std::string key(l->tokens[0].first);  // a copy: the next line overwrites the reader's buffer
+    if (key == "End") break;
+    if (key == "MeshVersionFormatted" || key == "Dimension") {
+      if (key == "Dimension") {
+        const Line& d = l->tokens.size() > 1 ? *l : need_line(r, "the dimension");
+        const std::size_t k = l->tokens.size() > 1 ? 1 : 0;
+        if (number<int>(r, d, k, "the dimension") != 3) r.fail(d.number, d.tokens[k].second, "only 3-dimensional meshes are read");
+      }
+      continue;
+    }
+    // A section: its count, then that many lines.
+    const Line c = need_line(r, fmt::format("the size of section {}", key));
+    const auto count = number<long>(r, c, 0, fmt::format("the size of section {}", key));
+    if (count < 0) r.fail(c.number, c.tokens[0].second, "a negative section size");
+    for (long k = 0; k < count; ++k) {
+      const Line e = need_line(r, fmt::format("entry {} of {} in {}", k + 1, count, key));
+      if (key == "Vertices") {
+        m.points.push_back({number<double>(r, e, 0, "x"), number<double>(r, e, 1, "y"), number<double>(r, e, 2, "z")});
+      } else if (key == "Tetrahedra") {
+        if (!vertices) r.fail(e.number, 1, "Tetrahedra before Vertices");
+        std::array<std::uint32_t, 4> t{};
+        for (std::size_t j = 0; j < 4; ++j) {
+          const auto v = number<long>(r, e, j, "a vertex index");
+          if (v < 1) r.fail(e.number, e.tokens[j].second, "medit vertex indices start at 1");
+          t[j] = static_cast<std::uint32_t>(v - 1);
+        }
+        check_tet(r, e, t, m.points.size(), e.tokens[0].second);
+        m.tets.push_back(t);
+        m.tet_lines.push_back(e.number);
+      }
+    }
+    if (key == "Vertices") vertices = true;
+  }
+  if (m.tets.empty()) r.fail(r.line(), 0, "no Tetrahedra section");
+  return m;
+}
+
+TetMesh read_tet_mesh(const std::string& file) {
+  const auto e = extension(file);
+  if (e == ".mesh") return read_medit(file);
+  if (e == ".node" || e == ".ele") return read_tetgen(file);
+  throw InputError(file, 0, 0, "unknown tetrahedral mesh type (expected .node, .ele or .mesh)");
+}
+
+}  // namespace dartcheck

@@ -1,0 +1,97 @@
+#include "querymodify/hex_queries.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "querymodify/hex_subdivisions.hpp"
+
+namespace dartcheck::querymodify {
+
+std::vector<std::array<std::uint32_t, 4>> subdivision_tets(std::uint64_t subdivision) {
+  std::vector<std::array<std::uint32_t, 4>> out;
+  for (TetMask t : tets_of(subdivision)) {
+    std::array<std::uint32_t, 4> v{};
+    std::size_t k = 0;
+    for (std::uint32_t i = 0; i < 8; ++i)
+      if (t & (1u << i)) v[k++] = i;
+    out.push_back(v);
+  }
+  return out;
+}
+
+int subdivision_diagonals(std::uint64_t subdivision) {
+  const auto tets = tets_of(subdivision);
+  int bits = 0;
+  for (int f = 0; f < 6; ++f) {
+    const auto& q = hex_faces()[static_cast<std::size_t>(f)];
+    // a-c splits the face iff triangle abc is a boundary triangle: in
+    // exactly one tetrahedron (the other diagonal's triangles may be
+    // interior, in two).
+    const unsigned abc = (1u << q[0]) | (1u << q[1]) | (1u << q[2]);
+    int uses = 0;
+    for (TetMask t : tets) uses += (t & abc) == abc;
+    if (uses != 1) bits |= 1 << f;
+  }
+  return bits;
+}
+
+std::vector<std::uint32_t> canonical_word(const Map& m) {
+  std::vector<std::uint32_t> best;
+  for (Dart d = 0; d < m.size(); ++d) {
+    auto w = word(m, bfs_labeling(m, d));
+    if (best.empty() || w < best) best = std::move(w);
+  }
+  return best;
+}
+
+std::vector<HexQuery> hex_queries() {
+  std::set<std::uint64_t> classes;
+  for (auto s : enumerate_hex_subdivisions()) classes.insert(canonical_subdivision(s));
+  std::vector<HexQuery> out;
+  std::set<std::vector<std::uint32_t>> seen;
+  for (std::uint64_t s : classes)
+    for (bool mirror : {false, true}) {
+      auto tets = subdivision_tets(s);
+      // Without points, build_tet_map keeps the first tetrahedron's
+      // orientation as given and propagates it: reflecting every
+      // tetrahedron gives the mirror image.
+      if (mirror)
+        for (auto& t : tets) std::swap(t[2], t[3]);
+      TetMap tm = build_tet_map(tets);
+      auto key = canonical_word(tm.map);
+      if (!seen.insert(key).second) continue;
+      HexQuery q;
+      // Readings: permutations of the 8 corners that map the tetrahedra to
+      // a labeled subdivision.
+      {
+        std::array<std::uint8_t, 8> p{0, 1, 2, 3, 4, 5, 6, 7};
+        const auto base = tets_of(s);
+        do {
+          std::uint64_t image = 0;
+          bool ok = true;
+          for (TetMask t : base) {
+            unsigned m = 0;
+            for (int v = 0; v < 8; ++v)
+              if (t & (1u << v)) m |= 1u << p[static_cast<std::size_t>(v)];
+            const auto it = std::lower_bound(candidate_tets().begin(), candidate_tets().end(), static_cast<TetMask>(m));
+            if (it == candidate_tets().end() || *it != m) {
+              ok = false;
+              break;
+            }
+            image |= std::uint64_t{1} << (it - candidate_tets().begin());
+          }
+          if (ok && std::binary_search(enumerate_hex_subdivisions().begin(), enumerate_hex_subdivisions().end(), image)) q.readings.push_back(p);
+        } while (std::next_permutation(p.begin(), p.end()));
+      }
+      q.subdivision = s;
+      q.mirrored = mirror;
+      q.tets = tm.tets.size();
+      q.word = query_word(tm.map, 0, Constraint::no_connection);
+      q.map = std::move(tm.map);
+      out.push_back(std::move(q));
+    }
+  return out;
+}
+
+}  // namespace dartcheck::querymodify

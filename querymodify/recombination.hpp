@@ -1,0 +1,47 @@
+// Tetrahedra to hexahedra (001 Sec. 7.1): every match of the hex queries
+// (hex_queries.hpp) in a tetrahedral 3-map, a selection of non-overlapping
+// matches (greedy, or global by a quality score), and each selected match
+// merged into one volume (modify.hpp). A merged hex keeps its 12 boundary
+// triangles (36 darts): neighbouring tetrahedra still see triangles, as in
+// 001's intermediate states.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "querymodify/annotation.hpp"
+#include "querymodify/hex_queries.hpp"
+
+namespace dartcheck::querymodify {
+
+enum class Strategy { greedy, global };
+
+/// The cube corner (0..7, v = x + 2y + 4z) each dart of a query starts at.
+std::vector<std::uint32_t> query_corners(const HexQuery& q);
+
+/// The mesh vertex at each cube corner of a match of query `q`.
+std::array<std::uint32_t, 8> match_corners(const HexQuery& q, const std::vector<std::uint32_t>& corners, const QueryMatch& m,
+                                           const std::vector<std::uint32_t>& vertex_of_dart);
+
+/// The scaled Jacobian of a hexahedron given by its 8 corner points
+/// (corner v = x + 2y + 4z): at each corner, the determinant of its three
+/// edge vectors (towards +x, +y, +z, reversed where the corner is on the
+/// high side) over the product of their lengths; the quality is the
+/// minimum over the corners, signed so that a hex of either handedness
+/// scores positive when every corner agrees (1 for a cube, <= 0 for an
+/// inverted or folded one).
+double scaled_jacobian(const std::array<std::array<double, 3>, 8>& corner);
+
+struct Recombination {
+  std::size_t raw_matches = 0, distinct_matches = 0, hexes = 0, tets = 0;
+  std::vector<QueryMatch> selected;
+};
+
+/// Finds and selects hexes in `mesh` (points give the global strategy its
+/// score; without them the global order is by number of tetrahedra, then
+/// found order). Merges the selected matches in `mesh.map`.
+Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
+                        const std::vector<std::array<double, 3>>* points = nullptr);
+
+}  // namespace dartcheck::querymodify
