@@ -24,14 +24,20 @@
 namespace dartcheck::querymodify::test {
 namespace {
 
-// Kuhn's 6 tetrahedra around the diagonal 0-7: every face split by the
-// diagonal through its lowest corner, so all hexes of a grid agree.
+// Kuhn's 6 tetrahedra around the diagonal 0-7 (0 -> e_a -> e_a + e_b ->
+// 7 for each order of the axes): every face split by the diagonal through
+// its lowest corner, so all hexes of a grid agree. Built directly, without
+// the enumeration.
 std::uint64_t kuhn() {
-  for (auto s : enumerate_hex_subdivisions()) {
-    const auto tets = subdivision_tets(s);
-    if (tets.size() == 6 && std::all_of(tets.begin(), tets.end(), [](const auto& t) { return t[0] == 0 && t[3] == 7; })) return s;
-  }
-  return 0;
+  std::uint64_t s = 0;
+  std::array<int, 3> axes{0, 1, 2};
+  do {
+    const unsigned a = 1u << axes[0], ab = a | (1u << axes[1]);
+    const unsigned mask = (1u << 0) | (1u << a) | (1u << ab) | (1u << 7);
+    const auto& c = candidate_tets();
+    s |= std::uint64_t{1} << (std::lower_bound(c.begin(), c.end(), static_cast<TetMask>(mask)) - c.begin());
+  } while (std::next_permutation(axes.begin(), axes.end()));
+  return s;
 }
 
 std::size_t volumes(const Map& m) {
@@ -91,6 +97,7 @@ HexGrid random_grid(std::uint32_t n, std::uint32_t seed) {
 }
 
 TEST(TetMap, GridOfKuhnHexes) {
+  ASSERT_EQ(subdivision_tets(kuhn()).size(), 6u);
   const HexGrid g = kuhn_grid(2);
   ASSERT_EQ(g.tets.size(), 48u);
   const TetMap t = build_tet_map(g.tets, &g.points);
