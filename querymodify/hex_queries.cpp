@@ -45,7 +45,64 @@ std::vector<std::uint32_t> canonical_word(const Map& m) {
   return best;
 }
 
-std::vector<HexQuery> hex_queries() {
+// Readings of subdivision s: vertex permutations p such that p(tets) is
+// again a labeled subdivision. Assigned vertex by vertex; a boundary
+// triangle (in one tetrahedron) must land on 3 corners of one face, which
+// leaves a few hundred of the 8! candidates.
+static std::vector<std::array<std::uint8_t, 8>> readings(std::uint64_t s) {
+  const auto tets = tets_of(s);
+  std::vector<unsigned> boundary;
+  for (TetMask t : tets)
+    for (int v = 0; v < 8; ++v) {
+      if (!(t & (1u << v))) continue;
+      const unsigned tri = t & ~(1u << v);
+      int uses = 0;
+      for (TetMask u : tets) uses += (u & tri) == tri;
+      if (uses == 1) boundary.push_back(tri);
+    }
+  auto on_a_face = [](unsigned m) {
+    for (const auto& f : hex_faces()) {
+      unsigned fm = 0;
+      for (int v : f) fm |= 1u << v;
+      if ((m & fm) == m) return true;
+    }
+    return false;
+  };
+  std::vector<std::array<std::uint8_t, 8>> out;
+  std::array<std::uint8_t, 8> p{};
+  auto image = [&](unsigned m) {
+    unsigned r = 0;
+    for (int v = 0; v < 8; ++v)
+      if (m & (1u << v)) r |= 1u << p[static_cast<std::size_t>(v)];
+    return r;
+  };
+  auto assign = [&](auto&& self, int v, unsigned used) -> void {
+    if (v == 8) {
+      std::uint64_t mapped = 0;
+      for (TetMask t : tets) {
+        const auto it = std::lower_bound(candidate_tets().begin(), candidate_tets().end(), static_cast<TetMask>(image(t)));
+        if (it == candidate_tets().end() || *it != image(t)) return;
+        mapped |= std::uint64_t{1} << (it - candidate_tets().begin());
+      }
+      if (std::binary_search(enumerate_hex_subdivisions().begin(), enumerate_hex_subdivisions().end(), mapped)) out.push_back(p);
+      return;
+    }
+    const unsigned upto = (2u << v) - 1;  // vertices 0..v assigned
+    for (std::uint8_t w = 0; w < 8; ++w) {
+      if (used & (1u << w)) continue;
+      p[static_cast<std::size_t>(v)] = w;
+      bool ok = true;
+      for (unsigned tri : boundary)
+        if ((tri & (1u << v)) && (tri & ~upto) == 0 && !on_a_face(image(tri))) ok = false;
+      if (ok) self(self, v + 1, used | (1u << w));
+    }
+  };
+  assign(assign, 0, 0);
+  return out;
+}
+
+const std::vector<HexQuery>& hex_queries() {
+  static const std::vector<HexQuery> all = [] {
   std::set<std::uint64_t> classes;
   for (auto s : enumerate_hex_subdivisions()) classes.insert(canonical_subdivision(s));
   std::vector<HexQuery> out;
@@ -62,28 +119,7 @@ std::vector<HexQuery> hex_queries() {
       auto key = canonical_word(tm.map);
       if (!seen.insert(key).second) continue;
       HexQuery q;
-      // Readings: permutations of the 8 corners that map the tetrahedra to
-      // a labeled subdivision.
-      {
-        std::array<std::uint8_t, 8> p{0, 1, 2, 3, 4, 5, 6, 7};
-        const auto base = tets_of(s);
-        do {
-          std::uint64_t image = 0;
-          bool ok = true;
-          for (TetMask t : base) {
-            unsigned m = 0;
-            for (int v = 0; v < 8; ++v)
-              if (t & (1u << v)) m |= 1u << p[static_cast<std::size_t>(v)];
-            const auto it = std::lower_bound(candidate_tets().begin(), candidate_tets().end(), static_cast<TetMask>(m));
-            if (it == candidate_tets().end() || *it != m) {
-              ok = false;
-              break;
-            }
-            image |= std::uint64_t{1} << (it - candidate_tets().begin());
-          }
-          if (ok && std::binary_search(enumerate_hex_subdivisions().begin(), enumerate_hex_subdivisions().end(), image)) q.readings.push_back(p);
-        } while (std::next_permutation(p.begin(), p.end()));
-      }
+      q.readings = readings(s);
       q.subdivision = s;
       q.mirrored = mirror;
       q.tets = tm.tets.size();
@@ -92,6 +128,8 @@ std::vector<HexQuery> hex_queries() {
       out.push_back(std::move(q));
     }
   return out;
+  }();
+  return all;
 }
 
 }  // namespace dartcheck::querymodify

@@ -39,7 +39,8 @@ struct HexQuery {
 
 /// One query per distinct oriented tetrahedral map among the 174 classes
 /// and their mirror images (duplicates, the achiral classes, removed by
-/// canonical word). 001 Sec. 7.1's queries, both hands.
-std::vector<HexQuery> hex_queries();
+/// canonical word). 001 Sec. 7.1's queries, both hands. Built once (a few
+/// seconds, mostly the enumeration) and kept.
+const std::vector<HexQuery>& hex_queries();
 
 }  // namespace dartcheck::querymodify

@@ -37,8 +37,8 @@ int face_of_triangle(unsigned t) {
 
 // Backtracking over sets of tetrahedra: every boundary triangle (the two
 // of each face's chosen diagonal) in exactly one, every other triangle in
-// none or two; the first open triangle is closed by each admissible
-// tetrahedron in turn.
+// none or two; an open triangle (the one with the fewest choices) is
+// closed by each admissible tetrahedron in turn.
 class Enumerator {
  public:
   explicit Enumerator(int diagonals) {
@@ -59,6 +59,12 @@ class Enumerator {
       required_[t] = has_ac == diagonal_ac ? 1 : 2;
     }
     count_.fill(0);
+    // An edge is on the boundary iff it is in a boundary triangle.
+    boundary_edge_.fill(false);
+    for (unsigned t = 0; t < 256; ++t)
+      if (bits(t) == 3 && required_[t] == 1)
+        for (int v = 0; v < 8; ++v)
+          if (t & (1u << v)) boundary_edge_[t & ~(1u << v)] = true;
   }
 
   void run(std::set<std::uint64_t>& out) { search(0, out); }
@@ -77,23 +83,99 @@ class Enumerator {
       if (tet & (1u << v)) count_[tet & ~(1u << v)] = static_cast<std::uint8_t>(count_[tet & ~(1u << v)] + d);
   }
 
+  // Branches at the open triangle with the fewest admissible closing
+  // tetrahedra, and stops where one has none. Each open triangle needs
+  // exactly one more tetrahedron, so the branches are disjoint and every
+  // subdivision is reached once.
   void search(std::uint64_t chosen, std::set<std::uint64_t>& out) {
-    // The first triangle that needs one more tetrahedron.
-    int open = -1;
-    for (unsigned t = 0; t < 256 && open < 0; ++t)
-      if (bits(t) == 3 && ((required_[t] == 1 && count_[t] == 0) || (required_[t] == 2 && count_[t] == 1))) open = static_cast<int>(t);
+    const auto& c = candidate_tets();
+    int open = -1, fewest = 99;
+    for (const Triangle& tri : triangles()) {
+      const unsigned t = tri.mask;
+      if (count_[t] + 1 != required_[t]) continue;  // not open
+      int n = 0;
+      for (int k : tri.closers) n += !((chosen >> k) & 1) && admissible(c[static_cast<std::size_t>(k)]);
+      if (n == 0) return;
+      if (n < fewest) fewest = n, open = static_cast<int>(&tri - triangles().data());
+    }
     if (open < 0) {
       if (is_ball(chosen)) out.insert(chosen);
       return;
     }
-    const auto& c = candidate_tets();
-    for (std::size_t k = 0; k < c.size(); ++k) {
-      const TetMask tet = c[k];
-      if ((chosen >> k) & 1 || (tet & open) != static_cast<unsigned>(open) || !admissible(tet)) continue;
+    for (int k : triangles()[static_cast<std::size_t>(open)].closers) {
+      const TetMask tet = c[static_cast<std::size_t>(k)];
+      if ((chosen >> k) & 1 || !admissible(tet)) continue;
       add(tet, +1);
-      search(chosen | (std::uint64_t{1} << k), out);
+      if (edge_links_ok(chosen | (std::uint64_t{1} << k), tet)) search(chosen | (std::uint64_t{1} << k), out);
       add(tet, -1);
     }
+  }
+
+  // In a ball, the tetrahedra around an interior edge form one cycle, those
+  // around a boundary edge one path. The link of edge ab is the graph on
+  // the other vertices with an edge xy per tetrahedron abxy (degrees are
+  // at most 2, by the triangle counts): a closed cycle on a boundary edge,
+  // or next to another component, can never be repaired by adding
+  // tetrahedra. Checked on the edges of the tetrahedron just added; cuts
+  // the closed non-ball complexes (most leaves without it).
+  bool edge_links_ok(std::uint64_t chosen, TetMask added) const {
+    const auto& c = candidate_tets();
+    for (int a = 0; a < 8; ++a)
+      for (int b = a + 1; b < 8; ++b) {
+        const unsigned ab = (1u << a) | (1u << b);
+        if ((added & ab) != ab) continue;
+        std::array<int, 8> parent{0, 1, 2, 3, 4, 5, 6, 7};
+        auto find = [&](int x) {
+          while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)];
+          return x;
+        };
+        std::array<int, 8> edges{}, vertices{};
+        unsigned touched = 0;
+        for (std::uint64_t rest = chosen; rest; rest &= rest - 1) {
+          const unsigned t = c[static_cast<std::size_t>(std::countr_zero(rest))];
+          if ((t & ab) != ab) continue;
+          const unsigned xy = t & ~ab;
+          const int x = std::countr_zero(xy), y = 31 - std::countl_zero(xy);
+          touched |= xy;
+          parent[static_cast<std::size_t>(find(x))] = find(y);
+        }
+        for (std::uint64_t rest = chosen; rest; rest &= rest - 1) {
+          const unsigned t = c[static_cast<std::size_t>(std::countr_zero(rest))];
+          if ((t & ab) == ab) ++edges[static_cast<std::size_t>(find(std::countr_zero(t & ~ab)))];
+        }
+        int components = 0;
+        bool cycle = false;
+        for (int x = 0; x < 8; ++x)
+          if (touched & (1u << x)) ++vertices[static_cast<std::size_t>(find(x))];
+        for (int r = 0; r < 8; ++r)
+          if (vertices[static_cast<std::size_t>(r)] > 0) {
+            ++components;
+            cycle |= edges[static_cast<std::size_t>(r)] == vertices[static_cast<std::size_t>(r)];
+          }
+        if (cycle && (boundary_edge_[ab] || components > 1)) return false;
+      }
+    return true;
+  }
+
+  // The 56 triangles on the 8 vertices, each with the candidate
+  // tetrahedra that contain it.
+  struct Triangle {
+    unsigned mask = 0;
+    std::vector<int> closers;
+  };
+  static const std::vector<Triangle>& triangles() {
+    static const std::vector<Triangle> all = [] {
+      std::vector<Triangle> out;
+      for (unsigned t = 0; t < 256; ++t) {
+        if (bits(t) != 3) continue;
+        Triangle tri{t, {}};
+        for (int v = 0; v < 8; ++v)
+          if (!(t & (1u << v)) && tet_index()[t | (1u << v)] >= 0) tri.closers.push_back(tet_index()[t | (1u << v)]);
+        out.push_back(std::move(tri));
+      }
+      return out;
+    }();
+    return all;
   }
 
   // Every vertex link is a disk: connected, edges in one or two of its
@@ -141,6 +223,7 @@ class Enumerator {
 
   std::array<int, 256> required_{};
   std::array<std::uint8_t, 256> count_{};
+  std::array<bool, 256> boundary_edge_{};
 };
 
 }  // namespace

@@ -16,6 +16,8 @@ packages=(
   clang libclang-rt-14-dev
   # Oracles, peers and real data for tests and benchmarks only.
   libcgal-dev libcgal-demo geomview assimp-testmodels libopenmesh-dev
+  # Tetrahedral meshes of CGAL's surfaces for the tet -> hex recombination.
+  tetgen
 )
 
 missing=()
