@@ -112,12 +112,37 @@ TetMesh read_medit(const std::string& file) {
         check_tet(r, e, t, m.points.size(), e.tokens[0].second);
         m.tets.push_back(t);
         m.tet_lines.push_back(e.number);
+      } else if (key == "Hexahedra") {
+        if (!vertices) r.fail(e.number, 1, "Hexahedra before Vertices");
+        std::array<std::uint32_t, 8> h{};
+        for (std::size_t j = 0; j < 8; ++j) {
+          const auto v = number<long>(r, e, j, "a vertex index");
+          if (v < 1 || static_cast<std::size_t>(v) > m.points.size())
+            r.fail(e.number, e.tokens[j].second, fmt::format("vertex index {} out of range 1..{}", v, m.points.size()));
+          h[j] = static_cast<std::uint32_t>(v - 1);
+        }
+        m.hexes.push_back(h);
       }
     }
     if (key == "Vertices") vertices = true;
   }
-  if (m.tets.empty()) r.fail(r.line(), 0, "no Tetrahedra section");
+  if (m.tets.empty() && m.hexes.empty()) r.fail(r.line(), 0, "no Tetrahedra or Hexahedra section");
   return m;
+}
+
+void write_medit(std::ostream& out, const TetMesh& m) {
+  out << "MeshVersionFormatted 1\nDimension 3\n";
+  out << fmt::format("Vertices\n{}\n", m.points.size());
+  for (const auto& p : m.points) out << fmt::format("{} {} {} 0\n", p[0], p[1], p[2]);
+  if (!m.tets.empty()) {
+    out << fmt::format("Tetrahedra\n{}\n", m.tets.size());
+    for (const auto& t : m.tets) out << fmt::format("{} {} {} {} 0\n", t[0] + 1, t[1] + 1, t[2] + 1, t[3] + 1);
+  }
+  if (!m.hexes.empty()) {
+    out << fmt::format("Hexahedra\n{}\n", m.hexes.size());
+    for (const auto& h : m.hexes) out << fmt::format("{} {} {} {} {} {} {} {} 0\n", h[0] + 1, h[1] + 1, h[2] + 1, h[3] + 1, h[4] + 1, h[5] + 1, h[6] + 1, h[7] + 1);
+  }
+  out << "End\n";
 }
 
 TetMesh read_tet_mesh(const std::string& file) {

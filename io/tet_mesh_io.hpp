@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ struct TetMesh {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::uint32_t, 4>> tets;  // 0-based point indices
   std::vector<int> tet_lines;                      // 1-based line of each tetrahedron
+  /// medit's Hexahedra (0-based, medit order: a bottom quad, then the top
+  /// quad above it vertex by vertex). Read, not used by the tet readers'
+  /// callers; written by the recombination.
+  std::vector<std::array<std::uint32_t, 8>> hexes;
 };
 
 /// TetGen: `file` is the .node or the .ele file; the other one has the
@@ -26,6 +31,9 @@ TetMesh read_tetgen(const std::string& file);
 /// medit .mesh (ASCII): Vertices and Tetrahedra sections, 1-based;
 /// other sections are skipped by their counts.
 TetMesh read_medit(const std::string& file);
+/// medit .mesh (ASCII, MeshVersionFormatted 1): Vertices, Tetrahedra and
+/// Hexahedra (each written only when not empty), reference 0 everywhere.
+void write_medit(std::ostream& out, const TetMesh& m);
 /// By extension: .node, .ele, .mesh.
 TetMesh read_tet_mesh(const std::string& file);
 bool is_tet_mesh_path(const std::string& file);

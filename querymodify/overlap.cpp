@@ -44,13 +44,16 @@ AllMatches all_matches(const Map& input, const QueryTrie& trie) {
 }
 
 std::vector<QueryMatch> global_matches(const Map& input, const QueryTrie& trie, const std::function<double(const QueryMatch&)>& score) {
-  const auto all = all_matches(input, trie);
+  return global_matches(all_matches(input, trie), input.size(), score);
+}
+
+std::vector<QueryMatch> global_matches(const AllMatches& all, std::size_t darts, const std::function<double(const QueryMatch&)>& score) {
   std::vector<double> s;
   for (const auto& m : all.distinct) s.push_back(score(m));
   std::vector<std::size_t> order(all.distinct.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s[a] > s[b]; });
-  std::vector<bool> used(input.size(), false);
+  std::vector<bool> used(darts, false);
   std::vector<QueryMatch> out;
   for (std::size_t k : order) {
     const auto& m = all.distinct[k];

@@ -31,6 +31,9 @@ AllMatches all_matches(const Map& input, const QueryTrie& trie);
 /// score (ties: the order found), each selected unless it conflicts with
 /// one selected before.
 std::vector<QueryMatch> global_matches(const Map& input, const QueryTrie& trie, const std::function<double(const QueryMatch&)>& score);
+/// The same on matches already found (`all` from all_matches on a map of
+/// `darts` darts).
+std::vector<QueryMatch> global_matches(const AllMatches& all, std::size_t darts, const std::function<double(const QueryMatch&)>& score);
 
 /// True if the two matches share a matched dart.
 bool conflict(const QueryMatch& a, const QueryMatch& b);

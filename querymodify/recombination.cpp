@@ -1,6 +1,7 @@
 #include "querymodify/recombination.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
 
@@ -47,35 +48,81 @@ double scaled_jacobian(const std::array<std::array<double, 3>, 8>& p) {
   return sum >= 0 ? lo : -hi;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The best reading of a match as a hexahedron: a pattern whose triangles
+// pair into quads in several ways is read by the pairing that fits the
+// geometry. Without points, the first reading and NaN.
+std::pair<std::array<std::uint32_t, 8>, double> best_reading(const HexQuery& q, const std::array<std::uint32_t, 8>& c,
+                                                             const std::vector<std::array<double, 3>>* points) {
+  std::array<std::uint32_t, 8> best_corners{};
+  double best = -2;
+  for (const auto& reading : q.readings) {
+    std::array<std::uint32_t, 8> corners{};
+    for (int v = 0; v < 8; ++v) corners[reading[static_cast<std::size_t>(v)]] = c[static_cast<std::size_t>(v)];
+    if (!points) return {corners, std::nan("")};
+    std::array<std::array<double, 3>, 8> p{};
+    for (int v = 0; v < 8; ++v) p[static_cast<std::size_t>(v)] = (*points)[corners[static_cast<std::size_t>(v)]];
+    const double j = scaled_jacobian(p);
+    if (j > best) best = j, best_corners = corners;
+  }
+  // Right-handed (x, y, z at corner 0 a positive frame), as mesh formats
+  // want it: otherwise mirror x.
+  if (points) {
+    const auto& p = *points;
+    auto at = [&](int v) { return p[best_corners[static_cast<std::size_t>(v)]]; };
+    double u[3], v[3], w[3];
+    for (int k = 0; k < 3; ++k) u[k] = at(1)[k] - at(0)[k], v[k] = at(2)[k] - at(0)[k], w[k] = at(4)[k] - at(0)[k];
+    const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+    if (det < 0) {
+      auto mirrored = best_corners;
+      for (std::size_t k = 0; k < 8; ++k) mirrored[k] = best_corners[k ^ 1];
+      best_corners = mirrored;
+    }
+  }
+  return {best_corners, best};
+}
+
+}  // namespace
+
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy, const std::vector<std::array<double, 3>>* points) {
   QueryTrie trie;
   for (std::size_t k = 0; k < queries.size(); ++k) trie.add(queries[k].word, static_cast<int>(k));
+  std::vector<std::vector<std::uint32_t>> corners;
+  for (const auto& q : queries) corners.push_back(query_corners(q));
+  auto reading = [&](const QueryMatch& m) {
+    const HexQuery& q = queries[static_cast<std::size_t>(m.query)];
+    return best_reading(q, match_corners(q, corners[static_cast<std::size_t>(m.query)], m, mesh.vertex), points);
+  };
   Recombination r;
+  auto t = Clock::now();
   const auto all = all_matches(mesh.map, trie);
   r.raw_matches = all.raw;
   r.distinct_matches = all.distinct.size();
+  r.match_seconds = since(t);
+  t = Clock::now();
   if (strategy == Strategy::greedy) {
     r.selected = greedy_matches(mesh.map, trie);
   } else {
-    std::vector<std::vector<std::uint32_t>> corners;
-    if (points)
-      for (const auto& q : queries) corners.push_back(query_corners(q));
-    r.selected = global_matches(mesh.map, trie, [&](const QueryMatch& m) {
+    r.selected = global_matches(all, mesh.map.size(), [&](const QueryMatch& m) {
       if (!points) return -static_cast<double>(m.darts.size());  // fewer tetrahedra first
-      // The best of the query's readings as a hexahedron: a pattern whose
-      // triangles pair into quads in several ways is scored by the pairing
-      // that fits the geometry.
-      const HexQuery& q = queries[static_cast<std::size_t>(m.query)];
-      const auto c = match_corners(q, corners[static_cast<std::size_t>(m.query)], m, mesh.vertex);
-      double best = -2;
-      for (const auto& reading : q.readings) {
-        std::array<std::array<double, 3>, 8> p{};
-        for (int v = 0; v < 8; ++v) p[reading[static_cast<std::size_t>(v)]] = (*points)[c[static_cast<std::size_t>(v)]];
-        best = std::max(best, scaled_jacobian(p));
-      }
-      return best;
+      return reading(m).second;
     });
   }
+  r.select_seconds = since(t);
+  std::vector<bool> used(mesh.tets.size(), false);
+  for (const auto& m : r.selected) {
+    const auto [c, quality] = reading(m);
+    r.hex_corners.push_back(c);
+    r.quality.push_back(quality);
+    for (Dart d : m.darts) used[d / 12] = true;
+  }
+  for (std::size_t k = 0; k < used.size(); ++k)
+    if (!used[k]) r.remaining_tets.push_back(k);
+  t = Clock::now();
   // Merge the selected matches; renumberings shift later matches' darts.
   std::vector<Dart> where(mesh.map.size());
   for (Dart d = 0; d < where.size(); ++d) where[d] = d;
@@ -94,10 +141,9 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
     }
   }
   mesh.vertex.resize(mesh.map.size());
+  r.merge_seconds = since(t);
   r.hexes = r.selected.size();
-  std::size_t matched_tets = 0;
-  for (const auto& m : r.selected) matched_tets += m.darts.size() / 12;
-  r.tets = mesh.tets.size() - matched_tets;
+  r.tets = r.remaining_tets.size();
   return r;
 }
 

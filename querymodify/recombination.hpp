@@ -35,7 +35,18 @@ double scaled_jacobian(const std::array<std::array<double, 3>, 8>& corner);
 
 struct Recombination {
   std::size_t raw_matches = 0, distinct_matches = 0, hexes = 0, tets = 0;
-  std::vector<QueryMatch> selected;
+  std::vector<QueryMatch> selected;  // darts of the input map
+  /// Per selected match: the mesh vertex at each cube corner (v = x + 2y +
+  /// 4z) under its best reading, right-handed at corner 0 (mirrored in x
+  /// if needed), and that reading's scaled Jacobian (NaN without points;
+  /// then the first reading, as it comes).
+  std::vector<std::array<std::uint32_t, 8>> hex_corners;
+  std::vector<double> quality;
+  /// The input tetrahedra (indices into mesh.tets) left as tetrahedra.
+  std::vector<std::size_t> remaining_tets;
+  /// Wall-clock seconds: every match (raw and distinct), the selection,
+  /// the merges.
+  double match_seconds = 0, select_seconds = 0, merge_seconds = 0;
 };
 
 /// Finds and selects hexes in `mesh` (points give the global strategy its

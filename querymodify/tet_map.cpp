@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 
 namespace dartcheck::querymodify {
@@ -35,95 +34,135 @@ Key face_key(const std::array<std::uint32_t, 4>& t, int f) {
   return sorted(t[static_cast<std::size_t>(face_vertices[f][0])], t[static_cast<std::size_t>(face_vertices[f][1])], t[static_cast<std::size_t>(face_vertices[f][2])]);
 }
 
-// True if tetrahedron t, as oriented, traverses u -> v on one of its faces
-// with vertex set k.
-bool traverses(const std::array<std::uint32_t, 4>& t, const Key& k, std::uint32_t u, std::uint32_t v) {
+// Face f2 and position j2 of the other face of a tetrahedron along the
+// edge that face f traverses at position j (in the opposite direction).
+struct Across {
+  int f, j;
+};
+constexpr auto across_table = [] {
+  std::array<std::array<Across, 3>, 4> out{};
   for (int f = 0; f < 4; ++f)
-    if (face_key(t, f) == k)
-      for (int j = 0; j < 3; ++j)
-        if (t[static_cast<std::size_t>(face_vertices[f][j])] == u && t[static_cast<std::size_t>(face_vertices[f][(j + 1) % 3])] == v) return true;
-  return false;
+    for (int j = 0; j < 3; ++j) {
+      const int a = face_vertices[f][j], b = face_vertices[f][(j + 1) % 3];
+      for (int g = 0; g < 4; ++g)
+        for (int k = 0; k < 3; ++k)
+          if (g != f && face_vertices[g][k] == b && face_vertices[g][(k + 1) % 3] == a) out[static_cast<std::size_t>(f)][static_cast<std::size_t>(j)] = {g, k};
+    }
+  return out;
+}();
+
+std::uint32_t corner(const std::array<std::uint32_t, 4>& t, int f, int j) { return t[static_cast<std::size_t>(face_vertices[f][j % 3])]; }
+
+// The position at which face f of t traverses u -> v, -1 if it does not.
+int traversal(const std::array<std::uint32_t, 4>& t, int f, std::uint32_t u, std::uint32_t v) {
+  for (int j = 0; j < 3; ++j)
+    if (corner(t, f, j) == u && corner(t, f, j + 1) == v) return j;
+  return -1;
 }
+
+struct FaceUse {
+  Key key;
+  std::uint32_t tet;
+  int face;
+  bool operator<(const FaceUse& o) const { return key < o.key || (key == o.key && tet < o.tet); }
+};
 
 }  // namespace
 
 TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, const std::vector<std::array<double, 3>>* points) {
   TetMap out;
   out.tets = input;
-  // Faces by vertex set: the tetrahedra that have them.
-  std::map<Key, std::vector<std::uint32_t>> faces;
-  for (std::uint32_t t = 0; t < out.tets.size(); ++t)
-    for (int f = 0; f < 4; ++f) faces[face_key(out.tets[t], f)].push_back(t);
-  for (const auto& [k, uses] : faces)
-    if (uses.size() > 2) throw std::invalid_argument(fmt::format("the face {} {} {} is shared by {} tetrahedra (at most 2)", k[0], k[1], k[2], uses.size()));
+  const auto n = static_cast<std::uint32_t>(out.tets.size());
+  // Faces by vertex set (sorted, so each shared face is two neighbours):
+  // the pairs of tetrahedra that share a face.
+  std::vector<FaceUse> uses;
+  uses.reserve(4 * std::size_t{n});
+  for (std::uint32_t t = 0; t < n; ++t)
+    for (int f = 0; f < 4; ++f) uses.push_back({face_key(out.tets[t], f), t, f});
+  std::sort(uses.begin(), uses.end());
+  std::vector<std::pair<std::size_t, std::size_t>> shared;  // indices into uses
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    if (j - i > 2) {
+      const Key& k = uses[i].key;
+      throw TetMapError(uses[i + 2].tet, fmt::format("the face {} {} {} is shared by {} tetrahedra (at most 2)", k[0], k[1], k[2], j - i));
+    }
+    if (j - i == 2) shared.emplace_back(i, i + 1);
+    i = j;
+  }
+  // Faces are found again by vertex set: reflecting a tetrahedron (swapping
+  // its last two vertices) permutes its faces.
+  auto face_with = [&](std::uint32_t t, const Key& k) {
+    for (int f = 0; f < 4; ++f)
+      if (face_key(out.tets[t], f) == k) return f;
+    return -1;
+  };
+  // Two tetrahedra sharing a face must traverse it in opposite directions.
+  auto opposite = [&](const FaceUse& a, const FaceUse& b) {
+    const auto& x = out.tets[a.tet];
+    const int fa = face_with(a.tet, a.key);
+    return traversal(out.tets[b.tet], face_with(b.tet, b.key), corner(x, fa, 1), corner(x, fa, 0)) >= 0;
+  };
   if (points) {
-    for (std::uint32_t t = 0; t < out.tets.size(); ++t) {
+    for (std::uint32_t t = 0; t < n; ++t) {
       const double o = orientation(out.tets[t], *points);
-      if (o == 0) throw std::invalid_argument(fmt::format("tetrahedron {} is flat", t));
+      if (o == 0) throw TetMapError(t, fmt::format("tetrahedron {} is flat", t));
       if (o < 0) std::swap(out.tets[t][2], out.tets[t][3]);
     }
+    for (const auto& [a, b] : shared)
+      if (!opposite(uses[a], uses[b]))
+        throw TetMapError(uses[b].tet, fmt::format("tetrahedra {} and {} lie on the same side of their shared face (the mesh folds over)", uses[a].tet, uses[b].tet));
   } else {
-    // Propagate: two tetrahedra sharing a face traverse it in opposite
-    // directions.
-    std::vector<bool> fixed(out.tets.size(), false);
-    for (std::uint32_t root = 0; root < out.tets.size(); ++root) {
+    // Propagate an orientation from each component's first tetrahedron.
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> around(n);  // (my use, the other's use)
+    for (const auto& [a, b] : shared) {
+      around[uses[a].tet].emplace_back(a, b);
+      around[uses[b].tet].emplace_back(b, a);
+    }
+    std::vector<bool> fixed(n, false);
+    for (std::uint32_t root = 0; root < n; ++root) {
       if (fixed[root]) continue;
       fixed[root] = true;
       std::vector<std::uint32_t> stack{root};
       while (!stack.empty()) {
         const std::uint32_t t = stack.back();
         stack.pop_back();
-        for (int f = 0; f < 4; ++f) {
-          const auto& x = out.tets[t];
-          const Key k = face_key(x, f);
-          const std::uint32_t u = x[static_cast<std::size_t>(face_vertices[f][0])], v = x[static_cast<std::size_t>(face_vertices[f][1])];
-          for (std::uint32_t s : faces.at(k)) {
-            if (s == t) continue;
-            const bool opposite = traverses(out.tets[s], k, v, u);
-            if (fixed[s] && !opposite) throw std::invalid_argument(fmt::format("the mesh is not orientable (tetrahedra {} and {})", t, s));
-            if (!fixed[s]) {
-              if (!opposite) std::swap(out.tets[s][2], out.tets[s][3]);
-              fixed[s] = true;
-              stack.push_back(s);
-            }
+        for (const auto& [mine, theirs] : around[t]) {
+          const std::uint32_t s2 = uses[theirs].tet;
+          if (opposite(uses[mine], uses[theirs])) {
+            if (!fixed[s2]) fixed[s2] = true, stack.push_back(s2);
+            continue;
           }
+          if (fixed[s2]) throw TetMapError(s2, fmt::format("the mesh is not orientable (tetrahedra {} and {})", t, s2));
+          std::swap(out.tets[s2][2], out.tets[s2][3]);
+          fixed[s2] = true;
+          stack.push_back(s2);
         }
       }
     }
   }
   Map& m = out.map;
-  m = Map(Model::open_omap(3), 12 * out.tets.size());
+  m = Map(Model::open_omap(3), 12 * std::size_t{n});
   out.vertex.resize(m.size());
   auto dart = [](std::uint32_t t, int f, int j) { return static_cast<Dart>(12 * t + 3 * static_cast<std::uint32_t>(f) + static_cast<std::uint32_t>(j)); };
-  // Directed edge of a tetrahedron -> its dart.
-  std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, Dart> in_tet;
-  for (std::uint32_t t = 0; t < out.tets.size(); ++t)
+  for (std::uint32_t t = 0; t < n; ++t)
     for (int f = 0; f < 4; ++f)
       for (int j = 0; j < 3; ++j) {
-        const auto& x = out.tets[t];
-        const std::uint32_t u = x[static_cast<std::size_t>(face_vertices[f][j])], v = x[static_cast<std::size_t>(face_vertices[f][(j + 1) % 3])];
-        out.vertex[dart(t, f, j)] = u;
+        out.vertex[dart(t, f, j)] = corner(out.tets[t], f, j);
         m.sew(1, dart(t, f, j), dart(t, f, (j + 1) % 3));
-        in_tet[{t, u, v}] = dart(t, f, j);
-      }
-  for (std::uint32_t t = 0; t < out.tets.size(); ++t)
-    for (int f = 0; f < 4; ++f)
-      for (int j = 0; j < 3; ++j) {
-        const Dart d = dart(t, f, j);
-        const std::uint32_t u = out.vertex[d], v = out.vertex[m.link(1, d)];
-        m.sew(2, d, in_tet.at({t, v, u}));  // the other face of t along u-v
+        const Across a = across_table[static_cast<std::size_t>(f)][static_cast<std::size_t>(j)];
+        if (dart(t, f, j) < dart(t, a.f, a.j)) m.sew(2, dart(t, f, j), dart(t, a.f, a.j));
       }
   // β3: the dart u -> v of one tetrahedron and v -> u of the other, on the
   // face they share.
-  for (const auto& [k, uses] : faces) {
-    if (uses.size() != 2) continue;
-    for (int f = 0; f < 4; ++f) {
-      if (face_key(out.tets[uses[0]], f) != k) continue;
-      for (int j = 0; j < 3; ++j) {
-        const Dart d = dart(uses[0], f, j);
-        const std::uint32_t u = out.vertex[d], v = out.vertex[m.link(1, d)];
-        m.sew(3, d, in_tet.at({uses[1], v, u}));
-      }
+  for (const auto& [a, b] : shared) {
+    const Key& k = uses[a].key;
+    const std::uint32_t t0 = uses[a].tet, t1 = uses[b].tet;
+    const int f0 = face_with(t0, k), f1 = face_with(t1, k);
+    for (int j = 0; j < 3; ++j) {
+      const int j1 = traversal(out.tets[t1], f1, corner(out.tets[t0], f0, j + 1), corner(out.tets[t0], f0, j));
+      m.sew(3, dart(t0, f0, j), dart(t1, f1, j1));
     }
   }
   return out;

@@ -122,6 +122,28 @@ TEST(TetMap, EverySubdivisionIsAValidBall) {
   }
 }
 
+// Meshes that make no 3-map name the tetrahedron that shows it.
+TEST(TetMap, BadMeshesNameATetrahedron) {
+  const std::vector<std::array<double, 3>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, {1, 1, 1}, {0.2, 0.2, 0.2}};
+  auto tet_of_error = [](auto&& build) -> long {
+    try {
+      build();
+    } catch (const TetMapError& e) {
+      return static_cast<long>(e.tet);
+    }
+    return -1;
+  };
+  // Face 0 1 2 in three tetrahedra: the third is named.
+  EXPECT_EQ(tet_of_error([&] { build_tet_map({{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}}, &p); }), 2);
+  // Vertex 6 inside tetrahedron 0: 0 1 2 6 lies on the same side of 0 1 2.
+  EXPECT_EQ(tet_of_error([&] { build_tet_map({{0, 1, 2, 3}, {0, 1, 2, 6}}, &p); }), 1);
+  // Flat: four points in one plane.
+  const std::vector<std::array<double, 3>> flat{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  EXPECT_EQ(tet_of_error([&] { build_tet_map({{0, 1, 2, 3}}, &flat); }), 0);
+  // Without points the same pair orients fine (it is a valid complex).
+  EXPECT_TRUE(check_3map(build_tet_map({{0, 1, 2, 3}, {0, 1, 2, 6}}).map).valid());
+}
+
 // The corrected delete: removing the centre tetrahedra of a Kuhn hex frees
 // the faces its neighbours shared with it.
 TEST(Modify, DeleteFreesTheNeighbours) {
@@ -293,6 +315,30 @@ void every_hex_found(const HexGrid& g, const std::vector<HexQuery>& queries) {
       // strategy recovers every one of them.
       EXPECT_EQ(r.hexes, g.hex_tets.size());
       EXPECT_EQ(r.tets, 0u);
+      // Each hex is read as its grid cube: corner v = x + 2y + 4z sits at
+      // the cube's minimum plus (x, y, z) (or a mirror of it), quality 1.
+      std::set<std::set<std::uint32_t>> cubes;
+      for (const auto& tets : g.hex_tets) {
+        std::set<std::uint32_t> v;
+        for (auto tt : tets) v.insert(g.tets[tt].begin(), g.tets[tt].end());
+        cubes.insert(v);
+      }
+      for (std::size_t h = 0; h < r.hexes; ++h) {
+        const auto& c = r.hex_corners[h];
+        EXPECT_TRUE(cubes.count(std::set<std::uint32_t>(c.begin(), c.end())));
+        EXPECT_NEAR(r.quality[h], 1.0, 1e-12);
+        for (int v = 0; v < 8; ++v)
+          for (int axis = 0; axis < 3; ++axis) {
+            const auto& a = g.points[c[static_cast<std::size_t>(v)]];
+            const auto& b = g.points[c[static_cast<std::size_t>(v ^ (1 << axis))]];
+            double length = 0;
+            for (int k = 0; k < 3; ++k) length += (a[k] - b[k]) * (a[k] - b[k]);
+            EXPECT_NEAR(length, 1.0, 1e-12) << "corners " << v << " and " << (v ^ (1 << axis)) << " are not a cube edge";
+          }
+      }
+    } else {
+      EXPECT_EQ(r.hex_corners.size(), r.hexes);
+      EXPECT_EQ(r.remaining_tets.size(), r.tets);
     }
   }
 }
