@@ -94,6 +94,24 @@ struct InferCommand {
 /// none, 3 if an inferred rule does not give the after map back (App. A).
 int infer(const InferCommand& o);
 
+struct RecombineOptions {
+  std::string mesh, strategy = "global", output, format = "text";
+};
+/// Tetrahedra -> hexahedra (001 Sec. 7.1); 3 if the result is not a valid
+/// map of 36 darts per hex and 12 per tetrahedron.
+int recombine(const RecombineOptions& o);
+
+struct QueryOptions {
+  std::string map, model = "2-gmap", catalog, free = "any", strategy = "all", format = "text";
+  std::vector<std::string> queries;
+  bool hex = false;
+  Dart start = 0;
+  std::size_t limit = 20;
+};
+/// Query words (001 Sec. 5) on a map: every match, or a greedy/global
+/// selection; 0 if something matched, 1 if nothing did.
+int query(const QueryOptions& o);
+
 struct WordsOptions {
   std::string model, word;
   std::optional<std::string> other;

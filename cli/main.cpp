@@ -135,6 +135,26 @@ int main(int argc, char** argv) {
   inf->add_option("-o,--output", infer.output, "write the rules: .yaml catalog (maps, rules, examples that `run` re-checks) or Jerboa .jme");
   inf->add_option("--format", infer.format, "text or json")->capture_default_str();
 
+  cli::RecombineOptions recombine;
+  auto* rc = app.add_subcommand("recombine", "Recombine a tetrahedral mesh into hexahedra by query-modify (001 Sec. 7.1) and check the result");
+  rc->add_option("mesh", recombine.mesh, "tetrahedral mesh: TetGen .node/.ele or medit .mesh")->required();
+  rc->add_option("--strategy", recombine.strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")->capture_default_str();
+  rc->add_option("-o,--output", recombine.output, "write the hexes and the remaining tetrahedra as a medit .mesh");
+  rc->add_option("--format", recombine.format, "text or json")->capture_default_str();
+
+  cli::QueryOptions query;
+  auto* qy = app.add_subcommand("query", "Find query maps in a map by query words (001 Sec. 5): every match, or a selection without overlap");
+  qy->add_option("map", query.map, "the map: map file (.yaml, .jba, .off, .obj), tetrahedral mesh (.node, .ele, .mesh), catalog map name or shape")->required();
+  qy->add_option("--query", query.queries, "a query map, same forms (repeat); connected");
+  qy->add_flag("--hex", query.hex, "add the 322 hex patterns of the tet -> hex recombination (open 3-O-maps)");
+  qy->add_option("--start", query.start, "the query dart labeled 1")->capture_default_str()->check(counts);
+  qy->add_option("--free", query.free, "condition on the queries' free links: any (*), boundary (ε), interior (ε̄) or no-link (↔)")->capture_default_str();
+  qy->add_option("--strategy", query.strategy, "all (every distinct match), greedy or global (largest first), without overlap")->capture_default_str();
+  qy->add_option("--catalog", query.catalog, "catalog whose maps the map and queries may name");
+  qy->add_option("--model", query.model, "model for meshes and shapes")->capture_default_str();
+  qy->add_option("--limit", query.limit, "matches printed")->capture_default_str()->check(counts);
+  qy->add_option("--format", query.format, "text or json")->capture_default_str();
+
   cli::ReportOptions report;
   auto* rp = app.add_subcommand("report", "Write an HTML report of a catalog: verdict table, every rule drawn, every failure pointed at");
   rp->add_option("catalog", report.catalog, "YAML catalog or Jerboa .jme modeler")->required();
@@ -165,6 +185,8 @@ int main(int argc, char** argv) {
     if (*w) return cli::words(words);
     if (*ev) return cli::events_command(events);
     if (*inf) return cli::infer(infer);
+    if (*rc) return cli::recombine(recombine);
+    if (*qy) return cli::query(query);
     if (*c) return cli::check(check);
     if (*f) return cli::fuzz(fuzz);
     if (*p) return cli::prove(prove);

@@ -1,5 +1,7 @@
 #include "querymodify/annotation.hpp"
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace dartcheck::querymodify {
@@ -11,7 +13,7 @@ constexpr std::uint32_t empty_mark = 0xFFFFFFFF;  // annotated ∅
 // The table of the header, for one letter. `mark` is the annotation of
 // d_i (0: none, empty_mark: ∅, else a label); returns what to annotate d_i
 // with (0: nothing), or nullopt for a violation.
-std::optional<std::uint32_t> check(std::uint32_t letter, bool free, std::uint32_t mark, bool label_taken) {
+[[gnu::always_inline]] inline std::optional<std::uint32_t> check(std::uint32_t letter, bool free, std::uint32_t mark, bool label_taken) {
   if (letter == 0 || letter == static_cast<std::uint32_t>(Constraint::any)) return 0;  // ε in a plain word, or '*'
   if (letter == static_cast<std::uint32_t>(Constraint::boundary)) return free ? std::optional<std::uint32_t>(0) : std::nullopt;
   if (letter == static_cast<std::uint32_t>(Constraint::interior)) return free ? std::nullopt : std::optional<std::uint32_t>(0);
@@ -66,17 +68,25 @@ std::optional<QueryMatch> annotate(const Map& input, const QueryWord& w, Dart st
 void QueryTrie::add(const QueryWord& w, int id) {
   if (dims_.empty()) dims_ = w.dims;
   if (w.dims != dims_) throw std::invalid_argument("a prefix tree holds words of one model");
+  std::uint32_t labels = 1;  // label 1 is the start dart
+  for (std::uint32_t letter : w.letters)
+    if (!is_constraint(letter) && letter > labels) {
+      if (letter != labels + 1) throw std::invalid_argument("a query word must number its labels in order of first use");
+      ++labels;
+    }
   std::uint32_t at = 0;
   for (std::uint32_t letter : w.letters) {
-    std::uint32_t next = 0;
-    for (std::uint32_t c : nodes_[at].children)
-      if (nodes_[c].letter == letter) next = c;
-    if (next == 0) {
-      next = static_cast<std::uint32_t>(nodes_.size());
-      nodes_.push_back(Node{letter, {}, {}});
-      nodes_[at].children.push_back(next);
+    auto& ch = nodes_[at].children;
+    auto it = std::lower_bound(ch.begin(), ch.end(), std::pair<std::uint32_t, std::uint32_t>{letter, 0});
+    if (it == ch.end() || it->first != letter) {
+      const auto next = static_cast<std::uint32_t>(nodes_.size());
+      it = ch.insert(it, {letter, next});
+      const std::uint32_t child = it->second;
+      nodes_.push_back(Node{});  // invalidates ch and it
+      at = child;
+      continue;
     }
-    at = next;
+    at = it->second;
   }
   nodes_[at].terminal.push_back(id);
   ++count_;
@@ -93,6 +103,23 @@ struct TrieSearch {
   const std::vector<bool>* blocked;
   std::vector<Dart> dart_of{no_dart};
   std::vector<QueryMatch>* out;
+  const ClassBound* bound = nullptr;
+  std::vector<bool> oriented;  // per letter: its dimension is a permutation (a fixed point is not free)
+  std::uint32_t classes = 0;   // distinct classes of the labeled darts
+  std::uint32_t labeled = 1;   // labels 1..labeled are taken (the start dart is 1)
+
+  // Counts dart d's class in; false (and nothing counted) if that would
+  // exceed the bound.
+  bool enter(Dart d) {
+    if (!bound) return true;
+    std::uint32_t& c = (*bound->count)[(*bound->class_of)[d]];
+    if (c == 0 && classes == bound->most) return false;
+    classes += c++ == 0;
+    return true;
+  }
+  void leave(Dart d) {
+    if (bound) classes -= --(*bound->count)[(*bound->class_of)[d]] == 0;
+  }
 
   std::uint32_t mark(Dart d) const { return blocked && (*blocked)[d] ? empty_mark : annotation[d]; }
 
@@ -103,16 +130,34 @@ struct TrieSearch {
       QueryMatch m{q, {dart_of.begin() + 1, dart_of.begin() + 1 + static_cast<std::ptrdiff_t>(depth / n)}};
       out->push_back(std::move(m));
     }
-    if (nodes[node].children.empty()) return;
+    const auto& children = nodes[node].children;
+    if (children.empty()) return;
     const std::uint32_t k = static_cast<std::uint32_t>(depth / n) + 1;
     const std::size_t i = depth % n;
     if (k >= dart_of.size() || dart_of[k] == no_dart) return;  // the word refers to a label not reached
     const Dart d = dart_of[k];
-    const bool free = is_free(input, dims[i], d);
-    const Dart di = free ? no_dart : input.link(dims[i], d);
+    const Dart e = input.link(dims[i], d);
+    const bool free = e == no_dart || (e == d && !oriented[i]);  // is_free, inlined
+    const Dart di = free ? no_dart : e;
     const std::uint32_t m = free ? unmatched : mark(di);
-    for (std::uint32_t child : nodes[node].children) {
-      const std::uint32_t c = nodes[child].letter;
+    // The letters the table can accept here, in increasing order (so the
+    // children are visited in order): a free link takes ε, '*', '↔' (and 0
+    // in a plain word); a label only the same label; an unannotated dart
+    // the next new label, '↔', 'ε̄', '*'; a ∅ dart '↔', 'ε̄', '*'.
+    constexpr auto nc = static_cast<std::uint32_t>(Constraint::no_connection), in = static_cast<std::uint32_t>(Constraint::interior),
+                   bd = static_cast<std::uint32_t>(Constraint::boundary), any = static_cast<std::uint32_t>(Constraint::any);
+    std::array<std::uint32_t, 4> wanted{};
+    std::size_t count = 0;
+    if (free) wanted = {0, nc, bd, any}, count = 4;
+    else if (m == empty_mark) wanted = {nc, in, any, 0}, count = 3;
+    else if (m == unmatched) wanted = {labeled + 1, nc, in, any}, count = 4;
+    else wanted = {m, in, any, 0}, count = 3;
+    auto it = children.begin();
+    for (std::size_t w = 0; w < count; ++w) {
+      it = std::lower_bound(it, children.end(), std::pair<std::uint32_t, std::uint32_t>{wanted[w], 0});
+      if (it == children.end()) break;
+      if (it->first != wanted[w]) continue;
+      const std::uint32_t c = it->first, child = it->second;
       const bool taken = !is_constraint(c) && c != 0 && c < dart_of.size() && dart_of[c] != no_dart;
       const auto result = check(c, free, m, taken);
       if (!result) continue;
@@ -120,13 +165,15 @@ struct TrieSearch {
         visit(nodes, child, depth + 1);
         continue;
       }
+      if (*result != empty_mark && !enter(di)) continue;
       annotation[di] = *result;
       if (*result != empty_mark) {
         if (dart_of.size() <= *result) dart_of.resize(*result + 1, no_dart);
         dart_of[*result] = di;
+        ++labeled;
       }
       visit(nodes, child, depth + 1);
-      if (*result != empty_mark) dart_of[*result] = no_dart;
+      if (*result != empty_mark) dart_of[*result] = no_dart, leave(di), --labeled;
       annotation[di] = unmatched;
     }
   }
@@ -134,16 +181,20 @@ struct TrieSearch {
 
 }  // namespace
 
-std::vector<QueryMatch> QueryTrie::match(const Map& input, Dart start, const std::vector<bool>* blocked, std::vector<std::uint32_t>* scratch) const {
+std::vector<QueryMatch> QueryTrie::match(const Map& input, Dart start, const std::vector<bool>* blocked, std::vector<std::uint32_t>* scratch,
+                                         const ClassBound* bound) const {
   std::vector<QueryMatch> out;
   if (blocked && (*blocked)[start]) return out;
   std::vector<std::uint32_t> local;
   std::vector<std::uint32_t>& annotation = scratch ? *scratch : local;
   if (annotation.size() < input.size()) annotation.resize(input.size(), unmatched);
-  TrieSearch s{input, dims_, annotation, blocked, {no_dart, start}, &out};
+  TrieSearch s{input, dims_, annotation, blocked, {no_dart, start}, &out, bound, {}};
+  for (Dim i : dims_) s.oriented.push_back(input.model().is_oriented(i));
+  if (!s.enter(start)) return out;
   annotation[start] = 1;
   s.visit(nodes_, 0, 0);
   annotation[start] = unmatched;
+  s.leave(start);
   return out;
 }
 

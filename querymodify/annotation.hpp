@@ -38,12 +38,28 @@ struct QueryMatch {
 /// beforehand: the greedy strategy's already matched darts.
 std::optional<QueryMatch> annotate(const Map& input, const QueryWord& w, Dart start, const std::vector<bool>* blocked = nullptr);
 
+/// A pruning bound for the prefix-tree search: input darts fall into
+/// classes (e.g. the mesh vertex a dart starts from), and no match of any
+/// query spans more than `most` classes, so a partial match that already
+/// spans more is abandoned. Sound for vertices and hex patterns: a
+/// query's darts at one vertex are joined by a path inside the query,
+/// whose image joins their images, so a match spans at most the query's 8
+/// vertices.
+struct ClassBound {
+  const std::vector<std::uint32_t>* class_of = nullptr;  // per input dart
+  std::uint32_t most = 0;
+  std::vector<std::uint32_t>* count = nullptr;  // per class, zero between calls (scratch)
+};
+
 /// Many query words in a prefix tree: words sharing a prefix are read
 /// together, and several queries may share one word (a terminal holds a
 /// list). All words must have the same letters (dimensions).
 class QueryTrie {
  public:
-  /// Adds the word of query `id`.
+  /// Adds the word of query `id`. The word must number its labels in
+  /// order of first use, as query_word() does (throws
+  /// std::invalid_argument otherwise): the search then knows that the only
+  /// new label allowed at any position is the next one.
   void add(const QueryWord& w, int id);
   std::size_t queries() const { return count_; }
   std::size_t nodes() const { return nodes_.size(); }
@@ -54,12 +70,13 @@ class QueryTrie {
   /// per input dart, all zero between calls: the search undoes what it
   /// writes, so a call costs the size of the search, not of the map.
   std::vector<QueryMatch> match(const Map& input, Dart start, const std::vector<bool>* blocked = nullptr,
-                                std::vector<std::uint32_t>* scratch = nullptr) const;
+                                std::vector<std::uint32_t>* scratch = nullptr, const ClassBound* bound = nullptr) const;
 
  private:
   struct Node {
-    std::uint32_t letter = 0;
-    std::vector<std::uint32_t> children;
+    /// (letter, node) sorted by letter: the input allows at most four
+    /// letters at a position, found by binary search.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> children;
     std::vector<int> terminal;  // queries whose word ends here
   };
   std::vector<Node> nodes_{Node{}};

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 #include <set>
+#include <thread>
+#include <unordered_set>
 
 namespace dartcheck::querymodify {
 
@@ -15,13 +17,13 @@ bool conflict(const QueryMatch& a, const QueryMatch& b) {
   return !both.empty();
 }
 
-std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie) {
+std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound) {
   std::vector<bool> blocked(input.size(), false);
   std::vector<std::uint32_t> scratch(input.size(), 0);
   std::vector<QueryMatch> out;
   for (Dart d = 0; d < input.size(); ++d) {
     if (blocked[d]) continue;
-    auto found = trie.match(input, d, &blocked, &scratch);
+    auto found = trie.match(input, d, &blocked, &scratch, bound);
     if (found.empty()) continue;
     for (Dart x : found.front().darts) blocked[x] = true;
     out.push_back(std::move(found.front()));
@@ -29,12 +31,38 @@ std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie) 
   return out;
 }
 
-AllMatches all_matches(const Map& input, const QueryTrie& trie) {
+AllMatches all_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound, unsigned threads) {
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, input.size() / 1024)));
+  // Contiguous ranges of start darts, concatenated in order afterwards:
+  // the same list as one thread would find.
+  std::vector<std::vector<QueryMatch>> found(threads);
+  auto work = [&](unsigned t) {
+    const Dart begin = static_cast<Dart>(input.size() * t / threads), end = static_cast<Dart>(input.size() * (t + 1) / threads);
+    std::vector<std::uint32_t> scratch(input.size(), 0), counts;
+    ClassBound mine;
+    if (bound) {
+      counts.assign(bound->count->size(), 0);
+      mine = {bound->class_of, bound->most, &counts};
+    }
+    for (Dart d = begin; d < end; ++d)
+      for (auto& m : trie.match(input, d, nullptr, &scratch, bound ? &mine : nullptr)) found[t].push_back(std::move(m));
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (auto& th : pool) th.join();
   AllMatches all;
-  std::vector<std::uint32_t> scratch(input.size(), 0);
-  std::set<std::pair<int, std::vector<Dart>>> seen;
-  for (Dart d = 0; d < input.size(); ++d)
-    for (auto& m : trie.match(input, d, nullptr, &scratch)) {
+  struct KeyHash {
+    std::size_t operator()(const std::pair<int, std::vector<Dart>>& k) const {
+      std::size_t h = std::hash<int>()(k.first);
+      for (Dart d : k.second) h = h * 0x9E3779B97F4A7C15ull + d;
+      return h;
+    }
+  };
+  std::unordered_set<std::pair<int, std::vector<Dart>>, KeyHash> seen;
+  for (auto& list : found)
+    for (auto& m : list) {
       ++all.raw;
       std::vector<Dart> key = m.darts;
       std::sort(key.begin(), key.end());

@@ -17,7 +17,7 @@ namespace dartcheck::querymodify {
 /// Greedy (Sec. 5.2.2 (1)): start darts in increasing order; from each dart
 /// not yet matched, the first match the tree finds is selected and its
 /// darts are blocked (annotated ∅) for the following searches.
-std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie);
+std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound = nullptr);
 
 /// Every match from every start dart, overlapping ones included, and how
 /// many were found before removing those with the same query and darts.
@@ -25,7 +25,9 @@ struct AllMatches {
   std::size_t raw = 0;
   std::vector<QueryMatch> distinct;
 };
-AllMatches all_matches(const Map& input, const QueryTrie& trie);
+/// The start darts are split between `threads` threads (0: one per core),
+/// each with its own scratch; the result does not depend on the split.
+AllMatches all_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound = nullptr, unsigned threads = 0);
 
 /// Global (Sec. 5.2.2 (2)): the distinct matches sorted by decreasing
 /// score (ties: the order found), each selected unless it conflicts with

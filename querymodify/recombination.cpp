@@ -97,15 +97,20 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
     const HexQuery& q = queries[static_cast<std::size_t>(m.query)];
     return best_reading(q, match_corners(q, corners[static_cast<std::size_t>(m.query)], m, mesh.vertex), points);
   };
+  // A hex spans 8 mesh vertices: the search abandons larger partial matches.
+  std::uint32_t vertices = 0;
+  for (auto v : mesh.vertex) vertices = std::max(vertices, v + 1);
+  std::vector<std::uint32_t> per_vertex(vertices, 0);
+  const ClassBound bound{&mesh.vertex, 8, &per_vertex};
   Recombination r;
   auto t = Clock::now();
-  const auto all = all_matches(mesh.map, trie);
+  const auto all = all_matches(mesh.map, trie, &bound);
   r.raw_matches = all.raw;
   r.distinct_matches = all.distinct.size();
   r.match_seconds = since(t);
   t = Clock::now();
   if (strategy == Strategy::greedy) {
-    r.selected = greedy_matches(mesh.map, trie);
+    r.selected = greedy_matches(mesh.map, trie, &bound);
   } else {
     r.selected = global_matches(all, mesh.map.size(), [&](const QueryMatch& m) {
       if (!points) return -static_cast<double>(m.darts.size());  // fewer tetrahedra first

@@ -1,0 +1,119 @@
+// dartcheck query: query words (001 Sec. 5) on any map: the queries are
+// maps themselves (map files, catalog maps, meshes, tetrahedral meshes,
+// and the 322 hex patterns with --hex), read from a start dart with a
+// boundary condition on their free links; every match, or a selection
+// without overlap (greedy or global).
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <chrono>
+#include <optional>
+
+#include "analysis/map_sources.hpp"
+#include "cli/commands.hpp"
+#include "cli/report_text.hpp"
+#include "cli/tet_input.hpp"
+#include "core/input_error.hpp"
+#include "io/catalog.hpp"
+#include "querymodify/hex_queries.hpp"
+#include "querymodify/overlap.hpp"
+
+namespace dartcheck::cli {
+
+using namespace querymodify;
+
+namespace {
+
+InputError command_line(const std::string& what) { return InputError("<command line>", 0, 0, what); }
+
+Map load(const std::string& target, const Model& model, const Catalog* catalog) {
+  if (is_tet_mesh_path(target)) return load_tet_input(target).map.map;
+  return analysis::resolve_map(target, model, catalog);
+}
+
+querymodify::Constraint parse_free(const std::string& s) {
+  if (s == "any") return querymodify::Constraint::any;
+  if (s == "boundary") return querymodify::Constraint::boundary;
+  if (s == "interior") return querymodify::Constraint::interior;
+  if (s == "no-link") return querymodify::Constraint::no_connection;
+  throw command_line(fmt::format("--free: expected any, boundary, interior or no-link, got '{}'", s));
+}
+
+struct NamedQuery {
+  std::string name;
+  QueryWord word;
+};
+
+}  // namespace
+
+int query(const QueryOptions& o) {
+  if (o.format != "text" && o.format != "json") throw command_line(fmt::format("--format: expected text or json, got '{}'", o.format));
+  if (o.strategy != "all" && o.strategy != "greedy" && o.strategy != "global")
+    throw command_line(fmt::format("--strategy: expected all, greedy or global, got '{}'", o.strategy));
+  const querymodify::Constraint free_links = parse_free(o.free);
+  if (o.queries.empty() && !o.hex) throw command_line("no query: give --query (repeatable) or --hex");
+  const auto model = Model::by_name(o.model);
+  if (!model) throw command_line(fmt::format("--model: unknown model '{}' (expected {})", o.model, Model::known_names()));
+  std::optional<Catalog> catalog;
+  if (!o.catalog.empty()) catalog = read_catalog(o.catalog);
+  const Catalog* cat = catalog ? &*catalog : nullptr;
+  const Map input = load(o.map, *model, cat);
+  std::vector<NamedQuery> queries;
+  for (const auto& target : o.queries) {
+    const Map q = load(target, *model, cat);
+    if (!(q.model() == input.model()))
+      throw command_line(fmt::format("--query {}: a {} query on a {} map (a query's letters are the map's dimensions)", target, q.model().name,
+                                     input.model().name));
+    if (o.start >= q.size()) throw command_line(fmt::format("--start {}: the query {} has {} darts", o.start, target, q.size()));
+    try {
+      queries.push_back({target, query_word(q, o.start, free_links)});
+    } catch (const std::invalid_argument& e) {
+      throw InputError(target, 0, 0, e.what());
+    }
+  }
+  if (o.hex) {
+    if (!(input.model() == Model::open_omap(3)))
+      throw command_line(fmt::format("--hex: the hex patterns are tetrahedral 3-maps; the map is a {}", input.model().name));
+    const auto& hex = hex_queries();
+    for (std::size_t k = 0; k < hex.size(); ++k) queries.push_back({fmt::format("hex-{}", k), hex[k].word});
+  }
+  QueryTrie trie;
+  for (std::size_t k = 0; k < queries.size(); ++k) trie.add(queries[k].word, static_cast<int>(k));
+  const auto t0 = std::chrono::steady_clock::now();
+  const AllMatches all = all_matches(input, trie);
+  std::vector<QueryMatch> shown;
+  if (o.strategy == "all") shown = all.distinct;
+  else if (o.strategy == "greedy") shown = greedy_matches(input, trie);
+  else shown = global_matches(all, input.size(), [](const QueryMatch& m) { return static_cast<double>(m.darts.size()); });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<std::size_t> per_query(queries.size(), 0);
+  for (const auto& m : all.distinct) ++per_query[static_cast<std::size_t>(m.query)];
+  const std::size_t listed = std::min(o.limit, shown.size());
+  if (o.format == "json") {
+    std::vector<std::string> qs, ms;
+    for (std::size_t k = 0; k < queries.size(); ++k)
+      qs.push_back(fmt::format("{{\"name\": \"{}\", \"darts\": {}, \"distinct_matches\": {}}}", json_escape(queries[k].name), queries[k].word.darts, per_query[k]));
+    for (std::size_t k = 0; k < listed; ++k)
+      ms.push_back(fmt::format("{{\"query\": \"{}\", \"darts\": [{}]}}", json_escape(queries[static_cast<std::size_t>(shown[k].query)].name),
+                               fmt::join(shown[k].darts, ", ")));
+    fmt::print("{{\"map\": \"{}\", \"model\": \"{}\", \"darts\": {}, \"free\": \"{}\", \"strategy\": \"{}\", \"raw_matches\": {}, \"distinct_matches\": {}, "
+               "\"selected\": {}, \"seconds\": {:.6f}, \"queries\": [{}], \"matches\": [{}]}}\n",
+               json_escape(o.map), input.model().name, input.size(), o.free, o.strategy, all.raw, all.distinct.size(), shown.size(), seconds,
+               fmt::join(qs, ", "), fmt::join(ms, ", "));
+  } else {
+    fmt::print("map       {}: {} darts ({})\n", o.map, input.size(), input.model().name);
+    fmt::print("queries   {} (free links {}; prefix tree of {} nodes)\n", queries.size(), constraint_symbol(free_links), trie.nodes());
+    for (std::size_t k = 0; k < queries.size(); ++k)
+      if (!o.hex || k < o.queries.size() || per_query[k] > 0)
+        fmt::print("  {:<24} {:>4} darts  {} distinct matches\n", queries[k].name, queries[k].word.darts, per_query[k]);
+    fmt::print("matches   {} raw (one per start dart), {} distinct ({:.3f} s)\n", all.raw, all.distinct.size(), seconds);
+    if (o.strategy != "all")
+      fmt::print("selected  {} without overlap ({})\n", shown.size(), o.strategy == "greedy" ? "greedy: from each dart in order" : "global: largest first");
+    for (std::size_t k = 0; k < listed; ++k)
+      fmt::print("  {}: darts {}\n", queries[static_cast<std::size_t>(shown[k].query)].name, fmt::join(shown[k].darts, " "));
+    if (listed < shown.size()) fmt::print("  ... {} more (--limit)\n", shown.size() - listed);
+  }
+  return all.distinct.empty() ? violation : ok;
+}
+
+}  // namespace dartcheck::cli
