@@ -23,7 +23,7 @@ namespace {
 
 // A closed quad torus of r x c faces: V = rc, E = 2rc, F = rc; 8rc darts in
 // a 2-G-map, 4rc in a 2-O-map.
-void write_torus_off(const std::string& path, int r, int c) {
+[[maybe_unused]] void write_torus_off(const std::string& path, int r, int c) {
   std::ofstream out(path);
   out << "OFF\n" << r * c << " " << r * c << " 0\n";
   const double pi = 3.14159265358979;

@@ -102,11 +102,12 @@ int query(const QueryOptions& o) {
                fmt::join(qs, ", "), fmt::join(ms, ", "));
   } else {
     fmt::print("map       {}: {} darts ({})\n", o.map, input.size(), input.model().name);
-    fmt::print("queries   {} (free links {}; prefix tree of {} nodes)\n", queries.size(), constraint_symbol(free_links), trie.nodes());
+    fmt::print("queries   {} ({}prefix tree of {} nodes)\n", queries.size(),
+               o.queries.empty() ? "" : fmt::format("free links of the --query maps {}; ", constraint_symbol(free_links)), trie.nodes());
     for (std::size_t k = 0; k < queries.size(); ++k)
       if (!o.hex || k < o.queries.size() || per_query[k] > 0)
         fmt::print("  {:<24} {:>4} darts  {} distinct matches\n", queries[k].name, queries[k].word.darts, per_query[k]);
-    fmt::print("matches   {} raw (one per start dart), {} distinct ({:.3f} s)\n", all.raw, all.distinct.size(), seconds);
+    fmt::print("matches   {} raw (found from every start dart), {} distinct ({:.3f} s)\n", all.raw, all.distinct.size(), seconds);
     if (o.strategy != "all")
       fmt::print("selected  {} without overlap ({})\n", shown.size(), o.strategy == "greedy" ? "greedy: from each dart in order" : "global: largest first");
     for (std::size_t k = 0; k < listed; ++k)

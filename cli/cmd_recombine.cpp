@@ -65,7 +65,7 @@ int recombine(const RecombineOptions& o) {
   t = Clock::now();
   const auto& queries = hex_queries();
   const double query_seconds = since(t);
-  const Recombination r = querymodify::recombine(in.map, queries, strategy, &in.mesh.points);
+  const Recombination r = querymodify::recombine(in.map, queries, strategy, &in.mesh.points, o.min_quality);
   t = Clock::now();
   const ValidityReport output_check = check_3map(in.map.map);
   const double output_check_seconds = since(t);
@@ -74,7 +74,6 @@ int recombine(const RecombineOptions& o) {
   std::vector<double> q = r.quality;
   std::sort(q.begin(), q.end());
   const double q_min = q.empty() ? NAN : q.front(), q_median = q.empty() ? NAN : q[q.size() / 2];
-  const std::size_t inverted = static_cast<std::size_t>(std::count_if(q.begin(), q.end(), [](double x) { return x <= 0; }));
   if (!o.output.empty()) {
     TetMesh out;
     out.points = in.mesh.points;
@@ -89,23 +88,23 @@ int recombine(const RecombineOptions& o) {
   if (o.format == "json") {
     fmt::print(
         "{{\"mesh\": \"{}\", \"points\": {}, \"tetrahedra\": {}, \"input_darts\": {}, \"strategy\": \"{}\", \"queries\": {}, "
-        "\"raw_matches\": {}, \"distinct_matches\": {}, \"hexes\": {}, \"remaining_tetrahedra\": {}, \"darts\": {}, \"expected_darts\": {}, "
-        "\"valid\": {}, \"quality_min\": {}, \"quality_median\": {}, \"inverted_hexes\": {}, \"seconds\": {{\"read\": {:.6f}, \"check_input\": {:.6f}, "
+        "\"raw_matches\": {}, \"distinct_matches\": {}, \"acceptable_matches\": {}, \"min_quality\": {}, \"hexes\": {}, \"remaining_tetrahedra\": {}, \"darts\": {}, \"expected_darts\": {}, "
+        "\"valid\": {}, \"quality_min\": {}, \"quality_median\": {}, \"seconds\": {{\"read\": {:.6f}, \"check_input\": {:.6f}, "
         "\"queries\": {:.6f}, \"match\": {:.6f}, \"select\": {:.6f}, \"merge\": {:.6f}, \"check_output\": {:.6f}, \"total\": {:.6f}}}, "
         "\"tets_per_second\": {:.1f}, \"peak_mib\": {:.1f}}}\n",
-        json_escape(o.mesh), in.mesh.points.size(), tets_in, darts_in, o.strategy, queries.size(), r.raw_matches, r.distinct_matches, r.hexes, r.tets,
+        json_escape(o.mesh), in.mesh.points.size(), tets_in, darts_in, o.strategy, queries.size(), r.raw_matches, r.distinct_matches, r.acceptable, o.min_quality, r.hexes, r.tets,
         in.map.map.size(), expected_darts, output_check.valid() ? "true" : "false", std::isnan(q_min) ? "null" : fmt::format("{:.6f}", q_min),
-        std::isnan(q_median) ? "null" : fmt::format("{:.6f}", q_median), inverted, read_seconds, input_check_seconds, query_seconds, r.match_seconds,
+        std::isnan(q_median) ? "null" : fmt::format("{:.6f}", q_median), read_seconds, input_check_seconds, query_seconds, r.match_seconds,
         r.select_seconds, r.merge_seconds, output_check_seconds, total, tets_per_second, peak_mib());
   } else {
     fmt::print("mesh        {}: {} points, {} tetrahedra ({:.3f} s)\n", o.mesh, in.mesh.points.size(), tets_in, read_seconds);
     fmt::print("input map   {} darts (12 per tetrahedron), a valid open 3-O-map ({:.3f} s)\n", darts_in, input_check_seconds);
     fmt::print("queries     {} hex patterns, both hands of the 174 classes ({:.3f} s)\n", queries.size(), query_seconds);
-    fmt::print("matches     {} raw, {} distinct ({:.3f} s)\n", r.raw_matches, r.distinct_matches, r.match_seconds);
+    fmt::print("matches     {} raw, {} distinct, {} with 8 distinct corners and scaled Jacobian above {} ({:.3f} s)\n", r.raw_matches,
+               r.distinct_matches, r.acceptable, o.min_quality, r.match_seconds);
     fmt::print("selection   {} hexes, {} ({:.3f} s)\n", r.hexes,
                strategy == Strategy::greedy ? "greedy: the first match from each dart in order" : "global: by scaled Jacobian, best first", r.select_seconds);
-    if (!q.empty())
-      fmt::print("quality     scaled Jacobian min {:.3f}, median {:.3f}; {} hexes at or below 0\n", q_min, q_median, inverted);
+    if (!q.empty()) fmt::print("quality     scaled Jacobian of the hexes: min {:.3f}, median {:.3f}\n", q_min, q_median);
     fmt::print("merge       {:.3f} s\n", r.merge_seconds);
     fmt::print("result      {} hexes, {} tetrahedra; {} darts ({} expected: 36 per hex + 12 per tetrahedron), {} ({:.3f} s)\n", r.hexes, r.tets,
                in.map.map.size(), expected_darts, output_check.valid() ? "valid" : "INVALID", output_check_seconds);

@@ -139,6 +139,9 @@ int main(int argc, char** argv) {
   auto* rc = app.add_subcommand("recombine", "Recombine a tetrahedral mesh into hexahedra by query-modify (001 Sec. 7.1) and check the result");
   rc->add_option("mesh", recombine.mesh, "tetrahedral mesh: TetGen .node/.ele or medit .mesh")->required();
   rc->add_option("--strategy", recombine.strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")->capture_default_str();
+  rc->add_option("--min-quality", recombine.min_quality, "smallest scaled Jacobian a hex must exceed (-1 keeps inverted ones)")
+      ->capture_default_str()
+      ->check(CLI::Range(-1.0, 1.0));
   rc->add_option("-o,--output", recombine.output, "write the hexes and the remaining tetrahedra as a medit .mesh");
   rc->add_option("--format", recombine.format, "text or json")->capture_default_str();
 

@@ -17,16 +17,19 @@ bool conflict(const QueryMatch& a, const QueryMatch& b) {
   return !both.empty();
 }
 
-std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound) {
+std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound,
+                                       const std::function<bool(const QueryMatch&)>& accept) {
   std::vector<bool> blocked(input.size(), false);
   std::vector<std::uint32_t> scratch(input.size(), 0);
   std::vector<QueryMatch> out;
   for (Dart d = 0; d < input.size(); ++d) {
     if (blocked[d]) continue;
-    auto found = trie.match(input, d, &blocked, &scratch, bound);
-    if (found.empty()) continue;
-    for (Dart x : found.front().darts) blocked[x] = true;
-    out.push_back(std::move(found.front()));
+    for (auto& m : trie.match(input, d, &blocked, &scratch, bound)) {
+      if (accept && !accept(m)) continue;
+      for (Dart x : m.darts) blocked[x] = true;
+      out.push_back(std::move(m));
+      break;
+    }
   }
   return out;
 }

@@ -17,7 +17,10 @@ namespace dartcheck::querymodify {
 /// Greedy (Sec. 5.2.2 (1)): start darts in increasing order; from each dart
 /// not yet matched, the first match the tree finds is selected and its
 /// darts are blocked (annotated ∅) for the following searches.
-std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound = nullptr);
+/// `accept` (optional) filters the candidates: the first accepted match is
+/// taken.
+std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound = nullptr,
+                                       const std::function<bool(const QueryMatch&)>& accept = {});
 
 /// Every match from every start dart, overlapping ones included, and how
 /// many were found before removing those with the same query and darts.

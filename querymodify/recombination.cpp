@@ -88,7 +88,8 @@ std::pair<std::array<std::uint32_t, 8>, double> best_reading(const HexQuery& q, 
 
 }  // namespace
 
-Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy, const std::vector<std::array<double, 3>>* points) {
+Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy, const std::vector<std::array<double, 3>>* points,
+                        double min_quality) {
   QueryTrie trie;
   for (std::size_t k = 0; k < queries.size(); ++k) trie.add(queries[k].word, static_cast<int>(k));
   std::vector<std::vector<std::uint32_t>> corners;
@@ -96,6 +97,13 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   auto reading = [&](const QueryMatch& m) {
     const HexQuery& q = queries[static_cast<std::size_t>(m.query)];
     return best_reading(q, match_corners(q, corners[static_cast<std::size_t>(m.query)], m, mesh.vertex), points);
+  };
+  auto acceptable = [&](const QueryMatch& m) {
+    const auto [c, quality] = reading(m);
+    auto sorted = c;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+    return !points || quality > min_quality;
   };
   // A hex spans 8 mesh vertices: the search abandons larger partial matches.
   std::uint32_t vertices = 0;
@@ -110,9 +118,14 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   r.match_seconds = since(t);
   t = Clock::now();
   if (strategy == Strategy::greedy) {
-    r.selected = greedy_matches(mesh.map, trie, &bound);
+    r.selected = greedy_matches(mesh.map, trie, &bound, acceptable);
+    for (const auto& m : all.distinct) r.acceptable += acceptable(m);
   } else {
-    r.selected = global_matches(all, mesh.map.size(), [&](const QueryMatch& m) {
+    AllMatches candidates;
+    for (const auto& m : all.distinct)
+      if (acceptable(m)) candidates.distinct.push_back(m);
+    r.acceptable = candidates.distinct.size();
+    r.selected = global_matches(candidates, mesh.map.size(), [&](const QueryMatch& m) {
       if (!points) return -static_cast<double>(m.darts.size());  // fewer tetrahedra first
       return reading(m).second;
     });

@@ -35,6 +35,9 @@ double scaled_jacobian(const std::array<std::array<double, 3>, 8>& corner);
 
 struct Recombination {
   std::size_t raw_matches = 0, distinct_matches = 0, hexes = 0, tets = 0;
+  /// Distinct matches that may be selected: 8 distinct corners, quality
+  /// above the threshold.
+  std::size_t acceptable = 0;
   std::vector<QueryMatch> selected;  // darts of the input map
   /// Per selected match: the mesh vertex at each cube corner (v = x + 2y +
   /// 4z) under its best reading, right-handed at corner 0 (mirrored in x
@@ -51,8 +54,11 @@ struct Recombination {
 
 /// Finds and selects hexes in `mesh` (points give the global strategy its
 /// score; without them the global order is by number of tetrahedra, then
-/// found order). Merges the selected matches in `mesh.map`.
+/// found order). Merges the selected matches in `mesh.map`. Either
+/// strategy skips a match whose corners are not 8 distinct mesh vertices
+/// (a pattern closed on itself: words see darts, not vertices) and, with
+/// points, one whose best scaled Jacobian is not above `min_quality`.
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
-                        const std::vector<std::array<double, 3>>* points = nullptr);
+                        const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0);
 
 }  // namespace dartcheck::querymodify
