@@ -123,58 +123,93 @@ struct TrieSearch {
 
   std::uint32_t mark(Dart d) const { return blocked && (*blocked)[d] ? empty_mark : annotation[d]; }
 
+  // Annotates di with `result` (0: nothing) for letter c; false if the
+  // class bound refuses it. Undone by undo().
+  bool apply(Dart di, std::uint32_t result) {
+    if (result == 0) return true;
+    if (result != empty_mark && !enter(di)) return false;
+    annotation[di] = result;
+    if (result != empty_mark) {
+      if (dart_of.size() <= result) dart_of.resize(result + 1, no_dart);
+      dart_of[result] = di;
+      ++labeled;
+    }
+    return true;
+  }
+  void undo(Dart di, std::uint32_t result) {
+    if (result == 0) return;
+    if (result != empty_mark) dart_of[result] = no_dart, leave(di), --labeled;
+    annotation[di] = unmatched;
+  }
+
+  // Walks a run of single-child nodes in a loop (most of the tree: words
+  // share little beyond their first tetrahedra), recursing only where the
+  // tree branches; what the run annotated is undone on the way out.
   void visit(const auto& nodes, std::uint32_t node, std::size_t depth) {
     const std::size_t n = dims.size();
-    for (int q : nodes[node].terminal) {
-      // Depth n * |D|: every label 1..|D| has its dart.
-      QueryMatch m{q, {dart_of.begin() + 1, dart_of.begin() + 1 + static_cast<std::ptrdiff_t>(depth / n)}};
-      out->push_back(std::move(m));
-    }
-    const auto& children = nodes[node].children;
-    if (children.empty()) return;
-    const std::uint32_t k = static_cast<std::uint32_t>(depth / n) + 1;
-    const std::size_t i = depth % n;
-    if (k >= dart_of.size() || dart_of[k] == no_dart) return;  // the word refers to a label not reached
-    const Dart d = dart_of[k];
-    const Dart e = input.link(dims[i], d);
-    const bool free = e == no_dart || (e == d && !oriented[i]);  // is_free, inlined
-    const Dart di = free ? no_dart : e;
-    const std::uint32_t m = free ? unmatched : mark(di);
-    // The letters the table can accept here, in increasing order (so the
-    // children are visited in order): a free link takes ε, '*', '↔' (and 0
-    // in a plain word); a label only the same label; an unannotated dart
-    // the next new label, '↔', 'ε̄', '*'; a ∅ dart '↔', 'ε̄', '*'.
-    constexpr auto nc = static_cast<std::uint32_t>(Constraint::no_connection), in = static_cast<std::uint32_t>(Constraint::interior),
-                   bd = static_cast<std::uint32_t>(Constraint::boundary), any = static_cast<std::uint32_t>(Constraint::any);
-    std::array<std::uint32_t, 4> wanted{};
-    std::size_t count = 0;
-    if (free) wanted = {0, nc, bd, any}, count = 4;
-    else if (m == empty_mark) wanted = {nc, in, any, 0}, count = 3;
-    else if (m == unmatched) wanted = {labeled + 1, nc, in, any}, count = 4;
-    else wanted = {m, in, any, 0}, count = 3;
-    auto it = children.begin();
-    for (std::size_t w = 0; w < count; ++w) {
-      it = std::lower_bound(it, children.end(), std::pair<std::uint32_t, std::uint32_t>{wanted[w], 0});
-      if (it == children.end()) break;
-      if (it->first != wanted[w]) continue;
-      const std::uint32_t c = it->first, child = it->second;
-      const bool taken = !is_constraint(c) && c != 0 && c < dart_of.size() && dart_of[c] != no_dart;
-      const auto result = check(c, free, m, taken);
-      if (!result) continue;
-      if (*result == 0) {
-        visit(nodes, child, depth + 1);
+    std::array<std::pair<Dart, std::uint32_t>, 64> local;  // undo records of the run (spills to `spill`)
+    std::vector<std::pair<Dart, std::uint32_t>> spill;
+    std::size_t done = 0;
+    auto record = [&](Dart di, std::uint32_t result) {
+      if (done < local.size()) local[done] = {di, result};
+      else spill.emplace_back(di, result);
+      ++done;
+    };
+    while (true) {
+      for (int q : nodes[node].terminal) {
+        // Depth n * |D|: every label 1..|D| has its dart.
+        QueryMatch m{q, {dart_of.begin() + 1, dart_of.begin() + 1 + static_cast<std::ptrdiff_t>(depth / n)}};
+        out->push_back(std::move(m));
+      }
+      const auto& children = nodes[node].children;
+      if (children.empty()) break;
+      const std::uint32_t k = static_cast<std::uint32_t>(depth / n) + 1;
+      const std::size_t i = depth % n;
+      if (k >= dart_of.size() || dart_of[k] == no_dart) break;  // the word refers to a label not reached
+      const Dart d = dart_of[k];
+      const Dart e = input.link(dims[i], d);
+      const bool free = e == no_dart || (e == d && !oriented[i]);  // is_free, inlined
+      const Dart di = free ? no_dart : e;
+      const std::uint32_t m = free ? unmatched : mark(di);
+      auto taken = [&](std::uint32_t c) { return !is_constraint(c) && c != 0 && c < dart_of.size() && dart_of[c] != no_dart; };
+      if (children.size() == 1) {
+        const std::uint32_t c = children.front().first;
+        const auto result = check(c, free, m, taken(c));
+        if (!result || !apply(di, *result)) break;
+        if (*result != 0) record(di, *result);
+        node = children.front().second;
+        ++depth;
         continue;
       }
-      if (*result != empty_mark && !enter(di)) continue;
-      annotation[di] = *result;
-      if (*result != empty_mark) {
-        if (dart_of.size() <= *result) dart_of.resize(*result + 1, no_dart);
-        dart_of[*result] = di;
-        ++labeled;
+      // The letters the table can accept here, in increasing order (so the
+      // children are visited in order): a free link takes ε, '*', '↔' (and
+      // 0 in a plain word); a label only the same label; an unannotated
+      // dart the next new label, '↔', 'ε̄', '*'; a ∅ dart '↔', 'ε̄', '*'.
+      constexpr auto nc = static_cast<std::uint32_t>(Constraint::no_connection), in = static_cast<std::uint32_t>(Constraint::interior),
+                     bd = static_cast<std::uint32_t>(Constraint::boundary), any = static_cast<std::uint32_t>(Constraint::any);
+      std::array<std::uint32_t, 4> wanted{};
+      std::size_t count = 0;
+      if (free) wanted = {0, nc, bd, any}, count = 4;
+      else if (m == empty_mark) wanted = {nc, in, any, 0}, count = 3;
+      else if (m == unmatched) wanted = {labeled + 1, nc, in, any}, count = 4;
+      else wanted = {m, in, any, 0}, count = 3;
+      auto it = children.begin();
+      for (std::size_t w = 0; w < count; ++w) {
+        it = std::lower_bound(it, children.end(), std::pair<std::uint32_t, std::uint32_t>{wanted[w], 0});
+        if (it == children.end()) break;
+        if (it->first != wanted[w]) continue;
+        const std::uint32_t c = it->first, child = it->second;
+        const auto result = check(c, free, m, taken(c));
+        if (!result || !apply(di, *result)) continue;
+        visit(nodes, child, depth + 1);
+        undo(di, *result);
       }
-      visit(nodes, child, depth + 1);
-      if (*result != empty_mark) dart_of[*result] = no_dart, leave(di), --labeled;
-      annotation[di] = unmatched;
+      break;
+    }
+    while (done > 0) {
+      --done;
+      const auto [di, result] = done < local.size() ? local[done] : spill[done - local.size()];
+      undo(di, result);
     }
   }
 };
