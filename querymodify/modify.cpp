@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
+#include <unordered_map>
 
 #include "rewriting/derivation.hpp"
 
@@ -63,6 +64,110 @@ Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts) {
   std::vector<bool> gone(m.size(), false);
   for (Dart d : darts) gone[d] = inner(d);
   return remove(m, gone);
+}
+
+namespace {
+
+// Appends copies of T's darts flagged `copy`, with their links among
+// themselves; returns T dart -> new input dart (no_dart if not copied).
+std::vector<Dart> copy_darts(Map& m, const Map& t, const std::vector<bool>& copy) {
+  std::vector<Dart> t_to_m(t.size(), no_dart);
+  std::size_t count = 0;
+  for (Dart d = 0; d < t.size(); ++d) count += copy[d];
+  Dart next = m.add_darts(count);
+  for (Dart d = 0; d < t.size(); ++d)
+    if (copy[d]) t_to_m[d] = next++;
+  for (Dart d = 0; d < t.size(); ++d) {
+    if (!copy[d]) continue;
+    for (Dim i : t.model().dims)
+      if (const Dart e = t.link(i, d); e != no_dart && copy[e]) m.set_link(i, t_to_m[d], t_to_m[e]);
+  }
+  return t_to_m;
+}
+
+void check_models(const Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m) {
+  if (!(q.model() == m.model()) || !(t.model() == m.model())) throw std::invalid_argument("the query, the target and the input must have one model");
+  if (q_to_t.size() != q.size() || q_to_m.size() != q.size()) throw std::invalid_argument("m_QT and m_QM must give a dart for every query dart");
+  for (Dart x = 0; x < q.size(); ++x)
+    if (q_to_m[x] >= m.size()) throw std::invalid_argument(fmt::format("m_QM sends query dart {} outside the input", x));
+}
+
+}  // namespace
+
+std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m) {
+  check_models(m, q, t, q_to_t, q_to_m);
+  std::vector<Dart> t_to_q(t.size(), no_dart);
+  for (Dart x = 0; x < q.size(); ++x) {
+    if (q_to_t[x] >= t.size() || t_to_q[q_to_t[x]] != no_dart) throw std::invalid_argument(fmt::format("m_QT is not injective at query dart {}", x));
+    t_to_q[q_to_t[x]] = x;
+  }
+  for (Dart x = 0; x < q.size(); ++x)
+    for (Dim i : q.model().dims)
+      if (const Dart y = q.link(i, x); y != no_dart && t.link(i, q_to_t[x]) != q_to_t[y])
+        throw std::invalid_argument(fmt::format("the target does not keep the query's {}-link from dart {}", i, x));
+  std::vector<bool> fresh(t.size());
+  for (Dart d = 0; d < t.size(); ++d) fresh[d] = t_to_q[d] == no_dart;
+  // Lines 4-6, checked first: a new dart meets the query only by β3, at
+  // an input dart that is 3-free.
+  std::vector<std::pair<Dart, Dart>> glue;  // (target dart, input dart)
+  for (Dart d = 0; d < t.size(); ++d) {
+    if (!fresh[d]) continue;
+    for (Dim i : t.model().dims) {
+      const Dart e = t.link(i, d);
+      if (e == no_dart || fresh[e]) continue;
+      if (i != 3) throw std::invalid_argument(fmt::format("target dart {} is {}-linked to the query's image: only β3 may join new volumes", d, i));
+      const Dart at = q_to_m[t_to_q[e]];
+      if (m.link(3, at) != no_dart) throw std::invalid_argument(fmt::format("input dart {} must be 3-free to receive a new volume", at));
+      glue.emplace_back(d, at);
+    }
+  }
+  auto t_to_m = copy_darts(m, t, fresh);  // lines 1-3
+  for (const auto& [d, at] : glue) m.sew(3, t_to_m[d], at);
+  for (Dart d = 0; d < t.size(); ++d)
+    if (!fresh[d]) t_to_m[d] = q_to_m[t_to_q[d]];
+  return t_to_m;
+}
+
+std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m) {
+  check_models(m, q, t, q_to_t, q_to_m);
+  // The boundaries must coincide: Q's 3-free darts onto T's, β1 kept.
+  std::vector<Dart> t_boundary_of(t.size(), no_dart);
+  std::size_t q_free = 0, t_free = 0;
+  for (Dart d = 0; d < t.size(); ++d) t_free += t.link(3, d) == no_dart;
+  for (Dart x = 0; x < q.size(); ++x) {
+    if (q.link(3, x) != no_dart) continue;
+    ++q_free;
+    const Dart y = q_to_t[x];
+    if (y >= t.size() || t.link(3, y) != no_dart || t_boundary_of[y] != no_dart)
+      throw std::invalid_argument(fmt::format("m_QT must send query boundary dart {} to a boundary dart of the target, one to one", x));
+    t_boundary_of[y] = x;
+    if (t.link(1, y) != q_to_t[q.link(1, x)]) throw std::invalid_argument(fmt::format("m_QT does not keep β1 at query boundary dart {}", x));
+  }
+  if (q_free != t_free) throw std::invalid_argument(fmt::format("the query has {} boundary darts, the target {}", q_free, t_free));
+  // The outside neighbour of each boundary dart, then the match goes. A
+  // match whose boundary '*' let two of its boundary faces be 3-sewn to
+  // each other keeps that link between their images in T.
+  std::vector<Dart> outside(q.size(), no_dart), inside(q.size(), no_dart);
+  std::unordered_map<Dart, Dart> query_dart_of;
+  for (Dart x = 0; x < q.size(); ++x) query_dart_of.emplace(q_to_m[x], x);
+  for (Dart x = 0; x < q.size(); ++x) {
+    if (q.link(3, x) != no_dart) continue;
+    const Dart o = m.link(3, q_to_m[x]);
+    if (o == no_dart) continue;
+    if (const auto it = query_dart_of.find(o); it != query_dart_of.end()) inside[x] = it->second;
+    else outside[x] = o;
+  }
+  std::vector<Dart> matched(q_to_m.begin(), q_to_m.end());
+  const Renumbering moved = delete_volumes(m, matched);
+  std::unordered_map<Dart, Dart> where(moved.begin(), moved.end());
+  for (Dart& o : outside)
+    if (const auto it = where.find(o); o != no_dart && it != where.end()) o = it->second;
+  auto t_to_m = copy_darts(m, t, std::vector<bool>(t.size(), true));
+  for (Dart x = 0; x < q.size(); ++x) {
+    if (outside[x] != no_dart) m.sew(3, t_to_m[q_to_t[x]], outside[x]);
+    if (inside[x] != no_dart && x < inside[x]) m.sew(3, t_to_m[q_to_t[x]], t_to_m[q_to_t[inside[x]]]);
+  }
+  return t_to_m;
 }
 
 }  // namespace dartcheck::querymodify

@@ -1,9 +1,10 @@
-// Modify operations on matched volumes (001 Sec. 6) that need no target
-// map: deleting volumes (Alg. 3, corrected) and merging them into one
-// (Alg. 4's first step, the replace used by the tet -> hex recombination).
-// Both take the darts of whole volumes (closed under β1 and β2) and keep
-// the map a valid 3-map; both renumber darts to keep the map dense and
-// return the renumbering.
+// Modify operations on matched volumes (001 Sec. 6): deleting volumes
+// (Alg. 3, corrected), merging them into one (Alg. 4's first step, the
+// replace used by the tet -> hex recombination), extending a match by a
+// target that contains the query (Alg. 2) and replacing a match by a
+// target with the same boundary (Alg. 4). Delete and merge take the darts
+// of whole volumes (closed under β1 and β2); all keep the map a valid
+// 3-map and renumber darts to keep it dense.
 #pragma once
 
 #include <utility>
@@ -31,5 +32,25 @@ Renumbering delete_volumes(Map& m, const std::vector<Dart>& darts);
 /// merged volume disappear with their faces. Throws std::invalid_argument
 /// if `darts` is not a union of volumes.
 Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts);
+
+/// Alg. 2: T contains Q (`q_to_t[q]`, m_QT, is the target dart of query
+/// dart q) and `q_to_m[q]` (m_QM) is the input dart of q in a match. The
+/// darts of T without a pre-image are copied into `m` with their links
+/// among themselves, and each that T 3-sews to an image of Q is 3-sewn to
+/// that image's input dart. Returns m_TM (the input dart of each target
+/// dart: the copies, and the matched darts for images of Q). Throws
+/// std::invalid_argument, before changing `m`, if m_QT does not keep a
+/// link of Q, if a new dart is linked to an image of Q other than by β3,
+/// or if the input dart it must be 3-sewn to is not 3-free (001: such
+/// darts must be free before the operation; a query marks them ε).
+std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m);
+
+/// Alg. 4 on a whole match: the matched volumes (the images of all of Q)
+/// are removed and T put in their place, each 3-free dart of Q handing
+/// its outside neighbour to its image in T (`q_to_t`, defined on Q's
+/// 3-free darts at least). T's boundary must be Q's: q_to_t maps Q's
+/// 3-free darts one to one onto T's and keeps β1 among them (throws
+/// std::invalid_argument otherwise, before changing `m`). Returns m_TM.
+std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m);
 
 }  // namespace dartcheck::querymodify
