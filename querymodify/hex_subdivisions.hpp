@@ -32,7 +32,7 @@ const std::array<std::array<int, 4>, 6>& hex_faces();
 const std::vector<std::array<int, 8>>& cube_symmetries();
 
 /// Every subdivision, labeled (vertices fixed), in increasing order;
-/// computed once (about 3 s) and kept.
+/// computed once (about 3 s of CPU, split between the cores) and kept.
 const std::vector<std::uint64_t>& enumerate_hex_subdivisions();
 
 /// The smallest image of a subdivision under the first `group_size`

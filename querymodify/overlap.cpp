@@ -4,7 +4,7 @@
 #include <numeric>
 #include <set>
 #include <thread>
-#include <unordered_set>
+#include <unordered_map>
 
 namespace dartcheck::querymodify {
 
@@ -34,12 +34,48 @@ std::vector<QueryMatch> greedy_matches(const Map& input, const QueryTrie& trie, 
   return out;
 }
 
+namespace {
+
+// Distinct matches by (query, dart set), kept in the order found. Only a
+// hash of each key is stored (the darts are sorted again on a hash hit):
+// the raw matches are several times the distinct ones and are not kept.
+class DistinctMatches {
+ public:
+  /// True if m was new (then it is kept).
+  bool add(QueryMatch&& m) {
+    std::vector<Dart> key = m.darts;
+    std::sort(key.begin(), key.end());
+    std::uint64_t h = static_cast<std::uint64_t>(m.query) * 0x9E3779B97F4A7C15ull;
+    for (Dart d : key) h = (h ^ d) * 0x100000001B3ull;
+    const auto [lo, hi] = index_.equal_range(h);
+    for (auto it = lo; it != hi; ++it) {
+      const QueryMatch& other = list_[it->second];
+      if (other.query != m.query || other.darts.size() != m.darts.size()) continue;
+      std::vector<Dart> other_key = other.darts;
+      std::sort(other_key.begin(), other_key.end());
+      if (other_key == key) return false;
+    }
+    index_.emplace(h, list_.size());
+    list_.push_back(std::move(m));
+    return true;
+  }
+  std::vector<QueryMatch>& list() { return list_; }
+
+ private:
+  std::vector<QueryMatch> list_;
+  std::unordered_multimap<std::uint64_t, std::size_t> index_;
+};
+
+}  // namespace
+
 AllMatches all_matches(const Map& input, const QueryTrie& trie, const ClassBound* bound, unsigned threads) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, input.size() / 1024)));
-  // Contiguous ranges of start darts, concatenated in order afterwards:
-  // the same list as one thread would find.
-  std::vector<std::vector<QueryMatch>> found(threads);
+  // Contiguous ranges of start darts, each deduplicated by its thread (a
+  // match's start darts are its own, mostly in one range), then merged in
+  // order: the same list as one thread would find.
+  std::vector<DistinctMatches> found(threads);
+  std::vector<std::size_t> raw(threads, 0);
   auto work = [&](unsigned t) {
     const Dart begin = static_cast<Dart>(input.size() * t / threads), end = static_cast<Dart>(input.size() * (t + 1) / threads);
     std::vector<std::uint32_t> scratch(input.size(), 0), counts;
@@ -49,28 +85,27 @@ AllMatches all_matches(const Map& input, const QueryTrie& trie, const ClassBound
       mine = {bound->class_of, bound->most, &counts};
     }
     for (Dart d = begin; d < end; ++d)
-      for (auto& m : trie.match(input, d, nullptr, &scratch, bound ? &mine : nullptr)) found[t].push_back(std::move(m));
+      for (auto& m : trie.match(input, d, nullptr, &scratch, bound ? &mine : nullptr)) {
+        ++raw[t];
+        found[t].add(std::move(m));
+      }
   };
   std::vector<std::thread> pool;
   for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
   work(0);
   for (auto& th : pool) th.join();
   AllMatches all;
-  struct KeyHash {
-    std::size_t operator()(const std::pair<int, std::vector<Dart>>& k) const {
-      std::size_t h = std::hash<int>()(k.first);
-      for (Dart d : k.second) h = h * 0x9E3779B97F4A7C15ull + d;
-      return h;
-    }
-  };
-  std::unordered_set<std::pair<int, std::vector<Dart>>, KeyHash> seen;
-  for (auto& list : found)
-    for (auto& m : list) {
-      ++all.raw;
-      std::vector<Dart> key = m.darts;
-      std::sort(key.begin(), key.end());
-      if (seen.emplace(m.query, std::move(key)).second) all.distinct.push_back(std::move(m));
-    }
+  for (std::size_t r : raw) all.raw += r;
+  if (threads == 1) {
+    all.distinct = std::move(found[0].list());
+    return all;
+  }
+  DistinctMatches merged;
+  for (auto& f : found) {
+    for (auto& m : f.list()) merged.add(std::move(m));
+    f = DistinctMatches();
+  }
+  all.distinct = std::move(merged.list());
   return all;
 }
 
@@ -81,6 +116,10 @@ std::vector<QueryMatch> global_matches(const Map& input, const QueryTrie& trie, 
 std::vector<QueryMatch> global_matches(const AllMatches& all, std::size_t darts, const std::function<double(const QueryMatch&)>& score) {
   std::vector<double> s;
   for (const auto& m : all.distinct) s.push_back(score(m));
+  return global_matches(all, darts, s);
+}
+
+std::vector<QueryMatch> global_matches(const AllMatches& all, std::size_t darts, const std::vector<double>& s) {
   std::vector<std::size_t> order(all.distinct.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s[a] > s[b]; });

@@ -39,6 +39,8 @@ std::vector<QueryMatch> global_matches(const Map& input, const QueryTrie& trie, 
 /// The same on matches already found (`all` from all_matches on a map of
 /// `darts` darts).
 std::vector<QueryMatch> global_matches(const AllMatches& all, std::size_t darts, const std::function<double(const QueryMatch&)>& score);
+/// The same with the score of each of all.distinct given.
+std::vector<QueryMatch> global_matches(const AllMatches& all, std::size_t darts, const std::vector<double>& scores);
 
 /// True if the two matches share a matched dart.
 bool conflict(const QueryMatch& a, const QueryMatch& b);

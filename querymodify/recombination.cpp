@@ -98,8 +98,8 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
     const HexQuery& q = queries[static_cast<std::size_t>(m.query)];
     return best_reading(q, match_corners(q, corners[static_cast<std::size_t>(m.query)], m, mesh.vertex), points);
   };
-  auto acceptable = [&](const QueryMatch& m) {
-    const auto [c, quality] = reading(m);
+  // 8 distinct corners and, with points, a quality above the threshold.
+  auto acceptable = [&](const std::array<std::uint32_t, 8>& c, double quality) {
     auto sorted = c;
     std::sort(sorted.begin(), sorted.end());
     if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
@@ -118,17 +118,26 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   r.match_seconds = since(t);
   t = Clock::now();
   if (strategy == Strategy::greedy) {
-    r.selected = greedy_matches(mesh.map, trie, &bound, acceptable);
-    for (const auto& m : all.distinct) r.acceptable += acceptable(m);
-  } else {
-    AllMatches candidates;
-    for (const auto& m : all.distinct)
-      if (acceptable(m)) candidates.distinct.push_back(m);
-    r.acceptable = candidates.distinct.size();
-    r.selected = global_matches(candidates, mesh.map.size(), [&](const QueryMatch& m) {
-      if (!points) return -static_cast<double>(m.darts.size());  // fewer tetrahedra first
-      return reading(m).second;
+    r.selected = greedy_matches(mesh.map, trie, &bound, [&](const QueryMatch& m) {
+      const auto [c, quality] = reading(m);
+      return acceptable(c, quality);
     });
+    for (const auto& m : all.distinct) {
+      const auto [c, quality] = reading(m);
+      r.acceptable += acceptable(c, quality);
+    }
+  } else {
+    // Each candidate read once: its best reading scores it.
+    AllMatches candidates;
+    std::vector<double> scores;
+    for (const auto& m : all.distinct) {
+      const auto [c, quality] = reading(m);
+      if (!acceptable(c, quality)) continue;
+      candidates.distinct.push_back(m);
+      scores.push_back(points ? quality : -static_cast<double>(m.darts.size()));  // without points: fewer tetrahedra first
+    }
+    r.acceptable = candidates.distinct.size();
+    r.selected = global_matches(candidates, mesh.map.size(), scores);
   }
   r.select_seconds = since(t);
   std::vector<bool> used(mesh.tets.size(), false);
