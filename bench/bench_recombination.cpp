@@ -165,67 +165,30 @@ struct Check {
   bool peer_in_ours = false;
 };
 
-// run_in_child (peer_bench.hpp) for any trivially copyable result.
-template <class T, class F>
-T in_child(F f) {
-  int pipefd[2];
-  if (pipe(pipefd) != 0) return {};
-  const pid_t pid = fork();
-  if (pid == 0) {
-    close(pipefd[0]);
-    const T res = f();
-    if (write(pipefd[1], &res, sizeof res) != sizeof res) _exit(1);
-    _exit(0);
-  }
-  close(pipefd[1]);
-  T res{};
-  if (read(pipefd[0], &res, sizeof res) != sizeof res) res = {};
-  close(pipefd[0]);
-  waitpid(pid, nullptr, 0);
-  return res;
-}
-
 void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid) {
   const std::size_t tets = mesh.tets.size();
   // The timed rows first, each in its own child; the parent holds only the
   // mesh and the queries, so each child's peak RSS growth is its own.
   const TetMap reference = build_tet_map(mesh.tets, &mesh.points);
   const QueryTrie trie = hex_trie();
+  // all_matches alone; `out` is the number of distinct matches.
+  auto matching = [&](unsigned threads) {
+    return measure(runs, [&](double& ms, std::size_t& out) {
+      std::vector<std::uint32_t> c;
+      const auto b = vertex_bound(reference, c);
+      const auto t0 = std::chrono::steady_clock::now();
+      out = all_matches(reference.map, trie, &b, threads).distinct.size();
+      ms = since(t0);
+      return true;
+    });
+  };
   struct Row {
     const char* name;
     std::function<Result()> run;
   };
   const std::vector<Row> rows{
-      {"dartcheck matching, 2 threads",
-       [&] {
-         std::size_t found = 0;
-         Result r = measure(runs, [&](double& ms, std::size_t& out) {
-           std::vector<std::uint32_t> c;
-           const auto b = vertex_bound(reference, c);
-           const auto t0 = std::chrono::steady_clock::now();
-           found = all_matches(reference.map, trie, &b, 2).distinct.size();
-           ms = since(t0);
-           out = found;
-           return true;
-         });
-         r.ok = true;
-         return r;
-       }},
-      {"dartcheck matching, 1 thread",
-       [&] {
-         std::size_t found = 0;
-         Result r = measure(runs, [&](double& ms, std::size_t& out) {
-           std::vector<std::uint32_t> c;
-           const auto b = vertex_bound(reference, c);
-           const auto t0 = std::chrono::steady_clock::now();
-           found = all_matches(reference.map, trie, &b, 1).distinct.size();
-           ms = since(t0);
-           out = found;
-           return true;
-         });
-         r.ok = true;
-         return r;
-       }},
+      {"dartcheck matching, 2 threads", [&] { return matching(2); }},
+      {"dartcheck matching, 1 thread", [&] { return matching(1); }},
       {"dartcheck recombine (map, match, global, merge)",
        [&] {
          bool ok = true;
@@ -260,7 +223,7 @@ void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid)
   // Untimed check, in a child too (the parent's peak RSS must stay low for
   // the next mesh's rows): the same hexes from both sides, and each row
   // found what the reference finds.
-  const Check check = in_child<Check>([&] {
+  const Check check = run_in_child<Check>([&] {
     Check c;
     std::vector<std::uint32_t> counts;
     const ClassBound bound = vertex_bound(reference, counts);

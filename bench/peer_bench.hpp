@@ -83,19 +83,21 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Runs `run` in a forked child and reads its Result back through a pipe.
-Result run_in_child(const std::function<Result()>& run) {
+// Runs `run` in a forked child and reads its result (a trivially copyable
+// T, a Result by default) back through a pipe.
+template <class T = Result>
+T run_in_child(const std::function<T()>& run) {
   int pipefd[2];
   if (pipe(pipefd) != 0) return {};
   const pid_t pid = fork();
   if (pid == 0) {
     close(pipefd[0]);
-    const Result res = run();
+    const T res = run();
     if (write(pipefd[1], &res, sizeof res) != sizeof res) _exit(1);
     _exit(0);
   }
   close(pipefd[1]);
-  Result res;
+  T res{};
   if (read(pipefd[0], &res, sizeof res) != sizeof res) res = {};
   close(pipefd[0]);
   waitpid(pid, nullptr, 0);
