@@ -5,6 +5,14 @@
 #include <stdexcept>
 
 namespace dartcheck::querymodify {
+
+std::vector<Dart> query_to_input(const Map& q, Dart start, const QueryMatch& m) {
+  const Labeling l = bfs_labeling(q, start);
+  std::vector<Dart> out(q.size(), no_dart);
+  for (std::size_t k = 0; k < l.darts.size() && k < m.darts.size(); ++k) out[l.darts[k]] = m.darts[k];
+  return out;
+}
+
 namespace {
 
 constexpr std::uint32_t unmatched = 0;

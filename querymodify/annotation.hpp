@@ -33,6 +33,11 @@ struct QueryMatch {
   std::vector<Dart> darts;
 };
 
+/// m_QM of a match (001's mapping from query darts to input darts): the
+/// input dart of each dart of query map `q`, whose word was labeled from
+/// `start`.
+std::vector<Dart> query_to_input(const Map& q, Dart start, const QueryMatch& m);
+
 /// Algorithm 1 for one query word, as 001 writes it (a queue of annotated
 /// darts). `blocked` (optional, one flag per dart) are darts annotated ∅
 /// beforehand: the greedy strategy's already matched darts.

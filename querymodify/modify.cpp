@@ -68,6 +68,40 @@ Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts) {
   return remove(m, gone);
 }
 
+Renumbering merge_faces(Map& m, const std::vector<Dart>& darts) {
+  std::vector<Dart> in = darts;
+  std::sort(in.begin(), in.end());
+  in.erase(std::unique(in.begin(), in.end()), in.end());
+  for (Dart d : in) {
+    if (d >= m.size()) throw std::invalid_argument(fmt::format("dart {} is not in the map", d));
+    if (m.link(3, d) != no_dart) throw std::invalid_argument(fmt::format("dart {} is 3-sewn: only 3-free faces can be merged", d));
+  }
+  for (Dart d : in)
+    if (const Dart e = m.link(1, d); !contains(in, e)) throw std::invalid_argument(fmt::format("darts {} and {} are 1-linked but only {} is listed: not whole faces", d, e, d));
+  // An edge between two merged faces: both its darts are listed.
+  auto inner = [&](Dart d) {
+    const Dart e = m.link(2, d);
+    return e != no_dart && contains(in, e);
+  };
+  std::vector<std::pair<Dart, Dart>> new_beta1;
+  for (Dart x : in) {
+    if (inner(x)) continue;
+    Dart y = m.link(1, x);
+    for (std::size_t guard = 0; inner(y); ++guard) {
+      if (guard > in.size()) throw std::logic_error("turning around a vertex did not leave the removed edges");
+      y = m.link(1, m.link(2, y));
+    }
+    if (y != m.link(1, x)) new_beta1.emplace_back(x, y);
+  }
+  std::vector<Dart> gone;
+  for (Dart d : in)
+    if (inner(d)) gone.push_back(d);
+  if (gone.size() == in.size()) throw std::invalid_argument("the faces have no edge left: merging them would leave an empty face");
+  for (Dart d : gone) m.remove_link(1, d);  // before relinking: a kept dart's predecessor record must end on a kept dart
+  for (const auto& [x, y] : new_beta1) m.set_link(1, x, y);
+  return remove(m, gone);
+}
+
 namespace {
 
 // Appends copies of T's darts flagged `copy`, with their links among
@@ -130,7 +164,7 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
   return t_to_m;
 }
 
-std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m) {
+std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m, Renumbering* moved_out) {
   check_models(m, q, t, q_to_t, q_to_m);
   // The boundaries must coincide: Q's 3-free darts onto T's, β1 kept.
   std::vector<Dart> t_boundary_of(t.size(), no_dart);
@@ -169,6 +203,7 @@ std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<
     if (outside[x] != no_dart) m.sew(3, t_to_m[q_to_t[x]], outside[x]);
     if (inside[x] != no_dart && x < inside[x]) m.sew(3, t_to_m[q_to_t[x]], t_to_m[q_to_t[inside[x]]]);
   }
+  if (moved_out) *moved_out = moved;
   return t_to_m;
 }
 

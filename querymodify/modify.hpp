@@ -33,6 +33,24 @@ Renumbering delete_volumes(Map& m, const std::vector<Dart>& darts);
 /// if `darts` is not a union of volumes.
 Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts);
 
+/// Merges the faces made of `darts` (whole faces, every dart 3-free) into
+/// one face per connected group by removing every edge between two of
+/// them: each remaining dart's β1 becomes the next remaining dart around
+/// the merged face, found by turning through the removed edges (β2 then
+/// β1), so edges and vertices inside a merged face disappear with them
+/// (001 Sec. 7.4 merges the upper faces of flattened terrain volumes this
+/// way). Throws std::invalid_argument if `darts` is not a union of faces
+/// or a dart is 3-sewn.
+Renumbering merge_faces(Map& m, const std::vector<Dart>& darts);
+
+/// Carries per-dart data through a renumbering (old darts moved into the
+/// slots of removed ones), then fits it to the map's new size.
+template <class T>
+void follow(std::vector<T>& per_dart, const Renumbering& moved, std::size_t size) {
+  for (const auto& [from, to] : moved) per_dart[to] = per_dart[from];
+  per_dart.resize(size);
+}
+
 /// Alg. 2: T contains Q (`q_to_t[q]`, m_QT, is the target dart of query
 /// dart q) and `q_to_m[q]` (m_QM) is the input dart of q in a match. The
 /// darts of T without a pre-image are copied into `m` with their links
@@ -50,7 +68,9 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
 /// its outside neighbour to its image in T (`q_to_t`, defined on Q's
 /// 3-free darts at least). T's boundary must be Q's: q_to_t maps Q's
 /// 3-free darts one to one onto T's and keeps β1 among them (throws
-/// std::invalid_argument otherwise, before changing `m`). Returns m_TM.
-std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m);
+/// std::invalid_argument otherwise, before changing `m`). Returns m_TM;
+/// `moved`, if given, receives the renumbering of the input's other darts
+/// (the match's darts are removed before T's are appended).
+std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m, Renumbering* moved = nullptr);
 
 }  // namespace dartcheck::querymodify

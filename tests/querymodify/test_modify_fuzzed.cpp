@@ -62,15 +62,6 @@ TetMap random_host(std::uint32_t n, std::mt19937& rng) {
   return build_tet_map(tets, &points);
 }
 
-// m_QM of a match: the input dart of each query dart (via the labeling
-// the query word was read with).
-std::vector<Dart> query_to_input(const Map& q, Dart start, const QueryMatch& m) {
-  const Labeling l = bfs_labeling(q, start);
-  std::vector<Dart> out(q.size(), no_dart);
-  for (std::size_t k = 0; k < l.darts.size(); ++k) out[l.darts[k]] = m.darts[k];
-  return out;
-}
-
 std::vector<QueryMatch> matches_of(const Map& host, const QueryWord& w) {
   QueryTrie trie;
   trie.add(w, 0);
