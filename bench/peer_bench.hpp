@@ -79,7 +79,7 @@ Result measure(int runs, F subdivide) {
   return r;
 }
 
-double since(std::chrono::steady_clock::time_point t0) {
+[[maybe_unused]] double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
