@@ -44,29 +44,42 @@ Renumbering delete_volumes(Map& m, const std::vector<Dart>& darts) {
   return remove(m, in);
 }
 
-Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts) {
-  const auto in = volume_set(m, darts);
-  // A face between two merged volumes: its darts are 3-sewn inside the set.
+namespace {
+
+// Removing the cells between merged (k+1)-cells: a dart is removed when its
+// b-link stays in the set `in` (a face between two merged volumes, b = 3;
+// an edge between two merged faces, b = 2), and each kept dart's a-link
+// (a = b - 1) becomes the next kept dart found by turning through the
+// removed ones (a, then b, then a...). Relinks and removes; returns the
+// renumbering.
+Renumbering merge_across(Map& m, const std::vector<Dart>& in, Dim a, Dim b) {
   auto inner = [&](Dart d) {
-    const Dart e = m.link(3, d);
+    const Dart e = m.link(b, d);
     return e != no_dart && contains(in, e);
   };
-  std::vector<std::pair<Dart, Dart>> new_beta2;
-  for (Dart x : in) {
-    if (inner(x)) continue;
-    Dart y = m.link(2, x);
-    for (std::size_t guard = 0; inner(y); ++guard) {
-      if (guard > in.size()) throw std::logic_error("turning around an edge did not leave the removed faces");
-      y = m.link(2, m.link(3, y));
-    }
-    new_beta2.emplace_back(x, y);
-  }
+  std::vector<std::pair<Dart, Dart>> relink;
   std::vector<Dart> gone;
-  for (Dart d : in)
-    if (inner(d)) gone.push_back(d);
-  for (const auto& [x, y] : new_beta2) m.set_link(2, x, y);
+  for (Dart x : in) {
+    if (inner(x)) {
+      gone.push_back(x);
+      continue;
+    }
+    Dart y = m.link(a, x);
+    for (std::size_t guard = 0; inner(y); ++guard) {
+      if (guard > in.size()) throw std::logic_error(fmt::format("turning through the removed {}-cells did not leave them", b - 1));
+      y = m.link(a, m.link(b, y));
+    }
+    if (y != m.link(a, x)) relink.emplace_back(x, y);
+  }
+  if (!in.empty() && gone.size() == in.size()) throw std::invalid_argument("nothing would be left of the merged cells");
+  for (Dart d : gone) m.remove_link(a, d);  // first: an oriented a's predecessor records must end on kept darts
+  for (const auto& [x, y] : relink) m.set_link(a, x, y);
   return remove(m, gone);
 }
+
+}  // namespace
+
+Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts) { return merge_across(m, volume_set(m, darts), 2, 3); }
 
 Renumbering merge_faces(Map& m, const std::vector<Dart>& darts) {
   std::vector<Dart> in = darts;
@@ -78,28 +91,7 @@ Renumbering merge_faces(Map& m, const std::vector<Dart>& darts) {
   }
   for (Dart d : in)
     if (const Dart e = m.link(1, d); !contains(in, e)) throw std::invalid_argument(fmt::format("darts {} and {} are 1-linked but only {} is listed: not whole faces", d, e, d));
-  // An edge between two merged faces: both its darts are listed.
-  auto inner = [&](Dart d) {
-    const Dart e = m.link(2, d);
-    return e != no_dart && contains(in, e);
-  };
-  std::vector<std::pair<Dart, Dart>> new_beta1;
-  for (Dart x : in) {
-    if (inner(x)) continue;
-    Dart y = m.link(1, x);
-    for (std::size_t guard = 0; inner(y); ++guard) {
-      if (guard > in.size()) throw std::logic_error("turning around a vertex did not leave the removed edges");
-      y = m.link(1, m.link(2, y));
-    }
-    if (y != m.link(1, x)) new_beta1.emplace_back(x, y);
-  }
-  std::vector<Dart> gone;
-  for (Dart d : in)
-    if (inner(d)) gone.push_back(d);
-  if (gone.size() == in.size()) throw std::invalid_argument("the faces have no edge left: merging them would leave an empty face");
-  for (Dart d : gone) m.remove_link(1, d);  // before relinking: a kept dart's predecessor record must end on a kept dart
-  for (const auto& [x, y] : new_beta1) m.set_link(1, x, y);
-  return remove(m, gone);
+  return merge_across(m, in, 1, 2);
 }
 
 namespace {

@@ -16,6 +16,7 @@
 
 #include "core/orbit.hpp"
 #include "querymodify/map_checks.hpp"
+#include "map_counts.hpp"
 #include "querymodify/modify.hpp"
 #include "querymodify/overlap.hpp"
 #include "querymodify/tet_map.hpp"
@@ -23,16 +24,8 @@
 namespace dartcheck::querymodify {
 namespace {
 
-std::size_t free3(const Map& m) {
-  std::size_t n = 0;
-  for (Dart d = 0; d < m.size(); ++d) n += m.link(3, d) == no_dart;
-  return n;
-}
-
-std::size_t volumes(const Map& m) {
-  OrbitWalker w(m);
-  return w.count_orbits(dims_generators({1, 2}));
-}
+using test::free3;
+using test::volumes;
 
 // An n^3 grid of unit cubes cut into 5 tetrahedra (the corner-cut pattern,
 // mirrored on odd cells), each tetrahedron kept with probability 3/4.
