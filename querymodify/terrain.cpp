@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/orbit.hpp"
 #include "querymodify/overlap.hpp"
@@ -139,12 +140,12 @@ Renumbering flatten_spot(Mesh& m, const SpotQuery& q, const std::vector<Dart>& q
     for (Dart e : walker.orbit(d, vertex)) m.points[e][2] = mean;
   // The two renumberings as one, old dart -> final dart.
   std::unordered_map<Dart, Dart> then(second.begin(), second.end());
-  std::unordered_map<Dart, Dart> holes;  // first's targets: darts removed by the merge
+  std::unordered_set<Dart> holes;  // first's targets: slots of darts the merge removed
   Renumbering both;
   for (const auto& [from, to] : first) {
     const auto it = then.find(to);
     both.emplace_back(from, it == then.end() ? to : it->second);
-    holes.emplace(to, from);
+    holes.insert(to);
   }
   for (const auto& [from, to] : second)
     if (!holes.contains(from)) both.emplace_back(from, to);
@@ -273,7 +274,7 @@ Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
     const auto q_to_m = query_to_input(house.query.map, 0, m);
     std::vector<Point3> matched;
     Point3 centre{0, 0, 0};
-    for (Dart x_ : q_to_m) matched.push_back(x.mesh.points[x_]);
+    for (Dart d : q_to_m) matched.push_back(x.mesh.points[d]);
     for (Dart d : house.upper)
       for (int c = 0; c < 3; ++c) centre[static_cast<std::size_t>(c)] += matched[d][static_cast<std::size_t>(c)] / static_cast<double>(house.upper.size());
     const auto t_to_m = extend(x.mesh.map, house.query.map, house.target.map, identity, q_to_m);
