@@ -159,7 +159,6 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
     std::vector<Dart> darts;
     for (Dart d : m.darts) darts.push_back(where[d]);
     const auto moved = merge_volumes(mesh.map, darts);
-    std::vector<std::uint32_t> vertex_moved;
     for (const auto& [from, to] : moved) {
       const Dart original = at[from];
       where[original] = to;
