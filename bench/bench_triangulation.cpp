@@ -148,13 +148,14 @@ Result run_cgal(const std::string& off, int runs, std::size_t faces) {
 
 int main(int argc, char** argv) {
   int runs = 5, r = 0, c = 0;
-  std::string off = DARTCHECK_BENCH_MESH;
+  std::string off = DARTCHECK_BENCH_MESH, only;
   for (int k = 1; k < argc; ++k) {
     if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
     else if (!std::strcmp(argv[k], "--mesh") && k + 1 < argc) off = argv[++k];
+    else if (!std::strcmp(argv[k], "--only") && k + 1 < argc) only = argv[++k];
     else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc && std::sscanf(argv[++k], "%dx%d", &r, &c) == 2) continue;
     else {
-      std::fprintf(stderr, "usage: %s [--runs N] [--mesh FILE.off | --grid RxC]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--runs N] [--mesh FILE.off | --grid RxC] [--only TEXT]\n", argv[0]);
       return 2;
     }
   }
@@ -175,7 +176,7 @@ int main(int argc, char** argv) {
     const char* name;
     std::function<Result()> run;
   };
-  const std::vector<Peer> peers{
+  const std::vector<Peer> all_peers{
       {"dartcheck triangulation-jerboa-pos, per face, every instance evaluated",
        [&] { return run_dartcheck(off, runs, sides, Scope::per_face, Evaluation::every_instance); }},
       {"dartcheck triangulation-jerboa-pos, per face, one evaluation per orbit",
@@ -187,6 +188,12 @@ int main(int argc, char** argv) {
       {"dartcheck triangulation-all-faces-pos, topology only (apply_scheme, no terms)", [&] { return run_topology(off, runs, sides); }},
       {"CGAL LCC insert_barycenter_in_cell<2> on every face", [&] { return run_cgal(off, runs, sides); }},
   };
+  // --only keeps the peers whose name contains the text, and CGAL (the
+  // ratios' base): for profiling one row.
+  std::vector<Peer> chosen;
+  for (const Peer& p : all_peers)
+    if (only.empty() || std::strstr(p.name, only.c_str()) || &p == &all_peers.back()) chosen.push_back(p);
+  const std::vector<Peer>& peers = chosen;
   std::vector<Result> results;
   for (const Peer& p : peers) results.push_back(run_in_child(p.run));
   if (!temporary.empty()) std::remove(temporary.c_str());

@@ -107,12 +107,15 @@ void register_all() {
       for (bool shuffle : {false, true}) {
         const std::string tag = fmt::format("{}/{}M/{}", model, millions, shuffle ? "shuffled" : "ordered");
         const bool g = std::string(model) == "2-gmap";
-        benchmark::RegisterBenchmark(("validity/dartcheck/" + tag).c_str(), [=](benchmark::State& s) {
-          Case& c = get_case(model, millions, shuffle);
-          for (auto _ : s) benchmark::DoNotOptimize(check_map(c.map).valid());
-          if (!check_map(c.map).valid()) s.SkipWithError("map is not valid");
-          counters(s, c.map, static_cast<double>(c.map.stride() * sizeof(Dart)));
-        });
+        // One thread (CGAL's is_valid is sequential) and two (the
+        // machines' cores; check_map's default from 2^20 darts on).
+        for (unsigned threads : {1U, 2U})
+          benchmark::RegisterBenchmark(fmt::format("validity/dartcheck-{}t/{}", threads, tag).c_str(), [=](benchmark::State& s) {
+            Case& c = get_case(model, millions, shuffle);
+            for (auto _ : s) benchmark::DoNotOptimize(check_map(c.map, threads).valid());
+            if (!check_map(c.map, threads).valid()) s.SkipWithError("map is not valid");
+            counters(s, c.map, static_cast<double>(c.map.stride() * sizeof(Dart)));
+          });
         benchmark::RegisterBenchmark(("validity/cgal/" + tag).c_str(), [=](benchmark::State& s) {
           Case& c = get_case(model, millions, shuffle);
           bool ok = true;

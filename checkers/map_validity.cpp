@@ -1,6 +1,8 @@
 #include "checkers/map_validity.hpp"
 
 #include <array>
+#include <thread>
+
 #include "core/orbit.hpp"
 
 #include <algorithm>
@@ -68,8 +70,9 @@ bool same_layout(const Layout& a, const Layout& b) {
 // The fast pass. When the layout is a compile-time constant (the preset
 // models), loops unroll and every offset is a constant. Returns false as
 // soon as some dart breaks I, O or the loop ban; cycle failures go to `out`.
+// Checks the darts lo..hi-1 (the records read may be anywhere).
 template <class GetLayout>
-bool fast_pass(const Dart* base, Dart n, GetLayout layout, std::vector<Violation>& out) {
+bool fast_pass(const Dart* base, Dart lo, Dart hi, GetLayout layout, std::vector<Violation>& out) {
   const Layout& L = layout();
   const std::size_t stride = L.stride;
   // Each dart reads the records of its neighbours, which are anywhere in
@@ -77,8 +80,8 @@ bool fast_pass(const Dart* base, Dart n, GetLayout layout, std::vector<Violation
   // cache misses overlap.
   constexpr Dart ahead = 16;
   bool broken = false;
-  for (Dart d = 0; d < n; ++d) {
-    if (d + ahead < n) {
+  for (Dart d = lo; d < hi; ++d) {
+    if (d + ahead < hi) {
       // The records read below: those of the link targets, and of the
       // recorded predecessors where a partial dimension needs them.
       const Dart* f = base + (d + ahead) * stride;
@@ -132,24 +135,54 @@ constexpr Layout preset(int n, bool generalized) {
 }
 constexpr Layout gmap2 = preset(2, true), gmap3 = preset(3, true), omap2 = preset(2, false), omap3 = preset(3, false);
 
+// The fast pass over `threads` consecutive dart ranges, one thread each:
+// darts are independent, and on a map larger than the caches each thread
+// keeps its own cache misses in flight. Cycle failures are concatenated
+// in range order, so the report is the one-thread report.
+template <class GetLayout>
+bool split_pass(const Dart* base, Dart n, unsigned threads, GetLayout layout, std::vector<Violation>& out) {
+  if (threads <= 1) return fast_pass(base, 0, n, layout, out);
+  std::vector<std::vector<Violation>> found(threads);
+  std::vector<char> ok(threads, 0);
+  auto range = [&](unsigned t) { return static_cast<Dart>(static_cast<std::uint64_t>(n) * t / threads); };
+  {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 1; t < threads; ++t)
+      pool.emplace_back([&, t] { ok[t] = fast_pass(base, range(t), range(t + 1), layout, found[t]); });
+    ok[0] = fast_pass(base, 0, range(1), layout, found[0]);
+  }
+  for (unsigned t = 0; t < threads; ++t) {
+    if (!ok[t]) return false;
+    out.insert(out.end(), found[t].begin(), found[t].end());
+  }
+  return true;
+}
+
 }  // namespace
 
-ValidityReport check_map(const Map& map) {
+unsigned validity_threads(std::size_t darts) {
+  if (darts < parallel_validity_darts) return 1;
+  return std::clamp(std::thread::hardware_concurrency(), 1U, 8U);
+}
+
+ValidityReport check_map(const Map& map, unsigned threads) {
   ValidityReport report = make_report(map);
   const Dart* base = map.raw().data();
   const Dart n = static_cast<Dart>(map.size());
+  if (threads == 0) threads = validity_threads(n);
+  threads = std::clamp<unsigned>(threads, 1, std::max<Dart>(n, 1));
   const Layout mine = layout_of(map);
   bool ok;
   if (same_layout(mine, gmap2))
-    ok = fast_pass(base, n, [] () -> const Layout& { return gmap2; }, report.violations);
+    ok = split_pass(base, n, threads, [] () -> const Layout& { return gmap2; }, report.violations);
   else if (same_layout(mine, omap2))
-    ok = fast_pass(base, n, [] () -> const Layout& { return omap2; }, report.violations);
+    ok = split_pass(base, n, threads, [] () -> const Layout& { return omap2; }, report.violations);
   else if (same_layout(mine, gmap3))
-    ok = fast_pass(base, n, [] () -> const Layout& { return gmap3; }, report.violations);
+    ok = split_pass(base, n, threads, [] () -> const Layout& { return gmap3; }, report.violations);
   else if (same_layout(mine, omap3))
-    ok = fast_pass(base, n, [] () -> const Layout& { return omap3; }, report.violations);
+    ok = split_pass(base, n, threads, [] () -> const Layout& { return omap3; }, report.violations);
   else
-    ok = fast_pass(base, n, [&mine]() -> const Layout& { return mine; }, report.violations);
+    ok = split_pass(base, n, threads, [&mine]() -> const Layout& { return mine; }, report.violations);
   return ok ? report : check_map_exact(map);
 }
 

@@ -19,7 +19,17 @@ namespace dartcheck {
 /// breaks I or O, those identities no longer describe the graph, and an
 /// exact pass (degree counts, explicit ijij-paths) recomputes every
 /// violation.
-ValidityReport check_map(const Map& map);
+///
+/// `threads` splits the darts into that many ranges checked at once (the
+/// report is the same); 0 chooses validity_threads(map.size()).
+ValidityReport check_map(const Map& map, unsigned threads = 0);
+
+/// Maps of at least this many darts are checked by several threads by
+/// default: below it, starting a thread costs more than it saves.
+inline constexpr std::size_t parallel_validity_darts = std::size_t{1} << 20;
+/// The default thread count of check_map: 1 below parallel_validity_darts,
+/// else the hardware's concurrency (at most 8).
+unsigned validity_threads(std::size_t darts);
 
 /// The exact pass alone (used by the fast pass, and by tests as a second
 /// implementation of the definition to compare against).
