@@ -98,13 +98,14 @@ std::size_t darts_per_face(const Model& m) { return m.is_generalized() || m.dime
 }  // namespace
 
 std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
-                                              Refusal& refusal) {
+                                              Refusal& refusal, SchemeRewriter* rewriter) {
   const Rule& rule = entry.rule;
   scratch = g;
   std::string why;
   std::vector<std::pair<std::string, Dart>> match;
   if (entry.words.scheme) {
-    auto r = apply_scheme(rule, entry.words, scratch, hooks);
+    auto r = rewriter ? rewriter->apply(scratch, hooks) : apply_scheme(rule, entry.words, scratch, hooks);
+    if (rewriter && r.ok()) rewriter->recycle(std::move(*r.value));
     refusal = r.refusal;
     why = std::move(r.why);
   } else {
@@ -163,6 +164,7 @@ class Fuzzer {
   std::mt19937 rng_;
   Clock::time_point start_;
   Map scratch_{Model::gmap(2)};
+  SchemeRewriter scheme_{entry_.rule, entry_.words};
   // A consistent rule's static events, checked on its first applications.
   EventOracle events_;
   std::size_t attempts_ = 0, next_progress_ = 4096;
@@ -200,7 +202,7 @@ class Fuzzer {
       o_.progress({&rule_.name(), out_.applications, out_.hosts, std::chrono::duration<double>(Clock::now() - start_).count()});
     }
     Refusal refusal = Refusal::none;
-    auto cx = apply_and_check(entry_, g, hooks, scratch_, refusal);
+    auto cx = apply_and_check(entry_, g, hooks, scratch_, refusal, entry_.words.scheme ? &scheme_ : nullptr);
     if (refusal == Refusal::not_representable) ++out_.refusals["not-representable"];
     else if (refusal != Refusal::none) ++out_.refusals[std::string(refusal_name(refusal))];
     else ++out_.applications;

@@ -18,18 +18,6 @@ Dart Map::add_darts(std::size_t count) {
   return first;
 }
 
-void Map::set_link(Dim i, Dart d, Dart e) {
-  if (model_.is_oriented(i)) remove_link(i, d);
-  slot(d, succ_slot_[i]) = e;
-  if (model_.is_oriented(i) && e != no_dart) slot(e, pred_slot_[i]) = d;
-}
-
-void Map::remove_link(Dim i, Dart d) {
-  Dart& s = slot(d, succ_slot_[i]);
-  if (model_.is_oriented(i) && s != no_dart && slot(s, pred_slot_[i]) == d) slot(s, pred_slot_[i]) = no_dart;
-  s = no_dart;
-}
-
 void Map::sew(Dim i, Dart d, Dart e) {
   set_link(i, d, e);
   if (!model_.is_oriented(i)) slot(e, succ_slot_[i]) = d;

@@ -47,9 +47,21 @@ class Map {
   /// oriented dimension the predecessor of e becomes d (and the old target
   /// forgets d). Nothing else changes: for a non-oriented dimension the
   /// reverse arc is a separate arc, set by `sew`.
-  void set_link(Dim i, Dart d, Dart e);
+  void set_link(Dim i, Dart d, Dart e) {
+    // Inline: schemes write millions of links. A dimension is oriented
+    // exactly when its predecessor record has a slot of its own.
+    const int s = succ_slot_[i], p = pred_slot_[i];
+    if (s != p) remove_link(i, d);
+    slot(d, s) = e;
+    if (s != p && e != no_dart) slot(e, p) = d;
+  }
   /// Removes the i-arc out of d (and, oriented, its predecessor record).
-  void remove_link(Dim i, Dart d);
+  void remove_link(Dim i, Dart d) {
+    const int p = pred_slot_[i];
+    Dart& s = slot(d, succ_slot_[i]);
+    if (p != succ_slot_[i] && s != no_dart && slot(s, p) == d) slot(s, p) = no_dart;
+    s = no_dart;
+  }
   /// Non-oriented: d -i- e in both directions (a loop when d == e).
   /// Oriented: d -i-> e.
   void sew(Dim i, Dart d, Dart e);

@@ -81,10 +81,11 @@ struct EmbeddedRewriter::Context {
   std::vector<bool> keeps;
   TermEvaluator ev;
   OrbitWalker walker;
-  DartTable scratch, orbit_of, given;  // each left empty between applications
+  SchemeRewriter scheme;
+  DartTable orbit_of, given;  // each left empty between applications
 
   Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
-      : rule(r), words(w), terms(t), g(map), evaluation(e), ev(map), walker(map.map) {
+      : rule(r), words(w), terms(t), g(map), evaluation(e), ev(map), walker(map.map), scheme(r, w) {
     for (const NodeTerm& x : t.left) left_node.push_back(*r.left().find(x.node));
     for (const NodeTerm& x : t.right) {
       right_node.push_back(*r.right().find(x.node));
@@ -147,7 +148,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   Instances in;
   std::optional<SchemeMatch> scheme_match;
   if (words.scheme) {
-    auto m = match_scheme(rule, words, g.map, hook_darts, &scratch);
+    auto m = scheme.match(g.map, hook_darts);
     if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
     scheme_match = std::move(*m.value);
     in.np = scheme_match->pattern.darts[0].size();
@@ -235,7 +236,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   EmbeddedDerivation out;
   std::vector<std::vector<Dart>> comatch(R.node_count());
   if (words.scheme) {
-    SchemeDerivation d = rewrite_scheme(rule, words, g.map, *scheme_match);
+    SchemeDerivation d = scheme.rewrite(g.map, *scheme_match);
     out.matched = d.matched_darts;
     out.added = d.added_darts;
     out.moved = std::move(d.moved);
@@ -317,6 +318,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       }
     }
   }
+  if (scheme_match) scheme.recycle(std::move(*scheme_match));
   return {std::move(out), Refusal::none, {}};
 }
 

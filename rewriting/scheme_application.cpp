@@ -13,41 +13,49 @@ Outcome<T> refuse(Refusal r, std::string why) {
   return {std::nullopt, r, std::move(why)};
 }
 
-}  // namespace
-
-Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
-                                      DartTable* scratch) {
+// W: the words of the scheme, each with its conjugate (P_v takes the darts
+// reachable to and from v).
+std::vector<ConjWord> generators_of(const Model& model, const ArcWords& words) {
   const ConjugateRewriting rw(model);
-  PatternGraphs out;
-  // W: the words of the scheme, each with its conjugate (P_v takes the
-  // darts reachable to and from v).
+  std::vector<ConjWord> gens;
   for (const auto* ws : {&words.left, &words.right})
     for (const auto& w : *ws)
       for (const ConjWord& x : {w, rw.conjugate(w)})
-        if (!x.empty() && std::find(out.gens.begin(), out.gens.end(), x) == out.gens.end()) out.gens.push_back(x);
+        if (!x.empty() && std::find(gens.begin(), gens.end(), x) == gens.end()) gens.push_back(x);
+  return gens;
+}
 
-  // P_v by BFS; index[d] is d's position in P_v, and shift[k][p] the
-  // position of p·gens[k], recorded as the BFS follows it (so every p·w
-  // is a table lookup, not a walk). With several hooks (one per
-  // component of L, Sec. 6.3) every P_{v_k} is walked in the same order
-  // and must give the same tables: the pattern graphs are isomorphic, and
-  // darts[k][p] is the image of pattern node p under that isomorphism.
+int generator_index(const std::vector<ConjWord>& gens, const ConjWord& w) {
+  return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
+}
+
+// P_v by BFS into `out` (its vectors reused); index[d] is d's position in
+// P_v, and shift[k][p] the position of p·gens[k], recorded as the BFS
+// follows it (so every p·w is a table lookup, not a walk). With several
+// hooks (one per component of L, Sec. 6.3) every P_{v_k} is walked in the
+// same order and must give the same tables: the pattern graphs are
+// isomorphic, and darts[k][p] is the image of pattern node p under that
+// isomorphism. On refusal sets `refusal` and `why`.
+bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, DartTable& index, PatternGraphs& out, Refusal& refusal, std::string& why) {
   constexpr std::uint32_t none = DartTable::none;
-  DartTable local;
-  DartTable& index = scratch ? *scratch : local;
   const DartTable::ClearOnExit emptied{index};
-  out.shift.resize(out.gens.size());
+  const std::size_t ng = out.gens.size();
+  out.shift.resize(ng);
+  for (auto& s : out.shift) s.clear();
   out.darts.resize(hook_darts.size());
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
     std::vector<Dart>& pattern = out.darts[h];
+    pattern.clear();
     pattern.push_back(hook_darts[h]);
     index.set(hook_darts[h], 0);
     for (std::size_t k = 0; k < pattern.size(); ++k)
-      for (std::size_t w = 0; w < out.gens.size(); ++w) {
+      for (std::size_t w = 0; w < ng; ++w) {
         const Dart t = follow(g, pattern[k], out.gens[w]);
-        if (t == no_dart)
-          return refuse<PatternGraphs>(Refusal::not_combinatorial, fmt::format("dart {} has no {}-path: the host is not combinatorial",
-                                                                               pattern[k], out.gens[w].str()));
+        if (t == no_dart) {
+          refusal = Refusal::not_combinatorial;
+          why = fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], out.gens[w].str());
+          return false;
+        }
         std::uint32_t at = index.get(t);
         if (at == none) {
           at = static_cast<std::uint32_t>(pattern.size());
@@ -57,132 +65,102 @@ Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words,
         if (h == 0) {
           out.shift[w].push_back(at);
         } else if (out.shift[w][k] != at) {
-          return refuse<PatternGraphs>(Refusal::no_match,
-                                       fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one "
-                                                   "pattern for every component of L)",
-                                                   hook_darts[0], hook_darts[h]));
+          refusal = Refusal::no_match;
+          why = fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one pattern for every component of L)",
+                            hook_darts[0], hook_darts[h]);
+          return false;
         }
       }
     index.clear();
   }
-  return {std::move(out), Refusal::none, {}};
+  return true;
 }
-
-int PatternGraphs::generator(const ConjWord& w) const {
-  return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
-}
-
-namespace {
-
-// Generator index of each arc's word, forward (L, R) and backward (L).
-struct ArcGenerators {
-  std::vector<int> left_fwd, left_bwd, right_fwd;
-  ArcGenerators(const Rule& core, const ArcWords& words, const std::vector<ConjWord>& gens) {
-    const ConjugateRewriting rw(core.model());
-    auto gen_of = [&](const ConjWord& w) { return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin()); };
-    const TopoGraph &L = core.left(), &R = core.right();
-    left_fwd.resize(L.arc_count());
-    left_bwd.resize(L.arc_count());
-    right_fwd.resize(R.arc_count());
-    for (ArcId e = 0; e < L.arc_count(); ++e) {
-      left_fwd[e] = gen_of(arc_word(words.left, e));
-      left_bwd[e] = gen_of(rw.conjugate(arc_word(words.left, e)));
-    }
-    for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd[e] = gen_of(arc_word(words.right, e));
-  }
-};
 
 }  // namespace
 
-Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts) {
-  auto found = match_scheme(core, words, g, hook_darts);
-  if (!found.ok()) return refuse<SchemeDerivation>(found.refusal, std::move(found.why));
-  return {rewrite_scheme(core, words, g, *found.value), Refusal::none, {}};
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
+                                      DartTable* scratch) {
+  PatternGraphs out;
+  out.gens = generators_of(model, words);
+  DartTable local;
+  Refusal refusal = Refusal::none;
+  std::string why;
+  if (!walk_patterns(g, hook_darts, scratch ? *scratch : local, out, refusal, why)) return refuse<PatternGraphs>(refusal, std::move(why));
+  return {std::move(out), Refusal::none, {}};
 }
 
-Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
-                                  DartTable* scratch) {
-  const TopoGraph &L = core.left(), &R = core.right();
-  if (hook_darts.size() != core.hooks().size())
-    return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
-                                                  core.hooks().size() == 1 ? "" : "s"));
-  for (Dart h : hook_darts)
-    if (h >= g.size()) return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
-  auto found = pattern_graphs(core.model(), words, g, hook_darts, scratch);
-  if (!found.ok()) return refuse<SchemeMatch>(found.refusal, std::move(found.why));
-  const PatternGraphs& pg = *found.value;
-  const auto& shift = pg.shift;
-  const std::vector<Dart>& pattern = pg.darts[0];
-  const std::size_t np = pattern.size();
-  auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
-  const ArcGenerators ag(core, words, pg.gens);
-  const auto &left_fwd = ag.left_fwd, &left_bwd = ag.left_bwd;
+int PatternGraphs::generator(const ConjWord& w) const { return generator_index(gens, w); }
 
-  // The match: m[x][p] is the image of product node (p, x), propagated from
-  // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
-  std::vector<std::vector<Dart>> m(L.node_count(), std::vector<Dart>(np, no_dart));
+// What an application derives from the rule alone, in the order
+// match_scheme checks it, and the tables reused across applications.
+struct SchemeRewriter::State {
+  const Rule& core;
+  const ArcWords& words;
+  std::vector<ConjWord> gens;
+  // Generator index of each arc's word, forward (L, R) and backward (L).
+  std::vector<int> left_fwd, left_bwd, right_fwd;
+  // The arcs of L at each node, as the propagation follows them: out of
+  // the node (forward, loops included) or into it (backward).
+  struct Step {
+    ArcId arc;
+    Dim label;
+    bool forward;
+    int generator;
+    NodeId other;
+  };
+  std::vector<std::vector<Step>> steps;
+  std::string two_arcs_in_l;  // L has two i-arcs out of one node: refused at every match
+  // Deleted node x without an L arc out of (in to) it in dimension i: its
+  // darts must carry no i-arc out (in).
+  struct Dangling {
+    NodeId x;
+    Dim i;
+    bool out, in;
+  };
+  std::vector<Dangling> dangling;
+  // Per arc of R \ K: a refusal of the rule itself, or the L node whose
+  // darts must be free in the arc's dimension.
+  struct Added {
+    std::string always;
+    NodeId x = no_node;
+    Dim label = 0;
+    bool freed = false, kept = false;
+  };
+  std::vector<Added> added;
+  std::size_t added_nodes = 0;
+
+  DartTable index;
+  PatternGraphs spare_pattern;
+  std::vector<std::vector<Dart>> spare_match, spare_comatch;
   std::vector<std::pair<std::uint32_t, NodeId>> queue;
-  for (std::size_t h = 0; h < hook_darts.size(); ++h) {
-    const NodeId hook = core.hooks()[h];
-    if (m[hook][0] != no_dart) return refuse<SchemeMatch>(Refusal::bad_hooks, "two hooks name one node of L");
-    m[hook][0] = hook_darts[h];
-    queue.emplace_back(0, hook);
+  std::vector<Dart> holes;
+
+  State(const Rule& r, const ArcWords& w);
+  Outcome<SchemeMatch> match(const Map& g, std::span<const Dart> hook_darts);
+  SchemeDerivation rewrite(Map& g, const SchemeMatch& match);
+};
+
+SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(w), gens(generators_of(r.model(), w)) {
+  const ConjugateRewriting rw(core.model());
+  const TopoGraph &L = core.left(), &R = core.right();
+  for (ArcId e = 0; e < L.arc_count(); ++e) {
+    left_fwd.push_back(generator_index(gens, arc_word(words.left, e)));
+    left_bwd.push_back(generator_index(gens, rw.conjugate(arc_word(words.left, e))));
   }
-  for (std::size_t k = 0; k < queue.size(); ++k) {
-    const auto [p, x] = queue[k];
-    const Dart here = m[x][p];
+  for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd.push_back(generator_index(gens, arc_word(words.right, e)));
+  steps.resize(L.node_count());
+  for (NodeId x = 0; x < L.node_count(); ++x)
     for (ArcId e = 0; e < L.arc_count(); ++e) {
       const auto& a = L.arc(e);
-      std::uint32_t q;
-      NodeId y;
-      Dart there;
-      if (a.source == x) {
-        q = step(p, left_fwd[e]);
-        y = a.target;
-        there = g.link(a.label, here);
-      } else if (a.target == x) {
-        q = step(p, left_bwd[e]);
-        y = a.source;
-        there = g.inverse_link(a.label, here);
-      } else {
-        continue;
-      }
-      if (there == no_dart)
-        return refuse<SchemeMatch>(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source),
-                                                     a.label, L.name(a.target), pattern[p], here, a.label));
-      if (m[y][q] == no_dart) {
-        m[y][q] = there;
-        queue.emplace_back(q, y);
-      } else if (m[y][q] != there) {
-        return refuse<SchemeMatch>(Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q],
-                                                     L.name(y), m[y][q], there));
-      }
+      if (a.source == x) steps[x].push_back({e, a.label, true, left_fwd[e], a.target});
+      else if (a.target == x) steps[x].push_back({e, a.label, false, left_bwd[e], a.source});
     }
-  }
-  // Injectivity on nodes; every product node matched (ι(L, P_v) connected).
-  DartTable local;
-  DartTable& taken = scratch ? *scratch : local;
-  const DartTable::ClearOnExit emptied{taken};
-  for (NodeId x = 0; x < L.node_count(); ++x)
-    for (std::size_t p = 0; p < np; ++p) {
-      const Dart d = m[x][p];
-      if (d == no_dart)
-        return refuse<SchemeMatch>(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) "
-                                                         "is not connected, so the hooks do not fix the match (002 Sec. 6.3)",
-                                                         pattern[p], L.name(x)));
-      if (taken.get(d) != DartTable::none)
-        return refuse<SchemeMatch>(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
-      taken.set(d, 1);
-    }
-  // Arc injectivity: two arcs of L out of one node with one label share
-  // their images.
-  for (ArcId e = 0; e < L.arc_count(); ++e)
+  for (ArcId e = 0; e < L.arc_count() && two_arcs_in_l.empty(); ++e)
     for (ArcId f = e + 1; f < L.arc_count(); ++f)
-      if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label)
-        return refuse<SchemeMatch>(Refusal::not_injective,
-                      fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source)));
-  // Dangling: a deleted node needs an L arc in and out for every dimension
-  // its darts carry.
+      if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label) {
+        two_arcs_in_l = fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source));
+        break;
+      }
   for (NodeId x = 0; x < L.node_count(); ++x) {
     if (core.to_right(x) != no_node) continue;
     for (Dim i : core.model().dims) {
@@ -191,57 +169,150 @@ Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const
         out |= a.source == x && a.label == i;
         in |= a.target == x && a.label == i;
       }
-      for (std::size_t p = 0; p < np; ++p)
-        if ((!out && g.link(i, m[x][p]) != no_dart) || (!in && g.inverse_link(i, m[x][p]) != no_dart))
-          return refuse<SchemeMatch>(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[x][p], L.name(x), i));
+      if (!out || !in) dangling.push_back({x, i, out, in});
     }
   }
-  // Representability, per scheme arc (the same for every pattern node).
   for (ArcId e = 0; e < R.arc_count(); ++e) {
     if (core.preserved_right_arc(e)) continue;
     const auto& a = R.arc(e);
-    for (ArcId f = e + 1; f < R.arc_count(); ++f)
+    Added x;
+    x.label = a.label;
+    for (ArcId f = e + 1; f < R.arc_count() && x.always.empty(); ++f)
       if (!core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label)
-        return refuse<SchemeMatch>(Refusal::not_representable, fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source)));
-    const NodeId x = core.to_left(a.source);
-    if (x == no_node) continue;
-    bool freed = false, kept = false;
-    for (ArcId f = 0; f < L.arc_count(); ++f) freed |= !core.preserved_left_arc(f) && L.arc(f).source == x && L.arc(f).label == a.label;
-    for (ArcId f = 0; f < R.arc_count(); ++f) kept |= core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label;
-    for (std::size_t p = 0; p < np && !freed; ++p)
-      if (kept || g.link(a.label, m[x][p]) != no_dart)
-        return refuse<SchemeMatch>(Refusal::not_representable, fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label,
-                                                              R.name(a.source), m[x][p], a.label));
+        x.always = fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source));
+    x.x = core.to_left(a.source);
+    if (x.x != no_node) {
+      for (ArcId f = 0; f < L.arc_count(); ++f) x.freed |= !core.preserved_left_arc(f) && L.arc(f).source == x.x && L.arc(f).label == a.label;
+      for (ArcId f = 0; f < R.arc_count(); ++f) x.kept |= core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label;
+    }
+    added.push_back(std::move(x));
   }
-  return {SchemeMatch{std::move(*found.value), std::move(m)}, Refusal::none, {}};
+  for (NodeId y = 0; y < R.node_count(); ++y) added_nodes += core.to_left(y) == no_node;
 }
 
-SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g, const SchemeMatch& match) {
+Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const Dart> hook_darts) {
+  const TopoGraph &L = core.left(), &R = core.right();
+  if (hook_darts.size() != core.hooks().size())
+    return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
+                                                               core.hooks().size() == 1 ? "" : "s"));
+  for (Dart h : hook_darts)
+    if (h >= g.size()) return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("hook dart {} is not below {}", h, g.size()));
+  SchemeMatch found{std::move(spare_pattern), std::move(spare_match)};
+  PatternGraphs& pg = found.pattern;
+  pg.gens = gens;
+  {
+    Refusal refusal = Refusal::none;
+    std::string why;
+    if (!walk_patterns(g, hook_darts, index, pg, refusal, why)) {
+      spare_pattern = std::move(pg);
+      spare_match = std::move(found.node);
+      return refuse<SchemeMatch>(refusal, std::move(why));
+    }
+  }
+  const auto& shift = pg.shift;
+  const std::vector<Dart>& pattern = pg.darts[0];
+  const std::size_t np = pattern.size();
+  auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
+  // Every refusal below hands the tables back first.
+  auto no = [&](Refusal r, std::string why) {
+    spare_pattern = std::move(found.pattern);
+    spare_match = std::move(found.node);
+    return refuse<SchemeMatch>(r, std::move(why));
+  };
+
+  // The match: m[x][p] is the image of product node (p, x), propagated from
+  // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
+  auto& m = found.node;
+  m.resize(L.node_count());
+  for (auto& column : m) column.assign(np, no_dart);
+  queue.clear();
+  for (std::size_t h = 0; h < hook_darts.size(); ++h) {
+    const NodeId hook = core.hooks()[h];
+    if (m[hook][0] != no_dart) return no(Refusal::bad_hooks, "two hooks name one node of L");
+    m[hook][0] = hook_darts[h];
+    queue.emplace_back(0, hook);
+  }
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const auto [p, x] = queue[k];
+    const Dart here = m[x][p];
+    for (const Step& s : steps[x]) {
+      const std::uint32_t q = step(p, s.generator);
+      const Dart there = s.forward ? g.link(s.label, here) : g.inverse_link(s.label, here);
+      if (there == no_dart) {
+        const auto& a = L.arc(s.arc);
+        return no(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source), a.label,
+                                                 L.name(a.target), pattern[p], here, a.label));
+      }
+      Dart& slot = m[s.other][q];
+      if (slot == no_dart) {
+        slot = there;
+        queue.emplace_back(q, s.other);
+      } else if (slot != there) {
+        return no(Refusal::no_match,
+                  fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q], L.name(s.other), slot, there));
+      }
+    }
+  }
+  // Injectivity on nodes; every product node matched (ι(L, P_v) connected).
+  {
+    const DartTable::ClearOnExit emptied{index};
+    for (NodeId x = 0; x < L.node_count(); ++x)
+      for (std::size_t p = 0; p < np; ++p) {
+        const Dart d = m[x][p];
+        if (d == no_dart)
+          return no(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) is not "
+                                                       "connected, so the hooks do not fix the match (002 Sec. 6.3)",
+                                                       pattern[p], L.name(x)));
+        if (index.get(d) != DartTable::none) return no(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
+        index.set(d, 1);
+      }
+  }
+  // Arc injectivity: two arcs of L out of one node with one label share
+  // their images.
+  if (!two_arcs_in_l.empty()) return no(Refusal::not_injective, two_arcs_in_l);
+  // Dangling: a deleted node needs an L arc in and out for every dimension
+  // its darts carry.
+  for (const Dangling& c : dangling)
+    for (std::size_t p = 0; p < np; ++p)
+      if ((!c.out && g.link(c.i, m[c.x][p]) != no_dart) || (!c.in && g.inverse_link(c.i, m[c.x][p]) != no_dart))
+        return no(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[c.x][p], L.name(c.x), c.i));
+  // Representability, per scheme arc (the same for every pattern node).
+  for (ArcId e = 0, k = 0; e < R.arc_count(); ++e) {
+    if (core.preserved_right_arc(e)) continue;
+    const Added& a = added[k++];
+    if (!a.always.empty()) return no(Refusal::not_representable, a.always);
+    if (a.x == no_node) continue;
+    for (std::size_t p = 0; p < np && !a.freed; ++p)
+      if (a.kept || g.link(a.label, m[a.x][p]) != no_dart)
+        return no(Refusal::not_representable,
+                  fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label, R.name(R.arc(e).source), m[a.x][p], a.label));
+  }
+  return {std::move(found), Refusal::none, {}};
+}
+
+SchemeDerivation SchemeRewriter::State::rewrite(Map& g, const SchemeMatch& match) {
   const TopoGraph &L = core.left(), &R = core.right();
   const auto& m = match.node;
   const std::size_t np = match.pattern.darts[0].size();
   const auto& shift = match.pattern.shift;
   auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
-  const ArcGenerators ag(core, words, match.pattern.gens);
-  const auto& right_fwd = ag.right_fwd;
 
   // Rewrite: delete the instances of L \ K, place R's nodes, add R \ K.
-  SchemeDerivation out{np, np * L.node_count(), 0, {}, {}};
+  SchemeDerivation out{np, np * L.node_count(), 0, {}, std::move(spare_comatch)};
   for (ArcId e = 0; e < L.arc_count(); ++e)
     if (!core.preserved_left_arc(e))
       for (std::size_t p = 0; p < np; ++p) g.remove_link(L.arc(e).label, m[L.arc(e).source][p]);
-  std::vector<Dart> holes;
+  holes.clear();
   for (NodeId x = 0; x < L.node_count(); ++x)
     if (core.to_right(x) == no_node) holes.insert(holes.end(), m[x].begin(), m[x].end());
-  std::vector<std::vector<Dart>> c(R.node_count());
-  std::size_t added_nodes = 0;
-  for (NodeId y = 0; y < R.node_count(); ++y) added_nodes += core.to_left(y) == no_node;
+  auto& c = out.comatch;
+  c.resize(R.node_count());
   const std::size_t reuse = std::min(holes.size(), added_nodes * np);
   const Dart first_new = added_nodes * np > reuse ? g.add_darts(added_nodes * np - reuse) : no_dart;
   std::size_t next_new = 0, next_hole = 0;
   for (NodeId y = 0; y < R.node_count(); ++y) {
     if (core.to_left(y) != no_node) {
-      c[y] = m[core.to_left(y)];
+      c[y].assign(m[core.to_left(y)].begin(), m[core.to_left(y)].end());
       continue;
     }
     c[y].resize(np);
@@ -252,20 +323,57 @@ SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g,
     if (core.preserved_right_arc(e)) continue;
     const auto& a = R.arc(e);
     // shift was read on G before the rewrite began.
-    for (std::size_t p = 0; p < np; ++p) g.set_link(a.label, c[a.source][p], c[a.target][step(p, right_fwd[e])]);
+    const int w = right_fwd[e];
+    const std::vector<Dart>&from = c[a.source], &to = c[a.target];
+    for (std::size_t p = 0; p < np; ++p) g.set_link(a.label, from[p], to[step(p, w)]);
   }
-  holes.erase(holes.begin(), holes.begin() + static_cast<std::ptrdiff_t>(reuse));
-  std::vector<Dart> sources;
-  for (const auto& darts : c) sources.insert(sources.end(), darts.begin(), darts.end());
-  out.moved = compact(g, std::move(holes), sources);
-  if (!out.moved.empty()) {
-    std::unordered_map<Dart, Dart> renumbered(out.moved.begin(), out.moved.end());
-    for (auto& darts : c)
-      for (Dart& d : darts)
-        if (const auto it = renumbered.find(d); it != renumbered.end()) d = it->second;
+  if (holes.size() > reuse) {
+    // Fewer darts added than deleted: the last darts fill the holes.
+    holes.erase(holes.begin(), holes.begin() + static_cast<std::ptrdiff_t>(reuse));
+    std::vector<Dart> sources;
+    for (const auto& darts : c) sources.insert(sources.end(), darts.begin(), darts.end());
+    out.moved = compact(g, holes, sources);
+    if (!out.moved.empty()) {
+      std::unordered_map<Dart, Dart> renumbered(out.moved.begin(), out.moved.end());
+      for (auto& darts : c)
+        for (Dart& d : darts)
+          if (const auto it = renumbered.find(d); it != renumbered.end()) d = it->second;
+    }
   }
-  out.comatch = std::move(c);
   return out;
+}
+
+SchemeRewriter::SchemeRewriter(const Rule& core, const ArcWords& words) : s_(std::make_unique<State>(core, words)) {}
+SchemeRewriter::~SchemeRewriter() = default;
+
+Outcome<SchemeMatch> SchemeRewriter::match(const Map& g, std::span<const Dart> hook_darts) { return s_->match(g, hook_darts); }
+SchemeDerivation SchemeRewriter::rewrite(Map& g, const SchemeMatch& match) { return s_->rewrite(g, match); }
+
+Outcome<SchemeDerivation> SchemeRewriter::apply(Map& g, std::span<const Dart> hook_darts) {
+  auto found = s_->match(g, hook_darts);
+  if (!found.ok()) return refuse<SchemeDerivation>(found.refusal, std::move(found.why));
+  Outcome<SchemeDerivation> out{s_->rewrite(g, *found.value), Refusal::none, {}};
+  recycle(std::move(*found.value));
+  return out;
+}
+
+void SchemeRewriter::recycle(SchemeMatch&& m) {
+  s_->spare_pattern = std::move(m.pattern);
+  s_->spare_match = std::move(m.node);
+}
+
+void SchemeRewriter::recycle(SchemeDerivation&& d) { s_->spare_comatch = std::move(d.comatch); }
+
+Outcome<SchemeDerivation> apply_scheme(const Rule& core, const ArcWords& words, Map& g, std::span<const Dart> hook_darts) {
+  return SchemeRewriter(core, words).apply(g, hook_darts);
+}
+
+Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
+  return SchemeRewriter(core, words).match(g, hook_darts);
+}
+
+SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g, const SchemeMatch& match) {
+  return SchemeRewriter(core, words).rewrite(g, match);
 }
 
 }  // namespace dartcheck

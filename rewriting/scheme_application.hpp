@@ -8,6 +8,7 @@
 // instantiated rule.
 #pragma once
 
+#include <memory>
 #include <span>
 
 #include "core/dart_table.hpp"
@@ -57,11 +58,40 @@ struct SchemeDerivation {
 };
 
 /// Everything apply_scheme checks before it writes: the match and its
-/// refusals. `g` is not modified; `scratch` as for pattern_graphs.
-Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
-                                  DartTable* scratch = nullptr);
+/// refusals. `g` is not modified. (A SchemeRewriter keeps its tables for
+/// the next match.)
+Outcome<SchemeMatch> match_scheme(const Rule& core, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
 /// The rewrite of apply_scheme along a match from match_scheme on `g`.
 SchemeDerivation rewrite_scheme(const Rule& core, const ArcWords& words, Map& g, const SchemeMatch& match);
+
+/// Applies one scheme many times: what the application derives from the
+/// rule alone (W's generators and their conjugates, each arc's generator,
+/// L's arcs per node, the refusals that do not depend on the host) is
+/// computed once, and the tables of an application (pattern positions,
+/// shift tables, the match, the comatch) keep their memory for the next.
+/// match + rewrite (or apply) give exactly what match_scheme +
+/// rewrite_scheme give. The rule and words must outlive the rewriter.
+class SchemeRewriter {
+ public:
+  SchemeRewriter(const Rule& core, const ArcWords& words);
+  ~SchemeRewriter();
+  SchemeRewriter(const SchemeRewriter&) = delete;
+  SchemeRewriter& operator=(const SchemeRewriter&) = delete;
+
+  /// match_scheme: `g` is not modified.
+  Outcome<SchemeMatch> match(const Map& g, std::span<const Dart> hook_darts);
+  /// rewrite_scheme along a match of this rewriter on `g`.
+  SchemeDerivation rewrite(Map& g, const SchemeMatch& match);
+  /// apply_scheme; the match's tables are kept for the next application.
+  Outcome<SchemeDerivation> apply(Map& g, std::span<const Dart> hook_darts);
+  /// Hand a match's or a derivation's tables back for the next application.
+  void recycle(SchemeMatch&& m);
+  void recycle(SchemeDerivation&& d);
+
+ private:
+  struct State;
+  std::unique_ptr<State> s_;
+};
 
 /// Rewrites `g` at the hook darts, one per connected component of L (the
 /// order of core.hooks()). With several hooks the pattern graphs of the
