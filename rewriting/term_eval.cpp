@@ -29,7 +29,7 @@ Dart TermEvaluator::node(const Term& t, std::span<const std::string> names, std:
   return n;
 }
 
-const Multiset& TermEvaluator::collect(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
+Multiset& TermEvaluator::collect_memo(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
   const Embedding& e = embedding(name);
   auto memo = std::find_if(memo_.begin(), memo_.end(), [&](const CollectMemo& m) { return m.embedding == name && m.orbit == orbit; });
   if (memo == memo_.end()) {
@@ -81,15 +81,41 @@ Operand TermEvaluator::eval(const Term& t, std::span<const std::string> names, s
       if (!v) throw EvaluationError(fmt::format("{}: dart {} has no {} value", t.str(), d, t.name));
       return *v;
     }
-    case Term::Kind::collect: return collect(t.name, t.orbit, node(t.args[0], names, darts));
+    case Term::Kind::collect: return collect_memo(t.name, t.orbit, node(t.args[0], names, darts));
     case Term::Kind::variable:
     case Term::Kind::neighbour: throw EvaluationError(fmt::format("'{}' is a node, not a value", t.str()));
     case Term::Kind::call: break;
   }
   if (!t.function) throw EvaluationError(fmt::format("'{}' was not type-checked", t.str()));
-  std::vector<Operand> args;
-  args.reserve(t.args.size());
-  for (const Term& a : t.args) args.push_back(eval(a, names, darts));
+  // A collect argument lends its memorised multiset to the call (moved in
+  // and back) instead of copying it. The arguments are evaluated first
+  // (memorising every collect), then the multisets are lent: no collect
+  // runs while one is out, and one lent twice is copied the second time.
+  std::vector<Operand> args(t.args.size());
+  for (std::size_t k = 0; k < t.args.size(); ++k) {
+    const Term& a = t.args[k];
+    if (a.kind == Term::Kind::collect) collect_memo(a.name, a.orbit, node(a.args[0], names, darts));
+    else args[k] = eval(a, names, darts);
+  }
+  std::vector<std::pair<std::size_t, Multiset*>> lent;
+  for (std::size_t k = 0; k < t.args.size(); ++k) {
+    const Term& a = t.args[k];
+    if (a.kind != Term::Kind::collect) continue;
+    Multiset& m = collect_memo(a.name, a.orbit, node(a.args[0], names, darts));
+    if (const auto it = std::find_if(lent.begin(), lent.end(), [&](const auto& x) { return x.second == &m; }); it != lent.end()) {
+      args[k] = std::get<Multiset>(args[it->first]);  // m itself is out
+      continue;
+    }
+    lent.emplace_back(k, &m);
+    args[k] = std::move(m);
+  }
+  struct GiveBack {
+    std::vector<Operand>& args;
+    std::vector<std::pair<std::size_t, Multiset*>>& lent;
+    ~GiveBack() {
+      for (auto [k, m] : lent) *m = std::move(std::get<Multiset>(args[k]));
+    }
+  } give_back{args, lent};
   return t.function->apply(args);
 }
 

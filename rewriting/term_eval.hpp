@@ -32,7 +32,7 @@ class TermEvaluator {
   /// an alpha_i has no arc, or a function has no value.
   Value value(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
   /// The multiset of a collect term.
-  const Multiset& collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
+  const Multiset& collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d) { return collect_memo(embedding, orbit, d); }
   /// Drops the memorised collects (after a change of the map).
   void forget();
 
@@ -40,6 +40,7 @@ class TermEvaluator {
   Operand eval(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
   Dart node(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
   const Embedding& embedding(const std::string& name) const;
+  Multiset& collect_memo(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
 
   // The collects of one (embedding, <o'>): bag_of[d] indexes `bags` for
   // every dart of an <o'>-orbit already walked.

@@ -153,6 +153,38 @@ TEST(Terms, UserFunctionsRegisteredWithTheirProfile) {
   EXPECT_THROW(checked("scale(a.pos, 2)"), TermError);  // unknown to the built-in registry
 }
 
+// A call lends a memorised multiset to its function instead of copying it:
+// one multiset passed twice, and a collect that a later argument reads
+// again, must reach the function whole, and stay whole for the next call.
+TEST(Terms, CollectArgumentsReachFunctionsWholeWhenRepeated) {
+  FunctionRegistry f = FunctionRegistry::builtin();
+  const Sort bag = Sort::bag(ValueType::point2), real = Sort::of(ValueType::real), point = Sort::of(ValueType::point2);
+  // sizes(m1, m2) = |m1| + 10 |m2|; size_at(m, p) = |m| + p.x.
+  f.add("sizes", {bag, bag}, real, [](std::span<const Operand> a) {
+    return Value::real(static_cast<double>(std::get<Multiset>(a[0]).size() + 10 * std::get<Multiset>(a[1]).size()));
+  });
+  f.add("size_at", {bag, point}, real, [](std::span<const Operand> a) {
+    return Value::real(static_cast<double>(std::get<Multiset>(a[0]).size()) + std::get<Value>(a[1]).x[0]);
+  });
+  // A triangle face: 6 darts, three corners (pos on <1,2>) at x = 0, 3, 6.
+  EmbeddedMap g(Map(Model::gmap(2), 6));
+  for (Dart k = 0; k < 3; ++k) {
+    g.map.sew(0, 2 * k, 2 * k + 1);
+    g.map.sew(1, 2 * k + 1, (2 * k + 2) % 6);
+  }
+  for (Dart d = 0; d < 6; ++d) g.map.sew(2, d, d);
+  g.add_embedding(signatures[0]);
+  for (Dart d = 0; d < 6; ++d) g.embeddings[0].set(d, Value::coords(ValueType::point2, {3.0 * (((d + 1) / 2) % 3), 0, 0}));
+  TermEvaluator ev(g);
+  const std::vector<std::string> names{"a"};
+  const std::vector<Dart> darts{0};
+  for (int twice = 0; twice < 2; ++twice) {
+    EXPECT_EQ(ev.value(checked("sizes(pos<0,1>(a), pos<0,1>(a))", {"a"}, &f), names, darts), Value::real(33));
+    EXPECT_EQ(ev.value(checked("size_at(pos<0,1>(a), center(pos<0,1>(a)))", {"a"}, &f), names, darts), Value::real(6));  // 3 + (0+3+6)/3
+    EXPECT_EQ(ev.collect("pos", {0, 1}, 0).size(), 3u);
+  }
+}
+
 // The multiset of pi<o'>(d) by brute force: the darts reachable from d
 // through links in o' (a plain worklist over Map::link), split into
 // classes joined by links in o ∩ o', one value per class.
