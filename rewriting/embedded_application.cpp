@@ -144,6 +144,11 @@ std::vector<std::size_t> EmbeddedRewriter::Context::orbit_classes(const Instance
 
 Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
   const TopoGraph &L = rule.left(), &R = rule.right();
+  // Every embedding the rule labels is written, so the map must have it.
+  for (const EmbeddingSignature* e : terms.used())
+    if (!g.find(e->name))
+      return refuse<EmbeddedDerivation>(Refusal::no_value, fmt::format("the rule labels {} <{}>, and the map has no embedding {}", e->name,
+                                                                        fmt::join(e->orbit, ","), e->name));
   // 1. The match (nothing is written yet).
   Instances in;
   std::optional<SchemeMatch> scheme_match;
