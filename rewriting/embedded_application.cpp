@@ -36,12 +36,15 @@ struct Instances {
   std::uint32_t step(std::size_t p, int generator) const { return pattern ? pattern->step(p, generator) : static_cast<std::uint32_t>(p); }
 };
 
+// 32-bit entries: an instantiated side has |nodes| x |P_v| instances, and
+// halving the table halves its page faults on large hook orbits.
 struct UnionFind {
-  std::vector<std::size_t> up;
-  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0); }
-  std::size_t find(std::size_t x) {
-    while (up[x] != x) x = up[x] = up[up[x]];
-    return x;
+  std::vector<std::uint32_t> up;
+  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0U); }
+  std::uint32_t find(std::size_t x) {
+    auto y = static_cast<std::uint32_t>(x);
+    while (up[y] != y) y = up[y] = up[up[y]];
+    return y;
   }
   void unite(std::size_t a, std::size_t b) { up[find(a)] = find(b); }
 };
@@ -97,7 +100,7 @@ struct EmbeddedRewriter::Context {
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
   std::string overlap(const Instances& in, const EmbeddingSignature& e);
-  std::vector<std::size_t> orbit_classes(const Instances& in, const EmbeddingSignature& e) const;
+  std::vector<std::uint32_t> orbit_classes(const Instances& in, const EmbeddingSignature& e) const;
 };
 
 // Lemma 3: instances of L in different pi-orbits of the instantiated L
@@ -135,11 +138,10 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, const Embedd
 // The pi-orbits of the instantiated R, as union-find roots of instance
 // y * np + p: its arcs in <o> are links of H, so one class lies in one
 // pi-orbit of H.
-std::vector<std::size_t> EmbeddedRewriter::Context::orbit_classes(const Instances& in, const EmbeddingSignature& e) const {
+std::vector<std::uint32_t> EmbeddedRewriter::Context::orbit_classes(const Instances& in, const EmbeddingSignature& e) const {
   UnionFind uf = instantiated_orbits(rule.right(), words.right, in, e.orbit);
-  std::vector<std::size_t> root(uf.up.size());
-  for (std::size_t k = 0; k < root.size(); ++k) root[k] = uf.find(k);
-  return root;
+  for (std::size_t k = 0; k < uf.up.size(); ++k) uf.find(k);  // every entry its root
+  return std::move(uf.up);
 }
 
 Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
@@ -206,11 +208,11 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     bool stored = false;
   };
   std::vector<Value> evaluated;
-  std::vector<std::vector<Source>> source(terms.right.size(), std::vector<Source>(np));
+  std::vector<Source> source(terms.right.size() * np);  // source[k * np + p]
   try {
     for (const EmbeddingSignature* sig : terms.used()) {
       const Embedding* e = g.find(sig->name);
-      std::vector<std::size_t> cls;
+      std::vector<std::uint32_t> cls;
       if (extended && evaluation == Evaluation::one_per_orbit) cls = orbit_classes(in, *sig);
       std::vector<Source> from(cls.size());  // class root -> its value
       for (std::size_t k = 0; k < terms.right.size(); ++k) {
@@ -219,17 +221,18 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
         const NodeId x = rule.to_left(right_node[k]);
         for (std::size_t p = 0; p < np; ++p) {
           Source* first = cls.empty() ? nullptr : &from[cls[right_node[k] * np + p]];
+          Source& here = source[k * np + p];
           if (first && first->index != Embedding::none) {
-            source[k][p] = *first;
+            here = *first;
             continue;
           }
           if (keeps[k]) {
-            source[k][p] = {e->slot[in.dart[x][p]], true};  // present: checked by the labeled match
+            here = {e->slot[in.dart[x][p]], true};  // present: checked by the labeled match
           } else {
-            source[k][p] = {static_cast<std::uint32_t>(evaluated.size()), false};
+            here = {static_cast<std::uint32_t>(evaluated.size()), false};
             evaluated.push_back(ev.value(t.term, names, binding(p)));
           }
-          if (first) *first = source[k][p];
+          if (first) *first = here;
         }
       }
     }
@@ -279,6 +282,8 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       for (Dart x : walker.orbit(d, gens)) e->set_index(x, Embedding::none);
     }
   }
+  // pooled[i]: where evaluated[i] went once moved into its pool.
+  std::vector<std::uint32_t> pooled(evaluated.size(), Embedding::none);
   for (const EmbeddingSignature* sig : terms.used()) {
     Embedding* e = g.find(sig->name);
     const auto gens = dims_generators(sig->orbit);
@@ -286,6 +291,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     // application.
     struct Writer {
       std::uint32_t value;
+      Source from;
       std::size_t k, p;
     };
     std::vector<Writer> writers;
@@ -296,8 +302,8 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       const NodeId y = right_node[k];
       for (std::size_t p = 0; p < np; ++p) {
         const Dart d = comatch[y][p];
-        const Source from = source[k][p];
-        const Value& v = from.stored ? e->pool[from.index] : evaluated[from.index];
+        const Source from = source[k * np + p];
+        Value& v = from.stored ? e->pool[from.index] : pooled[from.index] != Embedding::none ? e->pool[pooled[from.index]] : evaluated[from.index];
         if (record) out.written.push_back({sig->name, in.name(R, y, p), d, v});
         auto stored = [&] { return from.stored ? from.index : e->store(v); };
         if (!extended) {
@@ -306,16 +312,23 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
         }
         if (const std::uint32_t w = given.get(d); w != DartTable::none) {
           const Writer& first = writers[w];
-          if ((from.stored && first.value == from.index) || e->pool[first.value] == v) continue;  // the orbit already has this value
+          // The orbit already has this value: the same source (one per
+          // orbit), the same stored value, or an equal evaluated one.
+          if ((from.index == first.from.index && from.stored == first.from.stored) || (from.stored && first.value == from.index) ||
+              e->pool[first.value] == v)
+            continue;
           out.conflicts.push_back(fmt::format("the {}-orbit of dart {} gets {} from {} and {} from {}: the extended rule breaks (A), so the propagation "
                                               "of 003 Def. 12 does not exist",
                                               sig->name, d, e->pool[first.value].str(), in.name(R, right_node[first.k], first.p), v.str(), in.name(R, y, p)));
           e->set_index(d, stored());  // H shows both values
           continue;
         }
-        const std::uint32_t idx = stored();
+        // An evaluated value is written once as its orbit's first value:
+        // moved into the pool (it is compared through the pool afterwards).
+        std::uint32_t idx = from.index;
+        if (!from.stored) idx = pooled[from.index] != Embedding::none ? pooled[from.index] : (pooled[from.index] = e->store(std::move(v)));
         const auto w = static_cast<std::uint32_t>(writers.size());
-        writers.push_back({idx, k, p});
+        writers.push_back({idx, from, k, p});
         for (Dart x : walker.orbit(d, gens)) {
           e->set_index(x, idx);
           given.set(x, w);
