@@ -79,9 +79,12 @@ struct EmbeddedRewriter::Context {
   EmbeddedMap& g;
   Evaluation evaluation;
   std::vector<NodeId> left_node, right_node;  // of terms.left[k], terms.right[k]
-  // keeps[k]: R term k repeats the L label of its preserved node (same
-  // embedding, same term), so its value is the matched dart's stored one.
-  std::vector<bool> keeps;
+  // stored_at[k]: the L node whose matched dart's stored value is R term
+  // k's value, or no_node when the term is evaluated. Either the term
+  // repeats the L label of its preserved node (same embedding, same term:
+  // the labeled match checked it), or it is `x.pi` for its own embedding
+  // pi: no evaluation, and the orbit shares the stored pool entry.
+  std::vector<NodeId> stored_at;
   TermEvaluator ev;
   OrbitWalker walker;
   SchemeRewriter scheme;
@@ -94,7 +97,10 @@ struct EmbeddedRewriter::Context {
       right_node.push_back(*r.right().find(x.node));
       const NodeId l = r.to_left(right_node.back());
       const Term* before = l == no_node ? nullptr : t.find('L', r.left().name(l), x.embedding);
-      keeps.push_back(before && before->same(x.term));
+      NodeId at = before && before->same(x.term) ? l : no_node;
+      if (at == no_node && x.term.kind == Term::Kind::access && x.term.name == x.embedding && x.term.args[0].kind == Term::Kind::variable)
+        if (const auto v = r.left().find(x.term.args[0].name)) at = *v;
+      stored_at.push_back(at);
     }
   }
 
@@ -218,7 +224,6 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       for (std::size_t k = 0; k < terms.right.size(); ++k) {
         const NodeTerm& t = terms.right[k];
         if (t.embedding != sig->name) continue;
-        const NodeId x = rule.to_left(right_node[k]);
         for (std::size_t p = 0; p < np; ++p) {
           Source* first = cls.empty() ? nullptr : &from[cls[right_node[k] * np + p]];
           Source& here = source[k * np + p];
@@ -226,8 +231,11 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
             here = *first;
             continue;
           }
-          if (keeps[k]) {
-            here = {e->slot[in.dart[x][p]], true};  // present: checked by the labeled match
+          if (const NodeId at = stored_at[k]; at != no_node) {
+            const Dart d = in.dart[at][p];
+            if (d >= e->slot.size() || e->slot[d] == Embedding::none)
+              throw EvaluationError(fmt::format("{}: dart {} has no {} value", t.term.str(), d, t.embedding));
+            here = {e->slot[d], true};
           } else {
             here = {static_cast<std::uint32_t>(evaluated.size()), false};
             evaluated.push_back(ev.value(t.term, names, binding(p)));

@@ -29,6 +29,11 @@ inline const Catalog& embedding_catalog() {
   return c;
 }
 
+inline const Catalog& subdivision_catalog() {
+  static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/subdivision-operations.yaml");
+  return c;
+}
+
 /// The failing topological and term conditions of a rule with terms, sorted.
 inline std::vector<std::string> static_failures_of(const Operation& r) {
   std::vector<std::string> f;

@@ -11,6 +11,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include <fmt/format.h>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -22,14 +27,12 @@
 #include "io/catalog.hpp"
 #include "io/mesh_io.hpp"
 #include "rewriting/embedded_application.hpp"
+#include "tests/embedding_support.hpp"
 
 namespace dartcheck {
 namespace {
 
-const Catalog& subdivision_catalog() {
-  static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/subdivision-operations.yaml");
-  return c;
-}
+using testing_support::subdivision_catalog;
 
 Mesh unit_cube() {
   Mesh m;
@@ -106,6 +109,51 @@ TEST(CatmullClark, MissingHelperEmbeddingIsRefused) {
   EXPECT_EQ(d.refusal, Refusal::no_value);
   EXPECT_NE(d.why.find("fpt"), std::string::npos) << d.why;
   EXPECT_EQ(g.map, before);
+}
+
+// An R term `x.pi` for its own embedding pi takes the stored value of x's
+// dart without evaluation (as catmull-clark's helper labels n0.fpt do).
+// Where that dart has no value, evaluating every instance refuses the
+// application as an evaluated term would be (003 Def. 10: the term has no
+// value) and leaves the map unchanged. (One evaluation per orbit reads one
+// instance per class, so it labels a partly labeled orbit from the
+// instance it reads: such a map is outside 003's theorems.) Where the
+// face has a value, both keep it.
+TEST(EmbeddedRewriter, OwnAccessWithoutValueIsRefused) {
+  const auto file = std::filesystem::temp_directory_path() / fmt::format("dartcheck-own-access-{}.yaml", ::getpid());
+  {
+    std::ofstream out(file);
+    out << "model: 2-gmap\n"
+           "embeddings:\n  - {name: col, type: color, orbit: \"<0,1>\"}\n"
+           "rules:\n  - name: keep-colour\n    embeddings: [col]\n    hooks: [n0]\n"
+           "    left: {nodes: {n0: \"<0,1>\"}}\n    right: {nodes: {n0: \"<0,1>\"}}\n"
+           "    labels:\n      right: {n0: {col: \"n0.col\"}}\n";
+  }
+  const Catalog c = read_catalog(file.string());
+  std::filesystem::remove(file);
+  const CatalogRule& r = *c.find_rule("keep-colour");
+  Mesh square;
+  square.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.faces = {{0, 1, 2, 3}};
+  for (Evaluation e : {Evaluation::every_instance, Evaluation::one_per_orbit}) {
+    EmbeddedMap g(build_mesh(Model::gmap(2), square));
+    g.add_embedding(c.signatures[0]);
+    g.embeddings[0].set(0, Value::coords(ValueType::color, {1, 0, 0}));  // dart 0 only
+    const EmbeddedMap before = g;
+    const Dart hook = 0;
+    if (e == Evaluation::every_instance) {
+      const auto d = EmbeddedRewriter(r.rule, r.words, *r.terms, g, e).apply(std::span(&hook, 1));
+      ASSERT_FALSE(d.ok());
+      EXPECT_EQ(d.refusal, Refusal::no_value);
+      EXPECT_NE(d.why.find("n0.col: dart 1 has no col value"), std::string::npos) << d.why;
+      EXPECT_EQ(g.map, before.map);
+      for (Dart x = 0; x < g.map.size(); ++x) EXPECT_EQ(g.embeddings[0].value(x) != nullptr, x == 0);
+    }
+    g.label_orbit(0, 0, Value::coords(ValueType::color, {0, 1, 0}));
+    const auto d = EmbeddedRewriter(r.rule, r.words, *r.terms, g, e).apply(std::span(&hook, 1));
+    ASSERT_TRUE(d.ok()) << d.why;
+    for (Dart x = 0; x < g.map.size(); ++x) EXPECT_EQ(*g.embeddings[0].value(x), Value::coords(ValueType::color, {0, 1, 0}));
+  }
 }
 
 }  // namespace

@@ -51,34 +51,37 @@ TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWr
   // orbit (Evaluation::one_per_orbit) writes what evaluating every
   // instance writes. And a rewriter kept across applications on a
   // changing map (tables left empty, walkers grown) acts as fresh
-  // applications do. Three applications in a row on random embedded maps.
+  // applications do. Three applications in a row on random embedded maps,
+  // for the consistent rules of the embedding and subdivision catalogs.
   std::mt19937 rng(11);
   std::size_t compared = 0, rules = 0;
-  for (const auto& r : embedding_catalog().rules) {
-    if (!static_failures_of(r).empty()) continue;
-    ++rules;
-    for (int round = 0; round < 80; ++round) {
-      EmbeddedMap fresh = embed_randomly(build_random_map(r.rule.model(), draw_recipe(rng, 1 + round % 8, 2)), embedding_catalog().signatures, rng);
-      EmbeddedMap reused = fresh;
-      EmbeddedRewriter rewriter(r.rule, r.words, *r.terms, reused, Evaluation::one_per_orbit);
-      for (int step = 0; step < 3; ++step) {
-        std::vector<Dart> hooks;
-        for (std::size_t h = 0; h < r.rule.hooks().size(); ++h)
-          hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(fresh.map.size() - 1))(rng));
-        const auto a = apply_embedded(r.rule, r.words, *r.terms, fresh, hooks);
-        const auto b = rewriter.apply(hooks);
-        ASSERT_EQ(a.refusal, b.refusal) << r.rule.name() << ": " << a.why << " / " << b.why;
-        if (!a.ok()) continue;
-        ASSERT_TRUE(a.value->conflicts.empty()) << r.rule.name() << ": " << a.value->conflicts.front();
-        ASSERT_EQ(fresh.map, reused.map) << r.rule.name();
-        ASSERT_EQ(values_of(fresh), values_of(reused)) << r.rule.name();
-        ASSERT_EQ(a.value->written.size(), b.value->written.size()) << r.rule.name();
-        for (std::size_t k = 0; k < a.value->written.size(); ++k) ASSERT_EQ(a.value->written[k].value, b.value->written[k].value) << r.rule.name();
-        ++compared;
+  for (const Catalog* catalog : {&embedding_catalog(), &subdivision_catalog()}) {
+    for (const auto& r : catalog->rules) {
+      if (!static_failures_of(r).empty()) continue;
+      ++rules;
+      for (int round = 0; round < 80; ++round) {
+        EmbeddedMap fresh = embed_randomly(build_random_map(r.rule.model(), draw_recipe(rng, 1 + round % 8, 2)), catalog->signatures, rng);
+        EmbeddedMap reused = fresh;
+        EmbeddedRewriter rewriter(r.rule, r.words, *r.terms, reused, Evaluation::one_per_orbit);
+        for (int step = 0; step < 3; ++step) {
+          std::vector<Dart> hooks;
+          for (std::size_t h = 0; h < r.rule.hooks().size(); ++h)
+            hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(fresh.map.size() - 1))(rng));
+          const auto a = apply_embedded(r.rule, r.words, *r.terms, fresh, hooks);
+          const auto b = rewriter.apply(hooks);
+          ASSERT_EQ(a.refusal, b.refusal) << r.rule.name() << ": " << a.why << " / " << b.why;
+          if (!a.ok()) continue;
+          ASSERT_TRUE(a.value->conflicts.empty()) << r.rule.name() << ": " << a.value->conflicts.front();
+          ASSERT_EQ(fresh.map, reused.map) << r.rule.name();
+          ASSERT_EQ(values_of(fresh), values_of(reused)) << r.rule.name();
+          ASSERT_EQ(a.value->written.size(), b.value->written.size()) << r.rule.name();
+          for (std::size_t k = 0; k < a.value->written.size(); ++k) ASSERT_EQ(a.value->written[k].value, b.value->written[k].value) << r.rule.name();
+          ++compared;
+        }
       }
     }
   }
-  EXPECT_EQ(rules, 14u);
+  EXPECT_EQ(rules, 16u);  // 14 + catmull-clark-points, catmull-clark
   EXPECT_GT(compared, 300u);
 }
 
