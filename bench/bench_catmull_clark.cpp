@@ -273,23 +273,10 @@ Row run_openmesh(const std::string& off, int runs, std::size_t quads, const Poin
 }  // namespace
 
 int main(int argc, char** argv) {
-  int runs = 5, r = 0, c = 0;
-  std::string off = DARTCHECK_BENCH_MESH, only;
-  for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
-    else if (!std::strcmp(argv[k], "--mesh") && k + 1 < argc) off = argv[++k];
-    else if (!std::strcmp(argv[k], "--only") && k + 1 < argc) only = argv[++k];
-    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc && std::sscanf(argv[++k], "%dx%d", &r, &c) == 2) continue;
-    else {
-      std::fprintf(stderr, "usage: %s [--runs N] [--mesh FILE.off | --grid RxC] [--only TEXT]\n", argv[0]);
-      return 2;
-    }
-  }
-  std::string temporary;
-  if (r > 0) {
-    off = temporary = "/tmp/dartcheck-bench-catmull-clark-" + std::to_string(getpid()) + ".off";
-    write_torus_off(off, r, c);
-  }
+  MeshInput input;
+  if (!input.parse(argc, argv, DARTCHECK_BENCH_MESH, "catmull-clark")) return 2;
+  const int runs = input.runs;
+  const std::string &off = input.off, &only = input.only;
   // A k-gon becomes k quads: one per side (= its CGAL darts).
   std::size_t sides = 0;
   const dartcheck::Mesh mesh = dartcheck::read_mesh(off);
@@ -329,7 +316,6 @@ int main(int argc, char** argv) {
     if (only.empty() || std::strstr(p.name, only.c_str()) || &p == &all_peers.back()) peers.push_back(p);
   std::vector<Row> rows;
   for (const Peer& p : peers) rows.push_back(run_in_child<Row>(p.run));
-  if (!temporary.empty()) std::remove(temporary.c_str());
   const Result& base = rows.back().r;
   bool ok = true;
   std::printf("| peer | output | median ms | peak MiB | bytes / output element | ms / CGAL | max deviation | boundary points | result valid |\n"

@@ -147,23 +147,10 @@ Result run_cgal(const std::string& off, int runs, std::size_t faces) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int runs = 5, r = 0, c = 0;
-  std::string off = DARTCHECK_BENCH_MESH, only;
-  for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
-    else if (!std::strcmp(argv[k], "--mesh") && k + 1 < argc) off = argv[++k];
-    else if (!std::strcmp(argv[k], "--only") && k + 1 < argc) only = argv[++k];
-    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc && std::sscanf(argv[++k], "%dx%d", &r, &c) == 2) continue;
-    else {
-      std::fprintf(stderr, "usage: %s [--runs N] [--mesh FILE.off | --grid RxC] [--only TEXT]\n", argv[0]);
-      return 2;
-    }
-  }
-  std::string temporary;
-  if (r > 0) {
-    off = temporary = "/tmp/dartcheck-bench-triangulation-" + std::to_string(getpid()) + ".off";
-    write_torus_off(off, r, c);
-  }
+  MeshInput input;
+  if (!input.parse(argc, argv, DARTCHECK_BENCH_MESH, "triangulation")) return 2;
+  const int runs = input.runs;
+  const std::string &off = input.off, &only = input.only;
   // A k-gon becomes k triangles: one per side, so as many as the input's
   // G-map darts / 2 (= its CGAL darts).
   std::size_t sides = 0;
@@ -196,7 +183,6 @@ int main(int argc, char** argv) {
   const std::vector<Peer>& peers = chosen;
   std::vector<Result> results;
   for (const Peer& p : peers) results.push_back(run_in_child(p.run));
-  if (!temporary.empty()) std::remove(temporary.c_str());
   const Result& g = results.back();
   bool ok = true;
   std::printf("| peer | output darts | median ms | peak MiB | ms / CGAL | MiB / CGAL | result valid |\n|---|---|---|---|---|---|---|\n");

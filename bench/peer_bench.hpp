@@ -37,6 +37,41 @@ namespace {
     for (int j = 0; j < c; ++j) out << "4 " << id(i, j) << " " << id(i + 1, j) << " " << id(i + 1, j + 1) << " " << id(i, j + 1) << "\n";
 }
 
+// The input of the mesh benchmarks (bench_triangulation,
+// bench_catmull_clark): [--runs N] [--mesh FILE.off | --grid RxC]
+// [--only TEXT]. A grid is written to a temporary OFF file, removed by
+// the destructor.
+struct MeshInput {
+  int runs = 5;
+  std::string off, only, temporary;
+  MeshInput(const MeshInput&) = delete;
+  MeshInput& operator=(const MeshInput&) = delete;
+  MeshInput() = default;
+  ~MeshInput() {
+    if (!temporary.empty()) std::remove(temporary.c_str());
+  }
+  // False (after the usage line) on anything else.
+  bool parse(int argc, char** argv, const std::string& default_mesh, const std::string& program) {
+    int r = 0, c = 0;
+    off = default_mesh;
+    for (int k = 1; k < argc; ++k) {
+      if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
+      else if (!std::strcmp(argv[k], "--mesh") && k + 1 < argc) off = argv[++k];
+      else if (!std::strcmp(argv[k], "--only") && k + 1 < argc) only = argv[++k];
+      else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc && std::sscanf(argv[++k], "%dx%d", &r, &c) == 2) continue;
+      else {
+        std::fprintf(stderr, "usage: %s [--runs N] [--mesh FILE.off | --grid RxC] [--only TEXT]\n", argv[0]);
+        return false;
+      }
+    }
+    if (r > 0) {
+      off = temporary = "/tmp/dartcheck-bench-" + program + "-" + std::to_string(getpid()) + ".off";
+      write_torus_off(off, r, c);
+    }
+    return true;
+  }
+};
+
 long rss_kib() {
   long pages = 0, resident = 0;
   std::FILE* f = std::fopen("/proc/self/statm", "r");
