@@ -30,6 +30,8 @@
 #include <functional>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
@@ -67,6 +69,7 @@ struct Row {
   Result r;
   double deviation = std::numeric_limits<double>::infinity();  // max over matched points, max-norm
   std::size_t boundary = 0;
+  bool has_points = true;  // false for the topology row: nothing compared
 };
 
 // The largest distance (max-norm) between matched points of a and b, or
@@ -208,7 +211,7 @@ Row run_topology(const std::string& off, int runs, std::size_t quads) {
     out = g.size();
     return ok && count_cells(g).cells[2] == quads && check_map(g).valid();
   });
-  row.deviation = 0;  // no points
+  row.has_points = false;
   return row;
 }
 
@@ -323,9 +326,11 @@ int main(int argc, char** argv) {
   for (std::size_t k = 0; k < peers.size(); ++k) {
     const Row& x = rows[k];
     ok &= x.r.ok;
-    std::printf("| %s | %zu %s | %.1f | %.1f | %.0f | %.2fx | %.2g | %zu | %s |\n", peers[k].name, x.r.out_elements, peers[k].unit, x.r.median_ms,
+    const std::string deviation = x.has_points ? fmt::format("{:.2g}", x.deviation) : "-";
+    const std::string boundary = x.has_points ? std::to_string(x.boundary) : "-";
+    std::printf("| %s | %zu %s | %.1f | %.1f | %.0f | %.2fx | %s | %s | %s |\n", peers[k].name, x.r.out_elements, peers[k].unit, x.r.median_ms,
                 x.r.peak_mib, x.r.out_elements ? x.r.peak_mib * 1048576.0 / static_cast<double>(x.r.out_elements) : 0.0,
-                x.r.median_ms / base.median_ms, x.deviation, x.boundary, x.r.ok ? "yes" : "NO");
+                x.r.median_ms / base.median_ms, deviation.c_str(), boundary.c_str(), x.r.ok ? "yes" : "NO");
   }
   return ok ? 0 : 1;
 }
