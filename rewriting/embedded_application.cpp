@@ -85,6 +85,19 @@ struct EmbeddedRewriter::Context {
   // the labeled match checked it), or it is `x.pi` for its own embedding
   // pi: no evaluation, and the orbit shares the stored pool entry.
   std::vector<NodeId> stored_at;
+  // used[u] = terms.used()[u]. closing[u]: when every node of R has one
+  // out-arc of each dimension of used[u]'s orbit, those arcs; then the
+  // links of H in that orbit from an instance of R lead to instances of
+  // R, so a class of the instantiated R is a whole pi-orbit of H, written
+  // without a walk. Each application checks these links in H first (an
+  // inconsistent rule may write others) and walks when one differs.
+  std::vector<const EmbeddingSignature*> used;
+  std::vector<std::vector<ArcId>> closing;
+  // left_closed[u]: every node of L has an out-arc of each dimension of
+  // used[u]'s orbit. A match maps arcs to links, so the matched darts are
+  // then closed under that orbit's links and each class of the
+  // instantiated L is a whole pi-orbit of G: Lemma 3 cannot fail.
+  std::vector<bool> left_closed;
   TermEvaluator ev;
   OrbitWalker walker;
   SchemeRewriter scheme;
@@ -102,6 +115,36 @@ struct EmbeddedRewriter::Context {
         if (const auto v = r.left().find(x.term.args[0].name)) at = *v;
       stored_at.push_back(at);
     }
+    used = t.used();
+    const TopoGraph& R = r.right();
+    for (const EmbeddingSignature* sig : used) {
+      std::vector<ArcId> arcs;
+      bool all = true;
+      for (NodeId y = 0; all && y < R.node_count(); ++y)
+        for (Dim i : sig->orbit) {
+          const auto out = R.out_arcs(y, i);
+          all = all && out.size() == 1;
+          if (all) arcs.push_back(out[0]);
+        }
+      closing.push_back(all ? std::move(arcs) : std::vector<ArcId>{});
+      bool left = true;
+      for (NodeId x = 0; left && x < r.left().node_count(); ++x)
+        for (Dim i : sig->orbit) left = left && !r.left().out_arcs(x, i).empty();
+      left_closed.push_back(left);
+    }
+  }
+
+  // Whether H links each instance of R as closing[u] says.
+  bool closed_in_h(std::size_t u, const Instances& in, const std::vector<std::vector<Dart>>& comatch) const {
+    if (closing[u].empty()) return false;
+    const TopoGraph& R = rule.right();
+    for (ArcId a : closing[u]) {
+      const auto& arc = R.arc(a);
+      const int w = in.generator(arc_word(words.right, a));
+      for (std::size_t p = 0; p < in.np; ++p)
+        if (g.map.link(arc.label, comatch[arc.source][p]) != comatch[arc.target][in.step(p, w)]) return false;
+    }
+    return true;
   }
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
@@ -153,7 +196,7 @@ std::vector<std::uint32_t> EmbeddedRewriter::Context::orbit_classes(const Instan
 Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
   const TopoGraph &L = rule.left(), &R = rule.right();
   // Every embedding the rule labels is written, so the map must have it.
-  for (const EmbeddingSignature* e : terms.used())
+  for (const EmbeddingSignature* e : used)
     if (!g.find(e->name))
       return refuse<EmbeddedDerivation>(Refusal::no_value, fmt::format("the rule labels {} <{}>, and the map has no embedding {}", e->name,
                                                                         fmt::join(e->orbit, ","), e->name));
@@ -203,8 +246,9 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   }
   const bool extended = terms.instantiation == Instantiation::extended;
   if (extended)
-    for (const EmbeddingSignature* e : terms.used())
-      if (auto why = overlap(in, *e); !why.empty()) return refuse<EmbeddedDerivation>(Refusal::overlap, std::move(why));
+    for (std::size_t u = 0; u < used.size(); ++u)
+      if (!left_closed[u])
+        if (auto why = overlap(in, *used[u]); !why.empty()) return refuse<EmbeddedDerivation>(Refusal::overlap, std::move(why));
 
   // Where the value of each labeled instance of R is: source[k][p] is a
   // stored value of G (a label kept from L) or an evaluated one. One
@@ -215,11 +259,16 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   };
   std::vector<Value> evaluated;
   std::vector<Source> source(terms.right.size() * np);  // source[k * np + p]
+  // classes[u]: the class roots of used[u] in the instantiated R, when one
+  // evaluation per class or a write per class needs them.
+  std::vector<std::vector<std::uint32_t>> classes(used.size());
   try {
-    for (const EmbeddingSignature* sig : terms.used()) {
+    for (std::size_t u = 0; u < used.size(); ++u) {
+      const EmbeddingSignature* sig = used[u];
       const Embedding* e = g.find(sig->name);
-      std::vector<std::uint32_t> cls;
-      if (extended && evaluation == Evaluation::one_per_orbit) cls = orbit_classes(in, *sig);
+      if (extended && (evaluation == Evaluation::one_per_orbit || !closing[u].empty())) classes[u] = orbit_classes(in, *sig);
+      std::vector<std::uint32_t> no_classes;
+      const std::vector<std::uint32_t>& cls = evaluation == Evaluation::one_per_orbit ? classes[u] : no_classes;
       std::vector<Source> from(cls.size());  // class root -> its value
       for (std::size_t k = 0; k < terms.right.size(); ++k) {
         const NodeTerm& t = terms.right[k];
@@ -292,17 +341,24 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   }
   // pooled[i]: where evaluated[i] went once moved into its pool.
   std::vector<std::uint32_t> pooled(evaluated.size(), Embedding::none);
-  for (const EmbeddingSignature* sig : terms.used()) {
+  for (std::size_t u = 0; u < used.size(); ++u) {
+    const EmbeddingSignature* sig = used[u];
     Embedding* e = g.find(sig->name);
     const auto gens = dims_generators(sig->orbit);
-    // given[d]: the writer (index into `writers`) of d's orbit in this
-    // application.
+    // The writer of each orbit of H this application labels: its first
+    // labeled instance. A closed embedding finds it by class (writer_of,
+    // per class root), another by dart (given[d], set by walking the
+    // orbit from the writer).
     struct Writer {
       std::uint32_t value;
       Source from;
       std::size_t k, p;
     };
     std::vector<Writer> writers;
+    const std::vector<std::uint32_t>& cls = classes[u];
+    const bool by_class = extended && closed_in_h(u, in, comatch);
+    std::vector<std::uint32_t> writer_of(by_class ? cls.size() : 0, DartTable::none);
+    std::vector<std::pair<Dart, std::uint32_t>> second_values;  // darts of a conflict
     const DartTable::ClearOnExit emptied{given};
     for (std::size_t k = 0; k < terms.right.size(); ++k) {
       const NodeTerm& t = terms.right[k];
@@ -318,7 +374,8 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
           e->set_index(d, stored());
           continue;
         }
-        if (const std::uint32_t w = given.get(d); w != DartTable::none) {
+        const std::size_t instance = right_node[k] * np + p;
+        if (const std::uint32_t w = by_class ? writer_of[cls[instance]] : given.get(d); w != DartTable::none) {
           const Writer& first = writers[w];
           // The orbit already has this value: the same source (one per
           // orbit), the same stored value, or an equal evaluated one.
@@ -328,7 +385,8 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
           out.conflicts.push_back(fmt::format("the {}-orbit of dart {} gets {} from {} and {} from {}: the extended rule breaks (A), so the propagation "
                                               "of 003 Def. 12 does not exist",
                                               sig->name, d, e->pool[first.value].str(), in.name(R, right_node[first.k], first.p), v.str(), in.name(R, y, p)));
-          e->set_index(d, stored());  // H shows both values
+          if (by_class) second_values.emplace_back(d, stored());  // H shows both values
+          else e->set_index(d, stored());
           continue;
         }
         // An evaluated value is written once as its orbit's first value:
@@ -337,11 +395,23 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
         if (!from.stored) idx = pooled[from.index] != Embedding::none ? pooled[from.index] : (pooled[from.index] = e->store(std::move(v)));
         const auto w = static_cast<std::uint32_t>(writers.size());
         writers.push_back({idx, from, k, p});
+        if (by_class) {
+          writer_of[cls[instance]] = w;
+          continue;
+        }
         for (Dart x : walker.orbit(d, gens)) {
           e->set_index(x, idx);
           given.set(x, w);
         }
       }
+    }
+    // A written class is a whole orbit of H: each of its instances, labeled
+    // or not, takes the class's value.
+    if (by_class) {
+      for (NodeId y = 0; y < R.node_count(); ++y)
+        for (std::size_t p = 0; p < np; ++p)
+          if (const std::uint32_t w = writer_of[cls[y * np + p]]; w != DartTable::none) e->set_index(comatch[y][p], writers[w].value);
+      for (auto [d, idx] : second_values) e->set_index(d, idx);
     }
   }
   if (scheme_match) scheme.recycle(std::move(*scheme_match));

@@ -35,6 +35,8 @@ void EmbeddedMap::label_orbit(std::size_t k, Dart d, Value v) {
   for (Dart x : walker.orbit(d, dims_generators(e.signature.orbit))) e.set_index(x, idx);
 }
 
+void Embedding::grow(Dart d) { slot.resize(std::size_t{d} + 1, none); }
+
 void EmbeddedMap::follow(const std::vector<std::pair<Dart, Dart>>& moved) {
   for (Embedding& e : embeddings) {
     std::size_t need = map.size();

@@ -30,9 +30,12 @@ struct Embedding {
     return static_cast<std::uint32_t>(pool.size() - 1);
   }
   void set_index(Dart d, std::uint32_t k) {
-    if (d >= slot.size()) slot.resize(d + 1, none);
+    if (d >= slot.size()) [[unlikely]]
+      grow(d);
     slot[d] = k;
   }
+  /// Extends `slot` to dart d (out of line: the hot set_index inlines).
+  void grow(Dart d);
   void set(Dart d, Value v) { set_index(d, store(std::move(v))); }
 };
 

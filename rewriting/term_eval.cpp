@@ -57,7 +57,7 @@ Multiset& TermEvaluator::collect_memo(const std::string& name, const std::vector
   // A multiset has no order; a canonical one makes every function of it
   // (center's floating-point sum) the same from whichever dart of the
   // orbit the traversal starts.
-  std::sort(out.begin(), out.end(), [](const Value& a, const Value& b) { return std::tie(a.x, a.i, a.s) < std::tie(b.x, b.i, b.s); });
+  std::sort(out.begin(), out.end(), value_less);
   const auto k = static_cast<std::uint32_t>(memo->bags.size());
   memo->bags.push_back(std::move(out));
   for (Dart x : orbit_) memo->bag_of.set(x, k);

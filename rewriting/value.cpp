@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <deque>
+#include <mutex>
+#include <tuple>
+#include <unordered_map>
 
 #include <fmt/format.h>
 
@@ -83,11 +87,50 @@ Value Value::boolean(bool v) {
   r.i = v ? 1 : 0;
   return r;
 }
+namespace {
+
+// Strings are few (Jerboa's names and tags) and immortal: a deque keeps
+// each text at its address, the map finds a text's number. A mutex makes
+// interning safe from several threads.
+struct InternTable {
+  std::mutex lock;
+  std::deque<std::string> texts;
+  std::unordered_map<std::string_view, std::int64_t> number;
+};
+
+InternTable& interned() {
+  static InternTable table;
+  return table;
+}
+
+}  // namespace
+
 Value Value::text(std::string v) {
+  InternTable& t = interned();
+  const std::scoped_lock hold(t.lock);
   Value r;
   r.type = ValueType::string;
-  r.s = std::move(v);
+  if (const auto it = t.number.find(v); it != t.number.end()) {
+    r.i = it->second;
+    return r;
+  }
+  r.i = static_cast<std::int64_t>(t.texts.size());
+  t.texts.push_back(std::move(v));
+  t.number.emplace(t.texts.back(), r.i);
   return r;
+}
+
+const std::string& Value::string() const {
+  static const std::string empty;
+  if (type != ValueType::string) return empty;
+  InternTable& t = interned();
+  const std::scoped_lock hold(t.lock);
+  return t.texts[static_cast<std::size_t>(i)];
+}
+
+bool value_less(const Value& a, const Value& b) {
+  if (a.type == ValueType::string && b.type == ValueType::string) return a.string() < b.string();
+  return std::tie(a.type, a.x, a.i) < std::tie(b.type, b.x, b.i);
 }
 Value Value::coords(ValueType t, std::array<double, 3> c) {
   Value r;
@@ -101,7 +144,7 @@ std::string Value::str() const {
     case ValueType::real: return number(x[0]);
     case ValueType::integer: return std::to_string(i);
     case ValueType::boolean: return i ? "true" : "false";
-    case ValueType::string: return fmt::format("\"{}\"", s);
+    case ValueType::string: return fmt::format("\"{}\"", string());
     default: break;
   }
   std::vector<std::string> parts;

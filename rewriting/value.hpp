@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace dartcheck {
@@ -35,11 +36,13 @@ struct Sort {
   friend bool operator==(const Sort&, const Sort&) = default;
 };
 
+/// 40 bytes and trivially copyable: pools of values move with memmove and
+/// compare member by member. A string is interned, so `i` is its number in
+/// a process-wide table and equal strings have equal numbers.
 struct Value {
   ValueType type = ValueType::real;
   std::array<double, 3> x{};  // coordinates; real in x[0]
-  std::int64_t i = 0;         // integer, boolean
-  std::string s;              // string
+  std::int64_t i = 0;         // integer, boolean; a string's intern number
 
   static Value real(double v);
   static Value integer(std::int64_t v);
@@ -47,11 +50,20 @@ struct Value {
   static Value text(std::string v);
   static Value coords(ValueType t, std::array<double, 3> c);
 
+  /// The text of a string value (empty for other types).
+  const std::string& string() const;
+
   /// "(0.5, 0.5)" for points and vectors, "rgb(1, 0, 0)" for colors,
   /// the number, true/false, or the quoted string.
   std::string str() const;
   friend bool operator==(const Value&, const Value&) = default;
 };
+static_assert(std::is_trivially_copyable_v<Value>);
+
+/// A strict order on values of one type: coordinates, then the integer,
+/// then a string's text (not its intern number, which depends on the
+/// order strings were first met).
+bool value_less(const Value& a, const Value& b);
 
 /// Parses a value of type t from text: "1 2", "1, 2", "(1, 2)", "[1,2]"
 /// for coordinates; a number, true/false, or any text for strings.

@@ -54,7 +54,7 @@ TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWr
   // applications do. Three applications in a row on random embedded maps,
   // for the consistent rules of the embedding and subdivision catalogs.
   std::mt19937 rng(11);
-  std::size_t compared = 0, rules = 0;
+  std::size_t compared = 0, rules = 0, propagated = 0;
   for (const Catalog* catalog : {&embedding_catalog(), &subdivision_catalog()}) {
     for (const auto& r : catalog->rules) {
       if (!static_failures_of(r).empty()) continue;
@@ -76,6 +76,20 @@ TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWr
           ASSERT_EQ(values_of(fresh), values_of(reused)) << r.rule.name();
           ASSERT_EQ(a.value->written.size(), b.value->written.size()) << r.rule.name();
           for (std::size_t k = 0; k < a.value->written.size(); ++k) ASSERT_EQ(a.value->written[k].value, b.value->written[k].value) << r.rule.name();
+          // Def. 12 (extended): the whole pi-orbit of H of every labeled
+          // instance carries its value, whether the rewriter wrote it by
+          // walking the orbit or by the classes of a closed R.
+          if (r.terms->instantiation == Instantiation::extended) {
+            OrbitWalker walk(fresh.map);
+            for (const WrittenValue& w : a.value->written) {
+              const Embedding& e = *fresh.find(w.embedding);
+              for (Dart x : walk.orbit(w.dart, dims_generators(e.signature.orbit))) {
+                ASSERT_NE(e.value(x), nullptr) << r.rule.name() << ": dart " << x << " of the orbit of " << w.node;
+                ASSERT_EQ(*e.value(x), w.value) << r.rule.name() << ": dart " << x << " of the orbit of " << w.node;
+                ++propagated;
+              }
+            }
+          }
           ++compared;
         }
       }
@@ -83,6 +97,7 @@ TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWr
   }
   EXPECT_EQ(rules, 16u);  // 14 + catmull-clark-points, catmull-clark
   EXPECT_GT(compared, 300u);
+  EXPECT_GT(propagated, 10000u);
 }
 
 TEST(EmbeddingCatalog, FaceStretchingOverlapsOnATriangle) {
