@@ -99,6 +99,9 @@ struct EmbeddedRewriter::Context {
   // instantiated L is a whole pi-orbit of G: Lemma 3 cannot fail.
   std::vector<bool> left_closed;
   TermEvaluator ev;
+  // The terms of L and R compiled for ev, once per application (the map
+  // may have gained embeddings between applications).
+  std::vector<CompiledTerm> left_code, right_code;
   OrbitWalker walker;
   SchemeRewriter scheme;
   DartTable orbit_of, given;  // each left empty between applications
@@ -220,11 +223,15 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   // 2. Evaluation (Def. 10) on G, and the labeled match of L. binding[p]
   //    holds the darts of L's nodes in pattern copy p.
   ev.forget();
+  const std::vector<std::string>& names = L.names();
+  left_code.resize(terms.left.size());
+  right_code.resize(terms.right.size());
+  for (std::size_t k = 0; k < terms.left.size(); ++k) ev.compile(terms.left[k].term, names, left_code[k]);
+  for (std::size_t k = 0; k < terms.right.size(); ++k) ev.compile(terms.right[k].term, names, right_code[k]);
   std::vector<Dart> flat(np * nl);
   for (NodeId x = 0; x < nl; ++x)
     for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.dart[x][p];
   auto binding = [&](std::size_t p) { return std::span<const Dart>(flat.data() + p * nl, nl); };
-  const std::vector<std::string>& names = L.names();
   try {
     for (std::size_t k = 0; k < terms.left.size(); ++k) {
       const NodeTerm& t = terms.left[k];
@@ -234,7 +241,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       for (std::size_t p = 0; p < np; ++p) {
         const Value* have = e ? e->value(in.dart[x][p]) : nullptr;
         if (trivial && have) continue;
-        const Value want = ev.value(t.term, names, binding(p));
+        const Value want = ev.value(left_code[k], binding(p));
         if (!have || !(*have == want))
           return refuse<EmbeddedDerivation>(Refusal::label_mismatch,
                                             fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding, t.term.str(),
@@ -287,7 +294,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
             here = {e->slot[d], true};
           } else {
             here = {static_cast<std::uint32_t>(evaluated.size()), false};
-            evaluated.push_back(ev.value(t.term, names, binding(p)));
+            evaluated.push_back(ev.value(right_code[k], binding(p)));
           }
           if (first) *first = here;
         }

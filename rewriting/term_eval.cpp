@@ -1,7 +1,6 @@
 #include "rewriting/term_eval.hpp"
 
 #include <algorithm>
-#include <tuple>
 
 #include <fmt/format.h>
 
@@ -9,59 +8,132 @@ namespace dartcheck {
 
 TermEvaluator::TermEvaluator(const EmbeddedMap& g) : g_(g), outer_(g.map), inner_(g.map) {}
 
-const Embedding& TermEvaluator::embedding(const std::string& name) const {
-  const Embedding* e = g_.find(name);
-  if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", name));
-  return *e;
+const Embedding* TermEvaluator::embedding(const std::string& name, std::size_t* index) const {
+  for (std::size_t k = 0; k < g_.embeddings.size(); ++k)
+    if (g_.embeddings[k].signature.name == name) {
+      if (index) *index = k;
+      return &g_.embeddings[k];
+    }
+  return nullptr;
 }
 
-Dart TermEvaluator::node(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {
+// --- Compilation ---------------------------------------------------------
+
+// Resolves the node term t (a variable followed by alpha_i's) into s.slot
+// and the links appended to out; false (and a fail step's message in
+// out.failures_) when it cannot be.
+bool TermEvaluator::emit_node(const Term& t, std::span<const std::string> names, CompiledTerm& out, CompiledTerm::Step& s) {
   if (t.kind == Term::Kind::variable) {
     for (std::size_t k = 0; k < names.size(); ++k)
-      if (names[k] == t.name) return darts[k];
-    throw EvaluationError(fmt::format("node variable '{}' is not bound", t.name));
+      if (names[k] == t.name) {
+        s.slot = static_cast<std::uint32_t>(k);
+        return true;
+      }
+    out.failures_.push_back(fmt::format("node variable '{}' is not bound", t.name));
+    return false;
   }
   // t is x.alpha_i (the checker admits no other Node term).
-  const Dart d = node(t.args[0], names, darts);
-  if (!g_.map.model().contains(t.dim)) throw EvaluationError(fmt::format("alpha{} is not a dimension of the map", t.dim));
-  const Dart n = g_.map.link(t.dim, d);
-  if (n == no_dart) throw EvaluationError(fmt::format("{}: dart {} has no {}-arc", t.str(), d, t.dim));
-  return n;
+  if (!emit_node(t.args[0], names, out, s)) return false;
+  if (!g_.map.model().contains(t.dim)) {
+    out.failures_.push_back(fmt::format("alpha{} is not a dimension of the map", t.dim));
+    return false;
+  }
+  out.links_.push_back({t.dim, &t});
+  return true;
 }
 
-Multiset& TermEvaluator::collect_memo(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
-  const Embedding& e = embedding(name);
-  auto memo = std::find_if(memo_.begin(), memo_.end(), [&](const CollectMemo& m) { return m.embedding == name && m.orbit == orbit; });
-  if (memo == memo_.end()) {
-    std::vector<Dim> within;  // <o> ∩ <o'>: the pi-orbits inside the <o'>-orbit
-    for (Dim i : e.signature.orbit)
-      if (std::find(orbit.begin(), orbit.end(), i) != orbit.end()) within.push_back(i);
-    memo = memo_.insert(memo_.end(), CollectMemo{name, orbit, dims_generators(orbit), dims_generators(within), {}, {}});
+void TermEvaluator::emit(const Term& t, std::span<const std::string> names, CompiledTerm& out) {
+  using Op = CompiledTerm::Step::Op;
+  CompiledTerm::Step s;
+  s.term = &t;
+  auto fail = [&](std::string why) {
+    out.failures_.push_back(std::move(why));
+    s.op = Op::fail;
+    s.target = static_cast<std::uint32_t>(out.failures_.size() - 1);
+    out.steps_.push_back(s);
+  };
+  switch (t.kind) {
+    case Term::Kind::literal:
+    case Term::Kind::parameter: s.op = Op::literal; break;
+    case Term::Kind::access:
+    case Term::Kind::collect: {
+      s.op = t.kind == Term::Kind::access ? Op::access : Op::collect;
+      s.first = static_cast<std::uint32_t>(out.links_.size());
+      if (!emit_node(t.args[0], names, out, s)) {
+        s.op = Op::fail;
+        s.target = static_cast<std::uint32_t>(out.failures_.size() - 1);
+        break;
+      }
+      s.last = static_cast<std::uint32_t>(out.links_.size());
+      std::size_t e = 0;
+      if (!embedding(t.name, &e)) return fail(fmt::format("the map has no embedding '{}'", t.name));
+      s.target = static_cast<std::uint32_t>(s.op == Op::access ? e : memo_for(t.name, e, t.orbit));
+      break;
+    }
+    case Term::Kind::variable:
+    case Term::Kind::neighbour: return fail(fmt::format("'{}' is a node, not a value", t.str()));
+    case Term::Kind::call:
+      if (!t.function) return fail(fmt::format("'{}' was not type-checked", t.str()));
+      for (const Term& a : t.args) emit(a, names, out);
+      s.op = Op::call;
+      s.target = static_cast<std::uint32_t>(t.args.size());
+      break;
   }
-  if (const std::uint32_t k = memo->bag_of.get(d); k != DartTable::none) return memo->bags[k];
+  out.steps_.push_back(s);
+}
 
-  orbit_ = outer_.orbit(d, memo->outer);  // copied: the inner walks reuse no state of it
+void TermEvaluator::compile(const Term& t, std::span<const std::string> names, CompiledTerm& out) {
+  out.steps_.clear();
+  out.links_.clear();
+  out.failures_.clear();
+  out.root_ = &t;
+  emit(t, names, out);
+}
+
+// --- Collects --------------------------------------------------------------
+
+std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, const std::vector<Dim>& orbit) {
+  for (std::size_t k = 0; k < memo_.size(); ++k)
+    if (memo_[k].embedding == e && memo_[k].name == name && memo_[k].orbit == orbit) return k;
+  std::vector<Dim> within;  // <o> ∩ <o'>: the pi-orbits inside the <o'>-orbit
+  for (Dim i : g_.embeddings[e].signature.orbit)
+    if (std::find(orbit.begin(), orbit.end(), i) != orbit.end()) within.push_back(i);
+  memo_.push_back(CollectMemo{name, e, orbit, dims_generators(orbit), dims_generators(within), {}, {}});
+  return memo_.size() - 1;
+}
+
+std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
+  if (const std::uint32_t k = memo.bag_of.get(d); k != DartTable::none) return k;
+  const Embedding& e = g_.embeddings[memo.embedding];
+  orbit_ = outer_.orbit(d, memo.outer);  // copied: the inner walks reuse no state of it
   Multiset out;
   const DartTable::ClearOnExit emptied{done_};
   for (Dart x : orbit_) {
     if (done_.get(x) != DartTable::none) continue;
-    const auto& piece = inner_.orbit(x, memo->inner);
+    const auto& piece = inner_.orbit(x, memo.inner);
     const Value* v = nullptr;
     for (Dart y : piece) {
       done_.set(y, 1);
       if (!v) v = e.value(y);
     }
-    if (!v) throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", name, fmt::join(orbit, ","), name, x));
+    if (!v) throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", memo.name, fmt::join(memo.orbit, ","), memo.name, x));
     out.push_back(*v);
   }
   // A multiset has no order; a canonical one makes every function of it
   // (center's floating-point sum) the same from whichever dart of the
   // orbit the traversal starts.
   std::sort(out.begin(), out.end(), value_less);
-  const auto k = static_cast<std::uint32_t>(memo->bags.size());
-  memo->bags.push_back(std::move(out));
-  for (Dart x : orbit_) memo->bag_of.set(x, k);
-  return memo->bags.back();
+  const auto k = static_cast<std::uint32_t>(memo.bags.size());
+  memo.bags.push_back(std::move(out));
+  for (Dart x : orbit_) memo.bag_of.set(x, k);
+  return k;
+}
+
+const Multiset& TermEvaluator::collect(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
+  std::size_t e = 0;
+  if (!embedding(name, &e)) throw EvaluationError(fmt::format("the map has no embedding '{}'", name));
+  CollectMemo& memo = memo_[memo_for(name, e, orbit)];
+  return memo.bags[collect_bag(memo, d)];
 }
 
 void TermEvaluator::forget() {
@@ -71,58 +143,62 @@ void TermEvaluator::forget() {
   }
 }
 
-Operand TermEvaluator::eval(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {
-  switch (t.kind) {
-    case Term::Kind::literal:
-    case Term::Kind::parameter: return t.literal;
-    case Term::Kind::access: {
-      const Dart d = node(t.args[0], names, darts);
-      const Value* v = embedding(t.name).value(d);
-      if (!v) throw EvaluationError(fmt::format("{}: dart {} has no {} value", t.str(), d, t.name));
-      return *v;
-    }
-    case Term::Kind::collect: return collect_memo(t.name, t.orbit, node(t.args[0], names, darts));
-    case Term::Kind::variable:
-    case Term::Kind::neighbour: throw EvaluationError(fmt::format("'{}' is a node, not a value", t.str()));
-    case Term::Kind::call: break;
+// --- Running ---------------------------------------------------------------
+
+Dart TermEvaluator::node(const CompiledTerm& c, const CompiledTerm::Step& s, std::span<const Dart> darts) const {
+  Dart d = darts[s.slot];
+  for (std::uint32_t k = s.first; k < s.last; ++k) {
+    const CompiledTerm::Link& l = c.links_[k];
+    const Dart n = g_.map.link(l.dim, d);
+    if (n == no_dart) throw EvaluationError(fmt::format("{}: dart {} has no {}-arc", l.term->str(), d, l.dim));
+    d = n;
   }
-  if (!t.function) throw EvaluationError(fmt::format("'{}' was not type-checked", t.str()));
-  // A collect argument lends its memorised multiset to the call (moved in
-  // and back) instead of copying it. The arguments are evaluated first
-  // (memorising every collect), then the multisets are lent: no collect
-  // runs while one is out, and one lent twice is copied the second time.
-  std::vector<Operand> args(t.args.size());
-  for (std::size_t k = 0; k < t.args.size(); ++k) {
-    const Term& a = t.args[k];
-    if (a.kind == Term::Kind::collect) collect_memo(a.name, a.orbit, node(a.args[0], names, darts));
-    else args[k] = eval(a, names, darts);
-  }
-  std::vector<std::pair<std::size_t, Multiset*>> lent;
-  for (std::size_t k = 0; k < t.args.size(); ++k) {
-    const Term& a = t.args[k];
-    if (a.kind != Term::Kind::collect) continue;
-    Multiset& m = collect_memo(a.name, a.orbit, node(a.args[0], names, darts));
-    if (const auto it = std::find_if(lent.begin(), lent.end(), [&](const auto& x) { return x.second == &m; }); it != lent.end()) {
-      args[k] = std::get<Multiset>(args[it->first]);  // m itself is out
-      continue;
+  return d;
+}
+
+Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
+  using Op = CompiledTerm::Step::Op;
+  stack_.clear();
+  for (const CompiledTerm::Step& s : c.steps_) {
+    switch (s.op) {
+      case Op::literal: stack_.push_back({s.term->literal}); break;
+      case Op::access: {
+        const Dart d = node(c, s, darts);
+        const Value* v = g_.embeddings[s.target].value(d);
+        if (!v) throw EvaluationError(fmt::format("{}: dart {} has no {} value", s.term->str(), d, s.term->name));
+        stack_.push_back({*v});
+        break;
+      }
+      case Op::collect: {
+        const Dart d = node(c, s, darts);
+        stack_.push_back({{}, s.target, collect_bag(memo_[s.target], d)});
+        break;
+      }
+      case Op::call: {
+        // Every argument is evaluated (and every collect memorised), so
+        // the multisets can be lent by address for the call.
+        const std::size_t base = stack_.size() - s.target;
+        args_.clear();
+        for (std::size_t k = base; k < stack_.size(); ++k) {
+          const Entry& a = stack_[k];
+          if (a.memo == DartTable::none) args_.emplace_back(a.value);
+          else args_.emplace_back(&memo_[a.memo].bags[a.bag]);
+        }
+        const Value r = s.term->function->apply(args_);
+        stack_.resize(base);
+        stack_.push_back({r});
+        break;
+      }
+      case Op::fail: throw EvaluationError(c.failures_[s.target]);
     }
-    lent.emplace_back(k, &m);
-    args[k] = std::move(m);
   }
-  struct GiveBack {
-    std::vector<Operand>& args;
-    std::vector<std::pair<std::size_t, Multiset*>>& lent;
-    ~GiveBack() {
-      for (auto [k, m] : lent) *m = std::move(std::get<Multiset>(args[k]));
-    }
-  } give_back{args, lent};
-  return t.function->apply(args);
+  if (stack_.back().memo != DartTable::none) throw EvaluationError(fmt::format("'{}' is a multiset, not a value", c.root_->str()));
+  return stack_.back().value;
 }
 
 Value TermEvaluator::value(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {
-  Operand r = eval(t, names, darts);
-  if (auto* v = std::get_if<Value>(&r)) return std::move(*v);
-  throw EvaluationError(fmt::format("'{}' is a multiset, not a value", t.str()));
+  compile(t, names, once_);
+  return value(once_, darts);
 }
 
 }  // namespace dartcheck

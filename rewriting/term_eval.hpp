@@ -17,6 +17,36 @@
 
 namespace dartcheck {
 
+class TermEvaluator;
+
+/// A checked term compiled for one evaluator, in postfix order: node
+/// variables resolved to binding slots, embeddings to the map's embedding
+/// index, collects to the evaluator's memo. Running it looks nothing up by
+/// name and allocates nothing once the evaluator's stack has grown. What
+/// cannot be resolved (an unbound variable, an embedding the map lacks)
+/// compiles to a step that throws when run, as a tree walk would. Valid
+/// while the term lives and the map's embeddings are only appended to.
+class CompiledTerm {
+ private:
+  friend class TermEvaluator;
+  struct Step {
+    enum class Op : std::uint8_t { literal, access, collect, call, fail };
+    Op op = Op::literal;
+    std::uint32_t slot = 0;             // access, collect: binding of the node variable
+    std::uint32_t first = 0, last = 0;  // access, collect: links_[first, last) followed from it
+    std::uint32_t target = 0;           // embedding (access), memo (collect), argument count (call), message (fail)
+    const Term* term = nullptr;         // the literal, the function, the text in messages
+  };
+  struct Link {
+    Dim dim;
+    const Term* term;  // x.alpha_i, for the message when d has no i-arc
+  };
+  std::vector<Step> steps_;
+  std::vector<Link> links_;
+  std::vector<std::string> failures_;
+  const Term* root_ = nullptr;
+};
+
 /// Evaluates checked terms against one map; reuses its traversal marks
 /// across calls, so evaluating many terms costs the orbits they read. A
 /// collect is memorised for every dart of the <o'>-orbit it walked (the
@@ -27,36 +57,53 @@ class TermEvaluator {
  public:
   explicit TermEvaluator(const EmbeddedMap& g);
 
-  /// The value of a value-sorted term with node variables `names[k]`
-  /// bound to `darts[k]`. Throws EvaluationError when a dart has no value,
-  /// an alpha_i has no arc, or a function has no value.
+  /// Compiles `t` with node variables `names[k]` bound to the k-th dart of
+  /// the bindings it will run on (out is reused: no allocation once grown).
+  void compile(const Term& t, std::span<const std::string> names, CompiledTerm& out);
+  /// The value of a compiled value-sorted term on `darts`. Throws
+  /// EvaluationError when a dart has no value, an alpha_i has no arc, or
+  /// a function has no value.
+  Value value(const CompiledTerm& c, std::span<const Dart> darts);
+  /// Compiles and runs `t` once (for callers that evaluate a term once).
   Value value(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
   /// The multiset of a collect term.
-  const Multiset& collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d) { return collect_memo(embedding, orbit, d); }
+  const Multiset& collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
   /// Drops the memorised collects (after a change of the map).
   void forget();
 
  private:
-  Operand eval(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
-  Dart node(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
-  const Embedding& embedding(const std::string& name) const;
-  Multiset& collect_memo(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
-
   // The collects of one (embedding, <o'>): bag_of[d] indexes `bags` for
   // every dart of an <o'>-orbit already walked.
   struct CollectMemo {
-    std::string embedding;
+    std::string name;
+    std::size_t embedding;  // index in the map's embeddings
     std::vector<Dim> orbit;
     std::vector<Word> outer, inner;  // generators of <o'> and <o> ∩ <o'>
     DartTable bag_of;
     std::vector<Multiset> bags;
   };
+  // A stack entry: a value, or the multiset bags[bag] of memo_[memo]
+  // (an index: bags may grow while later arguments are evaluated).
+  struct Entry {
+    Value value;
+    std::uint32_t memo = DartTable::none, bag = 0;
+  };
+
+  void emit(const Term& t, std::span<const std::string> names, CompiledTerm& out);
+  bool emit_node(const Term& t, std::span<const std::string> names, CompiledTerm& out, CompiledTerm::Step& s);
+  Dart node(const CompiledTerm& c, const CompiledTerm::Step& s, std::span<const Dart> darts) const;
+  const Embedding* embedding(const std::string& name, std::size_t* index = nullptr) const;
+  std::size_t memo_for(const std::string& name, std::size_t embedding, const std::vector<Dim>& orbit);
+  std::uint32_t collect_bag(CollectMemo& memo, Dart d);
 
   const EmbeddedMap& g_;
   OrbitWalker outer_, inner_;
   std::vector<Dart> orbit_;
   DartTable done_;
   std::vector<CollectMemo> memo_;
+  std::vector<Entry> stack_;
+  std::vector<Operand> args_;
+  CompiledTerm once_;
 };
 
 }  // namespace dartcheck

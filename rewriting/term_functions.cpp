@@ -9,8 +9,8 @@ namespace dartcheck {
 namespace {
 
 using VT = ValueType;
-const Value& val(std::span<const Operand> a, std::size_t k) { return std::get<Value>(a[k]); }
-const Multiset& bag(std::span<const Operand> a, std::size_t k) { return std::get<Multiset>(a[k]); }
+const Value& val(std::span<const Operand> a, std::size_t k) { return value_arg(a, k); }
+const Multiset& bag(std::span<const Operand> a, std::size_t k) { return multiset_arg(a, k); }
 
 Value combine(VT t, const Value& p, double a, const Value& q, double b) {
   std::array<double, 3> c{};

@@ -138,7 +138,7 @@ TEST(Terms, UserFunctionsRegisteredWithTheirProfile) {
   FunctionRegistry f = FunctionRegistry::builtin();
   f.add("scale", {Sort::of(ValueType::point2), Sort::of(ValueType::real)}, Sort::of(ValueType::point2), [](std::span<const Operand> a) {
     const Value& p = std::get<Value>(a[0]);
-    const double s = std::get<Value>(a[1]).x[0];
+    const double s = value_arg(a, 1).x[0];
     return Value::coords(ValueType::point2, {p.x[0] * s, p.x[1] * s, 0});
   });
   EmbeddedMap g(Map(Model::gmap(2), 1));
@@ -161,10 +161,10 @@ TEST(Terms, CollectArgumentsReachFunctionsWholeWhenRepeated) {
   const Sort bag = Sort::bag(ValueType::point2), real = Sort::of(ValueType::real), point = Sort::of(ValueType::point2);
   // sizes(m1, m2) = |m1| + 10 |m2|; size_at(m, p) = |m| + p.x.
   f.add("sizes", {bag, bag}, real, [](std::span<const Operand> a) {
-    return Value::real(static_cast<double>(std::get<Multiset>(a[0]).size() + 10 * std::get<Multiset>(a[1]).size()));
+    return Value::real(static_cast<double>(multiset_arg(a, 0).size() + 10 * multiset_arg(a, 1).size()));
   });
   f.add("size_at", {bag, point}, real, [](std::span<const Operand> a) {
-    return Value::real(static_cast<double>(std::get<Multiset>(a[0]).size()) + std::get<Value>(a[1]).x[0]);
+    return Value::real(static_cast<double>(multiset_arg(a, 0).size()) + value_arg(a, 1).x[0]);
   });
   // A triangle face: 6 darts, three corners (pos on <1,2>) at x = 0, 3, 6.
   EmbeddedMap g(Map(Model::gmap(2), 6));
