@@ -98,7 +98,7 @@ std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, cons
   std::vector<Dim> within;  // <o> ∩ <o'>: the pi-orbits inside the <o'>-orbit
   for (Dim i : g_.embeddings[e].signature.orbit)
     if (std::find(orbit.begin(), orbit.end(), i) != orbit.end()) within.push_back(i);
-  memo_.push_back(CollectMemo{name, e, orbit, dims_generators(orbit), dims_generators(within), {}, {}});
+  memo_.push_back(CollectMemo{name, e, orbit, dims_generators(orbit), dims_generators(within), {}, {}, {0}});
   return memo_.size() - 1;
 }
 
@@ -106,7 +106,8 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   if (const std::uint32_t k = memo.bag_of.get(d); k != DartTable::none) return k;
   const Embedding& e = g_.embeddings[memo.embedding];
   orbit_ = outer_.orbit(d, memo.outer);  // copied: the inner walks reuse no state of it
-  Multiset out;
+  std::vector<Value>& out = memo.elements;
+  const std::size_t first = out.size();
   const DartTable::ClearOnExit emptied{done_};
   for (Dart x : orbit_) {
     if (done_.get(x) != DartTable::none) continue;
@@ -116,30 +117,34 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
       done_.set(y, 1);
       if (!v) v = e.value(y);
     }
-    if (!v) throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", memo.name, fmt::join(memo.orbit, ","), memo.name, x));
+    if (!v) {
+      out.resize(first);
+      throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", memo.name, fmt::join(memo.orbit, ","), memo.name, x));
+    }
     out.push_back(*v);
   }
   // A multiset has no order; a canonical one makes every function of it
   // (center's floating-point sum) the same from whichever dart of the
   // orbit the traversal starts.
-  std::sort(out.begin(), out.end(), value_less);
-  const auto k = static_cast<std::uint32_t>(memo.bags.size());
-  memo.bags.push_back(std::move(out));
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), value_less);
+  const auto k = static_cast<std::uint32_t>(memo.start.size() - 1);
+  memo.start.push_back(static_cast<std::uint32_t>(out.size()));
   for (Dart x : orbit_) memo.bag_of.set(x, k);
   return k;
 }
 
-const Multiset& TermEvaluator::collect(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
+std::span<const Value> TermEvaluator::collect(const std::string& name, const std::vector<Dim>& orbit, Dart d) {
   std::size_t e = 0;
   if (!embedding(name, &e)) throw EvaluationError(fmt::format("the map has no embedding '{}'", name));
   CollectMemo& memo = memo_[memo_for(name, e, orbit)];
-  return memo.bags[collect_bag(memo, d)];
+  return memo.bag(collect_bag(memo, d));
 }
 
 void TermEvaluator::forget() {
   for (CollectMemo& m : memo_) {
     m.bag_of.clear();
-    m.bags.clear();
+    m.elements.clear();
+    m.start.resize(1);
   }
 }
 
@@ -182,7 +187,7 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
         for (std::size_t k = base; k < stack_.size(); ++k) {
           const Entry& a = stack_[k];
           if (a.memo == DartTable::none) args_.emplace_back(a.value);
-          else args_.emplace_back(&memo_[a.memo].bags[a.bag]);
+          else args_.emplace_back(memo_[a.memo].bag(a.bag));
         }
         const Value r = s.term->function->apply(args_);
         stack_.resize(base);

@@ -66,24 +66,27 @@ class TermEvaluator {
   Value value(const CompiledTerm& c, std::span<const Dart> darts);
   /// Compiles and runs `t` once (for callers that evaluate a term once).
   Value value(const Term& t, std::span<const std::string> names, std::span<const Dart> darts);
-  /// The multiset of a collect term.
-  const Multiset& collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
+  /// The multiset of a collect term (valid until the next collect).
+  std::span<const Value> collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
   /// Drops the memorised collects (after a change of the map).
   void forget();
 
  private:
-  // The collects of one (embedding, <o'>): bag_of[d] indexes `bags` for
-  // every dart of an <o'>-orbit already walked.
+  // The collects of one (embedding, <o'>): bag_of[d] is the bag of every
+  // dart of an <o'>-orbit already walked; bag k is elements[start[k],
+  // start[k + 1]) (one array for all bags: no allocation per bag).
   struct CollectMemo {
     std::string name;
     std::size_t embedding;  // index in the map's embeddings
     std::vector<Dim> orbit;
     std::vector<Word> outer, inner;  // generators of <o'> and <o> ∩ <o'>
     DartTable bag_of;
-    std::vector<Multiset> bags;
+    std::vector<Value> elements;
+    std::vector<std::uint32_t> start{0};
+    std::span<const Value> bag(std::uint32_t k) const { return {elements.data() + start[k], elements.data() + start[k + 1]}; }
   };
-  // A stack entry: a value, or the multiset bags[bag] of memo_[memo]
-  // (an index: bags may grow while later arguments are evaluated).
+  // A stack entry: a value, or the multiset bag(bag) of memo_[memo] (an
+  // index: elements may grow while later arguments are evaluated).
   struct Entry {
     Value value;
     std::uint32_t memo = DartTable::none, bag = 0;

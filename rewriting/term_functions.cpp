@@ -10,7 +10,7 @@ namespace {
 
 using VT = ValueType;
 const Value& val(std::span<const Operand> a, std::size_t k) { return value_arg(a, k); }
-const Multiset& bag(std::span<const Operand> a, std::size_t k) { return multiset_arg(a, k); }
+std::span<const Value> bag(std::span<const Operand> a, std::size_t k) { return multiset_arg(a, k); }
 
 Value combine(VT t, const Value& p, double a, const Value& q, double b) {
   std::array<double, 3> c{};
@@ -18,7 +18,7 @@ Value combine(VT t, const Value& p, double a, const Value& q, double b) {
   return Value::coords(t, c);
 }
 
-Value average(VT t, const Multiset& m, const char* what) {
+Value average(VT t, std::span<const Value> m, const char* what) {
   if (m.empty()) throw EvaluationError(fmt::format("{} of an empty multiset", what));
   std::array<double, 3> c{};
   for (const Value& v : m)

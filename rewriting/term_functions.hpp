@@ -16,13 +16,14 @@
 
 namespace dartcheck {
 
-/// An argument of a function: a value, or a multiset the evaluator lends
-/// for the time of the call (its memorised collect: nothing is copied).
-using Operand = std::variant<Value, const Multiset*>;
+/// An argument of a function: a value, or the elements of a multiset the
+/// evaluator lends for the time of the call (its memorised collect:
+/// nothing is copied).
+using Operand = std::variant<Value, std::span<const Value>>;
 
 /// Argument k of a function as the sort its profile declares.
 inline const Value& value_arg(std::span<const Operand> a, std::size_t k) { return std::get<Value>(a[k]); }
-inline const Multiset& multiset_arg(std::span<const Operand> a, std::size_t k) { return *std::get<const Multiset*>(a[k]); }
+inline std::span<const Value> multiset_arg(std::span<const Operand> a, std::size_t k) { return std::get<std::span<const Value>>(a[k]); }
 
 /// Thrown by a function that has no value at its arguments (center of an
 /// empty multiset); evaluation reports it with the term.

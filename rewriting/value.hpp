@@ -70,7 +70,4 @@ bool value_less(const Value& a, const Value& b);
 /// Returns nullopt (and the reason) when the text is not such a value.
 std::optional<Value> parse_value(ValueType t, std::string_view text, std::string* why = nullptr);
 
-/// A multiset tau• (003 Sec. 3.4): elements in collection order.
-using Multiset = std::vector<Value>;
-
 }  // namespace dartcheck

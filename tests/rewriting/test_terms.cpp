@@ -220,7 +220,7 @@ TEST(Terms, CollectEqualsBruteForceOnRandomEmbeddedMaps) {
       for (Dim i : {0, 1, 2})
         if (rng() % 2) o2.push_back(i);
       for (const Embedding& e : g.embeddings) {
-        Multiset m = ev.collect(e.signature.name, o2, d);
+        const std::span<const Value> m = ev.collect(e.signature.name, o2, d);
         std::multiset<std::string> got;
         for (const Value& v : m) got.insert(v.str());
         ASSERT_EQ(got, brute_collect(g, e, o2, d)) << e.signature.name << " at dart " << d;
