@@ -10,8 +10,12 @@
 //         <0,1,2>, as Jerboa applies a scheme to a whole orbit);
 //     each with every instance evaluated (the dynamic check) and with one
 //     evaluation per orbit (allowed because the rule passes (A));
+//   - the floor: the same triangulation written by hand on dartcheck's
+//     Map (one pass over the old darts), with and without barycenters;
 //   - CGAL: Linear_cell_complex_for_combinatorial_map<2,3>,
-//     insert_barycenter_in_cell<2> on every face (topology + barycenter).
+//     insert_barycenter_in_cell<2> on every face (topology + barycenter),
+//     and insert_cell_0_in_cell_2 on a plain Combinatorial_map<2>
+//     (topology only).
 // Each peer runs in a child process ("peak MiB" is its own growth of the
 // peak RSS while triangulating once); times are medians of --runs
 // triangulations of a fresh copy (copy not timed). Every result is
@@ -25,6 +29,7 @@
 #include <cstring>
 #include <functional>
 
+#include <CGAL/Combinatorial_map.h>
 #include <CGAL/Linear_cell_complex_constructors.h>
 #include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
 
@@ -128,6 +133,90 @@ Result run_topology(const std::string& off, int runs, std::size_t triangles) {
   });
 }
 
+// The like-for-like floor of the dartcheck rows: the same triangulation
+// written by hand on dartcheck's own Map (and Embedding), no rule engine.
+// Old dart d keeps its number; its new darts are e(d) = n + 2d (node n1 of
+// the scheme, on the new corner-to-centre edge) and c(d) = n + 2d + 1
+// (node n2, at the centre). In the face of d, with a0 = alpha0(d) and
+// a1 = alpha1(d) read before the write:
+//   alpha1(d) = e(d); e(d): alpha0 c(d), alpha2 e(a1);
+//   c(d): alpha1 c(a0), alpha2 c(a1).
+// Only d's own alpha1 slot changes among the old darts, so one pass over
+// the old darts writes every link. The checks are those of the scheme rows.
+Result run_by_hand(const std::string& off, int runs, std::size_t triangles, bool positions) {
+  using namespace dartcheck;
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  const CatalogRule& s = *catalog.find_rule("triangulation-all-faces-pos");
+  const EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), s.terms->embeddings[0]);
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    EmbeddedMap g = input;
+    Map& m = g.map;
+    Embedding& pos = g.embeddings[0];
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto n = static_cast<Dart>(m.size());
+    m.add_darts(2 * static_cast<std::size_t>(n));
+    if (positions) {
+      // One barycenter per face, shared by its centre darts; e(d) shares
+      // d's vertex value.
+      pos.slot.resize(3 * static_cast<std::size_t>(n), Embedding::none);
+      for (Dart d = 0; d < n; ++d) {
+        if (pos.slot[n + 2 * d + 1] != Embedding::none) continue;
+        std::array<double, 3> sum{};
+        std::size_t corners = 0;
+        Dart x = d;
+        do {
+          for (std::size_t k = 0; k < 3; ++k) sum[k] += pos.pool[pos.slot[x]].x[k];
+          ++corners;
+          x = m.link(1, m.link(0, x));
+        } while (x != d);
+        for (double& v : sum) v /= static_cast<double>(corners);
+        const std::uint32_t centre = pos.store(Value::coords(ValueType::point3, sum));
+        x = d;
+        do {
+          pos.slot[n + 2 * x + 1] = centre;
+          pos.slot[n + 2 * m.link(0, x) + 1] = centre;
+          x = m.link(1, m.link(0, x));
+        } while (x != d);
+      }
+      for (Dart d = 0; d < n; ++d) pos.slot[n + 2 * d] = pos.slot[d];
+    }
+    for (Dart d = 0; d < n; ++d) {
+      const Dart a0 = m.link(0, d), a1 = m.link(1, d), e = n + 2 * d, c = e + 1;
+      m.set_link(1, d, e);
+      m.set_link(0, e, c);
+      m.set_link(1, e, d);
+      m.set_link(2, e, n + 2 * a1);
+      m.set_link(0, c, e);
+      m.set_link(1, c, n + 2 * a0 + 1);
+      m.set_link(2, c, n + 2 * a1 + 1);
+    }
+    ms = since(t0);
+    out = m.size();
+    return count_cells(m).cells[2] == triangles && check_map(m).valid() &&
+           (!positions || (check_embedding(m, pos, true).consistent() && centres_are_barycenters(input, g)));
+  });
+}
+
+// CGAL's topology-only floor: the same insertion on a plain
+// Combinatorial_map<2> (no point attributes), copied from the LCC.
+Result run_cgal_topology(const std::string& off, int runs, std::size_t faces) {
+  using CMap = CGAL::Combinatorial_map<2>;
+  LCC read;
+  std::ifstream in(off);
+  CGAL::load_off(read, in);
+  const CMap input(read);
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    CMap m(input);
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<CMap::Dart_handle> one_per_face;
+    for (auto it = m.one_dart_per_cell<2>().begin(); it != m.one_dart_per_cell<2>().end(); ++it) one_per_face.push_back(it);
+    for (auto d : one_per_face) m.insert_cell_0_in_cell_2(d);
+    ms = since(t0);
+    out = m.number_of_darts();
+    return m.is_valid() && m.one_dart_per_cell<2>().size() == faces;
+  });
+}
+
 Result run_cgal(const std::string& off, int runs, std::size_t faces) {
   LCC input;
   std::ifstream in(off);
@@ -173,6 +262,9 @@ int main(int argc, char** argv) {
       {"dartcheck triangulation-all-faces-pos, once, one evaluation per orbit",
        [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::one_per_orbit); }},
       {"dartcheck triangulation-all-faces-pos, topology only (apply_scheme, no terms)", [&] { return run_topology(off, runs, sides); }},
+      {"by hand on dartcheck's Map and Embedding, with barycenters (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, true); }},
+      {"by hand on dartcheck's Map, topology only (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, false); }},
+      {"CGAL Combinatorial_map<2> insert_cell_0_in_cell_2 on every face (topology only)", [&] { return run_cgal_topology(off, runs, sides); }},
       {"CGAL LCC insert_barycenter_in_cell<2> on every face", [&] { return run_cgal(off, runs, sides); }},
   };
   // --only keeps the peers whose name contains the text, and CGAL (the
