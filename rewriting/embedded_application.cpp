@@ -1,11 +1,11 @@
 #include "rewriting/embedded_application.hpp"
 
-#include <numeric>
 
 #include <fmt/format.h>
 
 #include "core/dart_table.hpp"
 #include "core/orbit.hpp"
+#include "rewriting/instantiated_classes.hpp"
 #include "rewriting/term_eval.hpp"
 
 namespace dartcheck {
@@ -21,14 +21,13 @@ Outcome<T> refuse(Refusal r, std::string why) {
 // scheme with one pattern position.
 struct Instances {
   std::size_t np = 1;
-  std::vector<std::vector<Dart>> dart;
+  // The scheme match's table (not copied), or one dart per node of a DPO
+  // match in `single`.
+  const std::vector<std::vector<Dart>>* dart = nullptr;
+  std::vector<std::vector<Dart>> single;
   const PatternGraphs* pattern = nullptr;  // schemes only
 
-  std::vector<Dart> column(std::size_t p) const {
-    std::vector<Dart> c;
-    for (const auto& d : dart) c.push_back(d[p]);
-    return c;
-  }
+  Dart at(NodeId x, std::size_t p) const { return (*dart)[x][p]; }
   std::string name(const TopoGraph& side, NodeId x, std::size_t p) const {
     return pattern ? fmt::format("{}@{}", side.name(x), pattern->darts[0][p]) : side.name(x);
   }
@@ -36,38 +35,9 @@ struct Instances {
   std::uint32_t step(std::size_t p, int generator) const { return pattern ? pattern->step(p, generator) : static_cast<std::uint32_t>(p); }
 };
 
-// 32-bit entries: an instantiated side has |nodes| x |P_v| instances, and
-// halving the table halves its page faults on large hook orbits.
-struct UnionFind {
-  std::vector<std::uint32_t> up;
-  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0U); }
-  std::uint32_t find(std::size_t x) {
-    auto y = static_cast<std::uint32_t>(x);
-    while (up[y] != y) y = up[y] = up[up[y]];
-    return y;
-  }
-  void unite(std::size_t a, std::size_t b) { up[find(a)] = find(b); }
-};
-
-bool in_orbit(const std::vector<Dim>& orbit, Dim d) { return std::find(orbit.begin(), orbit.end(), d) != orbit.end(); }
-
 // `x.pi` on node x for its own pi label: its value is the matched dart's.
 bool own_value(const NodeTerm& t) {
   return t.term.kind == Term::Kind::access && t.term.name == t.embedding && t.term.args[0].kind == Term::Kind::variable && t.term.args[0].name == t.node;
-}
-
-// The pi-orbits of one side of the instantiated rule: instance x * np + p
-// joined to its neighbours through the side's arcs in <o>.
-UnionFind instantiated_orbits(const TopoGraph& side, const std::vector<ConjWord>& words, const Instances& in, const std::vector<Dim>& orbit) {
-  const std::size_t np = in.np;
-  UnionFind uf(side.node_count() * np);
-  for (ArcId a = 0; a < side.arc_count(); ++a) {
-    const auto& arc = side.arc(a);
-    if (!in_orbit(orbit, arc.label)) continue;
-    const int w = in.generator(arc_word(words, a));
-    for (std::size_t p = 0; p < np; ++p) uf.unite(arc.source * np + p, arc.target * np + in.step(p, w));
-  }
-  return uf;
 }
 
 }  // namespace
@@ -104,6 +74,11 @@ struct EmbeddedRewriter::Context {
   std::vector<CompiledTerm> left_code, right_code;
   OrbitWalker walker;
   SchemeRewriter scheme;
+  // classes[u]: the classes of used[u] in the instantiated R, when one
+  // evaluation per class or a write per class needs them (kept for the
+  // next application's tables).
+  std::vector<InstantiatedClasses> classes;
+  InstantiatedClasses left_classes;  // of Lemma 3's check
   DartTable orbit_of, given;  // each left empty between applications
 
   Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
@@ -119,6 +94,7 @@ struct EmbeddedRewriter::Context {
       stored_at.push_back(at);
     }
     used = t.used();
+    classes.resize(used.size());
     const TopoGraph& R = r.right();
     for (const EmbeddingSignature* sig : used) {
       std::vector<ArcId> arcs;
@@ -152,7 +128,6 @@ struct EmbeddedRewriter::Context {
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
   std::string overlap(const Instances& in, const EmbeddingSignature& e);
-  std::vector<std::uint32_t> orbit_classes(const Instances& in, const EmbeddingSignature& e) const;
 };
 
 // Lemma 3: instances of L in different pi-orbits of the instantiated L
@@ -160,7 +135,7 @@ struct EmbeddedRewriter::Context {
 std::string EmbeddedRewriter::Context::overlap(const Instances& in, const EmbeddingSignature& e) {
   const TopoGraph& L = rule.left();
   const std::size_t np = in.np;
-  UnionFind uf = instantiated_orbits(L, words.left, in, e.orbit);
+  instantiated_classes(L, words.left, in.pattern, e.orbit, left_classes);
   // orbit_of[d]: the pi-orbit of G of each matched dart, numbered as met;
   // owner[o]: an instance of L in G orbit o.
   const DartTable::ClearOnExit emptied{orbit_of};
@@ -168,7 +143,7 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, const Embedd
   std::vector<std::size_t> owner;
   for (NodeId x = 0; x < L.node_count(); ++x)
     for (std::size_t p = 0; p < np; ++p) {
-      const Dart d = in.dart[x][p];
+      const Dart d = in.at(x, p);
       std::uint32_t o = orbit_of.get(d);
       if (o == DartTable::none) {
         o = static_cast<std::uint32_t>(owner.size());
@@ -176,24 +151,15 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, const Embedd
         owner.push_back(x * np + p);
         continue;
       }
-      const std::size_t k = x * np + p, first = owner[o];
-      if (uf.find(first) != uf.find(k)) {
+      const std::size_t first = owner[o];
+      if (left_classes.of(static_cast<NodeId>(first / np), first % np) != left_classes.of(x, p)) {
         return fmt::format("nodes {} and {} are in different {}-orbits <{}> of L, but their darts {} and {} share one {}-orbit of the map (003 Lemma 3, "
                            "non-overlap): the extended rule would give that orbit the labels of both",
                            in.name(L, static_cast<NodeId>(first / np), first % np), in.name(L, x, p), e.name, fmt::join(e.orbit, ","),
-                           in.dart[first / np][first % np], d, e.name);
+                           in.at(static_cast<NodeId>(first / np), first % np), d, e.name);
       }
     }
   return {};
-}
-
-// The pi-orbits of the instantiated R, as union-find roots of instance
-// y * np + p: its arcs in <o> are links of H, so one class lies in one
-// pi-orbit of H.
-std::vector<std::uint32_t> EmbeddedRewriter::Context::orbit_classes(const Instances& in, const EmbeddingSignature& e) const {
-  UnionFind uf = instantiated_orbits(rule.right(), words.right, in, e.orbit);
-  for (std::size_t k = 0; k < uf.up.size(); ++k) uf.find(k);  // every entry its root
-  return std::move(uf.up);
 }
 
 Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
@@ -211,12 +177,13 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
     scheme_match = std::move(*m.value);
     in.np = scheme_match->pattern.darts[0].size();
-    in.dart = scheme_match->node;
+    in.dart = &scheme_match->node;
     in.pattern = &scheme_match->pattern;
   } else {
     auto m = match_from_hooks(rule, g.map, hook_darts);
     if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
-    for (Dart d : m.value->node) in.dart.push_back({d});
+    for (Dart d : m.value->node) in.single.push_back({d});
+    in.dart = &in.single;
   }
   const std::size_t np = in.np, nl = L.node_count();
 
@@ -230,7 +197,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   for (std::size_t k = 0; k < terms.right.size(); ++k) ev.compile(terms.right[k].term, names, right_code[k]);
   std::vector<Dart> flat(np * nl);
   for (NodeId x = 0; x < nl; ++x)
-    for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.dart[x][p];
+    for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.at(x, p);
   auto binding = [&](std::size_t p) { return std::span<const Dart>(flat.data() + p * nl, nl); };
   try {
     for (std::size_t k = 0; k < terms.left.size(); ++k) {
@@ -239,13 +206,13 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       const Embedding* e = g.find(t.embedding);
       const bool trivial = own_value(t);
       for (std::size_t p = 0; p < np; ++p) {
-        const Value* have = e ? e->value(in.dart[x][p]) : nullptr;
+        const Value* have = e ? e->value(in.at(x, p)) : nullptr;
         if (trivial && have) continue;
         const Value want = ev.value(left_code[k], binding(p));
         if (!have || !(*have == want))
           return refuse<EmbeddedDerivation>(Refusal::label_mismatch,
                                             fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding, t.term.str(),
-                                                        want.str(), in.dart[x][p], have ? have->str() : "no value"));
+                                                        want.str(), in.at(x, p), have ? have->str() : "no value"));
       }
     }
   } catch (const EvaluationError& e) {
@@ -266,29 +233,30 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   };
   std::vector<Value> evaluated;
   std::vector<Source> source(terms.right.size() * np);  // source[k * np + p]
-  // classes[u]: the class roots of used[u] in the instantiated R, when one
-  // evaluation per class or a write per class needs them.
-  std::vector<std::vector<std::uint32_t>> classes(used.size());
+  std::vector<bool> has_classes(used.size());
   try {
     for (std::size_t u = 0; u < used.size(); ++u) {
       const EmbeddingSignature* sig = used[u];
       const Embedding* e = g.find(sig->name);
-      if (extended && (evaluation == Evaluation::one_per_orbit || !closing[u].empty())) classes[u] = orbit_classes(in, *sig);
-      std::vector<std::uint32_t> no_classes;
-      const std::vector<std::uint32_t>& cls = evaluation == Evaluation::one_per_orbit ? classes[u] : no_classes;
-      std::vector<Source> from(cls.size());  // class root -> its value
+      if (extended && (evaluation == Evaluation::one_per_orbit || !closing[u].empty())) {
+        instantiated_classes(R, words.right, in.pattern, sig->orbit, classes[u]);
+        has_classes[u] = true;
+      }
+      const bool per_class = has_classes[u] && evaluation == Evaluation::one_per_orbit;
+      const InstantiatedClasses& cls = classes[u];
+      std::vector<Source> from(per_class ? cls.count : 0);  // class -> its value
       for (std::size_t k = 0; k < terms.right.size(); ++k) {
         const NodeTerm& t = terms.right[k];
         if (t.embedding != sig->name) continue;
         for (std::size_t p = 0; p < np; ++p) {
-          Source* first = cls.empty() ? nullptr : &from[cls[right_node[k] * np + p]];
+          Source* first = per_class ? &from[cls.of(right_node[k], p)] : nullptr;
           Source& here = source[k * np + p];
           if (first && first->index != Embedding::none) {
             here = *first;
             continue;
           }
           if (const NodeId at = stored_at[k]; at != no_node) {
-            const Dart d = in.dart[at][p];
+            const Dart d = in.at(at, p);
             if (d >= e->slot.size() || e->slot[d] == Embedding::none)
               throw EvaluationError(fmt::format("{}: dart {} has no {} value", t.term.str(), d, t.embedding));
             here = {e->slot[d], true};
@@ -362,9 +330,9 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       std::size_t k, p;
     };
     std::vector<Writer> writers;
-    const std::vector<std::uint32_t>& cls = classes[u];
+    const InstantiatedClasses& cls = classes[u];
     const bool by_class = extended && closed_in_h(u, in, comatch);
-    std::vector<std::uint32_t> writer_of(by_class ? cls.size() : 0, DartTable::none);
+    std::vector<std::uint32_t> writer_of(by_class ? cls.count : 0, DartTable::none);
     std::vector<std::pair<Dart, std::uint32_t>> second_values;  // darts of a conflict
     const DartTable::ClearOnExit emptied{given};
     for (std::size_t k = 0; k < terms.right.size(); ++k) {
@@ -381,8 +349,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
           e->set_index(d, stored());
           continue;
         }
-        const std::size_t instance = right_node[k] * np + p;
-        if (const std::uint32_t w = by_class ? writer_of[cls[instance]] : given.get(d); w != DartTable::none) {
+        if (const std::uint32_t w = by_class ? writer_of[cls.of(y, p)] : given.get(d); w != DartTable::none) {
           const Writer& first = writers[w];
           // The orbit already has this value: the same source (one per
           // orbit), the same stored value, or an equal evaluated one.
@@ -403,7 +370,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
         const auto w = static_cast<std::uint32_t>(writers.size());
         writers.push_back({idx, from, k, p});
         if (by_class) {
-          writer_of[cls[instance]] = w;
+          writer_of[cls.of(y, p)] = w;
           continue;
         }
         for (Dart x : walker.orbit(d, gens)) {
@@ -417,7 +384,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     if (by_class) {
       for (NodeId y = 0; y < R.node_count(); ++y)
         for (std::size_t p = 0; p < np; ++p)
-          if (const std::uint32_t w = writer_of[cls[y * np + p]]; w != DartTable::none) e->set_index(comatch[y][p], writers[w].value);
+          if (const std::uint32_t w = writer_of[cls.of(y, p)]; w != DartTable::none) e->set_index(comatch[y][p], writers[w].value);
       for (auto [d, idx] : second_values) e->set_index(d, idx);
     }
   }

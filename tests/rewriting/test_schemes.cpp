@@ -17,6 +17,7 @@
 #include "rewriting/jerboa_scheme.hpp"
 #include "core/isomorphism.hpp"
 #include "core/orbit.hpp"
+#include "rewriting/instantiated_classes.hpp"
 #include "rewriting/scheme_application.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_maps.hpp"
@@ -311,4 +312,60 @@ TEST(SchemeRewriter, KeptAcrossApplicationsActsAsFresh) {
   EXPECT_GE(schemes, 10u);
   EXPECT_GT(applied, 100u);
   EXPECT_GT(refused, 100u);
+}
+
+// The classes of an instantiated side computed per pattern copy (one
+// union-find over the pattern per group of nodes) are the classes of the
+// definition (one union-find over every instance (x, p), joined to
+// (y, p·w) by each arc x -(w, i)-> y with i in <o>): the same partition.
+// Every scheme of the three catalogs, both sides, every orbit type of its
+// model, on the pattern of matches on random maps.
+TEST(InstantiatedClasses, PerPatternCopyEqualsTheDefinition) {
+  std::vector<Catalog> catalogs;
+  for (const char* f : {"seed-operations", "embedding-operations", "subdivision-operations"})
+    catalogs.push_back(read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/" + f + ".yaml"));
+  std::mt19937 rng(17);
+  std::size_t compared = 0, by_pattern = 0, by_instance = 0;
+  InstantiatedClasses fast, reference;
+  for (const Catalog& c : catalogs)
+    for (const CatalogRule& r : c.rules) {
+      if (!r.words.scheme || !has_random_generator(r.rule.model())) continue;
+      const std::vector<Dim>& dims = r.rule.model().dims;
+      for (int round = 0; round < 12; ++round) {
+        const Map g = build_random_map(r.rule.model(), draw_recipe(rng, 1 + round % 6, r.rule.model().dimension()));
+        std::vector<Dart> hooks;
+        for (std::size_t h = 0; h < r.rule.hooks().size(); ++h)
+          hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(g.size() - 1))(rng));
+        const auto m = match_scheme(r.rule, r.words, g, hooks);
+        if (!m.ok()) continue;
+        for (unsigned mask = 1; mask < (1U << dims.size()); ++mask) {
+          std::vector<Dim> orbit;
+          for (std::size_t k = 0; k < dims.size(); ++k)
+            if (mask >> k & 1U) orbit.push_back(dims[k]);
+          for (bool right : {false, true}) {
+            const TopoGraph& side = right ? r.rule.right() : r.rule.left();
+            const auto& words = right ? r.words.right : r.words.left;
+            instantiated_classes(side, words, &m.value->pattern, orbit, fast);
+            instantiated_classes_by_instance(side, words, &m.value->pattern, orbit, reference);
+            ASSERT_EQ(fast.count, reference.count) << r.rule.name();
+            std::vector<std::uint32_t> to(fast.count, ~0U), from(reference.count, ~0U);
+            for (NodeId x = 0; x < side.node_count(); ++x)
+              for (std::size_t p = 0; p < m.value->pattern.darts[0].size(); ++p) {
+                const std::uint32_t a = fast.of(x, p), b = reference.of(x, p);
+                ASSERT_LT(a, fast.count);
+                if (to[a] == ~0U) to[a] = b;
+                if (from[b] == ~0U) from[b] = a;
+                ASSERT_EQ(to[a], b) << r.rule.name() << ": a per-pattern class spans two classes of the definition";
+                ASSERT_EQ(from[b], a) << r.rule.name() << ": a class of the definition spans two per-pattern classes";
+              }
+            (fast.by_pattern ? by_pattern : by_instance) += 1;
+            ++compared;
+          }
+        }
+      }
+    }
+  EXPECT_GT(compared, 1000u);
+  EXPECT_GT(by_pattern, 500u);
+  EXPECT_GT(by_instance, 20u);  // (W, D) schemes with a word on an arc between two nodes
+  std::printf("%zu partitions compared: %zu per pattern copy, %zu by the definition\n", compared, by_pattern, by_instance);
 }
