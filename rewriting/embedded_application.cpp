@@ -224,37 +224,39 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       if (!left_closed[u])
         if (auto why = overlap(in, *used[u]); !why.empty()) return refuse<EmbeddedDerivation>(Refusal::overlap, std::move(why));
 
-  // Where the value of each labeled instance of R is: source[k][p] is a
-  // stored value of G (a label kept from L) or an evaluated one. One
-  // evaluation per class of the instantiated R when asked.
+  // Where the value of each labeled instance of R is: a stored value of G
+  // (a label kept from L) or an evaluated one. With one evaluation per
+  // class, every instance of a class takes its class's source
+  // (class_source[u][c]: no per-instance table); otherwise each instance
+  // has its own (source[k * np + p]).
   struct Source {
     std::uint32_t index = Embedding::none;
     bool stored = false;
   };
   std::vector<Value> evaluated;
-  std::vector<Source> source(terms.right.size() * np);  // source[k * np + p]
-  std::vector<bool> has_classes(used.size());
+  std::vector<Source> source;
+  std::vector<bool> has_classes(used.size()), per_class(used.size());
+  std::vector<std::vector<Source>> class_source(used.size());
+  for (std::size_t u = 0; u < used.size(); ++u) {
+    if (extended && (evaluation == Evaluation::one_per_orbit || !closing[u].empty())) {
+      instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u]);
+      has_classes[u] = true;
+    }
+    per_class[u] = has_classes[u] && evaluation == Evaluation::one_per_orbit;
+    if (per_class[u]) class_source[u].assign(classes[u].count, Source{});
+    else if (source.empty()) source.resize(terms.right.size() * np);
+  }
   try {
     for (std::size_t u = 0; u < used.size(); ++u) {
       const EmbeddingSignature* sig = used[u];
       const Embedding* e = g.find(sig->name);
-      if (extended && (evaluation == Evaluation::one_per_orbit || !closing[u].empty())) {
-        instantiated_classes(R, words.right, in.pattern, sig->orbit, classes[u]);
-        has_classes[u] = true;
-      }
-      const bool per_class = has_classes[u] && evaluation == Evaluation::one_per_orbit;
       const InstantiatedClasses& cls = classes[u];
-      std::vector<Source> from(per_class ? cls.count : 0);  // class -> its value
       for (std::size_t k = 0; k < terms.right.size(); ++k) {
         const NodeTerm& t = terms.right[k];
         if (t.embedding != sig->name) continue;
         for (std::size_t p = 0; p < np; ++p) {
-          Source* first = per_class ? &from[cls.of(right_node[k], p)] : nullptr;
-          Source& here = source[k * np + p];
-          if (first && first->index != Embedding::none) {
-            here = *first;
-            continue;
-          }
+          Source& here = per_class[u] ? class_source[u][cls.of(right_node[k], p)] : source[k * np + p];
+          if (here.index != Embedding::none) continue;  // its class has one
           if (const NodeId at = stored_at[k]; at != no_node) {
             const Dart d = in.at(at, p);
             if (d >= e->slot.size() || e->slot[d] == Embedding::none)
@@ -264,7 +266,6 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
             here = {static_cast<std::uint32_t>(evaluated.size()), false};
             evaluated.push_back(ev.value(right_code[k], binding(p)));
           }
-          if (first) *first = here;
         }
       }
     }
@@ -333,6 +334,27 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     const InstantiatedClasses& cls = classes[u];
     const bool by_class = extended && closed_in_h(u, in, comatch);
     std::vector<std::uint32_t> writer_of(by_class ? cls.count : 0, DartTable::none);
+    if (by_class && per_class[u]) {
+      // Every instance of a class took the class's source, so no two
+      // disagree: each labeled class's value is pooled once, and each
+      // instance of the class (a whole orbit of H) takes it.
+      const std::vector<Source>& of_class = class_source[u];
+      auto value = [&](Source f) -> const Value& { return f.stored ? e->pool[f.index] : evaluated[f.index]; };
+      if (record)
+        for (std::size_t k = 0; k < terms.right.size(); ++k)
+          if (terms.right[k].embedding == sig->name)
+            for (std::size_t p = 0; p < np; ++p) {
+              const NodeId y = right_node[k];
+              out.written.push_back({sig->name, in.name(R, y, p), comatch[y][p], value(of_class[cls.of(y, p)])});
+            }
+      std::vector<std::uint32_t>& pool_index = writer_of;
+      for (std::uint32_t c = 0; c < cls.count; ++c)
+        if (const Source f = of_class[c]; f.index != Embedding::none) pool_index[c] = f.stored ? f.index : e->store(evaluated[f.index]);
+      for (NodeId y = 0; y < R.node_count(); ++y)
+        for (std::size_t p = 0; p < np; ++p)
+          if (const std::uint32_t v = pool_index[cls.of(y, p)]; v != DartTable::none) e->set_index(comatch[y][p], v);
+      continue;
+    }
     std::vector<std::pair<Dart, std::uint32_t>> second_values;  // darts of a conflict
     const DartTable::ClearOnExit emptied{given};
     for (std::size_t k = 0; k < terms.right.size(); ++k) {
@@ -341,7 +363,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       const NodeId y = right_node[k];
       for (std::size_t p = 0; p < np; ++p) {
         const Dart d = comatch[y][p];
-        const Source from = source[k * np + p];
+        const Source from = per_class[u] ? class_source[u][cls.of(y, p)] : source[k * np + p];
         Value& v = from.stored ? e->pool[from.index] : pooled[from.index] != Embedding::none ? e->pool[pooled[from.index]] : evaluated[from.index];
         if (record) out.written.push_back({sig->name, in.name(R, y, p), d, v});
         auto stored = [&] { return from.stored ? from.index : e->store(v); };
