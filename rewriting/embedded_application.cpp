@@ -1,6 +1,5 @@
 #include "rewriting/embedded_application.hpp"
 
-
 #include <fmt/format.h>
 
 #include "core/dart_table.hpp"
@@ -323,7 +322,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     const auto gens = dims_generators(sig->orbit);
     // The writer of each orbit of H this application labels: its first
     // labeled instance. A closed embedding finds it by class (writer_of,
-    // per class root), another by dart (given[d], set by walking the
+    // per class), another by dart (given[d], set by walking the
     // orbit from the writer).
     struct Writer {
       std::uint32_t value;
