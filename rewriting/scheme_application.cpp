@@ -43,6 +43,11 @@ bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, DartTable& in
   out.shift.resize(ng);
   for (auto& s : out.shift) s.clear();
   out.darts.resize(hook_darts.size());
+  // A one-letter word without a bar (every word of a G-map scheme's
+  // implicit arcs) is read as one link, not followed as a word.
+  std::vector<int> letter(ng, -1);
+  for (std::size_t w = 0; w < ng; ++w)
+    if (out.gens[w].size() == 1 && !out.gens[w].bar(0)) letter[w] = out.gens[w].dim(0);
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
     std::vector<Dart>& pattern = out.darts[h];
     pattern.clear();
@@ -50,7 +55,7 @@ bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, DartTable& in
     index.set(hook_darts[h], 0);
     for (std::size_t k = 0; k < pattern.size(); ++k)
       for (std::size_t w = 0; w < ng; ++w) {
-        const Dart t = follow(g, pattern[k], out.gens[w]);
+        const Dart t = letter[w] >= 0 ? g.link(letter[w], pattern[k]) : follow(g, pattern[k], out.gens[w]);
         if (t == no_dart) {
           refusal = Refusal::not_combinatorial;
           why = fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], out.gens[w].str());

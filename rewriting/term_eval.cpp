@@ -105,17 +105,43 @@ std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, cons
 std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   if (const std::uint32_t k = memo.bag_of.get(d); k != DartTable::none) return k;
   const Embedding& e = g_.embeddings[memo.embedding];
-  orbit_ = outer_.orbit(d, memo.outer);  // copied: the inner walks reuse no state of it
+  const std::vector<Dart>& orbit = outer_.orbit(d, memo.outer);  // valid until outer_'s next walk
   std::vector<Value>& out = memo.elements;
   const std::size_t first = out.size();
-  const DartTable::ClearOnExit emptied{done_};
-  for (Dart x : orbit_) {
-    if (done_.get(x) != DartTable::none) continue;
-    const auto& piece = inner_.orbit(x, memo.inner);
+  if (done_.size() * 64 < g_.map.size()) done_.resize((g_.map.size() + 63) / 64, 0);
+  auto done = [&](Dart x) { return (done_[x >> 6] >> (x & 63)) & 1U; };
+  auto mark = [&](Dart x) { done_[x >> 6] |= std::uint64_t{1} << (x & 63); };
+  // Every dart marked is in the orbit (the pi-orbits lie inside it).
+  struct Unmark {
+    std::vector<std::uint64_t>& bits;
+    const std::vector<Dart>& darts;
+    ~Unmark() {
+      for (Dart x : darts) bits[x >> 6] &= ~(std::uint64_t{1} << (x & 63));
+    }
+  } const unmark{done_, orbit};
+  // The pi-orbit of x inside the <o'>-orbit, through <o> ∩ <o'>. The
+  // common cases are read off the links: no common dimension (x alone),
+  // or one dimension i whose link is an involution at x ({x, alpha_i(x)}:
+  // every G-map dimension); otherwise the orbit is walked.
+  const bool none_common = memo.inner.empty(), one_letter = memo.inner.size() == 1 && memo.inner[0].size() == 1;
+  const Dim i = one_letter ? memo.inner[0][0] : 0;
+  for (Dart x : orbit) {
+    if (done(x)) continue;
     const Value* v = nullptr;
-    for (Dart y : piece) {
-      done_.set(y, 1);
-      if (!v) v = e.value(y);
+    if (none_common) {
+      v = e.value(x);
+    } else if (const Dart y = one_letter ? g_.map.link(i, x) : no_dart; one_letter && (y == no_dart || y == x || g_.map.link(i, y) == x)) {
+      mark(x);
+      v = e.value(x);
+      if (y != no_dart && y != x) {
+        mark(y);
+        if (!v) v = e.value(y);
+      }
+    } else {
+      for (Dart z : inner_.orbit(x, memo.inner)) {
+        mark(z);
+        if (!v) v = e.value(z);
+      }
     }
     if (!v) {
       out.resize(first);
@@ -129,7 +155,7 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), value_less);
   const auto k = static_cast<std::uint32_t>(memo.start.size() - 1);
   memo.start.push_back(static_cast<std::uint32_t>(out.size()));
-  for (Dart x : orbit_) memo.bag_of.set(x, k);
+  for (Dart x : orbit) memo.bag_of.set(x, k);
   return k;
 }
 

@@ -101,8 +101,9 @@ class TermEvaluator {
 
   const EmbeddedMap& g_;
   OrbitWalker outer_, inner_;
-  std::vector<Dart> orbit_;
-  DartTable done_;
+  // One bit per dart: the darts of the collected orbit already in a
+  // pi-orbit (cleared through the orbit's list after each collect).
+  std::vector<std::uint64_t> done_;
   std::vector<CollectMemo> memo_;
   std::vector<Entry> stack_;
   std::vector<Operand> args_;
