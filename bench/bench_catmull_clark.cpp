@@ -175,9 +175,13 @@ Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck
     EmbeddedMap g = input;
     bool ok = true;
     const auto t0 = std::chrono::steady_clock::now();
+    // One rewriter per rule, each gone (with the tables it keeps for
+    // further applications) before the next rule runs.
     {
       EmbeddedRewriter first(points.rule, points.words, *points.terms, g, evaluation);
       for (Dart h : hooks) ok &= first.apply(std::span(&h, 1), false).ok();
+    }
+    {
       EmbeddedRewriter second(cc.rule, cc.words, *cc.terms, g, evaluation);
       for (Dart h : hooks) ok &= second.apply(std::span(&h, 1), false).ok();
     }

@@ -39,6 +39,22 @@ bool own_value(const NodeTerm& t) {
   return t.term.kind == Term::Kind::access && t.term.name == t.embedding && t.term.args[0].kind == Term::Kind::variable && t.term.args[0].name == t.node;
 }
 
+// Where the value of a labeled instance of R is: a stored value of G (a
+// label kept from L, index into its pool) or an evaluated one (index into
+// the application's evaluated values).
+struct Source {
+  std::uint32_t index = Embedding::none;
+  bool stored = false;
+};
+
+// The first labeled instance written to an orbit of H: its pool index,
+// its source, and the instance (term k, pattern copy p).
+struct Writer {
+  std::uint32_t value;
+  Source from;
+  std::size_t k, p;
+};
+
 }  // namespace
 
 struct EmbeddedRewriter::Context {
@@ -78,6 +94,17 @@ struct EmbeddedRewriter::Context {
   // next application's tables).
   std::vector<InstantiatedClasses> classes;
   InstantiatedClasses left_classes;  // of Lemma 3's check
+  std::vector<std::vector<Word>> used_gens;  // generators of used[u]'s orbit
+  // Per-application tables, kept for their memory: a loop of small
+  // applications allocates nothing once they have grown.
+  std::vector<Dart> flat;
+  std::vector<Value> evaluated;
+  std::vector<Source> source;
+  std::vector<std::vector<Source>> class_source;
+  std::vector<char> has_classes, per_class;
+  std::vector<std::uint32_t> pooled, writer_of;
+  std::vector<Writer> writers;
+  std::vector<std::size_t> owner;
   DartTable orbit_of, given;  // each left empty between applications
 
   Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
@@ -94,6 +121,8 @@ struct EmbeddedRewriter::Context {
     }
     used = t.used();
     classes.resize(used.size());
+    class_source.resize(used.size());
+    for (const EmbeddingSignature* sig : used) used_gens.push_back(dims_generators(sig->orbit));
     const TopoGraph& R = r.right();
     for (const EmbeddingSignature* sig : used) {
       std::vector<ArcId> arcs;
@@ -126,20 +155,21 @@ struct EmbeddedRewriter::Context {
   }
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
-  std::string overlap(const Instances& in, const EmbeddingSignature& e);
+  std::string overlap(const Instances& in, std::size_t u);
 };
 
 // Lemma 3: instances of L in different pi-orbits of the instantiated L
 // must match darts in different pi-orbits of G.
-std::string EmbeddedRewriter::Context::overlap(const Instances& in, const EmbeddingSignature& e) {
+std::string EmbeddedRewriter::Context::overlap(const Instances& in, std::size_t u) {
+  const EmbeddingSignature& e = *used[u];
   const TopoGraph& L = rule.left();
   const std::size_t np = in.np;
   instantiated_classes(L, words.left, in.pattern, e.orbit, left_classes);
   // orbit_of[d]: the pi-orbit of G of each matched dart, numbered as met;
   // owner[o]: an instance of L in G orbit o.
   const DartTable::ClearOnExit emptied{orbit_of};
-  const auto gens = dims_generators(e.orbit);
-  std::vector<std::size_t> owner;
+  const std::vector<Word>& gens = used_gens[u];
+  owner.clear();
   for (NodeId x = 0; x < L.node_count(); ++x)
     for (std::size_t p = 0; p < np; ++p) {
       const Dart d = in.at(x, p);
@@ -171,6 +201,18 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   // 1. The match (nothing is written yet).
   Instances in;
   std::optional<SchemeMatch> scheme_match;
+  std::vector<std::vector<Dart>> comatch;
+  // Every return hands a scheme's match and comatch tables back to the
+  // scheme rewriter, for the next application.
+  struct Recycle {
+    SchemeRewriter& scheme;
+    std::optional<SchemeMatch>& match;
+    std::vector<std::vector<Dart>>& comatch;
+    ~Recycle() {
+      if (match) scheme.recycle(std::move(*match));
+      if (match && !comatch.empty()) scheme.recycle(SchemeDerivation{0, 0, 0, {}, std::move(comatch)});
+    }
+  } const recycle{scheme, scheme_match, comatch};
   if (words.scheme) {
     auto m = scheme.match(g.map, hook_darts);
     if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
@@ -194,7 +236,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   right_code.resize(terms.right.size());
   for (std::size_t k = 0; k < terms.left.size(); ++k) ev.compile(terms.left[k].term, names, left_code[k]);
   for (std::size_t k = 0; k < terms.right.size(); ++k) ev.compile(terms.right[k].term, names, right_code[k]);
-  std::vector<Dart> flat(np * nl);
+  flat.resize(np * nl);
   for (NodeId x = 0; x < nl; ++x)
     for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.at(x, p);
   auto binding = [&](std::size_t p) { return std::span<const Dart>(flat.data() + p * nl, nl); };
@@ -221,21 +263,16 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   if (extended)
     for (std::size_t u = 0; u < used.size(); ++u)
       if (!left_closed[u])
-        if (auto why = overlap(in, *used[u]); !why.empty()) return refuse<EmbeddedDerivation>(Refusal::overlap, std::move(why));
+        if (auto why = overlap(in, u); !why.empty()) return refuse<EmbeddedDerivation>(Refusal::overlap, std::move(why));
 
-  // Where the value of each labeled instance of R is: a stored value of G
-  // (a label kept from L) or an evaluated one. With one evaluation per
+  // The source of each labeled instance of R. With one evaluation per
   // class, every instance of a class takes its class's source
   // (class_source[u][c]: no per-instance table); otherwise each instance
   // has its own (source[k * np + p]).
-  struct Source {
-    std::uint32_t index = Embedding::none;
-    bool stored = false;
-  };
-  std::vector<Value> evaluated;
-  std::vector<Source> source;
-  std::vector<bool> has_classes(used.size()), per_class(used.size());
-  std::vector<std::vector<Source>> class_source(used.size());
+  evaluated.clear();
+  source.clear();
+  has_classes.assign(used.size(), 0);
+  per_class.assign(used.size(), 0);
   for (std::size_t u = 0; u < used.size(); ++u) {
     if (extended && (evaluation == Evaluation::one_per_orbit || !closing[u].empty())) {
       instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u]);
@@ -243,7 +280,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     }
     per_class[u] = has_classes[u] && evaluation == Evaluation::one_per_orbit;
     if (per_class[u]) class_source[u].assign(classes[u].count, Source{});
-    else if (source.empty()) source.resize(terms.right.size() * np);
+    else if (source.empty()) source.assign(terms.right.size() * np, Source{});
   }
   try {
     for (std::size_t u = 0; u < used.size(); ++u) {
@@ -274,7 +311,6 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
 
   // 3. The topological rewrite.
   EmbeddedDerivation out;
-  std::vector<std::vector<Dart>> comatch(R.node_count());
   if (words.scheme) {
     SchemeDerivation d = scheme.rewrite(g.map, *scheme_match);
     out.matched = d.matched_darts;
@@ -285,6 +321,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     auto d = apply_rule(rule, g.map, hook_darts);
     if (!d.ok()) return refuse<EmbeddedDerivation>(d.refusal, std::move(d.why));
     out.matched = L.node_count();
+    comatch.resize(R.node_count());
     for (NodeId y = 0; y < R.node_count(); ++y) {
       comatch[y] = {d.value->comatch[y]};
       out.added += rule.to_left(y) == no_node;
@@ -315,24 +352,19 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     }
   }
   // pooled[i]: where evaluated[i] went once moved into its pool.
-  std::vector<std::uint32_t> pooled(evaluated.size(), Embedding::none);
+  pooled.assign(evaluated.size(), Embedding::none);
   for (std::size_t u = 0; u < used.size(); ++u) {
     const EmbeddingSignature* sig = used[u];
     Embedding* e = g.find(sig->name);
-    const auto gens = dims_generators(sig->orbit);
+    const std::vector<Word>& gens = used_gens[u];
     // The writer of each orbit of H this application labels: its first
     // labeled instance. A closed embedding finds it by class (writer_of,
     // per class), another by dart (given[d], set by walking the
     // orbit from the writer).
-    struct Writer {
-      std::uint32_t value;
-      Source from;
-      std::size_t k, p;
-    };
-    std::vector<Writer> writers;
+    writers.clear();
     const InstantiatedClasses& cls = classes[u];
     const bool by_class = extended && closed_in_h(u, in, comatch);
-    std::vector<std::uint32_t> writer_of(by_class ? cls.count : 0, DartTable::none);
+    writer_of.assign(by_class ? cls.count : 0, DartTable::none);
     if (by_class && per_class[u]) {
       // Every instance of a class took the class's source, so no two
       // disagree: each labeled class's value is pooled once, and each
@@ -409,7 +441,6 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       for (auto [d, idx] : second_values) e->set_index(d, idx);
     }
   }
-  if (scheme_match) scheme.recycle(std::move(*scheme_match));
   return {std::move(out), Refusal::none, {}};
 }
 

@@ -9,10 +9,14 @@ namespace {
 constexpr std::uint32_t none = 0xffffffffU;
 
 // 32-bit entries: a side instantiated on a large hook orbit has |nodes| x
-// |P_v| instances, and halving the table halves its page faults.
+// |P_v| instances, and halving the table halves its page faults. The
+// entries live in the caller's scratch memory.
 struct UnionFind {
-  std::vector<std::uint32_t> up;
-  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), 0U); }
+  std::vector<std::uint32_t>& up;
+  UnionFind(std::vector<std::uint32_t>& memory, std::size_t n) : up(memory) {
+    up.resize(n);
+    std::iota(up.begin(), up.end(), 0U);
+  }
   std::uint32_t find(std::size_t x) {
     auto y = static_cast<std::uint32_t>(x);
     while (up[y] != y) y = up[y] = up[up[y]];
@@ -46,7 +50,7 @@ void renumber(UnionFind& uf, std::size_t first, std::size_t np, std::vector<std:
 void instantiated_classes_by_instance(const TopoGraph& side, const std::vector<ConjWord>& words, const PatternGraphs* pattern,
                                       const std::vector<Dim>& orbit, InstantiatedClasses& out) {
   const std::size_t n = side.node_count(), np = copies(pattern);
-  UnionFind uf(n * np);
+  UnionFind uf(out.scratch.up, n * np);
   for (ArcId a = 0; a < side.arc_count(); ++a) {
     const auto& arc = side.arc(a);
     if (!in_orbit(orbit, arc.label)) continue;
@@ -54,7 +58,8 @@ void instantiated_classes_by_instance(const TopoGraph& side, const std::vector<C
     for (std::size_t p = 0; p < np; ++p) uf.unite(arc.source * np + p, arc.target * np + step(pattern, p, w));
   }
   // Each node its own group; one numbering for all (a class may span nodes).
-  std::vector<std::uint32_t> number(n * np, none);
+  std::vector<std::uint32_t>& number = out.scratch.number;
+  number.assign(n * np, none);
   out.count = 0;
   out.by_pattern = false;
   out.group_of.resize(n);
@@ -79,8 +84,11 @@ void instantiated_classes_by_instance(const TopoGraph& side, const std::vector<C
 void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& words, const PatternGraphs* pattern, const std::vector<Dim>& orbit,
                           InstantiatedClasses& out) {
   const std::size_t n = side.node_count(), np = copies(pattern);
-  UnionFind nodes(n);
-  std::vector<std::pair<ArcId, int>> shifted;
+  // The node groups use the scratch tables first; the pattern's
+  // union-finds reuse them once group_of is known.
+  UnionFind nodes(out.scratch.up, n);
+  std::vector<std::pair<ArcId, int>>& shifted = out.scratch.shifted;
+  shifted.clear();
   for (ArcId a = 0; a < side.arc_count(); ++a) {
     const auto& arc = side.arc(a);
     if (!in_orbit(orbit, arc.label)) continue;
@@ -91,14 +99,17 @@ void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& wo
   std::size_t groups = 0;
   out.group_of.resize(n);
   {
-    std::vector<std::uint32_t> number(n, none);
+    std::vector<std::uint32_t>& number = out.scratch.number;
+    number.assign(n, none);
     for (NodeId x = 0; x < n; ++x) {
       std::uint32_t& k = number[nodes.find(x)];
       if (k == none) k = static_cast<std::uint32_t>(groups++);
       out.group_of[x] = k;
     }
   }
-  std::vector<std::vector<int>> group_words(groups);
+  std::vector<std::vector<int>>& group_words = out.scratch.group_words;
+  group_words.resize(groups);
+  for (auto& w : group_words) w.clear();
   for (auto [a, w] : shifted) {
     const std::uint32_t k = out.group_of[side.arc(a).source];
     if (k != out.group_of[side.arc(a).target]) return instantiated_classes_by_instance(side, words, pattern, orbit, out);
@@ -107,9 +118,9 @@ void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& wo
   out.count = 0;
   out.by_pattern = true;
   out.id.resize(groups);
-  std::vector<std::uint32_t> number;
+  std::vector<std::uint32_t>& number = out.scratch.number;
   for (std::size_t k = 0; k < groups; ++k) {
-    UnionFind uf(np);
+    UnionFind uf(out.scratch.up, np);
     for (int w : group_words[k])
       for (std::size_t p = 0; p < np; ++p) uf.unite(p, step(pattern, p, w));
     number.assign(np, none);

@@ -23,6 +23,13 @@ struct InstantiatedClasses {
   /// pattern per group of nodes) rather than per instance.
   bool by_pattern = false;
   std::uint32_t of(NodeId x, std::size_t p) const { return id[group_of[x]][p]; }
+
+  /// Working memory of the computation, kept between calls.
+  struct Scratch {
+    std::vector<std::uint32_t> up, number;
+    std::vector<std::pair<ArcId, int>> shifted;
+    std::vector<std::vector<int>> group_words;
+  } scratch;
 };
 
 /// The classes of `side` (with its arcs' words) instantiated on `pattern`
