@@ -45,6 +45,39 @@ void renumber(UnionFind& uf, std::size_t first, std::size_t np, std::vector<std:
   }
 }
 
+// out[p] = the class of p under the steps p -> p·w (w in `words`),
+// numbered from `count` on in order of first appearance, by a depth-first
+// walk: no union-find, one read per step. When every step is a
+// permutation of P_v (a valid host) the positions reached forward from p
+// are its whole orbit. Each step is checked when its source is popped; one
+// into an earlier class (a step that is not injective, possible on an
+// invalid host) returns false, and the caller takes the symmetric closure.
+bool label_orbits(const PatternGraphs* pattern, std::size_t np, const std::vector<int>& words, std::vector<std::uint32_t>& stack, std::uint32_t& count,
+                  std::vector<std::uint32_t>& out) {
+  out.assign(np, none);
+  stack.clear();
+  for (std::size_t p = 0; p < np; ++p) {
+    if (out[p] != none) continue;
+    const std::uint32_t c = count++;
+    out[p] = c;
+    stack.push_back(static_cast<std::uint32_t>(p));
+    while (!stack.empty()) {
+      const std::uint32_t q = stack.back();
+      stack.pop_back();
+      for (int w : words) {
+        const std::uint32_t r = step(pattern, q, w);
+        if (out[r] == none) {
+          out[r] = c;
+          stack.push_back(r);
+        } else if (out[r] != c) {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 void instantiated_classes_by_instance(const TopoGraph& side, const std::vector<ConjWord>& words, const PatternGraphs* pattern,
@@ -76,16 +109,16 @@ void instantiated_classes_by_instance(const TopoGraph& side, const std::vector<C
 // y's group times the orbit of p under the words of that group's arcs:
 // the group gives (x, p) ~ (x', p) for x, x' in it, with it each such arc
 // gives (z, p) ~ (z', p·w) for any z, z' of the group, and no arc leaves
-// the group. So one union-find over the pattern per group replaces one
-// over |side| x |P_v| instances. A Jerboa scheme's implicit arcs are loops
+// the group. So one walk over the pattern per group (label_orbits)
+// replaces a union-find over |side| x |P_v| instances. A Jerboa scheme's implicit arcs are loops
 // (one node) and its explicit arcs have the empty word: always this case.
 // An arc with a word between two groups (a general (W, D) scheme) falls
 // back to the definition.
 void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& words, const PatternGraphs* pattern, const std::vector<Dim>& orbit,
                           InstantiatedClasses& out) {
   const std::size_t n = side.node_count(), np = copies(pattern);
-  // The node groups use the scratch tables first; the pattern's
-  // union-finds reuse them once group_of is known.
+  // The node groups use the scratch tables first; the pattern's walks
+  // reuse them once group_of is known.
   UnionFind nodes(out.scratch.up, n);
   std::vector<std::pair<ArcId, int>>& shifted = out.scratch.shifted;
   shifted.clear();
@@ -118,13 +151,16 @@ void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& wo
   out.count = 0;
   out.by_pattern = true;
   out.id.resize(groups);
-  std::vector<std::uint32_t>& number = out.scratch.number;
   for (std::size_t k = 0; k < groups; ++k) {
-    UnionFind uf(out.scratch.up, np);
-    for (int w : group_words[k])
-      for (std::size_t p = 0; p < np; ++p) uf.unite(p, step(pattern, p, w));
-    number.assign(np, none);
-    renumber(uf, 0, np, number, out.count, out.id[k]);
+    const std::uint32_t first = out.count;
+    if (!label_orbits(pattern, np, group_words[k], out.scratch.up, out.count, out.id[k])) {
+      out.count = first;
+      UnionFind uf(out.scratch.up, np);
+      for (int w : group_words[k])
+        for (std::size_t p = 0; p < np; ++p) uf.unite(p, step(pattern, p, w));
+      out.scratch.number.assign(np, none);
+      renumber(uf, 0, np, out.scratch.number, out.count, out.id[k]);
+    }
   }
 }
 

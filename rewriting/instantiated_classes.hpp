@@ -19,7 +19,7 @@ struct InstantiatedClasses {
   std::vector<std::uint32_t> group_of;
   std::vector<std::vector<std::uint32_t>> id;
   std::uint32_t count = 0;
-  /// Whether they were computed per pattern copy (one union-find over the
+  /// Whether they were computed per pattern copy (one walk over the
   /// pattern per group of nodes) rather than per instance.
   bool by_pattern = false;
   std::uint32_t of(NodeId x, std::size_t p) const { return id[group_of[x]][p]; }

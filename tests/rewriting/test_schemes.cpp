@@ -314,18 +314,37 @@ TEST(SchemeRewriter, KeptAcrossApplicationsActsAsFresh) {
   EXPECT_GT(refused, 100u);
 }
 
-// The classes of an instantiated side computed per pattern copy (one
-// union-find over the pattern per group of nodes) are the classes of the
-// definition (one union-find over every instance (x, p), joined to
-// (y, p·w) by each arc x -(w, i)-> y with i in <o>): the same partition.
-// Every scheme of the three catalogs, both sides, every orbit type of its
-// model, on the pattern of matches on random maps.
+// Whether two class tables of one side on np pattern copies are the same
+// partition of the instances (numbers may differ): a bijection of numbers.
+::testing::AssertionResult same_partition(const InstantiatedClasses& a, const InstantiatedClasses& b, std::size_t nodes, std::size_t np) {
+  if (a.count != b.count) return ::testing::AssertionFailure() << a.count << " classes against " << b.count;
+  std::vector<std::uint32_t> to(a.count, ~0U), from(b.count, ~0U);
+  for (NodeId x = 0; x < nodes; ++x)
+    for (std::size_t p = 0; p < np; ++p) {
+      const std::uint32_t i = a.of(x, p), j = b.of(x, p);
+      if (i >= a.count || j >= b.count) return ::testing::AssertionFailure() << "a class number out of range";
+      if (to[i] == ~0U) to[i] = j;
+      if (from[j] == ~0U) from[j] = i;
+      if (to[i] != j) return ::testing::AssertionFailure() << "a class of the first spans two classes of the second";
+      if (from[j] != i) return ::testing::AssertionFailure() << "a class of the second spans two classes of the first";
+    }
+  return ::testing::AssertionSuccess();
+}
+
+// The classes of an instantiated side computed per pattern copy (one walk
+// over the pattern per group of nodes) are the classes of the definition
+// (one union-find over every instance (x, p), joined to (y, p·w) by each
+// arc x -(w, i)-> y with i in <o>): the same partition. Every scheme of
+// the three catalogs, both sides, every orbit type of its model, on the
+// pattern of matches on random maps, and on the same pattern with random
+// shift tables: steps that are not permutations (an invalid host), where
+// a forward walk alone would split an orbit of the symmetric closure.
 TEST(InstantiatedClasses, PerPatternCopyEqualsTheDefinition) {
   std::vector<Catalog> catalogs;
   for (const char* f : {"seed-operations", "embedding-operations", "subdivision-operations"})
     catalogs.push_back(read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/" + f + ".yaml"));
   std::mt19937 rng(17);
-  std::size_t compared = 0, by_pattern = 0, by_instance = 0;
+  std::size_t compared = 0, by_pattern = 0, by_instance = 0, scrambled = 0;
   InstantiatedClasses fast, reference;
   for (const Catalog& c : catalogs)
     for (const CatalogRule& r : c.rules) {
@@ -338,6 +357,11 @@ TEST(InstantiatedClasses, PerPatternCopyEqualsTheDefinition) {
           hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(g.size() - 1))(rng));
         const auto m = match_scheme(r.rule, r.words, g, hooks);
         if (!m.ok()) continue;
+        const std::size_t np = m.value->pattern.darts[0].size();
+        PatternGraphs random_steps = m.value->pattern;
+        for (auto& column : random_steps.shift)
+          for (std::uint32_t& q : column) q = std::uniform_int_distribution<std::uint32_t>(0, static_cast<std::uint32_t>(np - 1))(rng);
+        const PatternGraphs* const patterns[] = {&m.value->pattern, &random_steps};
         for (unsigned mask = 1; mask < (1U << dims.size()); ++mask) {
           std::vector<Dim> orbit;
           for (std::size_t k = 0; k < dims.size(); ++k)
@@ -345,27 +369,22 @@ TEST(InstantiatedClasses, PerPatternCopyEqualsTheDefinition) {
           for (bool right : {false, true}) {
             const TopoGraph& side = right ? r.rule.right() : r.rule.left();
             const auto& words = right ? r.words.right : r.words.left;
-            instantiated_classes(side, words, &m.value->pattern, orbit, fast);
-            instantiated_classes_by_instance(side, words, &m.value->pattern, orbit, reference);
-            ASSERT_EQ(fast.count, reference.count) << r.rule.name();
-            std::vector<std::uint32_t> to(fast.count, ~0U), from(reference.count, ~0U);
-            for (NodeId x = 0; x < side.node_count(); ++x)
-              for (std::size_t p = 0; p < m.value->pattern.darts[0].size(); ++p) {
-                const std::uint32_t a = fast.of(x, p), b = reference.of(x, p);
-                ASSERT_LT(a, fast.count);
-                if (to[a] == ~0U) to[a] = b;
-                if (from[b] == ~0U) from[b] = a;
-                ASSERT_EQ(to[a], b) << r.rule.name() << ": a per-pattern class spans two classes of the definition";
-                ASSERT_EQ(from[b], a) << r.rule.name() << ": a class of the definition spans two per-pattern classes";
-              }
-            (fast.by_pattern ? by_pattern : by_instance) += 1;
-            ++compared;
+            for (const PatternGraphs* pattern : patterns) {
+              instantiated_classes(side, words, pattern, orbit, fast);
+              instantiated_classes_by_instance(side, words, pattern, orbit, reference);
+              ASSERT_TRUE(same_partition(fast, reference, side.node_count(), np)) << r.rule.name() << (pattern == &random_steps ? " (random steps)" : "");
+              (fast.by_pattern ? by_pattern : by_instance) += 1;
+              scrambled += pattern == &random_steps;
+              ++compared;
+            }
           }
         }
       }
     }
-  EXPECT_GT(compared, 1000u);
-  EXPECT_GT(by_pattern, 500u);
-  EXPECT_GT(by_instance, 20u);  // (W, D) schemes with a word on an arc between two nodes
-  std::printf("%zu partitions compared: %zu per pattern copy, %zu by the definition\n", compared, by_pattern, by_instance);
+  EXPECT_GT(compared, 2000u);
+  EXPECT_GT(by_pattern, 1000u);
+  EXPECT_GT(by_instance, 40u);  // (W, D) schemes with a word on an arc between two nodes
+  EXPECT_GT(scrambled, 1000u);
+  std::printf("%zu partitions compared (%zu on random steps): %zu per pattern copy, %zu by the definition\n", compared, scrambled, by_pattern,
+              by_instance);
 }
