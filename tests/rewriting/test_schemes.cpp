@@ -19,6 +19,7 @@
 #include "core/orbit.hpp"
 #include "rewriting/instantiated_classes.hpp"
 #include "rewriting/scheme_application.hpp"
+#include "rewriting/scheme_instantiation.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_maps.hpp"
 #include "generators/shapes.hpp"
@@ -312,6 +313,83 @@ TEST(SchemeRewriter, KeptAcrossApplicationsActsAsFresh) {
   EXPECT_GE(schemes, 10u);
   EXPECT_GT(applied, 100u);
   EXPECT_GT(refused, 100u);
+}
+
+// 002 Def. 19-21: applying a scheme S at hook v is the direct derivation
+// of its instantiated rule ι(S, P_v) at the match (p, hook) -> the p-th
+// dart of P_v. The instantiated rule is built as an explicit DPO rule
+// (rewriting/scheme_instantiation) and applied by the graph engine
+// (apply_rule: match_from_hooks and the DPO derivation), which shares no
+// code with the scheme engine's match and rewrite; both must apply or
+// refuse together and give isomorphic maps. P_v itself is checked against
+// its definition: the hook's closure under W's words and their
+// conjugates, each shift table the word's path. Every scheme of the three
+// catalogs whose L is the hook alone, on random maps of its model.
+TEST(SchemeApplication, IsTheDerivationOfTheInstantiatedRule) {
+  std::vector<Catalog> catalogs;
+  for (const char* f : {"seed-operations", "embedding-operations", "subdivision-operations"})
+    catalogs.push_back(read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/" + f + ".yaml"));
+  std::mt19937 rng(23);
+  std::size_t schemes = 0, applied = 0, refused = 0;
+  for (const Catalog& c : catalogs)
+    for (const CatalogRule& r : c.rules) {
+      if (!r.words.scheme || r.rule.left().node_count() != 1 || !has_random_generator(r.rule.model())) continue;
+      ++schemes;
+      SchemeRewriter kept(r.rule, r.words);
+      for (int round = 0; round < 30; ++round) {
+        const Map g = build_random_map(r.rule.model(), draw_recipe(rng, 1 + round % 6, r.rule.model().dimension()));
+        const Dart v = std::uniform_int_distribution<Dart>(0, static_cast<Dart>(g.size() - 1))(rng);
+        Map by_scheme = g;
+        auto s = kept.apply(by_scheme, std::span(&v, 1));
+        const auto pattern = pattern_graphs(r.rule.model(), r.words, g, std::span(&v, 1));
+        if (!pattern.ok()) {
+          ASSERT_FALSE(s.ok()) << r.rule.name();
+          ++refused;
+          continue;
+        }
+        // P_v by its definition.
+        const PatternGraphs& pv = *pattern.value;
+        const std::vector<Dart>& darts = pv.darts[0];
+        ASSERT_EQ(darts[0], v);
+        std::vector<Dart> sorted = darts;
+        std::sort(sorted.begin(), sorted.end());
+        ASSERT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << r.rule.name() << ": a dart twice in P_v";
+        for (std::size_t w = 0; w < pv.gens.size(); ++w)
+          for (std::size_t p = 0; p < darts.size(); ++p) {
+            Dart d = darts[p];
+            for (std::size_t k = 0; k < pv.gens[w].size() && d != no_dart; ++k)
+              d = pv.gens[w].bar(k) ? g.inverse_link(pv.gens[w].dim(k), d) : g.link(pv.gens[w].dim(k), d);
+            ASSERT_EQ(d, darts[pv.shift[w][p]]) << r.rule.name() << ": shift of " << pv.gens[w].str();
+          }
+        Map by_rule = g;
+        bool rule_ok = false;
+        try {
+          const Rule inst = instantiate(r.rule, r.words, pv);
+          // Each component of ι(L, P_v) is hooked at its first node, "x@d".
+          std::vector<Dart> hooks;
+          for (NodeId h : inst.hooks()) {
+            const std::string& name = inst.left().name(h);
+            hooks.push_back(static_cast<Dart>(std::stoul(name.substr(name.find('@') + 1))));
+          }
+          rule_ok = apply_rule(inst, by_rule, hooks).ok();
+        } catch (const std::invalid_argument&) {
+          rule_ok = false;  // ι(S, P_v) is not a rule: no derivation
+        }
+        ASSERT_EQ(s.ok(), rule_ok) << r.rule.name() << " at dart " << v << ": " << s.why;
+        if (!s.ok()) {
+          ASSERT_EQ(by_scheme, g) << r.rule.name() << ": a refusal changed the map";
+          ++refused;
+          continue;
+        }
+        ++applied;
+        ASSERT_TRUE(isomorphic(by_scheme, by_rule)) << r.rule.name() << " at dart " << v;
+        kept.recycle(std::move(*s.value));
+      }
+    }
+  EXPECT_GE(schemes, 20u);
+  EXPECT_GT(applied, 300u);
+  EXPECT_GT(refused, 50u);
+  std::printf("%zu schemes: %zu applications, %zu refusals agree with ι(S, P_v)\n", schemes, applied, refused);
 }
 
 // Whether two class tables of one side on np pattern copies are the same
