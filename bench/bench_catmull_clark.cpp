@@ -144,20 +144,6 @@ Points points_of(const dartcheck::EmbeddedMap& g) {
   return out;
 }
 
-// A hook per connected component.
-std::vector<dartcheck::Dart> component_hooks(const dartcheck::Map& g) {
-  using namespace dartcheck;
-  std::vector<Dart> hooks;
-  OrbitWalker walker(g);
-  std::vector<bool> seen(g.size());
-  for (Dart d = 0; d < g.size(); ++d)
-    if (!seen[d]) {
-      hooks.push_back(d);
-      for (Dart x : walker.orbit(d, dims_generators({0, 1, 2}))) seen[x] = true;
-    }
-  return hooks;
-}
-
 const dartcheck::Catalog& subdivision_catalog() {
   static const dartcheck::Catalog c = dartcheck::read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/subdivision-operations.yaml");
   return c;
@@ -169,7 +155,7 @@ Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck
   const CatalogRule &points = *catalog.find_rule("catmull-clark-points"), &cc = *catalog.find_rule("catmull-clark");
   EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.signatures[0]);
   for (std::size_t k = 1; k < catalog.signatures.size(); ++k) input.add_embedding(catalog.signatures[k]);
-  const std::vector<Dart> hooks = component_hooks(input.map);
+  const std::vector<Dart> hooks = orbit_hooks(input.map, {0, 1, 2});
   Row row;
   row.r = measure(runs, [&](double& ms, std::size_t& out) {
     EmbeddedMap g = input;
@@ -201,7 +187,7 @@ Row run_topology(const std::string& off, int runs, std::size_t quads) {
   using namespace dartcheck;
   const CatalogRule& cc = *subdivision_catalog().find_rule("catmull-clark");
   const Map input = build_mesh(Model::gmap(2), read_mesh(off));
-  const std::vector<Dart> hooks = component_hooks(input);
+  const std::vector<Dart> hooks = orbit_hooks(input, {0, 1, 2});
   Row row;
   row.r = measure(runs, [&](double& ms, std::size_t& out) {
     Map g = input;

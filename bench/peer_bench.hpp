@@ -19,7 +19,25 @@
 #include <string>
 #include <vector>
 
+#include "core/orbit.hpp"
+
 namespace {
+
+// One dart of every <dims>-orbit of g (a hook per face, per component...),
+// found before a clock starts.
+[[maybe_unused]] std::vector<dartcheck::Dart> orbit_hooks(const dartcheck::Map& g, const std::vector<dartcheck::Dim>& dims) {
+  using namespace dartcheck;
+  std::vector<Dart> hooks;
+  OrbitWalker walker(g);
+  const auto gens = dims_generators(dims);
+  std::vector<bool> seen(g.size());
+  for (Dart d = 0; d < g.size(); ++d)
+    if (!seen[d]) {
+      hooks.push_back(d);
+      for (Dart x : walker.orbit(d, gens)) seen[x] = true;
+    }
+  return hooks;
+}
 
 // A closed quad torus of r x c faces: V = rc, E = 2rc, F = rc; 8rc darts in
 // a 2-G-map, 4rc in a 2-O-map.

@@ -29,42 +29,58 @@ int generator_index(const std::vector<ConjWord>& gens, const ConjWord& w) {
   return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
 }
 
-// P_v by BFS into `out` (its vectors reused); index[d] is d's position in
-// P_v, and shift[k][p] the position of p·gens[k], recorded as the BFS
-// follows it (so every p·w is a table lookup, not a walk). With several
-// hooks (one per component of L, Sec. 6.3) every P_{v_k} is walked in the
-// same order and must give the same tables: the pattern graphs are
-// isomorphic, and darts[k][p] is the image of pattern node p under that
-// isomorphism. On refusal sets `refusal` and `why`.
-bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, DartTable& index, PatternGraphs& out, Refusal& refusal, std::string& why) {
+// The letter of each generator read as one link (a one-letter word
+// without a bar: every word of a G-map scheme's implicit arcs), -1 for a
+// word followed as a path.
+std::vector<int> letters_of(const std::vector<ConjWord>& gens) {
+  std::vector<int> letter(gens.size(), -1);
+  for (std::size_t w = 0; w < gens.size(); ++w)
+    if (gens[w].size() == 1 && !gens[w].bar(0)) letter[w] = gens[w].dim(0);
+  return letter;
+}
+
+// P_v by BFS into `out` (its vectors reused); position[d] is d's position
+// in P_v (the table is none everywhere between calls, and cleared through
+// the pattern's own darts, which are exactly the darts it set), and
+// shift[k][p] the position of p·gens[k], recorded as the BFS follows it
+// (so every p·w is a table lookup, not a walk). With several hooks (one
+// per component of L, Sec. 6.3) every P_{v_k} is walked in the same order
+// and must give the same tables: the pattern graphs are isomorphic, and
+// darts[k][p] is the image of pattern node p under that isomorphism. On
+// refusal sets `refusal` and `why`.
+bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, const std::vector<int>& letter, std::vector<std::uint32_t>& position,
+                   PatternGraphs& out, Refusal& refusal, std::string& why) {
   constexpr std::uint32_t none = DartTable::none;
-  const DartTable::ClearOnExit emptied{index};
+  if (position.size() < g.size()) position.resize(g.size(), none);
   const std::size_t ng = out.gens.size();
   out.shift.resize(ng);
   for (auto& s : out.shift) s.clear();
   out.darts.resize(hook_darts.size());
-  // A one-letter word without a bar (every word of a G-map scheme's
-  // implicit arcs) is read as one link, not followed as a word.
-  std::vector<int> letter(ng, -1);
-  for (std::size_t w = 0; w < ng; ++w)
-    if (out.gens[w].size() == 1 && !out.gens[w].bar(0)) letter[w] = out.gens[w].dim(0);
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
     std::vector<Dart>& pattern = out.darts[h];
+    struct Clear {
+      std::vector<std::uint32_t>& position;
+      const std::vector<Dart>& darts;
+      ~Clear() {
+        for (Dart d : darts) position[d] = none;
+      }
+    } const cleared{position, pattern};
     pattern.clear();
     pattern.push_back(hook_darts[h]);
-    index.set(hook_darts[h], 0);
+    position[hook_darts[h]] = 0;
     for (std::size_t k = 0; k < pattern.size(); ++k)
       for (std::size_t w = 0; w < ng; ++w) {
-        const Dart t = letter[w] >= 0 ? g.link(letter[w], pattern[k]) : follow(g, pattern[k], out.gens[w]);
+        const Dart here = pattern[k];
+        const Dart t = letter[w] >= 0 ? g.link(letter[w], here) : follow(g, here, out.gens[w]);
         if (t == no_dart) {
           refusal = Refusal::not_combinatorial;
-          why = fmt::format("dart {} has no {}-path: the host is not combinatorial", pattern[k], out.gens[w].str());
+          why = fmt::format("dart {} has no {}-path: the host is not combinatorial", here, out.gens[w].str());
           return false;
         }
-        std::uint32_t at = index.get(t);
+        std::uint32_t at = position[t];
         if (at == none) {
           at = static_cast<std::uint32_t>(pattern.size());
-          index.set(t, at);
+          position[t] = at;
           pattern.push_back(t);
         }
         if (h == 0) {
@@ -76,21 +92,19 @@ bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, DartTable& in
           return false;
         }
       }
-    index.clear();
   }
   return true;
 }
 
 }  // namespace
 
-Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
-                                      DartTable* scratch) {
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
   PatternGraphs out;
   out.gens = generators_of(model, words);
-  DartTable local;
+  std::vector<std::uint32_t> position;
   Refusal refusal = Refusal::none;
   std::string why;
-  if (!walk_patterns(g, hook_darts, scratch ? *scratch : local, out, refusal, why)) return refuse<PatternGraphs>(refusal, std::move(why));
+  if (!walk_patterns(g, hook_darts, letters_of(out.gens), position, out, refusal, why)) return refuse<PatternGraphs>(refusal, std::move(why));
   return {std::move(out), Refusal::none, {}};
 }
 
@@ -102,6 +116,7 @@ struct SchemeRewriter::State {
   const Rule& core;
   const ArcWords& words;
   std::vector<ConjWord> gens;
+  std::vector<int> letter;  // letters_of(gens)
   // Generator index of each arc's word, forward (L, R) and backward (L).
   std::vector<int> left_fwd, left_bwd, right_fwd;
   // The arcs of L at each node, as the propagation follows them: out of
@@ -133,8 +148,18 @@ struct SchemeRewriter::State {
   };
   std::vector<Added> added;
   std::size_t added_nodes = 0;
+  // L is the hook alone and each of its arcs a loop x -(i, i)-> x on a
+  // non-oriented dimension i, and every generator of W is one of these
+  // letters: the match is then (p, hook) -> the p-th dart of P_v. (The
+  // propagation would find it: following letter i from the p-th dart is
+  // the p·i-th dart, and P_v, the closure under these letters, is every
+  // position reached; the darts of P_v are distinct, so it is injective.)
+  // Jerboa's hook node <0,1,...> is this case.
+  bool identity_match = false;
 
-  DartTable index;
+  // position[d]: d's position in P_v while a pattern is walked, then a
+  // mark of matched darts (injectivity); none between uses.
+  std::vector<std::uint32_t> position;
   PatternGraphs spare_pattern;
   std::vector<std::vector<Dart>> spare_match, spare_comatch;
   std::vector<std::pair<std::uint32_t, NodeId>> queue;
@@ -145,9 +170,18 @@ struct SchemeRewriter::State {
   SchemeDerivation rewrite(Map& g, const SchemeMatch& match);
 };
 
-SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(w), gens(generators_of(r.model(), w)) {
+SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(w), gens(generators_of(r.model(), w)), letter(letters_of(gens)) {
   const ConjugateRewriting rw(core.model());
   const TopoGraph &L = core.left(), &R = core.right();
+  identity_match = L.node_count() == 1 && core.hooks().size() == 1;
+  std::vector<int> loops;
+  for (ArcId e = 0; e < L.arc_count() && identity_match; ++e) {
+    const ConjWord& word = arc_word(words.left, e);
+    const Dim i = L.arc(e).label;
+    identity_match = word.size() == 1 && !word.bar(0) && word.dim(0) == i && !core.model().is_oriented(i);
+    loops.push_back(i);
+  }
+  for (int l : letter) identity_match = identity_match && std::find(loops.begin(), loops.end(), l) != loops.end();
   for (ArcId e = 0; e < L.arc_count(); ++e) {
     left_fwd.push_back(generator_index(gens, arc_word(words.left, e)));
     left_bwd.push_back(generator_index(gens, rw.conjugate(arc_word(words.left, e))));
@@ -208,7 +242,7 @@ Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const 
   {
     Refusal refusal = Refusal::none;
     std::string why;
-    if (!walk_patterns(g, hook_darts, index, pg, refusal, why)) {
+    if (!walk_patterns(g, hook_darts, letter, position, pg, refusal, why)) {
       spare_pattern = std::move(pg);
       spare_match = std::move(found.node);
       return refuse<SchemeMatch>(refusal, std::move(why));
@@ -229,48 +263,64 @@ Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const 
   // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
   auto& m = found.node;
   m.resize(L.node_count());
-  for (auto& column : m) column.assign(np, no_dart);
-  queue.clear();
-  for (std::size_t h = 0; h < hook_darts.size(); ++h) {
-    const NodeId hook = core.hooks()[h];
-    if (m[hook][0] != no_dart) return no(Refusal::bad_hooks, "two hooks name one node of L");
-    m[hook][0] = hook_darts[h];
-    queue.emplace_back(0, hook);
-  }
-  for (std::size_t k = 0; k < queue.size(); ++k) {
-    const auto [p, x] = queue[k];
-    const Dart here = m[x][p];
-    for (const Step& s : steps[x]) {
-      const std::uint32_t q = step(p, s.generator);
-      const Dart there = s.forward ? g.link(s.label, here) : g.inverse_link(s.label, here);
-      if (there == no_dart) {
-        const auto& a = L.arc(s.arc);
-        return no(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source), a.label,
-                                                 L.name(a.target), pattern[p], here, a.label));
-      }
-      Dart& slot = m[s.other][q];
-      if (slot == no_dart) {
-        slot = there;
-        queue.emplace_back(q, s.other);
-      } else if (slot != there) {
-        return no(Refusal::no_match,
-                  fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q], L.name(s.other), slot, there));
+  if (identity_match) {
+    m[0].assign(pattern.begin(), pattern.end());
+  } else {
+    for (auto& column : m) column.assign(np, no_dart);
+    queue.clear();
+    for (std::size_t h = 0; h < hook_darts.size(); ++h) {
+      const NodeId hook = core.hooks()[h];
+      if (m[hook][0] != no_dart) return no(Refusal::bad_hooks, "two hooks name one node of L");
+      m[hook][0] = hook_darts[h];
+      queue.emplace_back(0, hook);
+    }
+    for (std::size_t k = 0; k < queue.size(); ++k) {
+      const auto [p, x] = queue[k];
+      const Dart here = m[x][p];
+      for (const Step& s : steps[x]) {
+        const std::uint32_t q = step(p, s.generator);
+        const Dart there = s.forward ? g.link(s.label, here) : g.inverse_link(s.label, here);
+        if (there == no_dart) {
+          const auto& a = L.arc(s.arc);
+          return no(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source), a.label,
+                                                   L.name(a.target), pattern[p], here, a.label));
+        }
+        Dart& slot = m[s.other][q];
+        if (slot == no_dart) {
+          slot = there;
+          queue.emplace_back(q, s.other);
+        } else if (slot != there) {
+          return no(Refusal::no_match,
+                    fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q], L.name(s.other), slot, there));
+        }
       }
     }
-  }
-  // Injectivity on nodes; every product node matched (ι(L, P_v) connected).
-  {
-    const DartTable::ClearOnExit emptied{index};
+    // Injectivity on nodes; every product node matched (ι(L, P_v)
+    // connected). The marks are cleared through the matched darts met.
+    constexpr std::uint32_t none = DartTable::none;
+    std::size_t marked = 0;
+    auto unmark = [&] {
+      for (NodeId x = 0; x < L.node_count() && marked > 0; ++x)
+        for (std::size_t p = 0; p < np && marked > 0; ++p, --marked) position[m[x][p]] = none;
+    };
+    if (position.size() < g.size()) position.resize(g.size(), none);
     for (NodeId x = 0; x < L.node_count(); ++x)
       for (std::size_t p = 0; p < np; ++p) {
         const Dart d = m[x][p];
-        if (d == no_dart)
+        if (d == no_dart) {
+          unmark();
           return no(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) is not "
                                                        "connected, so the hooks do not fix the match (002 Sec. 6.3)",
                                                        pattern[p], L.name(x)));
-        if (index.get(d) != DartTable::none) return no(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
-        index.set(d, 1);
+        }
+        if (position[d] != none) {
+          unmark();
+          return no(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
+        }
+        position[d] = 0;
+        ++marked;
       }
+    unmark();
   }
   // Arc injectivity: two arcs of L out of one node with one label share
   // their images.

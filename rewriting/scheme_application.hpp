@@ -36,10 +36,7 @@ struct PatternGraphs {
 
 /// Refuses when a word has no path from a pattern dart
 /// (not-combinatorial) or when two hooks' pattern graphs differ (no-match).
-/// `scratch` (empty, left empty) spares a table the size of the map when
-/// a caller applies many schemes to one large map.
-Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts,
-                                      DartTable* scratch = nullptr);
+Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
 
 /// The match of the instantiated L: node[x][p] is the dart matched by
 /// product node (p, x), p a position in the first hook's pattern.
