@@ -230,16 +230,23 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
 
   // 2. Evaluation (Def. 10) on G, and the labeled match of L. binding[p]
   //    holds the darts of L's nodes in pattern copy p.
+  ev.memorise(true);
   ev.forget();
   const std::vector<std::string>& names = L.names();
   left_code.resize(terms.left.size());
   right_code.resize(terms.right.size());
   for (std::size_t k = 0; k < terms.left.size(); ++k) ev.compile(terms.left[k].term, names, left_code[k]);
   for (std::size_t k = 0; k < terms.right.size(); ++k) ev.compile(terms.right[k].term, names, right_code[k]);
-  flat.resize(np * nl);
-  for (NodeId x = 0; x < nl; ++x)
-    for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.at(x, p);
-  auto binding = [&](std::size_t p) { return std::span<const Dart>(flat.data() + p * nl, nl); };
+  // With one node in L (a Jerboa hook), copy p's binding is the p-th
+  // entry of the match's own column: no table.
+  if (nl > 1) {
+    flat.resize(np * nl);
+    for (NodeId x = 0; x < nl; ++x)
+      for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.at(x, p);
+  }
+  auto binding = [&](std::size_t p) {
+    return nl == 1 ? std::span<const Dart>(&(*in.dart)[0][p], 1) : std::span<const Dart>(flat.data() + p * nl, nl);
+  };
   try {
     for (std::size_t k = 0; k < terms.left.size(); ++k) {
       const NodeTerm& t = terms.left[k];
@@ -287,6 +294,9 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       const EmbeddingSignature* sig = used[u];
       const Embedding* e = g.find(sig->name);
       const InstantiatedClasses& cls = classes[u];
+      // One evaluation per class: a collect is not met twice from one
+      // class, so it is not memorised.
+      ev.memorise(!per_class[u]);
       for (std::size_t k = 0; k < terms.right.size(); ++k) {
         const NodeTerm& t = terms.right[k];
         if (t.embedding != sig->name) continue;
@@ -329,11 +339,13 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     out.moved = std::move(d.value->moved);
   }
   g.follow(out.moved);
-  // Added darts may reuse deleted darts' slots: they start unlabeled.
+  // Added darts may reuse deleted darts' slots: they start unlabeled (a
+  // dart beyond an embedding's table has no value yet).
   for (NodeId y = 0; y < R.node_count(); ++y)
     if (rule.to_left(y) == no_node)
-      for (Dart d : comatch[y])
-        for (Embedding& e : g.embeddings) e.set_index(d, Embedding::none);
+      for (Embedding& e : g.embeddings)
+        for (Dart d : comatch[y])
+          if (d < e.slot.size()) e.slot[d] = Embedding::none;
 
   // 4. Labels. A preserved node labeled in L and not in R loses its value
   //    (unless a label of R reaches it); R's labels are written next.

@@ -103,7 +103,7 @@ std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, cons
 }
 
 std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
-  if (const std::uint32_t k = memo.bag_of.get(d); k != DartTable::none) return k;
+  if (const std::uint32_t k = memorise_ ? memo.bag_of.get(d) : DartTable::none; k != DartTable::none) return k;
   const Embedding& e = g_.embeddings[memo.embedding];
   const std::vector<Dart>& orbit = outer_.orbit(d, memo.outer);  // valid until outer_'s next walk
   std::vector<Value>& out = memo.elements;
@@ -155,7 +155,8 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), value_less);
   const auto k = static_cast<std::uint32_t>(memo.start.size() - 1);
   memo.start.push_back(static_cast<std::uint32_t>(out.size()));
-  for (Dart x : orbit) memo.bag_of.set(x, k);
+  if (memorise_)
+    for (Dart x : orbit) memo.bag_of.set(x, k);
   return k;
 }
 
@@ -163,6 +164,10 @@ std::span<const Value> TermEvaluator::collect(const std::string& name, const std
   std::size_t e = 0;
   if (!embedding(name, &e)) throw EvaluationError(fmt::format("the map has no embedding '{}'", name));
   CollectMemo& memo = memo_[memo_for(name, e, orbit)];
+  if (!memorise_) {
+    memo.elements.clear();
+    memo.start.resize(1);
+  }
   return memo.bag(collect_bag(memo, d));
 }
 
@@ -172,6 +177,11 @@ void TermEvaluator::forget() {
     m.elements.clear();
     m.start.resize(1);
   }
+}
+
+void TermEvaluator::memorise(bool on) {
+  if (on != memorise_) forget();
+  memorise_ = on;
 }
 
 // --- Running ---------------------------------------------------------------
@@ -190,6 +200,12 @@ Dart TermEvaluator::node(const CompiledTerm& c, const CompiledTerm::Step& s, std
 Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
   using Op = CompiledTerm::Step::Op;
   stack_.clear();
+  // Without a memo, the multisets of the last call are no longer lent.
+  if (!memorise_)
+    for (CollectMemo& m : memo_) {
+      m.elements.clear();
+      m.start.resize(1);
+    }
   for (const CompiledTerm::Step& s : c.steps_) {
     switch (s.op) {
       case Op::literal: stack_.push_back({s.term->literal}); break;

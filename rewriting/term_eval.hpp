@@ -70,6 +70,11 @@ class TermEvaluator {
   std::span<const Value> collect(const std::string& embedding, const std::vector<Dim>& orbit, Dart d);
   /// Drops the memorised collects (after a change of the map).
   void forget();
+  /// Whether collects are memorised (the default). Without, each collect
+  /// walks its orbit and its multiset lives until the next value() call:
+  /// for a caller that evaluates one term per orbit, where a memo would be
+  /// written for every dart and never read. A change forgets the memo.
+  void memorise(bool on);
 
  private:
   // The collects of one (embedding, <o'>): bag_of[d] is the bag of every
@@ -108,6 +113,7 @@ class TermEvaluator {
   std::vector<Entry> stack_;
   std::vector<Operand> args_;
   CompiledTerm once_;
+  bool memorise_ = true;
 };
 
 }  // namespace dartcheck

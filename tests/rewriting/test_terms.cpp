@@ -210,7 +210,8 @@ TEST(Terms, CollectEqualsBruteForceOnRandomEmbeddedMaps) {
   // Def. 9: pi<o'>(v) = the labels of the quotient by pi of <o'>(v). On
   // 2-G-maps (every dimension an involution: the evaluator reads a one-
   // dimension pi-orbit off the links) and on 2-O-maps (alpha_1 a
-  // permutation: its cycles are longer than two, and are walked).
+  // permutation: its cycles are longer than two, and are walked); with
+  // the memo (default) and without (one evaluation per orbit).
   std::mt19937 rng(7);
   const std::vector<EmbeddingSignature> oriented = {{"face", ValueType::real, {1}}, {"edge", ValueType::integer, {2}}};
   std::size_t compared = 0;
@@ -219,6 +220,7 @@ TEST(Terms, CollectEqualsBruteForceOnRandomEmbeddedMaps) {
     for (int round = 0; round < 200; ++round) {
       const EmbeddedMap g = embed_randomly(build_random_map(model, draw_recipe(rng, 1 + round % 6, 2)), sigs, rng);
       TermEvaluator ev(g);
+      ev.memorise(round % 2 == 0);
       for (int k = 0; k < 5; ++k) {
         const Dart d = std::uniform_int_distribution<Dart>(0, static_cast<Dart>(g.map.size() - 1))(rng);
         std::vector<Dim> o2;
