@@ -36,6 +36,7 @@
 #include "bench/peer_bench.hpp"
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
+#include "core/dart_table.hpp"
 #include "io/catalog.hpp"
 #include "rewriting/embedded_application.hpp"
 #include "core/orbit.hpp"
@@ -183,6 +184,139 @@ Result run_by_hand(const std::string& off, int runs, std::size_t triangles, bool
   });
 }
 
+// The floor of a generic scheme engine: what 002's instantiation and
+// 003's extended labels make any implementation do, written by hand for
+// this one rule (no rule is read or interpreted). For each hook:
+//   1. P_v (002 Def. 20): a BFS of the hook orbit with a dart -> position
+//      table and one shift table per generator (alpha0, alpha1, and
+//      alpha2 for all faces), as a scheme engine must, not knowing the
+//      orbit's shape;
+//   2. the classes of pos <1,2> in the instantiated L and R: per face,
+//      Lemma 3's check walks the <1,2>-orbit in G of each corner (L has
+//      no 2-loop, so its classes are not whole orbits of G); for all
+//      faces, L is closed and the classes are walks over P_v;
+//   3. one barycenter per face (one evaluation per class);
+//   4. the links of the new darts through the shift tables;
+//   5. the labels: per face, Def. 12's walk of each corner's vertex orbit
+//      in H (R has no 2-arc at n0, so the class is not a whole orbit);
+//      for all faces, one write per instance from its class (R closed).
+// Checked as the scheme rows. New darts of copy p: n1 = base + p, n2 =
+// base + np + p.
+Result run_generic_floor(const std::string& off, int runs, std::size_t triangles, Scope scope) {
+  using namespace dartcheck;
+  constexpr std::uint32_t none = DartTable::none;
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  const EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.find_rule("triangulation-all-faces-pos")->terms->embeddings[0]);
+  const bool per_face = scope == Scope::per_face;
+  const std::vector<Dart> hooks = orbit_hooks(input.map, per_face ? std::vector<Dim>{0, 1} : std::vector<Dim>{0, 1, 2});
+  const Dim generators = per_face ? 2 : 3;
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    EmbeddedMap g = input;
+    Map& m = g.map;
+    Embedding& pos = g.embeddings[0];
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<std::uint32_t> position(m.size(), none), face, vertex, stack;
+    std::vector<Dart> pattern;
+    std::array<std::vector<std::uint32_t>, 3> shift;
+    DartTable corner_of;
+    OrbitWalker walker(m);
+    const std::vector<Word> vertex_gens = dims_generators({1, 2});
+    // Classes of P_v under two generators, by a walk along the shifts.
+    auto classes = [&](int a, int b, std::vector<std::uint32_t>& cls) {
+      cls.assign(pattern.size(), none);
+      std::uint32_t count = 0;
+      for (std::uint32_t p = 0; p < pattern.size(); ++p) {
+        if (cls[p] != none) continue;
+        cls[p] = count;
+        stack.push_back(p);
+        while (!stack.empty()) {
+          const std::uint32_t q = stack.back();
+          stack.pop_back();
+          for (int w : {a, b})
+            if (const std::uint32_t r = shift[w][q]; cls[r] == none) {
+              cls[r] = count;
+              stack.push_back(r);
+            }
+        }
+        ++count;
+      }
+      return count;
+    };
+    bool ok = true;
+    for (Dart h : hooks) {
+      // 1. P_v.
+      pattern.assign(1, h);
+      for (auto& t : shift) t.clear();
+      position[h] = 0;
+      for (std::size_t k = 0; k < pattern.size(); ++k)
+        for (Dim i = 0; i < generators; ++i) {
+          const Dart t = m.link(i, pattern[k]);
+          if (position[t] == none) {
+            position[t] = static_cast<std::uint32_t>(pattern.size());
+            pattern.push_back(t);
+          }
+          shift[i].push_back(position[t]);
+        }
+      for (Dart d : pattern) position[d] = none;
+      const auto np = static_cast<std::uint32_t>(pattern.size());
+      // 2. Classes: faces (alpha0, alpha1) for n2; per face, Lemma 3 on the
+      //    corners {p, p.alpha1}, each walked in G once.
+      const std::uint32_t faces = classes(0, 1, face);
+      if (per_face) {
+        for (std::uint32_t p = 0; p < np; ++p) corner_of.set(pattern[p], std::min(p, shift[1][p]));
+        for (std::uint32_t p = 0; p < np; ++p) {
+          if (shift[1][p] < p) continue;
+          for (Dart y : walker.orbit(pattern[p], vertex_gens))
+            if (const std::uint32_t c = corner_of.get(y); c != none && c != p) ok = false;  // overlap
+        }
+        corner_of.clear();
+      } else {
+        classes(1, 2, vertex);
+      }
+      // 3. One barycenter per face class: its corners' mean.
+      std::vector<std::array<double, 3>> sum(faces, {0, 0, 0});
+      std::vector<int> corners(faces, 0);
+      for (std::uint32_t p = 0; p < np; ++p) {
+        if (shift[1][p] < p) continue;
+        const Value& v = pos.pool[pos.slot[pattern[p]]];
+        for (std::size_t k = 0; k < 3; ++k) sum[face[p]][k] += v.x[k];
+        ++corners[face[p]];
+      }
+      std::vector<std::uint32_t> centre(faces);
+      for (std::uint32_t c = 0; c < faces; ++c) {
+        for (double& x : sum[c]) x /= corners[c];
+        centre[c] = pos.store(Value::coords(ValueType::point3, sum[c]));
+      }
+      // 4. The rewrite: n0 -1- n1 -0- n2, n1's 2-loop along alpha1, n2's
+      //    1- and 2-loops along alpha0 and alpha1.
+      const Dart base = m.add_darts(2 * std::size_t{np});
+      for (std::uint32_t p = 0; p < np; ++p) {
+        const Dart n0 = pattern[p], n1 = base + p, n2 = base + np + p;
+        m.set_link(1, n0, n1);
+        m.set_link(1, n1, n0);
+        m.set_link(0, n1, n2);
+        m.set_link(0, n2, n1);
+        m.set_link(2, n1, base + shift[1][p]);
+        m.set_link(1, n2, base + np + shift[0][p]);
+        m.set_link(2, n2, base + np + shift[1][p]);
+      }
+      // 5. Labels: n2 from its face class; n0 keeps its value and n1 takes
+      //    it, through Def. 12's walk per corner, or per instance.
+      for (std::uint32_t p = 0; p < np; ++p) pos.set_index(base + np + p, centre[face[p]]);
+      for (std::uint32_t p = 0; p < np; ++p) {
+        const std::uint32_t v = pos.slot[pattern[p]];
+        if (!per_face) pos.set_index(base + p, v);
+        else if (shift[1][p] > p)
+          for (Dart y : walker.orbit(pattern[p], vertex_gens)) pos.set_index(y, v);
+      }
+    }
+    ms = since(t0);
+    out = m.size();
+    return ok && count_cells(m).cells[2] == triangles && check_map(m).valid() && check_embedding(m, pos, true).consistent() &&
+           centres_are_barycenters(input, g);
+  });
+}
+
 // CGAL's topology-only floor: the same insertion on a plain
 // Combinatorial_map<2> (no point attributes), copied from the LCC.
 Result run_cgal_topology(const std::string& off, int runs, std::size_t faces) {
@@ -248,6 +382,9 @@ int main(int argc, char** argv) {
       {"dartcheck triangulation-all-faces-pos, once, one evaluation per orbit",
        [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::one_per_orbit); }},
       {"dartcheck triangulation-all-faces-pos, topology only (apply_scheme, no terms)", [&] { return run_topology(off, runs, sides); }},
+      {"generic scheme floor by hand, per face (P_v, Lemma 3 and Def. 12 walks)",
+       [&] { return run_generic_floor(off, runs, sides, Scope::per_face); }},
+      {"generic scheme floor by hand, all faces (P_v, classes over P_v)", [&] { return run_generic_floor(off, runs, sides, Scope::all_faces); }},
       {"by hand on dartcheck's Map and Embedding, with barycenters (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, true); }},
       {"by hand on dartcheck's Map, topology only (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, false); }},
       {"CGAL Combinatorial_map<2> insert_cell_0_in_cell_2 on every face (topology only)", [&] { return run_cgal_topology(off, runs, sides); }},

@@ -104,7 +104,6 @@ struct EmbeddedRewriter::Context {
   std::vector<char> has_classes, per_class;
   std::vector<std::uint32_t> pooled, writer_of;
   std::vector<Writer> writers;
-  std::vector<std::size_t> owner;
   DartTable orbit_of, given;  // each left empty between applications
 
   Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
@@ -159,33 +158,35 @@ struct EmbeddedRewriter::Context {
 };
 
 // Lemma 3: instances of L in different pi-orbits of the instantiated L
-// must match darts in different pi-orbits of G.
+// must match darts in different pi-orbits of G. The matched darts are
+// marked with their instance (x * np + p: the match is injective); each
+// pi-orbit of G that holds one is walked once, from the first met, and
+// every matched dart found in it must be in that instance's class. Only
+// the matched darts are written, not the orbits walked.
 std::string EmbeddedRewriter::Context::overlap(const Instances& in, std::size_t u) {
+  constexpr std::uint32_t covered = DartTable::none - 1;  // in an orbit walked
   const EmbeddingSignature& e = *used[u];
   const TopoGraph& L = rule.left();
   const std::size_t np = in.np;
   instantiated_classes(L, words.left, in.pattern, e.orbit, left_classes);
-  // orbit_of[d]: the pi-orbit of G of each matched dart, numbered as met;
-  // owner[o]: an instance of L in G orbit o.
   const DartTable::ClearOnExit emptied{orbit_of};
+  for (NodeId x = 0; x < L.node_count(); ++x)
+    for (std::size_t p = 0; p < np; ++p) orbit_of.set(in.at(x, p), static_cast<std::uint32_t>(x * np + p));
   const std::vector<Word>& gens = used_gens[u];
-  owner.clear();
   for (NodeId x = 0; x < L.node_count(); ++x)
     for (std::size_t p = 0; p < np; ++p) {
       const Dart d = in.at(x, p);
-      std::uint32_t o = orbit_of.get(d);
-      if (o == DartTable::none) {
-        o = static_cast<std::uint32_t>(owner.size());
-        for (Dart y : walker.orbit(d, gens)) orbit_of.set(y, o);
-        owner.push_back(x * np + p);
-        continue;
-      }
-      const std::size_t first = owner[o];
-      if (left_classes.of(static_cast<NodeId>(first / np), first % np) != left_classes.of(x, p)) {
-        return fmt::format("nodes {} and {} are in different {}-orbits <{}> of L, but their darts {} and {} share one {}-orbit of the map (003 Lemma 3, "
-                           "non-overlap): the extended rule would give that orbit the labels of both",
-                           in.name(L, static_cast<NodeId>(first / np), first % np), in.name(L, x, p), e.name, fmt::join(e.orbit, ","),
-                           in.at(static_cast<NodeId>(first / np), first % np), d, e.name);
+      if (orbit_of.get(d) == covered) continue;
+      const std::uint32_t cls = left_classes.of(x, p);
+      for (Dart y : walker.orbit(d, gens)) {
+        const std::uint32_t i = orbit_of.get(y);
+        if (i == DartTable::none || i == covered) continue;  // covered: links that are not permutations (an invalid host)
+        const auto z = static_cast<NodeId>(i / np);
+        if (left_classes.of(z, i % np) != cls)
+          return fmt::format("nodes {} and {} are in different {}-orbits <{}> of L, but their darts {} and {} share one {}-orbit of the map (003 Lemma 3, "
+                             "non-overlap): the extended rule would give that orbit the labels of both",
+                             in.name(L, x, p), in.name(L, z, i % np), e.name, fmt::join(e.orbit, ","), d, y, e.name);
+        orbit_of.set(y, covered);
       }
     }
   return {};

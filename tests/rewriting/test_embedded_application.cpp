@@ -19,6 +19,7 @@
 #include "analysis/embedded_fuzz.hpp"
 #include "io/catalog.hpp"
 #include "rewriting/embedded_application.hpp"
+#include "rewriting/instantiated_classes.hpp"
 #include "core/input_error.hpp"
 #include "io/mesh_io.hpp"
 #include "core/orbit.hpp"
@@ -98,6 +99,65 @@ TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWr
   EXPECT_EQ(rules, 16u);  // 14 + catmull-clark-points, catmull-clark
   EXPECT_GT(compared, 300u);
   EXPECT_GT(propagated, 10000u);
+}
+
+// 003 Lemma 3 by its definition: an extended application is refused for
+// overlap exactly when two instances of L in different pi-orbits of the
+// instantiated L (classes by one union-find over every instance) match
+// darts of one pi-orbit of G (orbits walked from each matched dart), for
+// some embedding the rule labels. Every extended rule of the embedding and
+// subdivision catalogs, consistent or not, on random embedded maps;
+// applications refused before the check (no match, L's labels) are
+// skipped.
+TEST(EmbeddedRewriter, OverlapRefusalIsLemma3ByBruteForce) {
+  std::mt19937 rng(29);
+  std::size_t checked = 0, overlaps = 0;
+  for (const Catalog* catalog : {&embedding_catalog(), &subdivision_catalog()})
+    for (const auto& r : catalog->rules) {
+      if (r.terms->instantiation != Instantiation::extended) continue;
+      const TopoGraph& L = r.rule.left();
+      for (int round = 0; round < 60; ++round) {
+        EmbeddedMap g = embed_randomly(build_random_map(r.rule.model(), draw_recipe(rng, 1 + round % 8, 2)), catalog->signatures, rng);
+        std::vector<Dart> hooks;
+        for (std::size_t h = 0; h < r.rule.hooks().size(); ++h)
+          hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(g.map.size() - 1))(rng));
+        // The instances: dart[x][p], and the pattern of a scheme.
+        std::vector<std::vector<Dart>> dart;
+        std::optional<SchemeMatch> sm;
+        if (r.words.scheme) {
+          auto m = match_scheme(r.rule, r.words, g.map, hooks);
+          if (!m.ok()) continue;
+          sm = std::move(*m.value);
+          dart = sm->node;
+        } else {
+          const auto m = match_from_hooks(r.rule, g.map, hooks);
+          if (!m.ok()) continue;
+          for (Dart d : m.value->node) dart.push_back({d});
+        }
+        const std::size_t np = dart[0].size();
+        bool expected = false;
+        OrbitWalker walker(g.map);
+        InstantiatedClasses classes;
+        for (const EmbeddingSignature* sig : r.terms->used()) {
+          instantiated_classes_by_instance(L, r.words.left, sm ? &sm->pattern : nullptr, sig->orbit, classes);
+          for (NodeId x = 0; x < L.node_count() && !expected; ++x)
+            for (std::size_t p = 0; p < np && !expected; ++p) {
+              const std::vector<Dart> orbit = walker.orbit(dart[x][p], dims_generators(sig->orbit));
+              for (NodeId z = 0; z < L.node_count(); ++z)
+                for (std::size_t q = 0; q < np; ++q)
+                  expected = expected || (classes.of(x, p) != classes.of(z, q) && std::find(orbit.begin(), orbit.end(), dart[z][q]) != orbit.end());
+            }
+        }
+        const auto a = apply_embedded(r.rule, r.words, *r.terms, g, hooks, false);
+        if (a.refusal == Refusal::label_mismatch || a.refusal == Refusal::no_value) continue;
+        ASSERT_EQ(a.refusal == Refusal::overlap, expected) << r.rule.name() << ": " << a.why;
+        ++checked;
+        overlaps += expected;
+      }
+    }
+  EXPECT_GT(checked, 300u);
+  EXPECT_GT(overlaps, 20u);
+  std::printf("%zu extended applications, %zu refused for overlap, as Lemma 3 says\n", checked, overlaps);
 }
 
 TEST(EmbeddingCatalog, FaceStretchingOverlapsOnATriangle) {
