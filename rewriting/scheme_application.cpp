@@ -48,41 +48,47 @@ std::vector<int> letters_of(const std::vector<ConjWord>& gens) {
 // and must give the same tables: the pattern graphs are isomorphic, and
 // darts[k][p] is the image of pattern node p under that isomorphism. On
 // refusal sets `refusal` and `why`.
+//
+// The queue is `queue`, at least one entry longer than the map (P_v has
+// at most every dart): each step writes the dart it reached at the tail
+// and moves the tail only when the dart is new, so the walk has no branch
+// on "new or met", which a processor cannot predict (a third of the steps
+// find a new dart).
 bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, const std::vector<int>& letter, std::vector<std::uint32_t>& position,
-                   PatternGraphs& out, Refusal& refusal, std::string& why) {
+                   std::vector<Dart>& queue, PatternGraphs& out, Refusal& refusal, std::string& why) {
   constexpr std::uint32_t none = DartTable::none;
   if (position.size() < g.size()) position.resize(g.size(), none);
+  if (queue.size() < g.size() + 1) queue.resize(g.size() + 1);
   const std::size_t ng = out.gens.size();
   out.shift.resize(ng);
   for (auto& s : out.shift) s.clear();
   out.darts.resize(hook_darts.size());
   for (std::size_t h = 0; h < hook_darts.size(); ++h) {
-    std::vector<Dart>& pattern = out.darts[h];
+    std::size_t size = 1;
     struct Clear {
       std::vector<std::uint32_t>& position;
-      const std::vector<Dart>& darts;
+      const std::vector<Dart>& queue;
+      const std::size_t& size;
       ~Clear() {
-        for (Dart d : darts) position[d] = none;
+        for (std::size_t k = 0; k < size; ++k) position[queue[k]] = none;
       }
-    } const cleared{position, pattern};
-    pattern.clear();
-    pattern.push_back(hook_darts[h]);
+    } const cleared{position, queue, size};
+    queue[0] = hook_darts[h];
     position[hook_darts[h]] = 0;
-    for (std::size_t k = 0; k < pattern.size(); ++k)
+    for (std::size_t k = 0; k < size; ++k)
       for (std::size_t w = 0; w < ng; ++w) {
-        const Dart here = pattern[k];
+        const Dart here = queue[k];
         const Dart t = letter[w] >= 0 ? g.link(letter[w], here) : follow(g, here, out.gens[w]);
         if (t == no_dart) {
           refusal = Refusal::not_combinatorial;
           why = fmt::format("dart {} has no {}-path: the host is not combinatorial", here, out.gens[w].str());
           return false;
         }
-        std::uint32_t at = position[t];
-        if (at == none) {
-          at = static_cast<std::uint32_t>(pattern.size());
-          position[t] = at;
-          pattern.push_back(t);
-        }
+        const std::uint32_t met = position[t];
+        const std::uint32_t at = met == none ? static_cast<std::uint32_t>(size) : met;
+        position[t] = at;
+        queue[size] = t;
+        size += met == none;
         if (h == 0) {
           out.shift[w].push_back(at);
         } else if (out.shift[w][k] != at) {
@@ -92,6 +98,7 @@ bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, const std::ve
           return false;
         }
       }
+    out.darts[h].assign(queue.begin(), queue.begin() + static_cast<std::ptrdiff_t>(size));
   }
   return true;
 }
@@ -102,9 +109,11 @@ Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words,
   PatternGraphs out;
   out.gens = generators_of(model, words);
   std::vector<std::uint32_t> position;
+  std::vector<Dart> queue;
   Refusal refusal = Refusal::none;
   std::string why;
-  if (!walk_patterns(g, hook_darts, letters_of(out.gens), position, out, refusal, why)) return refuse<PatternGraphs>(refusal, std::move(why));
+  if (!walk_patterns(g, hook_darts, letters_of(out.gens), position, queue, out, refusal, why))
+    return refuse<PatternGraphs>(refusal, std::move(why));
   return {std::move(out), Refusal::none, {}};
 }
 
@@ -158,8 +167,10 @@ struct SchemeRewriter::State {
   bool identity_match = false;
 
   // position[d]: d's position in P_v while a pattern is walked, then a
-  // mark of matched darts (injectivity); none between uses.
+  // mark of matched darts (injectivity); none between uses. pattern_queue:
+  // the walk's queue (longer than the map).
   std::vector<std::uint32_t> position;
+  std::vector<Dart> pattern_queue;
   PatternGraphs spare_pattern;
   std::vector<std::vector<Dart>> spare_match, spare_comatch;
   std::vector<std::pair<std::uint32_t, NodeId>> queue;
@@ -242,7 +253,7 @@ Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const 
   {
     Refusal refusal = Refusal::none;
     std::string why;
-    if (!walk_patterns(g, hook_darts, letter, position, pg, refusal, why)) {
+    if (!walk_patterns(g, hook_darts, letter, position, pattern_queue, pg, refusal, why)) {
       spare_pattern = std::move(pg);
       spare_match = std::move(found.node);
       return refuse<SchemeMatch>(refusal, std::move(why));
