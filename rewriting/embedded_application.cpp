@@ -70,14 +70,18 @@ struct EmbeddedRewriter::Context {
   // the labeled match checked it), or it is `x.pi` for its own embedding
   // pi: no evaluation, and the orbit shares the stored pool entry.
   std::vector<NodeId> stored_at;
-  // used[u] = terms.used()[u]. closing[u]: when every node of R has one
-  // out-arc of each dimension of used[u]'s orbit, those arcs; then the
-  // links of H in that orbit from an instance of R lead to instances of
-  // R, so a class of the instantiated R is a whole pi-orbit of H, written
-  // without a walk. Each application checks these links in H first (an
-  // inconsistent rule may write others) and walks when one differs.
+  // used[u] = terms.used()[u]. closed[u]: every node of R has one
+  // out-arc of each dimension of used[u]'s orbit. A successful rewrite
+  // makes every arc of R a link of H between the comatched darts (an
+  // added arc is written once, two added i-arcs out of one node or an
+  // added arc beside a kept one are refused, a kept arc is a matched link
+  // no removal touches, and compaction renumbers links and comatch
+  // alike; SchemeApplication.IsTheDerivationOfTheInstantiatedRule checks
+  // it), so the links of H in that orbit from an instance of R lead to
+  // instances of R: a class of the instantiated R is a whole pi-orbit of
+  // H, written without a walk.
   std::vector<const EmbeddingSignature*> used;
-  std::vector<std::vector<ArcId>> closing;
+  std::vector<char> closed;
   // left_closed[u]: every node of L has an out-arc of each dimension of
   // used[u]'s orbit. A match maps arcs to links, so the matched darts are
   // then closed under that orbit's links and each class of the
@@ -124,33 +128,15 @@ struct EmbeddedRewriter::Context {
     for (const EmbeddingSignature* sig : used) used_gens.push_back(dims_generators(sig->orbit));
     const TopoGraph& R = r.right();
     for (const EmbeddingSignature* sig : used) {
-      std::vector<ArcId> arcs;
       bool all = true;
       for (NodeId y = 0; all && y < R.node_count(); ++y)
-        for (Dim i : sig->orbit) {
-          const auto out = R.out_arcs(y, i);
-          all = all && out.size() == 1;
-          if (all) arcs.push_back(out[0]);
-        }
-      closing.push_back(all ? std::move(arcs) : std::vector<ArcId>{});
+        for (Dim i : sig->orbit) all = all && R.out_arcs(y, i).size() == 1;
+      closed.push_back(all);
       bool left = true;
       for (NodeId x = 0; left && x < r.left().node_count(); ++x)
         for (Dim i : sig->orbit) left = left && !r.left().out_arcs(x, i).empty();
       left_closed.push_back(left);
     }
-  }
-
-  // Whether H links each instance of R as closing[u] says.
-  bool closed_in_h(std::size_t u, const Instances& in, const std::vector<std::vector<Dart>>& comatch) const {
-    if (closing[u].empty()) return false;
-    const TopoGraph& R = rule.right();
-    for (ArcId a : closing[u]) {
-      const auto& arc = R.arc(a);
-      const int w = in.generator(arc_word(words.right, a));
-      for (std::size_t p = 0; p < in.np; ++p)
-        if (g.map.link(arc.label, comatch[arc.source][p]) != comatch[arc.target][in.step(p, w)]) return false;
-    }
-    return true;
   }
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
@@ -282,7 +268,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   has_classes.assign(used.size(), 0);
   per_class.assign(used.size(), 0);
   for (std::size_t u = 0; u < used.size(); ++u) {
-    if (extended && (evaluation == Evaluation::one_per_orbit || !closing[u].empty())) {
+    if (extended && (evaluation == Evaluation::one_per_orbit || closed[u])) {
       instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u]);
       has_classes[u] = true;
     }
@@ -376,7 +362,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     // orbit from the writer).
     writers.clear();
     const InstantiatedClasses& cls = classes[u];
-    const bool by_class = extended && closed_in_h(u, in, comatch);
+    const bool by_class = extended && closed[u];
     writer_of.assign(by_class ? cls.count : 0, DartTable::none);
     if (by_class && per_class[u]) {
       // Every instance of a class took the class's source, so no two

@@ -321,7 +321,8 @@ TEST(SchemeRewriter, KeptAcrossApplicationsActsAsFresh) {
 // (rewriting/scheme_instantiation) and applied by the graph engine
 // (apply_rule: match_from_hooks and the DPO derivation), which shares no
 // code with the scheme engine's match and rewrite; both must apply or
-// refuse together and give isomorphic maps. P_v itself is checked against
+// refuse together and give isomorphic maps, and each arc of R must be a
+// link of H between the comatched darts. P_v itself is checked against
 // its definition: the hook's closure under W's words and their
 // conjugates, each shift table the word's path. Every scheme of the three
 // catalogs whose L is the hook alone, on random maps of its model.
@@ -383,6 +384,16 @@ TEST(SchemeApplication, IsTheDerivationOfTheInstantiatedRule) {
         }
         ++applied;
         ASSERT_TRUE(isomorphic(by_scheme, by_rule)) << r.rule.name() << " at dart " << v;
+        // Every arc of R is a link of H between the comatched darts (the
+        // embedded rewriter writes the classes of a closed R on this).
+        const TopoGraph& R = r.rule.right();
+        const auto& comatch = s.value->comatch;
+        for (ArcId a = 0; a < R.arc_count(); ++a) {
+          const int w = pv.generator(arc_word(r.words.right, a));
+          for (std::size_t p = 0; p < darts.size(); ++p)
+            ASSERT_EQ(by_scheme.link(R.arc(a).label, comatch[R.arc(a).source][p]), comatch[R.arc(a).target][pv.step(p, w)])
+                << r.rule.name() << ": arc " << a;
+        }
         kept.recycle(std::move(*s.value));
       }
     }
