@@ -104,8 +104,15 @@ std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, cons
 
 std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   if (const std::uint32_t k = memorise_ ? memo.bag_of.get(d) : DartTable::none; k != DartTable::none) return k;
+  if (!memorise_ && memo.last_dart == d) return memo.last_bag;
   const Embedding& e = g_.embeddings[memo.embedding];
-  const std::vector<Dart>& orbit = outer_.orbit(d, memo.outer);  // valid until outer_'s next walk
+  if (d != outer_dart_ || memo.orbit != outer_orbit_) {
+    const std::vector<Dart>& walked = outer_.orbit(d, memo.outer);  // valid until outer_'s next walk
+    outer_last_ = walked;
+    outer_dart_ = d;
+    outer_orbit_ = memo.orbit;
+  }
+  const std::span<const Dart> orbit = outer_last_;
   std::vector<Value>& out = memo.elements;
   const std::size_t first = out.size();
   if (done_.size() * 64 < g_.map.size()) done_.resize((g_.map.size() + 63) / 64, 0);
@@ -114,7 +121,7 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   // Every dart marked is in the orbit (the pi-orbits lie inside it).
   struct Unmark {
     std::vector<std::uint64_t>& bits;
-    const std::vector<Dart>& darts;
+    std::span<const Dart> darts;
     ~Unmark() {
       for (Dart x : darts) bits[x >> 6] &= ~(std::uint64_t{1} << (x & 63));
     }
@@ -157,6 +164,8 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   memo.start.push_back(static_cast<std::uint32_t>(out.size()));
   if (memorise_)
     for (Dart x : orbit) memo.bag_of.set(x, k);
+  memo.last_dart = d;
+  memo.last_bag = k;
   return k;
 }
 
@@ -167,6 +176,7 @@ std::span<const Value> TermEvaluator::collect(const std::string& name, const std
   if (!memorise_) {
     memo.elements.clear();
     memo.start.resize(1);
+    memo.last_dart = no_dart;
   }
   return memo.bag(collect_bag(memo, d));
 }
@@ -176,7 +186,9 @@ void TermEvaluator::forget() {
     m.bag_of.clear();
     m.elements.clear();
     m.start.resize(1);
+    m.last_dart = no_dart;
   }
+  outer_dart_ = no_dart;
 }
 
 void TermEvaluator::memorise(bool on) {
@@ -205,6 +217,7 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
     for (CollectMemo& m : memo_) {
       m.elements.clear();
       m.start.resize(1);
+      m.last_dart = no_dart;
     }
   for (const CompiledTerm::Step& s : c.steps_) {
     switch (s.op) {

@@ -88,6 +88,10 @@ class TermEvaluator {
     DartTable bag_of;
     std::vector<Value> elements;
     std::vector<std::uint32_t> start{0};
+    // Without the memo: the dart and bag of this call's last collect (a
+    // term that repeats a collect reads it once).
+    Dart last_dart = no_dart;
+    std::uint32_t last_bag = 0;
     std::span<const Value> bag(std::uint32_t k) const { return {elements.data() + start[k], elements.data() + start[k + 1]}; }
   };
   // A stack entry: a value, or the multiset bag(bag) of memo_[memo] (an
@@ -106,6 +110,12 @@ class TermEvaluator {
 
   const EmbeddedMap& g_;
   OrbitWalker outer_, inner_;
+  // The last orbit outer_ walked, from outer_dart_ through outer_orbit_:
+  // collects of several embeddings over one orbit walk it once (the map
+  // does not change between forget() calls).
+  Dart outer_dart_ = no_dart;
+  std::vector<Dim> outer_orbit_;
+  std::span<const Dart> outer_last_;
   // One bit per dart: the darts of the collected orbit already in a
   // pi-orbit (cleared through the orbit's list after each collect).
   std::vector<std::uint64_t> done_;
