@@ -110,8 +110,9 @@ void instantiated_classes_by_instance(const TopoGraph& side, const std::vector<C
 // the group gives (x, p) ~ (x', p) for x, x' in it, with it each such arc
 // gives (z, p) ~ (z', p·w) for any z, z' of the group, and no arc leaves
 // the group. So one walk over the pattern per group (label_orbits)
-// replaces a union-find over |side| x |P_v| instances. A Jerboa scheme's implicit arcs are loops
-// (one node) and its explicit arcs have the empty word: always this case.
+// replaces a union-find over |side| x |P_v| instances. A Jerboa scheme's
+// implicit arcs are loops (one node) and its explicit arcs have the empty
+// word: always this case.
 // An arc with a word between two groups (a general (W, D) scheme) falls
 // back to the definition.
 void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& words, const PatternGraphs* pattern, const std::vector<Dim>& orbit,

@@ -107,8 +107,7 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   if (!memorise_ && memo.last_dart == d) return memo.last_bag;
   const Embedding& e = g_.embeddings[memo.embedding];
   if (d != outer_dart_ || memo.orbit != outer_orbit_) {
-    const std::vector<Dart>& walked = outer_.orbit(d, memo.outer);  // valid until outer_'s next walk
-    outer_last_ = walked;
+    outer_last_ = outer_.orbit(d, memo.outer);  // valid until outer_'s next walk
     outer_dart_ = d;
     outer_orbit_ = memo.orbit;
   }
@@ -173,20 +172,14 @@ std::span<const Value> TermEvaluator::collect(const std::string& name, const std
   std::size_t e = 0;
   if (!embedding(name, &e)) throw EvaluationError(fmt::format("the map has no embedding '{}'", name));
   CollectMemo& memo = memo_[memo_for(name, e, orbit)];
-  if (!memorise_) {
-    memo.elements.clear();
-    memo.start.resize(1);
-    memo.last_dart = no_dart;
-  }
+  if (!memorise_) memo.empty();
   return memo.bag(collect_bag(memo, d));
 }
 
 void TermEvaluator::forget() {
   for (CollectMemo& m : memo_) {
     m.bag_of.clear();
-    m.elements.clear();
-    m.start.resize(1);
-    m.last_dart = no_dart;
+    m.empty();
   }
   outer_dart_ = no_dart;
 }
@@ -214,11 +207,7 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
   stack_.clear();
   // Without a memo, the multisets of the last call are no longer lent.
   if (!memorise_)
-    for (CollectMemo& m : memo_) {
-      m.elements.clear();
-      m.start.resize(1);
-      m.last_dart = no_dart;
-    }
+    for (CollectMemo& m : memo_) m.empty();
   for (const CompiledTerm::Step& s : c.steps_) {
     switch (s.op) {
       case Op::literal: stack_.push_back({s.term->literal}); break;

@@ -93,6 +93,12 @@ class TermEvaluator {
     Dart last_dart = no_dart;
     std::uint32_t last_bag = 0;
     std::span<const Value> bag(std::uint32_t k) const { return {elements.data() + start[k], elements.data() + start[k + 1]}; }
+    /// Drops the bags (the per-dart memo stays: forget() clears it).
+    void empty() {
+      elements.clear();
+      start.resize(1);
+      last_dart = no_dart;
+    }
   };
   // A stack entry: a value, or the multiset bag(bag) of memo_[memo] (an
   // index: elements may grow while later arguments are evaluated).
