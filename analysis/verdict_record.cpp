@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
+#include "io/baseline.hpp"
 
 namespace dartcheck::analysis {
 
@@ -29,12 +30,29 @@ bool contradicts_record(const CatalogRule& entry, bool broke_a_map) {
   return broke_a_map && entry.expected_failures && entry.expected_failures->empty();
 }
 
-std::string contradiction_line(const CatalogRule& entry, const std::string& how) {
-  return fmt::format("{}: {}: the catalog records verdict 'consistent', but {}", entry.location.str(), entry.rule.name(), how);
-}
-
-std::string contradiction_summary(std::size_t rules) {
-  return fmt::format("{} rule{} the verdict the catalog records", rules, rules == 1 ? " contradicts" : "s contradict");
+std::vector<std::string> apply_baseline(Catalog& catalog, const std::string& file) {
+  std::vector<std::string> mismatches;
+  const Baseline b = read_baseline(file);
+  auto skipped = [&](const std::string& name) {
+    return std::any_of(catalog.skipped.begin(), catalog.skipped.end(), [&](const SkippedRule& s) { return s.name == name; });
+  };
+  for (const auto& e : b.entries) {
+    CatalogRule* r = nullptr;
+    for (auto& x : catalog.rules)
+      if (x.rule.name() == e.rule) r = &x;
+    if (!r && !skipped(e.rule))
+      throw InputError(e.location.file, e.location.line, e.location.column,
+                       fmt::format("the baseline names rule '{}', which {} does not have", e.rule, catalog.file));
+    if (r && !e.failures)
+      mismatches.push_back(fmt::format("{}: the baseline records rule '{}' as not checked, but it is read now", e.location.str(), e.rule));
+    else if (r)
+      r->expected_failures = e.failures, r->verdict_location = e.location;
+    if (!r && e.failures)
+      mismatches.push_back(fmt::format("{}: the baseline records a verdict for rule '{}', which is not checked now", e.location.str(), e.rule));
+  }
+  for (const auto& s : catalog.skipped)
+    if (!b.find(s.name)) mismatches.push_back(fmt::format("rule '{}' is not checked ({}) and the baseline {} does not record it", s.name, s.why, file));
+  return mismatches;
 }
 
 }  // namespace dartcheck::analysis

@@ -21,10 +21,12 @@ bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::v
 /// condition), yet the rule broke a map.
 bool contradicts_record(const CatalogRule& entry, bool broke_a_map);
 
-/// The line every command prints for such a contradiction.
-std::string contradiction_line(const CatalogRule& entry, const std::string& how);
-
-/// "1 rule contradicts the verdict the catalog records", "2 rules contradict ...".
-std::string contradiction_summary(std::size_t rules);
+/// Replaces the verdicts `catalog` records with those of the baseline
+/// `file` (io/baseline.hpp), as `check`, `fuzz`, `prove` and `report`
+/// read it. Returns one sentence per disagreement between the baseline and
+/// what is checked now (a rule recorded as not checked that is read now,
+/// and the reverse). Throws InputError at a baseline entry that names a
+/// rule the catalog does not have.
+std::vector<std::string> apply_baseline(Catalog& catalog, const std::string& file);
 
 }  // namespace dartcheck::analysis

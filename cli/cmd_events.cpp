@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/report_text.hpp"
+#include "reports/json_document.hpp"
 #include "core/input_error.hpp"
 #include "events/cross_check.hpp"
 
@@ -72,45 +73,50 @@ void print_text(const CatalogRule& rule, const EventRule& view, const std::vecto
   }
 }
 
-std::string json_log(const OrbitKind& kind, const EventLog& log) {
+reports::Json json_log(const OrbitKind& kind, const EventLog& log) {
   std::vector<std::string> lines;
   for (const auto& e : log.events) lines.push_back(event_line(kind, e));
-  return json_strings(lines);
+  return lines;
 }
 
-std::string json_rule(const CatalogRule& rule, const EventRule& view, const std::vector<KindResult>& results) {
-  std::vector<std::string> kinds;
+reports::Json json_rule(const CatalogRule& rule, const EventRule& view, const std::vector<KindResult>& results) {
+  using reports::Json;
+  Json kinds = Json::array();
   for (const KindResult& r : results) {
     const KindEvents& k = r.statics;
     auto orbits = [&](bool left) {
-      std::vector<std::string> out;
+      Json out = Json::array();
       const SideOrbits& so = left ? k.left : k.right;
       const TopoGraph& g = left ? rule.rule.left() : rule.rule.right();
       for (const RuleOrbit& o : so.orbits) {
         std::vector<std::string> names;
         for (NodeId v : o.nodes) names.push_back(g.name(v));
-        out.push_back(fmt::format("{{\"nodes\": {}, \"complete\": {}, \"missing\": {}}}", json_strings(names), o.complete, json_strings(o.missing)));
+        out.push_back(Json{{"nodes", names}, {"complete", o.complete}, {"missing", o.missing}});
       }
-      return fmt::format("[{}]", fmt::join(out, ", "));
+      return out;
     };
-    std::vector<std::string> claims;
+    Json claims = Json::array();
     for (const EventClaim& c : k.claims)
-      claims.push_back(fmt::format("{{\"event\": \"{}\", \"certainty\": \"{}\", \"side\": \"{}\", \"orbit\": {}, \"implicit\": {}, \"position\": {}, "
-                                   "\"others\": [{}], \"reason\": \"{}\"}}",
-                                   event_name(c.event), certainty_name(c.certainty), c.event == Event::creation ? "R" : "L", c.orbit, c.implicit,
-                                   c.position, fmt::join(c.others, ", "), json_escape(c.reason)));
-    std::string app;
+      claims.push_back(Json{{"event", event_name(c.event)},
+                            {"certainty", certainty_name(c.certainty)},
+                            {"side", c.event == Event::creation ? "R" : "L"},
+                            {"orbit", c.orbit},
+                            {"implicit", c.implicit},
+                            {"position", c.position},
+                            {"others", c.others},
+                            {"reason", c.reason}});
+    Json kind{{"orbit_type", k.kind.str()}, {"left", orbits(true)}, {"right", orbits(false)}, {"events", std::move(claims)}};
     if (r.instantiated) {
-      app = fmt::format(", \"log\": {}", json_log(k.kind, *r.instantiated));
-      if (r.check)
-        app += fmt::format(", \"dynamic_log\": {}, \"contradictions\": {}, \"resolutions\": {}", json_log(k.kind, *r.dynamic),
-                           json_strings(r.check->contradictions), json_strings(r.check->resolutions));
+      kind["log"] = json_log(k.kind, *r.instantiated);
+      if (r.check) {
+        kind["dynamic_log"] = json_log(k.kind, *r.dynamic);
+        kind["contradictions"] = r.check->contradictions;
+        kind["resolutions"] = r.check->resolutions;
+      }
     }
-    kinds.push_back(fmt::format("{{\"orbit_type\": \"{}\", \"left\": {}, \"right\": {}, \"events\": [{}]{}}}", k.kind.str(), orbits(true),
-                                orbits(false), fmt::join(claims, ", "), app));
+    kinds.push_back(std::move(kind));
   }
-  return fmt::format("{{\"rule\": \"{}\", \"model\": \"{}\", \"analysed\": true, \"parameter\": [{}], \"orbit_types\": [{}]}}",
-                     json_escape(rule.rule.name()), rule.rule.model().name, fmt::join(view.parameter, ", "), fmt::join(kinds, ",\n  "));
+  return Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", true}, {"parameter", view.parameter}, {"orbit_types", std::move(kinds)}};
 }
 
 }  // namespace
@@ -122,7 +128,7 @@ int events_command(const EventsOptions& o) {
     throw InputError("<command line>", 0, 0, "--hook and --dynamic need --map: they concern one application");
   const bool json = o.format == "json";
   int status = ok;
-  std::vector<std::string> json_rules;
+  reports::Json json_rules = reports::Json::array();
   std::optional<std::string> first_orbit_error;
   std::size_t analysed = 0;
   for (const CatalogRule& rule : catalog.rules) {
@@ -130,8 +136,7 @@ int events_command(const EventsOptions& o) {
     const EventRuleOutcome view = event_rule(rule);
     if (!view.rule) {
       if (json)
-        json_rules.push_back(fmt::format("{{\"rule\": \"{}\", \"model\": \"{}\", \"analysed\": false, \"why\": \"{}\"}}", json_escape(rule.rule.name()),
-                                         rule.rule.model().name, json_escape(view.why)));
+        json_rules.push_back(reports::Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", view.why}});
       else
         fmt::print("rule {} ({}): not analysed: {}\n", rule.rule.name(), rule.rule.model().name, view.why);
       if (!o.rule.empty()) status = violation;
@@ -185,7 +190,12 @@ int events_command(const EventsOptions& o) {
       print_text(rule, *view.rule, results, where);
   }
   if (analysed == 0 && first_orbit_error) throw InputError("<command line>", 0, 0, first_orbit_error->substr(first_orbit_error->find("--orbit")));
-  if (json) fmt::print("{{\"catalog\": \"{}\", \"rules\": [\n  {}\n]}}\n", json_escape(o.catalog), fmt::join(json_rules, ",\n  "));
+  if (json) {
+    reports::Json doc = reports::json_document("events");
+    doc["catalog"] = o.catalog;
+    doc["rules"] = std::move(json_rules);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
+  }
   return status;
 }
 

@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 
 #include <cstdio>
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
@@ -21,7 +21,9 @@
 #include "analysis/embedded_fuzz.hpp"
 #include "analysis/counterexample_files.hpp"
 #include "analysis/fuzz.hpp"
-#include "cli/report_text.hpp"
+#include "analysis/rule_result.hpp"
+#include "reports/rule_result_json.hpp"
+#include "reports/rule_result_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
 #include "io/map_io.hpp"
@@ -69,7 +71,9 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
 int fuzz(const FuzzCommand& c) {
   // jsonl: one JSON object per rule on stdout as it finishes, then a summary.
   const bool jsonl = c.format == "jsonl";
-  const Catalog catalog = read_command_catalog(c.catalog, c.rule, jsonl ? "json" : c.format);
+  Catalog catalog = read_command_catalog(c.catalog, c.rule, jsonl ? "json" : c.format);
+  const auto baseline_mismatches = c.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, c.baseline);
+  const RecordSource source = c.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
   catch_interrupts();
   if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
 
@@ -100,98 +104,92 @@ int fuzz(const FuzzCommand& c) {
              seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
                      : fmt::format("{} applications per rule", o.runs));
   const auto start = std::chrono::steady_clock::now();
-  // Each rule's counterexample files (and, with jsonl, its result line) are
-  // written as soon as the rule finishes: a run killed later keeps them.
-  std::vector<std::string> replays(rules.size());
-  auto rule_json = [&](std::size_t k, const FuzzReport& r) {
-    std::string s = fmt::format("{{\"name\": \"{}\", \"model\": \"{}\", \"static_failures\": {}, \"class\": \"{}\", \"applications\": {}, "
-                                "\"hosts\": {}, \"largest_host\": {}, \"exhaustive_darts\": {}, \"event_checks\": {}, \"seconds\": {:.4f}, "
-                                "\"out_of_time\": {}, \"reason\": \"{}\"",
-                                json_escape(r.rule), rules[k]->rule.model().name, json_strings(r.static_failures), fuzz_class_name(r.verdict),
-                                r.applications, r.hosts, r.largest_host, r.exhaustive_darts, r.event_checks, r.seconds, r.out_of_time,
-                                json_escape(r.reason));
-    if (r.counterexample) {
-      const auto& cx = *r.counterexample;
-      s += fmt::format(", \"counterexample\": {{\"darts\": {}, \"hooks\": [{}], \"broken\": {}, \"minimal\": {}, \"origin\": \"{}\", "
-                       "\"events\": {}, \"replay\": \"{}\"}}",
-                       cx.host.size(), fmt::join(cx.hooks, ", "), json_strings(cx.broken()), cx.minimal, json_escape(cx.origin),
-                       json_strings(cx.event_contradictions), json_escape(replays[k]));
-    }
-    return s + "}";
-  };
+  // Each rule's result (its counterexample files and, with jsonl, its line)
+  // is written as soon as the rule finishes: a run killed later keeps them.
+  std::vector<RuleResult> results;
   auto finished = [&](std::size_t k, const FuzzReport& r) {
-    if (r.counterexample) {
-      if (rules[k]->terms)
-        replays[k] = embedded_replay(c.catalog, r, o.seed);
-      else if (!c.out.empty())
-        replays[k] = write_counterexample(c.out, file_stem(r.rule), c.catalog, r.rule,
-                                          {{"seed", std::to_string(o.seed)}, {"class", std::string(fuzz_class_name(r.verdict))}}, r.static_failures,
-                                          *r.counterexample);
-    }
-    if (c.format == "jsonl") {
-      fmt::print("{}\n", rule_json(k, r));
+    std::string replay = fuzz_replay(*entries[k], r, o.seed, c.out, c.catalog);
+    results.push_back(analyse_static(catalog, *entries[k], 0, {}, source));
+    add_fuzz(results.back(), r, std::move(replay));
+    if (jsonl) {
+      reports::Json line = reports::json_document("fuzz-jsonl");
+      line["type"] = "rule";
+      line["rule"] = reports::rule_result_json(results.back());
+      fmt::print("{}\n", reports::json_text(std::move(line)));
       std::fflush(stdout);
     }
   };
-  const std::vector<FuzzReport> reports = fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);
+  fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  auto count = [&](FuzzClass v) { return std::count_if(reports.begin(), reports.end(), [&](const FuzzReport& r) { return r.verdict == v; }); };
+  std::map<FuzzClass, std::size_t> classes;
   std::size_t applications = 0;
-  for (const auto& r : reports) applications += r.applications;
-  const auto bugs = count(FuzzClass::soundness_bug);
-  // A broken map contradicts a recorded 'consistent' (exit 1, as check).
-  std::vector<std::string> contradictions;
-  for (std::size_t k = 0; k < reports.size(); ++k)
-    if (contradicts_record(*entries[k], reports[k].counterexample.has_value()))
-      contradictions.push_back(contradiction_line(*entries[k], fmt::format("fuzz broke a map ({})", fuzz_class_name(reports[k].verdict))));
-  for (const auto& line : contradictions) fmt::print(stderr, "MISMATCH: {}\n", line);
-  int status = bugs ? soundness_bug : contradictions.empty() ? ok : violation;
+  for (const auto& r : results) ++classes[r.fuzz->verdict], applications += r.fuzz->applications;
+  const auto counts = count_results(results);
+  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", reports::printable(m));
+  for (const auto& line : reports::mismatch_lines(results)) fmt::print(stderr, "{}\n", line);
+  int status = counts.unsound ? soundness_bug : counts.mismatches + baseline_mismatches.size() ? violation : ok;
   // Interrupted (SIGINT, SIGTERM): the finished rules' results are kept.
   if (interrupted()) {
-    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", reports.size(), rules.size(), rules.size() == 1 ? "" : "s");
+    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), rules.size(), rules.size() == 1 ? "" : "s");
     if (status != soundness_bug) status = interrupted_exit;
   }
 
-  if (c.format == "jsonl") {
+  reports::Json summary{{"catalog", c.catalog},
+                        {"seed", o.seed},
+                        {"seconds", total},
+                        {"rules", rules.size()},
+                        {"finished", results.size()},
+                        {"consistent", classes[FuzzClass::consistent]},
+                        {"confirmed", classes[FuzzClass::confirmed]},
+                        {"unconfirmed", classes[FuzzClass::unconfirmed]},
+                        {"soundness_bugs", classes[FuzzClass::soundness_bug]},
+                        {"applications", applications},
+                        {"interrupted", interrupted()},
+                        {"counts", reports::counts_json(counts)},
+                        {"baseline_mismatches", baseline_mismatches}};
+  if (jsonl) {
     // The rules' lines are out already; the last line sums the run up.
-    fmt::print("{{\"summary\": {{\"catalog\": \"{}\", \"seed\": {}, \"seconds\": {:.3f}, \"rules\": {}, \"finished\": {}, \"consistent\": {}, "
-               "\"confirmed\": {}, \"unconfirmed\": {}, \"soundness_bugs\": {}, \"applications\": {}, \"interrupted\": {}}}}}\n",
-               json_escape(c.catalog), o.seed, total, rules.size(), reports.size(), count(FuzzClass::consistent), count(FuzzClass::confirmed),
-               count(FuzzClass::unconfirmed), bugs, applications, interrupted());
+    reports::Json line = reports::json_document("fuzz-jsonl");
+    line["type"] = "summary";
+    line["summary"] = std::move(summary);
+    fmt::print("{}\n", reports::json_text(std::move(line)));
     return status;
   }
   if (c.format == "json") {
-    fmt::print("{{\"catalog\": \"{}\", \"seed\": {}, \"seconds\": {:.3f}, \"rules\": [\n", json_escape(c.catalog), o.seed, total);
-    for (std::size_t k = 0; k < reports.size(); ++k) fmt::print("  {}{}\n", rule_json(k, reports[k]), k + 1 < reports.size() ? "," : "");
-    fmt::print("], \"consistent\": {}, \"confirmed\": {}, \"unconfirmed\": {}, \"soundness_bugs\": {}, \"applications\": {}}}\n",
-               count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, applications);
+    reports::Json doc = reports::json_document("fuzz");
+    reports::Json rows = reports::Json::array();
+    for (const auto& r : results) rows.push_back(reports::rule_result_json(r));
+    doc["rules"] = std::move(rows);
+    doc["summary"] = std::move(summary);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
     return status;
   }
 
   std::size_t width = 4;
-  for (const auto& r : reports) width = std::max(width, r.rule.size());
+  for (const auto& r : results) width = std::max(width, reports::printable(r.name()).size());
   fmt::print("{:<{}}  {:<18} {}\n", "rule", width, "static", "dynamic");
-  for (std::size_t k = 0; k < reports.size(); ++k) {
-    const auto& r = reports[k];
-    const std::string stat = r.static_failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(r.static_failures, " "));
-    fmt::print("{:<{}}  {:<18} {}\n", r.rule, width, stat, outcome_text(r));
+  for (const auto& result : results) {
+    const auto& r = *result.fuzz;
+    fmt::print("{:<{}}  {:<18} {}\n", reports::printable(result.name()), width, result.verdict_text(), outcome_text(r));
     if (r.counterexample) {
       const auto& cx = *r.counterexample;
       fmt::print("{:<{}}  found in {}\n", "", width, cx.origin);
       if (!cx.unrepresentable.empty()) fmt::print("{:<{}}  H has no dense form: {}\n", "", width, cx.unrepresentable);
       for (std::size_t e = 0; e < cx.embedding_failures.size() && e < 4; ++e) fmt::print("{:<{}}  H: {}\n", "", width, cx.embedding_failures[e]);
       if (cx.embedding_failures.size() > 4) fmt::print("{:<{}}  H: ... {} more\n", "", width, cx.embedding_failures.size() - 4);
-      if (!replays[k].empty())
-        fmt::print("{:<{}}  replay: {}\n", "", width, replays[k]);
-      else if (!rules[k]->terms)
+      if (!result.fuzz_replay.empty())
+        fmt::print("{:<{}}  replay: {}\n", "", width, reports::printable(result.fuzz_replay));
+      else if (!result.entry->terms)
         fmt::print("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
     }
   }
+  const std::size_t bugs = classes[FuzzClass::soundness_bug];
   fmt::print("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
-             reports.size(), count(FuzzClass::consistent), count(FuzzClass::confirmed), count(FuzzClass::unconfirmed), bugs, bugs == 1 ? "" : "s", applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
-  if (!contradictions.empty())
-    fmt::print("{}\n", contradiction_summary(contradictions.size()));
+             results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs, bugs == 1 ? "" : "s",
+             applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
+  if (counts.mismatches) fmt::print("{} differ{} from the {}\n", counts.mismatches == 1 ? "1 verdict" : fmt::format("{} verdicts", counts.mismatches),
+                                    counts.mismatches == 1 ? "s" : "", c.baseline.empty() ? "catalog" : "baseline");
   return status;
 }
 

@@ -10,6 +10,7 @@
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "reports/json_document.hpp"
 #include "core/input_error.hpp"
 #include "inference/infer.hpp"
 #include "inference/kappa_file.hpp"
@@ -139,25 +140,34 @@ int infer(const InferCommand& o) {
     contradictions += a.verification && !a.verification->holds;
   }
   if (o.format == "json") {
-    std::vector<std::string> rows;
+    using reports::Json;
+    Json rows = Json::array();
     for (const auto& a : attempts) {
-      std::string row = fmt::format("{{\"start\": {}, \"outcome\": \"{}\", \"inferred\": {}, \"seconds\": {:.6f}", a.start, json_escape(outcome(a)),
-                                    a.inferred() ? "true" : "false", a.seconds);
+      Json row{{"start", a.start}, {"outcome", outcome(a)}, {"inferred", a.inferred()}, {"seconds", a.seconds}};
       if (a.failure)
-        row += fmt::format(", \"failure\": {{\"kind\": \"{}\", \"node\": \"n{}\", \"dimension\": \"{}\", \"dart\": \"{}\"}}", failure_name(a.failure->kind),
-                           a.failure->node, a.failure->dim == kappa_arc ? std::string("kappa") : std::to_string(a.failure->dim),
-                           graph->name(a.failure->dart));
+        row["failure"] = Json{{"kind", failure_name(a.failure->kind)},
+                              {"node", fmt::format("n{}", a.failure->node)},
+                              {"dimension", a.failure->dim == kappa_arc ? std::string("kappa") : std::to_string(a.failure->dim)},
+                              {"dart", graph->name(a.failure->dart)}};
       if (a.rule) {
         const auto& op = a.rule->operation;
-        row += fmt::format(", \"left_nodes\": {}, \"right_nodes\": {}, \"preserved\": {}, \"left\": \"{}\", \"right\": \"{}\"", op.rule.left().node_count(),
-                           op.rule.right().node_count(), a.rule->preserved, json_escape(side_text(op.rule.left(), op.words.left, op.jerboa->left)),
-                           json_escape(side_text(op.rule.right(), op.words.right, op.jerboa->right)));
+        row["left_nodes"] = op.rule.left().node_count();
+        row["right_nodes"] = op.rule.right().node_count();
+        row["preserved"] = a.rule->preserved;
+        row["left"] = side_text(op.rule.left(), op.words.left, op.jerboa->left);
+        row["right"] = side_text(op.rule.right(), op.words.right, op.jerboa->right);
       }
-      if (a.scheme && !a.scheme->undecided.empty()) row += fmt::format(", \"undecided\": \"{}\"", json_escape(undecided_text(*a.scheme, a.rule ? &*a.rule : nullptr)));
-      rows.push_back(row + "}");
+      if (a.scheme && !a.scheme->undecided.empty()) row["undecided"] = undecided_text(*a.scheme, a.rule ? &*a.rule : nullptr);
+      rows.push_back(std::move(row));
     }
-    fmt::print("{{\"orbit\": \"{}\", \"before_darts\": {}, \"after_darts\": {}, \"preserved_darts\": {}, \"inferred\": {}, \"attempts\": [{}]}}\n",
-               json_escape(o.orbit), g_size, h_size, graph->preserved(), inferred, fmt::join(rows, ", "));
+    Json doc = reports::json_document("infer");
+    doc["orbit"] = o.orbit;
+    doc["before_darts"] = g_size;
+    doc["after_darts"] = h_size;
+    doc["preserved_darts"] = graph->preserved();
+    doc["inferred"] = inferred;
+    doc["attempts"] = std::move(rows);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
     fmt::print("infer {} from {} ({} darts) to {} ({} darts), {} preserved darts\n", orbit_type_str(OrbitType(orbit.begin(), orbit.end())), o.before, g_size,
                o.after, h_size, graph->preserved());

@@ -12,6 +12,7 @@
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "reports/json_document.hpp"
 #include "cli/tet_input.hpp"
 #include "core/input_error.hpp"
 #include "io/catalog.hpp"
@@ -90,16 +91,25 @@ int query(const QueryOptions& o) {
   for (const auto& m : all.distinct) ++per_query[static_cast<std::size_t>(m.query)];
   const std::size_t listed = std::min(o.limit, shown.size());
   if (o.format == "json") {
-    std::vector<std::string> qs, ms;
+    using reports::Json;
+    Json qs = Json::array(), ms = Json::array();
     for (std::size_t k = 0; k < queries.size(); ++k)
-      qs.push_back(fmt::format("{{\"name\": \"{}\", \"darts\": {}, \"distinct_matches\": {}}}", json_escape(queries[k].name), queries[k].word.darts, per_query[k]));
+      qs.push_back(Json{{"name", queries[k].name}, {"darts", queries[k].word.darts}, {"distinct_matches", per_query[k]}});
     for (std::size_t k = 0; k < listed; ++k)
-      ms.push_back(fmt::format("{{\"query\": \"{}\", \"darts\": [{}]}}", json_escape(queries[static_cast<std::size_t>(shown[k].query)].name),
-                               fmt::join(shown[k].darts, ", ")));
-    fmt::print("{{\"map\": \"{}\", \"model\": \"{}\", \"darts\": {}, \"free\": \"{}\", \"strategy\": \"{}\", \"raw_matches\": {}, \"distinct_matches\": {}, "
-               "\"selected\": {}, \"seconds\": {:.6f}, \"queries\": [{}], \"matches\": [{}]}}\n",
-               json_escape(o.map), input.model().name, input.size(), o.free, o.strategy, all.raw, all.distinct.size(), shown.size(), seconds,
-               fmt::join(qs, ", "), fmt::join(ms, ", "));
+      ms.push_back(Json{{"query", queries[static_cast<std::size_t>(shown[k].query)].name}, {"darts", shown[k].darts}});
+    Json doc = reports::json_document("query");
+    doc["map"] = o.map;
+    doc["model"] = input.model().name;
+    doc["darts"] = input.size();
+    doc["free"] = o.free;
+    doc["strategy"] = o.strategy;
+    doc["raw_matches"] = all.raw;
+    doc["distinct_matches"] = all.distinct.size();
+    doc["selected"] = shown.size();
+    doc["seconds"] = seconds;
+    doc["queries"] = std::move(qs);
+    doc["matches"] = std::move(ms);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
     fmt::print("map       {}: {} darts ({})\n", o.map, input.size(), input.model().name);
     fmt::print("queries   {} ({}prefix tree of {} nodes)\n", queries.size(),

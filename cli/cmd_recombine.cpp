@@ -15,6 +15,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
+#include "reports/json_document.hpp"
 #include "cli/tet_input.hpp"
 #include "core/input_error.hpp"
 #include "querymodify/map_checks.hpp"
@@ -86,16 +87,32 @@ int recombine(const RecombineOptions& o) {
   const double total = since(start);
   const double tets_per_second = total > 0 ? static_cast<double>(tets_in) / total : 0;
   if (o.format == "json") {
-    fmt::print(
-        "{{\"mesh\": \"{}\", \"points\": {}, \"tetrahedra\": {}, \"input_darts\": {}, \"strategy\": \"{}\", \"queries\": {}, "
-        "\"raw_matches\": {}, \"distinct_matches\": {}, \"acceptable_matches\": {}, \"min_quality\": {}, \"hexes\": {}, \"remaining_tetrahedra\": {}, \"darts\": {}, \"expected_darts\": {}, "
-        "\"valid\": {}, \"quality_min\": {}, \"quality_median\": {}, \"seconds\": {{\"read\": {:.6f}, \"check_input\": {:.6f}, "
-        "\"queries\": {:.6f}, \"match\": {:.6f}, \"select\": {:.6f}, \"merge\": {:.6f}, \"check_output\": {:.6f}, \"total\": {:.6f}}}, "
-        "\"tets_per_second\": {:.1f}, \"peak_mib\": {:.1f}}}\n",
-        json_escape(o.mesh), in.mesh.points.size(), tets_in, darts_in, o.strategy, queries.size(), r.raw_matches, r.distinct_matches, r.acceptable, o.min_quality, r.hexes, r.tets,
-        in.map.map.size(), expected_darts, output_check.valid() ? "true" : "false", std::isnan(q_min) ? "null" : fmt::format("{:.6f}", q_min),
-        std::isnan(q_median) ? "null" : fmt::format("{:.6f}", q_median), read_seconds, input_check_seconds, query_seconds, r.match_seconds,
-        r.select_seconds, r.merge_seconds, output_check_seconds, total, tets_per_second, peak_mib());
+    using reports::Json;
+    const auto number_or_null = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
+    Json doc = reports::json_document("recombine");
+    doc["mesh"] = o.mesh;
+    doc["points"] = in.mesh.points.size();
+    doc["tetrahedra"] = tets_in;
+    doc["input_darts"] = darts_in;
+    doc["strategy"] = o.strategy;
+    doc["queries"] = queries.size();
+    doc["raw_matches"] = r.raw_matches;
+    doc["distinct_matches"] = r.distinct_matches;
+    doc["acceptable_matches"] = r.acceptable;
+    doc["min_quality"] = number_or_null(o.min_quality);
+    doc["hexes"] = r.hexes;
+    doc["remaining_tetrahedra"] = r.tets;
+    doc["darts"] = in.map.map.size();
+    doc["expected_darts"] = expected_darts;
+    doc["valid"] = output_check.valid();
+    doc["quality_min"] = number_or_null(q_min);
+    doc["quality_median"] = number_or_null(q_median);
+    doc["seconds"] = Json{{"read", read_seconds},   {"check_input", input_check_seconds}, {"queries", query_seconds},
+                          {"match", r.match_seconds}, {"select", r.select_seconds},         {"merge", r.merge_seconds},
+                          {"check_output", output_check_seconds}, {"total", total}};
+    doc["tets_per_second"] = tets_per_second;
+    doc["peak_mib"] = peak_mib();
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
     fmt::print("mesh        {}: {} points, {} tetrahedra ({:.3f} s)\n", o.mesh, in.mesh.points.size(), tets_in, read_seconds);
     fmt::print("input map   {} darts (12 per tetrahedron), a valid open 3-O-map ({:.3f} s)\n", darts_in, input_check_seconds);

@@ -26,7 +26,9 @@
 #include "analysis/counterexample_files.hpp"
 #include "analysis/fuzz.hpp"
 #include "analysis/prove_replay.hpp"
-#include "cli/report_text.hpp"
+#include "analysis/rule_result.hpp"
+#include "reports/rule_result_json.hpp"
+#include "reports/rule_result_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
 #include "events/static_events.hpp"
@@ -43,23 +45,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using reports::html_text;
-
-struct RuleReport {
-  const CatalogRule* entry = nullptr;
-  RuleVerdict verdict;
-  std::vector<std::string> failures;  // topological, then embedding-presence checks
-  std::vector<EmbeddingCheck> embedding;
-  bool matches_record = true;
-  std::optional<FuzzReport> fuzz;
-  std::string fuzz_replay;
-  std::optional<proofs::RuleProof> proof;
-  std::vector<std::optional<Counterexample>> proof_cx;  // per constraint of the proof
-  std::vector<std::string> proof_replays;
-  bool unsound() const {
-    if (fuzz && fuzz->verdict == FuzzClass::soundness_bug) return true;
-    return proof && proof->count(proofs::Agreement::disagree) > 0;
-  }
-};
 
 // A picture as a file beside the page and as inline SVG for the page.
 class Pictures {
@@ -134,7 +119,7 @@ std::string violations_html(const Counterexample& cx) {
   return out + "</ul>\n";
 }
 
-std::string counterexample_html(const RuleReport& r, const Counterexample& cx, const std::string& heading, const std::string& replay,
+std::string counterexample_html(const RuleResult& r, const Counterexample& cx, const std::string& heading, const std::string& replay,
                                 Pictures& pictures, const std::string& file) {
   const auto& e = *r.entry;
   std::string out = fmt::format("<h3>{}</h3>\n<p>{} Found by {}{}.</p>\n", html_text(heading),
@@ -150,15 +135,6 @@ std::string counterexample_html(const RuleReport& r, const Counterexample& cx, c
 std::string kind_of(const CatalogRule& e) {
   if (e.jerboa) return fmt::format("Jerboa-style rule scheme, parameter orbit type {}", orbit_type_str(e.jerboa->parameter));
   return e.words.scheme ? "(W,D)-rule scheme" : "DPO rule";
-}
-
-std::string static_verdict_text(const RuleReport& r) {
-  return r.failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(r.failures, " "));
-}
-
-std::string recorded_text(const CatalogRule& e) {
-  if (!e.expected_failures) return "none recorded";
-  return e.expected_failures->empty() ? "consistent" : fmt::format("fails {}", fmt::join(*e.expected_failures, " "));
 }
 
 std::string fuzz_cell(const FuzzReport& f) {
@@ -179,7 +155,7 @@ std::string prove_cell(const proofs::RuleProof& p) {
                      p.count(Agreement::unresolved), p.count(Agreement::not_compared));
 }
 
-std::string table_html(const std::vector<RuleReport>& rows, bool fuzzed, bool proved) {
+std::string table_html(const std::vector<RuleResult>& rows, bool fuzzed, bool proved) {
   static constexpr std::pair<RuleCondition, const char*> kinds[] = {{RuleCondition::incident_arcs, "I"},
                                                                      {RuleCondition::dangling, "dangling"},
                                                                      {RuleCondition::non_orientation, "O"},
@@ -196,7 +172,7 @@ std::string table_html(const std::vector<RuleReport>& rows, bool fuzzed, bool pr
     const std::string id = reports::html_id(e.rule.name());
     out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td>", id, html_text(e.rule.name()), html_text(e.rule.model().name));
     for (const auto& [kind, name] : kinds) {
-      const std::string text = cell(r.verdict, kind);
+      const std::string text = reports::condition_cell(r.verdict, kind);
       const std::string cls = text == "ok" ? "ok" : text == "-" ? "none" : text == "skipped" ? "skipped" : "fails";
       // A failing cell links to the first failing condition of its kind.
       std::string target;
@@ -205,8 +181,8 @@ std::string table_html(const std::vector<RuleReport>& rows, bool fuzzed, bool pr
       out += target.empty() ? fmt::format("<td class=\"{}\">{}</td>", cls, html_text(text))
                             : fmt::format("<td class=\"{}\"><a href=\"#{}\">{}</a></td>", cls, target, html_text(text));
     }
-    out += fmt::format("<td>{}</td><td class=\"{}\">{}</td>", html_text(static_verdict_text(r)), r.matches_record ? "ok" : "fails",
-                       html_text(r.matches_record ? "matches" : "MISMATCH: " + recorded_text(e)));
+    out += fmt::format("<td>{}</td><td class=\"{}\">{}</td>", html_text(r.verdict_text()), r.matches_record() ? "ok" : "fails",
+                       html_text(r.matches_record() ? std::string("matches") : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
     if (fuzzed) out += r.fuzz ? fuzz_cell(*r.fuzz) : "<td></td>";
     if (proved) out += r.proof ? prove_cell(*r.proof) : "<td></td>";
     out += "</tr>\n";
@@ -242,15 +218,15 @@ std::string events_table(const Operation& op) {
          "</table>\n";
 }
 
-std::string rule_section(const RuleReport& r, Pictures& pictures) {
+std::string rule_section(const RuleResult& r, Pictures& pictures) {
   const auto& e = *r.entry;
   const std::string name = e.rule.name(), stem = file_stem(name);
   std::string out = fmt::format("<h2 id=\"{}\">{}</h2>\n<p>{} on {}; {}:{}. L has {} nodes, R has {}.</p>\n", reports::html_id(name), html_text(name),
                                 html_text(kind_of(e)), html_text(e.rule.model().name), html_text(e.location.file), e.location.line,
                                 e.rule.left().node_count(), e.rule.right().node_count());
   if (!e.note.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_text(e.note));
-  out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(static_verdict_text(r)), html_text(recorded_text(e)),
-                     r.matches_record ? "" : " <span class=\"mismatch\">(MISMATCH)</span>");
+  out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(r.verdict_text()), html_text(r.recorded_text()),
+                     r.matches_record() ? "" : " <span class=\"mismatch\">(MISMATCH)</span>");
   auto embedded = embedding_picture(e, r.embedding);
   auto witnesses = reports::failed_witnesses(r.verdict);
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
@@ -313,8 +289,8 @@ std::string rule_section(const RuleReport& r, Pictures& pictures) {
                            proofs::agreement_name(c.agreement), html_text(c.note));
       out += "</table>\n";
       for (std::size_t k = 0; k < p.constraints.size(); ++k)
-        if (r.proof_cx[k])
-          out += counterexample_html(r, *r.proof_cx[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
+        if (r.proof_maps[k])
+          out += counterexample_html(r, *r.proof_maps[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
                                      r.proof_replays[k], pictures,
                                      "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
     }
@@ -325,7 +301,9 @@ std::string rule_section(const RuleReport& r, Pictures& pictures) {
 }  // namespace
 
 int report(const ReportOptions& o) {
-  const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  const auto baseline_mismatches = o.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, o.baseline);
+  const RecordSource source = o.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
   catch_interrupts();
   std::optional<double> seconds;
   if (!o.fuzz.empty()) seconds = parse_duration(o.fuzz, "--fuzz");
@@ -335,26 +313,18 @@ int report(const ReportOptions& o) {
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) throw InputError(o.output, 0, 0, fmt::format("-o: cannot create the directory ({})", ec.message()));
 
-  std::vector<RuleReport> rows;
+  std::vector<RuleResult> rows;
   std::vector<const Operation*> rules;
   for (const auto& e : catalog.rules) {
     if (!o.rule.empty() && e.rule.name() != o.rule) continue;
-    RuleReport r;
-    r.entry = &e;
-    r.verdict = check_rule(e.rule, e.words);
-    r.failures = static_failures(r.verdict);
-    r.embedding = embedding_checks(catalog, e);
-    for (const auto& name : failing_names(r.embedding)) r.failures.push_back(name);
-    r.matches_record = matches_record(e, r.verdict, r.embedding);
-    rows.push_back(std::move(r));
+    rows.push_back(analyse_static(catalog, e, 0, {}, source));
     rules.push_back(&e);
   }
   const fs::path cx_dir = dir / "counterexamples";
+  const auto static_counts = count_results(rows);
   std::string summary = fmt::format("<p>{} rule{}: {} consistent, {} with failing conditions; {} static verdicts differ from the catalog's.</p>\n",
                                     rows.size(), rows.size() == 1 ? "" : "s",
-                                    std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return r.failures.empty(); }),
-                                    std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return !r.failures.empty(); }),
-                                    std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return !r.matches_record; }));
+                                    static_counts.consistent, static_counts.failing, static_counts.mismatches);
 
   if (seconds) {
     FuzzOptions fo;
@@ -367,13 +337,8 @@ int report(const ReportOptions& o) {
     std::size_t applications = 0;
     for (std::size_t k = 0; k < found.size(); ++k) {  // fewer than rows if interrupted
       applications += found[k].applications;
-      if (found[k].counterexample && rows[k].entry->terms)
-        rows[k].fuzz_replay = embedded_replay(o.catalog, found[k], fo.seed);
-      else if (found[k].counterexample)
-        rows[k].fuzz_replay = write_counterexample(cx_dir.string(), file_stem(found[k].rule) + ".fuzz", o.catalog, found[k].rule,
-                                                   {{"seed", std::to_string(fo.seed)}, {"class", std::string(fuzz_class_name(found[k].verdict))}},
-                                                   found[k].static_failures, *found[k].counterexample);
-      rows[k].fuzz = std::move(found[k]);
+      std::string replay = fuzz_replay(*rows[k].entry, found[k], fo.seed, cx_dir.string(), o.catalog, ".fuzz");
+      add_fuzz(rows[k], std::move(found[k]), std::move(replay));
     }
     summary += fmt::format("<p>Fuzz: {} s, seed {} (<code>--seed {}</code> replays it), {} application{}.</p>\n", *seconds, fo.seed, fo.seed,
                            applications, applications == 1 ? "" : "s");
@@ -386,23 +351,15 @@ int report(const ReportOptions& o) {
                po.scheme_darts);
     for (auto& r : rows) {
       if (interrupted()) break;
-      r.proof = proofs::prove_rule(*r.entry, po);
-      for (auto& c : r.proof->constraints) {
-        r.proof_cx.push_back(replay_solver_map(*r.entry, c));
-        r.proof_replays.push_back(r.proof_cx.back() ? write_counterexample(cx_dir.string(),
-                                                                           file_stem(r.entry->rule.name()) + ".prove." + constraint_stem(c),
-                                                                           o.catalog, r.entry->rule.name(),
-                                                                           {{"constraint", c.constraint.name()},
-                                                                            {"class", "counterexample on a map of the model (dartcheck prove)"}},
-                                                                           r.proof->static_failures, *r.proof_cx.back())
-                                                    : "");
-      }
+      run_proof(r, po, cx_dir.string(), o.catalog, ".prove");
     }
     summary += fmt::format("<p>Prove: Z3 on hosts of up to {} darts (rule schemes {}).</p>\n", po.max_darts, po.scheme_darts);
   }
   for (const auto& sk : catalog.skipped)
     summary += fmt::format("<p class=\"mismatch\">Skipped {} ({}): {}</p>\n", html_text(sk.name), html_text(sk.location.str()), html_text(sk.why));
-  const auto unsound = std::count_if(rows.begin(), rows.end(), [](const RuleReport& r) { return r.unsound(); });
+  const auto unsound = count_results(rows).unsound;
+  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", reports::printable(m));
+  for (const auto& line : reports::mismatch_lines(rows)) fmt::print(stderr, "{}\n", line);
   if (unsound) summary += fmt::format("<p class=\"mismatch\">{} rule{} with a SOUNDNESS BUG or a disagreement.</p>\n", unsound, unsound == 1 ? "" : "s");
 
   Pictures pictures(dir, o.engine);
@@ -417,7 +374,25 @@ int report(const ReportOptions& o) {
   const std::string page = reports::html_document("dartcheck report: " + o.catalog, body);
   std::ofstream out(index, std::ios::binary);
   if (!out || !out.write(page.data(), static_cast<std::streamsize>(page.size()))) throw InputError(index.string(), 0, 0, "cannot write the report");
-  fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes)\n", index.string(), rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size());
+  out.close();
+  if (!out) throw InputError(index.string(), 0, 0, "cannot write the report (the file could not be written completely)");
+  // The same results as data, in check's JSON form, beside the page.
+  reports::Json doc = reports::json_document("report");
+  doc["catalog"] = o.catalog;
+  reports::Json rules_json = reports::Json::array();
+  for (const auto& r : rows) rules_json.push_back(reports::rule_result_json(r));
+  doc["rules"] = std::move(rules_json);
+  doc["skipped"] = reports::skipped_json(catalog.skipped);
+  doc["baseline_mismatches"] = baseline_mismatches;
+  doc["counts"] = reports::counts_json(count_results(rows));
+  const fs::path data = dir / "results.json";
+  const std::string text = reports::json_text(std::move(doc)) + "\n";
+  std::ofstream json_out(data, std::ios::binary);
+  json_out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  json_out.close();
+  if (!json_out) throw InputError(data.string(), 0, 0, "cannot write the report's results (the file could not be written completely)");
+  fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes) and {}\n", index.string(), rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size(),
+             data.string());
   // Every non-zero exit says why.
   if (interrupted()) {
     fmt::print(stderr, "interrupted: the report holds the rules fuzzed or proved before the signal\n");
@@ -427,12 +402,8 @@ int report(const ReportOptions& o) {
     fmt::print(stderr, "SOUNDNESS BUG: a rule the static checker accepts broke a map, or the solver disagrees with it (see the report)\n");
     return soundness_bug;
   }
-  std::size_t mismatches = 0;
-  for (const auto& r : rows)
-    if (!r.matches_record) {
-      ++mismatches;
-      fmt::print(stderr, "MISMATCH: {}: {}: the static verdict differs from the verdict the catalog records\n", r.entry->location.str(), r.entry->rule.name());
-    }
+  const auto counts = count_results(rows);
+  const std::size_t mismatches = counts.mismatches + baseline_mismatches.size();
   return mismatches ? violation : ok;
 }
 

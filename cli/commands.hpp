@@ -35,6 +35,7 @@ int convert(const ConvertOptions& o);
 
 struct ReportOptions {
   std::string catalog, rule, output, engine = "dot";
+  std::string baseline;          // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::string fuzz;              // a duration: fuzz every rule within it (empty: no fuzzing)
   std::size_t prove_darts = 0;   // ask Z3 for counterexamples of up to this many darts (0: no)
   std::optional<std::uint64_t> seed;
@@ -124,6 +125,7 @@ int words(const WordsOptions& o);
 
 struct FuzzCommand {
   std::string catalog, rule, time, out, format = "text";
+  std::string baseline;  // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::optional<std::size_t> runs;
   std::optional<std::uint64_t> seed;
   std::size_t max_darts = 128;
@@ -137,6 +139,7 @@ int fuzz(const FuzzCommand& c);
 
 struct ProveCommand {
   std::string catalog, rule, out, format = "text";
+  std::string baseline;  // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::size_t max_darts = 10;
   std::size_t scheme_darts = 6;
   unsigned rlimit = 200'000'000;

@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
   f->add_option("--event-checks", fuzz.event_checks,
                 "applications per consistent rule whose event logs are set against its static events (004; 0: none)")
       ->capture_default_str()->check(counts);
+  f->add_option("--baseline", fuzz.baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)")->check(counts);
   f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str()->check(counts);
   f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
@@ -97,6 +98,7 @@ int main(int argc, char** argv) {
   auto* p = app.add_subcommand("prove", "Ask Z3 for a host whose derived map breaks a constraint (bounded), and set the answer against the static verdict");
   p->add_option("catalog", prove.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   p->add_option("--rule", prove.rule, "prove only this rule");
+  p->add_option("--baseline", prove.baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   p->add_option("--max-darts", prove.max_darts, "search hosts of up to this many darts")->capture_default_str()->check(counts);
   p->add_option("--scheme-darts", prove.scheme_darts,
                 "for rule schemes, hosts of up to this many darts (at most --max-darts): H has that many darts per node of R")
@@ -163,6 +165,7 @@ int main(int argc, char** argv) {
   rp->add_option("catalog", report.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   rp->add_option("-o,--output", report.output, "directory for index.html and the SVG pictures")->required();
   rp->add_option("--rule", report.rule, "only this rule");
+  rp->add_option("--baseline", report.baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   rp->add_option("--fuzz", report.fuzz, "fuzz every rule within this total time (30s, 2m, ...) and draw the counterexamples");
   rp->add_option("--prove", report.prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->check(counts);
   rp->add_option("--seed", report.seed, "random seed of --fuzz (default: drawn and printed)")->check(counts);

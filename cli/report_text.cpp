@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 
 #include "core/input_error.hpp"
 #include "core/orbit.hpp"
@@ -45,45 +44,6 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& r, std
     fmt::print(out, "  dart {}: {}\n", v.element, describe(v, fmt::format("dart {}", v.element)));
   }
   if (shown < r.violations.size()) fmt::print(out, "  ... and {} more (use --limit 0 to list all)\n", r.violations.size() - shown);
-}
-
-std::string json_escape(std::string_view s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '"': o += "\\\""; break;
-      case '\\': o += "\\\\"; break;
-      case '\n': o += "\\n"; break;
-      case '\t': o += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20)
-          o += fmt::format("\\u{:04x}", static_cast<int>(c));
-        else
-          o += c;
-    }
-  }
-  return o;
-}
-
-std::string json_strings(const std::vector<std::string>& v) {
-  std::string o = "[";
-  for (std::size_t k = 0; k < v.size(); ++k) o += fmt::format("{}\"{}\"", k ? ", " : "", json_escape(v[k]));
-  return o + "]";
-}
-
-// Conditions of one kind, as a table cell: "ok", or the failing dimensions.
-std::string cell(const RuleVerdict& v, RuleCondition kind) {
-  std::vector<std::string> bad;
-  bool any = false, skipped = false;
-  for (const auto& c : v.conditions) {
-    if (c.condition != kind) continue;
-    any = true;
-    if (!c.skipped.empty()) skipped = true;
-    if (!c.holds) bad.push_back(c.j >= 0 ? fmt::format("{}{}", c.i, c.j) : std::to_string(c.i));
-  }
-  if (!any) return "-";
-  if (!bad.empty()) return "fails " + fmt::format("{}", fmt::join(bad, ","));
-  return skipped ? "skipped" : "ok";
 }
 
 }  // namespace dartcheck::cli

@@ -3,10 +3,7 @@
 
 #include <cstdio>
 #include <string>
-#include <string_view>
-#include <vector>
 
-#include "checkers/rule_conditions.hpp"
 #include "checkers/violation.hpp"
 #include "core/map.hpp"
 
@@ -18,14 +15,5 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& report
 
 /// "8 vertices, 12 edges, 6 faces"
 std::string cells_sentence(const Map& map);
-
-/// A JSON string body: quotes, backslashes and control characters escaped.
-std::string json_escape(std::string_view s);
-/// ["a", "b"]
-std::string json_strings(const std::vector<std::string>& v);
-
-/// The conditions of one kind, as a table cell: "ok", "fails 1,2",
-/// "skipped" or "-" (the model has none of that kind).
-std::string cell(const RuleVerdict& v, RuleCondition kind);
 
 }  // namespace dartcheck::cli

@@ -47,15 +47,27 @@ Baseline read_baseline(const std::string& file) {
 void write_baseline(std::ostream& out, const std::string& source, const std::vector<BaselineEntry>& entries) {
   // Rule names and condition names are quoted: Jerboa names may hold
   // anything YAML would read otherwise.
+  // Control characters are written as YAML escapes; other bytes (even
+  // invalid UTF-8, which yaml-cpp reads back as is) stay.
   auto quoted = [](const std::string& s) {
     std::string q = "\"";
     for (char c : s) {
-      if (c == '"' || c == '\\') q += '\\';
-      q += c;
+      const auto u = static_cast<unsigned char>(c);
+      if (c == '"' || c == '\\')
+        q += '\\', q += c;
+      else if (u < 0x20 || u == 0x7F)
+        q += fmt::format("\\x{:02x}", u);
+      else
+        q += c;
     }
     return q + '"';
   };
-  out << "# dartcheck baseline of " << source << " (dartcheck check --baseline)\nverdicts:\n";
+  auto comment = [](std::string s) {
+    for (char& c : s)
+      if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+    return s;
+  };
+  out << "# dartcheck baseline of " << comment(source) << " (dartcheck check --baseline)\nverdicts:\n";
   for (const auto& e : entries) {
     out << "  " << quoted(e.rule) << ": ";
     if (!e.failures) {

@@ -1,5 +1,7 @@
 #include "io/catalog_writer.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
@@ -56,6 +58,33 @@ std::string catalog_yaml(const Catalog& c, const std::string& description) {
   y << YAML::BeginMap;
   if (!c.modeler.empty()) y << YAML::Key << "modeler" << YAML::Value << c.modeler;
   y << YAML::Key << "description" << YAML::Value << (description.empty() ? fmt::format("converted by dartcheck from {}", c.file) : description);
+  // Models that are not presets are declared, so the catalog reads back.
+  std::vector<const Model*> custom;
+  for (const auto& r : c.rules) {
+    const Model& m = r.rule.model();
+    const auto preset = Model::by_name(m.name);
+    if ((!preset || !(*preset == m)) && std::none_of(custom.begin(), custom.end(), [&](const Model* x) { return x->name == m.name; }))
+      custom.push_back(&m);
+  }
+  if (!custom.empty()) {
+    y << YAML::Key << "models" << YAML::Value << YAML::BeginMap;
+    for (const Model* m : custom) {
+      const auto dims_of = [&](DimSet s) {
+        std::vector<Dim> out;
+        for (Dim i : m->dims)
+          if (has_dim(s, i)) out.push_back(i);
+        return out;
+      };
+      y << YAML::Key << m->name << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "dims" << YAML::Value << m->dims << YAML::Key
+        << "non_oriented" << YAML::Value << dims_of(m->non_oriented) << YAML::Key << "exchangeable" << YAML::Value << YAML::BeginSeq;
+      for (const auto& [i, j] : m->exchangeable) y << YAML::Flow << YAML::BeginSeq << i << j << YAML::EndSeq;
+      y << YAML::EndSeq;
+      if (m->partial) y << YAML::Key << "partial" << YAML::Value << dims_of(m->partial);
+      if (m->loop_free) y << YAML::Key << "loop_free" << YAML::Value << true;
+      y << YAML::EndMap;
+    }
+    y << YAML::EndMap;
+  }
   bool explicit_maps = false;
   for (const auto& m : c.maps) explicit_maps |= m.map.has_value();
   if (explicit_maps) {

@@ -8,6 +8,9 @@ packages=(
   libgtest-dev libgmock-dev librapidcheck-dev
   libz3-dev libfmt-dev libyaml-cpp-dev libcli11-dev libpugixml-dev
   libgraphviz-dev graphviz
+  # JSON outputs are built with nlohmann::json (valid for any names); their
+  # JSON Schemas (docs/schema/) are checked by python3-jsonschema in tests.
+  nlohmann-json3-dev python3-jsonschema
   # The HTML report's test: headless Chromium screenshots the page, libpng
   # reads the screenshot.
   chromium libpng-dev

@@ -1,0 +1,193 @@
+#include "analysis/rule_result.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "analysis/counterexample_files.hpp"
+#include "analysis/embedded_fuzz.hpp"
+#include "analysis/prove_replay.hpp"
+#include "analysis/verdict_record.hpp"
+
+namespace dartcheck::analysis {
+
+namespace {
+
+// A counterexample breaks the map (not only the rule's announced events).
+bool breaks_map(const Counterexample& cx) {
+  return !cx.violations.empty() || !cx.unrepresentable.empty() || !cx.broken_embeddings.empty() || !cx.embedding_failures.empty();
+}
+
+bool solver_broke_a_map(const proofs::RuleProof& p) {
+  // Only a host that is a map of the model counts: a theorem-class host need not be one.
+  return std::any_of(p.constraints.begin(), p.constraints.end(),
+                     [](const proofs::ConstraintProof& c) { return c.model.status == proofs::Status::counterexample; });
+}
+
+}  // namespace
+
+bool RuleResult::topological_failure() const {
+  return std::any_of(verdict.conditions.begin(), verdict.conditions.end(), [](const ConditionVerdict& c) { return !c.holds; });
+}
+
+bool RuleResult::unsound() const {
+  // Model-level confirmation of a scheme: a broken constraint whose
+  // conditions all hold (embedding failures count against the embedding
+  // conditions).
+  if (scheme_search && scheme_search->counterexample) {
+    const auto& cx = *scheme_search->counterexample;
+    if (!topological_failure() && (!cx.violations.empty() || !cx.unrepresentable.empty() || failing_names(embedding).empty())) return true;
+  }
+  if (fuzz && fuzz->verdict == FuzzClass::soundness_bug) return true;
+  return proof && proof->count(proofs::Agreement::disagree) > 0;
+}
+
+bool RuleResult::broke_a_map() const {
+  if (host_search && host_search->host) return true;
+  if (scheme_search && scheme_search->counterexample && breaks_map(*scheme_search->counterexample)) return true;
+  if (fuzz && fuzz->counterexample && breaks_map(*fuzz->counterexample)) return true;
+  return proof && solver_broke_a_map(*proof);
+}
+
+std::string RuleResult::verdict_text() const { return failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(failures, " ")); }
+
+std::string RuleResult::recorded_text() const {
+  if (!entry->expected_failures) return "none recorded";
+  return entry->expected_failures->empty() ? "consistent" : fmt::format("fails {}", fmt::join(*entry->expected_failures, " "));
+}
+
+std::string_view RuleResult::record_source_name() const { return record_source == RecordSource::baseline ? "baseline" : "catalog"; }
+
+std::string RuleResult::confirmation_text() const {
+  const std::string& model = entry->rule.model().name;
+  if (scheme_search) {
+    const auto& f = *scheme_search;
+    if (f.counterexample) {
+      const auto& cx = *f.counterexample;
+      return fmt::format("{}confirmed: applied at dart{} {} of a {}-dart {}, it breaks ({})", unsound() ? "SOUNDNESS BUG: judged consistent, yet " : "",
+                         cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), model, fmt::join(cx.broken(), ", "));
+    }
+    if (f.applications == 0) return fmt::format("never applicable on {} {} maps of up to {} darts", f.hosts, model, f.largest_host);
+    return fmt::format("no model-level counterexample in {} applications on {} {} maps of up to {} darts", f.applications, f.hosts, model,
+                       f.largest_host);
+  }
+  if (!host_search) return "";
+  const auto& s = *host_search;
+  if (s.host) {
+    std::vector<std::string> what;
+    for (const auto& v : s.violations) what.push_back(constraint_name(v));
+    std::sort(what.begin(), what.end());
+    what.erase(std::unique(what.begin(), what.end()), what.end());
+    return fmt::format("confirmed: a {}-dart {} breaks ({})", s.host->node_count(), model, fmt::join(what, ", "));
+  }
+  if (!s.matched) return fmt::format("L matches no {} of up to {} darts", model, s.largest_host);
+  return fmt::format("no model-level counterexample up to {} darts{}", s.largest_host, s.exhausted ? "" : " (search budget reached)");
+}
+
+RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std::size_t confirm_darts, const std::vector<Map>& catalog_maps,
+                          RecordSource source) {
+  RuleResult r;
+  r.entry = &entry;
+  r.record_source = source;
+  const auto t0 = std::chrono::steady_clock::now();
+  r.verdict = check_rule(entry.rule, entry.words);
+  r.embedding = embedding_checks(catalog, entry);
+  r.static_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.failures = static_failures(r.verdict);
+  for (const auto& name : failing_names(r.embedding)) r.failures.push_back(name);
+  if (confirm_darts > 0 && entry.words.scheme) {
+    // Schemes, consistent or not, run on every small map of their model,
+    // the catalog's maps and random valid maps (the fuzzer with a small
+    // fixed budget): a failure is confirmed or reported as not found; a
+    // consistent scheme that breaks a map is a soundness bug.
+    std::vector<Map> extra;
+    for (const Map& m : catalog_maps)
+      if (m.model() == entry.rule.model()) extra.push_back(m);
+    FuzzOptions fo;
+    fo.runs = 2000;
+    fo.max_darts = 64;
+    fo.event_checks = 0;  // check is about consistency; events are `fuzz` and `events`
+    fo.static_check = [&](const Operation&) { return r.verdict; };
+    r.scheme_search = fuzz_rule(entry, extra, fo);
+  } else if (confirm_darts > 0 && r.topological_failure()) {
+    r.host_search = search_hosts(entry.rule, entry.rule.model(), confirm_darts, {}, 200'000);
+  }
+  compare_with_record(r);
+  return r;
+}
+
+void add_fuzz(RuleResult& r, FuzzReport report, std::string replay) {
+  r.fuzz = std::move(report);
+  r.fuzz_replay = std::move(replay);
+  compare_with_record(r);
+}
+
+void add_proof(RuleResult& r, proofs::RuleProof proof, std::vector<std::string> replays, std::vector<std::optional<Counterexample>> maps) {
+  r.proof = std::move(proof);
+  r.proof_replays = std::move(replays);
+  r.proof_maps = std::move(maps);
+  compare_with_record(r);
+}
+
+std::string fuzz_replay(const CatalogRule& entry, const FuzzReport& report, std::uint64_t seed, const std::string& out_dir,
+                        const std::string& catalog_file, const std::string& suffix) {
+  if (!report.counterexample) return {};
+  if (entry.terms) return embedded_replay(catalog_file, report, seed);
+  if (out_dir.empty()) return {};
+  return write_counterexample(out_dir, file_stem(report.rule) + suffix, catalog_file, report.rule,
+                              {{"seed", std::to_string(seed)}, {"class", std::string(fuzz_class_name(report.verdict))}}, report.static_failures,
+                              *report.counterexample);
+}
+
+void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::string& out_dir, const std::string& catalog_file,
+               const std::string& suffix) {
+  const CatalogRule& e = *r.entry;
+  auto proof = proofs::prove_rule(e, options);
+  std::vector<std::string> replays;
+  std::vector<std::optional<Counterexample>> maps;
+  for (auto& c : proof.constraints) {
+    // The third opinion on a map counterexample: the library's derivation.
+    maps.push_back(replay_solver_map(e, c));
+    replays.push_back(maps.back() && !out_dir.empty()
+                          ? write_counterexample(out_dir, file_stem(e.rule.name()) + suffix + "." + constraint_stem(c), catalog_file, e.rule.name(),
+                                                 {{"constraint", c.constraint.name()}, {"class", "counterexample on a map of the model (dartcheck prove)"}},
+                                                 proof.static_failures, *maps.back())
+                          : std::string());
+  }
+  add_proof(r, std::move(proof), std::move(replays), std::move(maps));
+}
+
+void compare_with_record(RuleResult& r) {
+  const CatalogRule& e = *r.entry;
+  r.mismatches.clear();
+  const std::string_view source = r.record_source_name();
+  if (!matches_record(e, r.verdict, r.embedding))
+    r.mismatches.push_back(e.expected_failures ? fmt::format("the static verdict is '{}', the {} records '{}'", r.verdict_text(), source, r.recorded_text())
+                                               : fmt::format("the static verdict is '{}' and the {} records no verdict, so every condition must hold",
+                                                             r.verdict_text(), source));
+  if (contradicts_record(e, r.broke_a_map())) {
+    std::vector<std::string> how;
+    if (r.host_search && r.host_search->host) how.push_back("the model-level search");
+    if (r.scheme_search && r.scheme_search->counterexample && breaks_map(*r.scheme_search->counterexample)) how.push_back("the model-level search");
+    if (r.fuzz && r.fuzz->counterexample && breaks_map(*r.fuzz->counterexample)) how.push_back("fuzz");
+    if (r.proof && solver_broke_a_map(*r.proof)) how.push_back("the solver");
+    how.erase(std::unique(how.begin(), how.end()), how.end());
+    r.mismatches.push_back(fmt::format("the {} records 'consistent', but {} broke a map", source, fmt::join(how, " and ")));
+  }
+  if (r.unsound()) r.mismatches.push_back("SOUNDNESS BUG: a stage contradicts the static verdict where a theorem says they agree");
+}
+
+ResultCounts count_results(const std::vector<RuleResult>& results) {
+  ResultCounts c;
+  for (const auto& r : results) {
+    ++c.rules;
+    (r.consistent() ? c.consistent : c.failing) += 1;
+    c.mismatches += !r.matches_record();
+    c.unsound += r.unsound();
+  }
+  return c;
+}
+
+}  // namespace dartcheck::analysis

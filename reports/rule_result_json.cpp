@@ -1,0 +1,165 @@
+#include "reports/rule_result_json.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+
+namespace dartcheck::reports {
+
+using namespace analysis;
+
+namespace {
+
+Json location_json(const SourceLocation& at) { return Json{{"file", at.file}, {"line", at.line}, {"column", at.column}}; }
+
+Json condition_json(const ConditionVerdict& v) {
+  Json witnesses = Json::array();
+  for (const auto& w : v.witnesses)
+    witnesses.push_back(Json{{"subcondition", w.subcondition},
+                             {"side", std::string(1, w.side)},
+                             {"nodes", w.nodes},
+                             {"arcs", w.arcs},
+                             {"words", w.words},
+                             {"text", w.text}});
+  Json j{{"condition", v.name()}, {"holds", v.holds}};
+  j["skipped"] = v.skipped.empty() ? Json(nullptr) : Json(v.skipped);
+  j["witnesses"] = std::move(witnesses);
+  return j;
+}
+
+Json embedding_json(const EmbeddingCheck& e) {
+  std::vector<std::string> texts;
+  for (const auto& w : e.witnesses) texts.push_back(w.text);
+  return Json{{"check", e.name}, {"holds", e.holds}, {"required", e.required}, {"source", e.source}, {"witnesses", texts}};
+}
+
+std::string graph_arcs(const TopoGraph& g) {
+  std::vector<std::string> arcs;
+  for (const auto& a : g.arcs()) arcs.push_back(fmt::format("{} -{}-> {}", g.name(a.source), a.label, g.name(a.target)));
+  return fmt::format("{}", fmt::join(arcs, ", "));
+}
+
+Json answer_json(const proofs::ClassAnswer& a) {
+  Json j{{"class", a.class_name},  {"status", proofs::status_name(a.status)}, {"darts", a.darts},
+         {"minimal", a.minimal},   {"bound", a.bound},                        {"proved_for_all", a.proved_for_all()},
+         {"core", a.core},         {"why", a.why},                            {"seconds", a.seconds}};
+  if (a.status == proofs::Status::counterexample) {
+    j["replayed"] = a.replayed;
+    j["host"] = graph_arcs(a.host_graph);
+    j["result"] = graph_arcs(a.result_graph);
+  }
+  return j;
+}
+
+Json confirmation_json(const RuleResult& r) {
+  Json j{{"text", r.confirmation_text()}};
+  if (r.host_search) {
+    const auto& s = *r.host_search;
+    j["search"] = "hosts of the model containing L";
+    j["matched"] = s.matched;
+    j["exhausted"] = s.exhausted;
+    j["largest_host"] = s.largest_host;
+    j["confirmed"] = s.host.has_value();
+    if (s.host) {
+      j["host"] = graph_arcs(*s.host);
+      j["result"] = graph_arcs(*s.result);
+    }
+  } else if (r.scheme_search) {
+    j["search"] = "small, catalog and random maps of the model";
+    j["confirmed"] = r.scheme_search->counterexample.has_value();
+    j["fuzz"] = fuzz_json(*r.scheme_search, "");
+  }
+  return j;
+}
+
+}  // namespace
+
+Json fuzz_json(const FuzzReport& f, const std::string& replay) {
+  Json refusals = Json::object();
+  for (const auto& [why, n] : f.refusals) refusals[why] = n;
+  Json j{{"class", fuzz_class_name(f.verdict)},
+         {"applications", f.applications},
+         {"hosts", f.hosts},
+         {"largest_host", f.largest_host},
+         {"exhaustive_darts", f.exhaustive_darts},
+         {"event_checks", f.event_checks},
+         {"refusals", std::move(refusals)},
+         {"seconds", f.seconds},
+         {"out_of_time", f.out_of_time},
+         {"reason", f.reason},
+         {"outcome", outcome_text(f)}};
+  if (f.counterexample) {
+    const auto& cx = *f.counterexample;
+    j["counterexample"] = Json{{"darts", cx.host.size()},       {"hooks", cx.hooks},
+                               {"broken", cx.broken()},         {"minimal", cx.minimal},
+                               {"origin", cx.origin},           {"unrepresentable", cx.unrepresentable},
+                               {"embedding", cx.embedding_failures}, {"events", cx.event_contradictions},
+                               {"replay", replay}};
+  } else {
+    j["counterexample"] = nullptr;
+  }
+  return j;
+}
+
+Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays) {
+  Json constraints = Json::array();
+  for (std::size_t i = 0; i < p.constraints.size(); ++i) {
+    const auto& c = p.constraints[i];
+    constraints.push_back(Json{{"constraint", c.constraint.name()},
+                               {"static", c.static_holds ? (*c.static_holds ? "holds" : "fails") : "none"},
+                               {"theorem", c.theorem ? answer_json(*c.theorem) : Json(nullptr)},
+                               {"model", answer_json(c.model)},
+                               {"agreement", proofs::agreement_name(c.agreement)},
+                               {"note", c.note},
+                               {"replay", i < replays.size() ? replays[i] : std::string()}});
+  }
+  return Json{{"scheme", p.scheme},
+              {"out_of_scope", p.out_of_scope.empty() ? Json(nullptr) : Json(p.out_of_scope)},
+              {"seconds", p.seconds},
+              {"constraints", std::move(constraints)},
+              {"agree", p.count(proofs::Agreement::agree)},
+              {"disagree", p.count(proofs::Agreement::disagree)},
+              {"unresolved", p.count(proofs::Agreement::unresolved)},
+              {"not_compared", p.count(proofs::Agreement::not_compared)}};
+}
+
+Json rule_result_json(const RuleResult& r) {
+  const CatalogRule& e = *r.entry;
+  Json conditions = Json::array();
+  for (const auto& v : r.verdict.conditions) conditions.push_back(condition_json(v));
+  Json embedding = Json::array();
+  for (const auto& c : r.embedding) embedding.push_back(embedding_json(c));
+  Json j{{"name", e.rule.name()},
+         {"model", e.rule.model().name},
+         {"location", location_json(e.location)},
+         {"kind", e.jerboa ? "jerboa-scheme" : e.words.scheme ? "scheme" : "dpo"},
+         {"consistent", r.consistent()},
+         {"failures", r.failures},
+         {"verdict", r.verdict_text()},
+         {"conditions", std::move(conditions)},
+         {"embedding_checks", std::move(embedding)},
+         {"caveats", e.caveats},
+         {"static_ms", r.static_ms}};
+  j["recorded"] = Json{{"source", r.record_source_name()},
+                       {"failures", e.expected_failures ? Json(*e.expected_failures) : Json(nullptr)},
+                       {"text", r.recorded_text()}};
+  j["matches_record"] = r.matches_record();
+  j["mismatches"] = r.mismatches;
+  j["unsound"] = r.unsound();
+  j["confirmation"] = r.host_search || r.scheme_search ? confirmation_json(r) : Json(nullptr);
+  j["fuzz"] = r.fuzz ? fuzz_json(*r.fuzz, r.fuzz_replay) : Json(nullptr);
+  j["proof"] = r.proof ? proof_json(*r.proof, r.proof_replays) : Json(nullptr);
+  return j;
+}
+
+Json skipped_json(const std::vector<SkippedRule>& skipped) {
+  Json out = Json::array();
+  for (const auto& s : skipped) out.push_back(Json{{"name", s.name}, {"verdict", "not checked"}, {"why", s.why}, {"at", s.location.str()}});
+  return out;
+}
+
+Json counts_json(const ResultCounts& c) {
+  return Json{{"rules", c.rules}, {"consistent", c.consistent}, {"failing", c.failing}, {"mismatches", c.mismatches}, {"unsound", c.unsound}};
+}
+
+}  // namespace dartcheck::reports

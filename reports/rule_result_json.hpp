@@ -1,0 +1,31 @@
+// analysis::RuleResult as JSON: one object per rule, the same in `check`,
+// `fuzz`, `prove` and `report` (docs/schema/rule-result.schema.json), and
+// the documents those commands print around them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/rule_result.hpp"
+#include "reports/json_document.hpp"
+
+namespace dartcheck::reports {
+
+/// One rule: location, model, static conditions with witnesses, embedding
+/// checks, the recorded verdict and how this run compares with it, and
+/// each stage that ran (confirmation, fuzz, solver).
+Json rule_result_json(const analysis::RuleResult& r);
+
+/// A fuzz stage's report (also inside rule_result_json).
+Json fuzz_json(const analysis::FuzzReport& f, const std::string& replay);
+
+/// A solver stage's proof (also inside rule_result_json).
+Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays);
+
+/// The rules a catalog names but dartcheck does not check, with why.
+Json skipped_json(const std::vector<SkippedRule>& skipped);
+
+/// The counts every document ends with.
+Json counts_json(const analysis::ResultCounts& c);
+
+}  // namespace dartcheck::reports

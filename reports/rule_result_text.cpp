@@ -1,0 +1,125 @@
+#include "reports/rule_result_text.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "reports/json_document.hpp"
+
+namespace dartcheck::reports {
+
+using namespace analysis;
+
+namespace {
+
+std::string arcs_text(const TopoGraph& g) {
+  std::string s;
+  for (const auto& a : g.arcs()) s += fmt::format("{}{} -{}-> {}", s.empty() ? "" : ", ", g.name(a.source), a.label, g.name(a.target));
+  return s;
+}
+
+std::string plural(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
+
+}  // namespace
+
+std::string printable(const std::string& text) {
+  const std::string s = valid_utf8(text) ? text : replace_invalid_utf8(text);
+  std::string out;
+  for (char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7F)
+      out += fmt::format("\\x{:02x}", u);
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results) {
+  std::vector<std::string> lines;
+  for (const auto& r : results)
+    for (const auto& m : r.mismatches)
+      lines.push_back(printable(fmt::format("{}: error: {}: {}{}", r.entry->location.str(), r.name(), m.rfind("SOUNDNESS", 0) == 0 ? "" : "MISMATCH: ", m)));
+  return lines;
+}
+
+std::string condition_cell(const RuleVerdict& v, RuleCondition kind) {
+  std::vector<std::string> bad;
+  bool any = false, skipped = false;
+  for (const auto& c : v.conditions) {
+    if (c.condition != kind) continue;
+    any = true;
+    if (!c.skipped.empty()) skipped = true;
+    if (!c.holds) bad.push_back(c.j >= 0 ? fmt::format("{}{}", c.i, c.j) : std::to_string(c.i));
+  }
+  if (!any) return "-";
+  if (!bad.empty()) return "fails " + fmt::format("{}", fmt::join(bad, ","));
+  return skipped ? "skipped" : "ok";
+}
+
+std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& results, std::size_t baseline_mismatches, const TableOptions& o) {
+  std::string out;
+  std::size_t width = 4;
+  for (const auto& r : results) width = std::max(width, printable(r.name()).size());
+  const bool embedded = !catalog.embeddings.empty();
+  std::vector<std::string> ebd_cells;
+  std::size_t ebd_width = 10;
+  for (const auto& r : results) {
+    const auto bad = failing_names(r.embedding);
+    ebd_cells.push_back(bad.empty() ? "ok" : fmt::format("fails {}", fmt::join(bad, ",")));
+    ebd_width = std::max(ebd_width, ebd_cells.back().size());
+  }
+  if (!catalog.modeler.empty()) {
+    std::vector<std::string> e;
+    for (const auto& d : catalog.embeddings) e.push_back(fmt::format("{} <{}>", d.name, fmt::join(d.orbit, ",")));
+    out += printable(fmt::format("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}", catalog.modeler, o.catalog, catalog.rules.size(),
+                                 catalog.skipped.size(), e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", ")))) +
+           "\n\n";
+  }
+  out += fmt::format("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7}  {}\n", "rule", width, "model", "I", "dangling", "O", "C",
+                     embedded ? fmt::format("{:<{}} ", "embeddings", ebd_width) : "", "ms", "verdict");
+  for (std::size_t row = 0; row < results.size(); ++row) {
+    const auto& r = results[row];
+    const auto& v = r.verdict;
+    out += fmt::format("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7.2f}  {}{}\n", printable(r.name()), width, printable(r.entry->rule.model().name),
+                       condition_cell(v, RuleCondition::incident_arcs), condition_cell(v, RuleCondition::dangling),
+                       condition_cell(v, RuleCondition::non_orientation), condition_cell(v, RuleCondition::cycle),
+                       embedded ? fmt::format("{:<{}} ", ebd_cells[row], ebd_width) : "", r.static_ms, r.verdict_text(),
+                       r.matches_record() ? "" : fmt::format("   (differs from the {}: see stderr)", r.record_source_name()));
+    for (const auto& caveat : r.entry->caveats) out += fmt::format("{:<{}}  note: {}\n", "", width, printable(caveat));
+    if (r.host_search || r.scheme_search) out += fmt::format("{:<{}}  {}\n", "", width, r.confirmation_text());
+    if (o.explain && !r.failures.empty()) {
+      for (const auto& cond : v.conditions) {
+        if (cond.holds) continue;
+        for (const auto& w : cond.witnesses)
+          out += fmt::format("{:<{}}    {}{}: {}\n", "", width, cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
+                             printable(w.text));
+      }
+      for (const auto& e : r.embedding)
+        for (const auto& w : e.witnesses) out += fmt::format("{:<{}}    {}{}: {}\n", "", width, e.name, e.required ? "" : " (not required)", printable(w.text));
+      if (r.scheme_search && r.scheme_search->counterexample)
+        out += fmt::format("{:<{}}    host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)\n", "", width,
+                           r.scheme_search->counterexample->origin, printable(r.name()));
+      if (r.host_search && r.host_search->host)
+        out += fmt::format("{:<{}}    host G: {}\n{:<{}}    result H: {}\n", "", width, printable(arcs_text(*r.host_search->host)), "", width,
+                           printable(arcs_text(*r.host_search->result)));
+    }
+  }
+  const bool whole_catalog = results.size() == catalog.rules.size();
+  if (whole_catalog)
+    for (const auto& sk : catalog.skipped) out += printable(fmt::format("{:<{}}  not checked ({}): {}", sk.name, width, sk.location.str(), sk.why)) + "\n";
+  if (embedded)
+    out += fmt::format("\nembeddings: {}{}\n", sufficiency_note,
+                       catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated");
+  const auto counts = count_results(results);
+  const std::size_t mismatches = counts.mismatches + baseline_mismatches;
+  const std::string_view source = results.empty() ? "catalog" : results.front().record_source_name();
+  out += fmt::format("\n{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}\n", plural(counts.rules, "rule", "rules"),
+                     counts.consistent, counts.failing,
+                     catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
+                     plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source);
+  return out;
+}
+
+}  // namespace dartcheck::reports

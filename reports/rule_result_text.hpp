@@ -1,0 +1,35 @@
+// analysis::RuleResult as text: the lines every command prints on stderr
+// for a rule that disagrees with its record, and check's verdict table.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "analysis/rule_result.hpp"
+
+namespace dartcheck::reports {
+
+/// One line per mismatch, as compilers and CI annotators read them:
+/// "catalog.yaml:12:3: error: rule-name: MISMATCH: the static verdict is ...".
+std::vector<std::string> mismatch_lines(const std::vector<analysis::RuleResult>& results);
+
+struct TableOptions {
+  bool explain = false;  // every witness under its rule
+  std::string catalog;   // for the Jerboa header line
+};
+
+/// check's table: rules x conditions, the verdict, each rule's caveats,
+/// its model-level confirmation and, with `explain`, every witness; then
+/// the rules not checked and the summary line.
+std::string check_table(const Catalog& catalog, const std::vector<analysis::RuleResult>& results, std::size_t baseline_mismatches,
+                        const TableOptions& options);
+
+/// The conditions of one kind, as a table cell: "ok", "fails 1,2",
+/// "skipped" or "-" (the model has none of that kind).
+std::string condition_cell(const RuleVerdict& v, RuleCondition kind);
+
+/// `s` safe on a terminal: control characters (ESC included) written as
+/// \xNN, invalid UTF-8 as U+FFFD.
+std::string printable(const std::string& s);
+
+}  // namespace dartcheck::reports
