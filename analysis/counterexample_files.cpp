@@ -1,12 +1,12 @@
 #include "analysis/counterexample_files.hpp"
 
 #include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "io/map_io.hpp"
 
 namespace dartcheck::analysis {
@@ -26,17 +26,13 @@ std::string replay_command(const std::string& catalog, const std::string& rule, 
   return cmd;
 }
 
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  if (!f || !(f << text)) throw InputError(path, 0, 0, "cannot write the counterexample file");
-}
 
 }  // namespace
 
 std::string write_counterexample(const std::string& dir, const std::string& stem_name, const std::string& catalog, const std::string& rule,
                                  const std::vector<std::pair<std::string, std::string>>& fields,
                                  const std::vector<std::string>& static_failures, const Counterexample& cx) {
-  std::filesystem::create_directories(dir);
+  ensure_directory(dir);
   const std::string stem = (std::filesystem::path(dir) / stem_name).string();
   write_file(stem + ".host.yaml", map_to_yaml(cx.host));
   if (cx.result) write_file(stem + ".result.yaml", map_to_yaml(*cx.result));

@@ -1,5 +1,4 @@
 #include <fmt/format.h>
-#include <fstream>
 #include <sstream>
 
 #include <random>
@@ -18,6 +17,7 @@
 #include "rewriting/derivation.hpp"
 #include "rewriting/scheme_application.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "io/map_io.hpp"
 #include "io/jerboa_jba.hpp"
 #include "events/application_trace.hpp"
@@ -77,13 +77,12 @@ int apply_terms(const ApplyOptions& o, const CatalogRule& rule, Map map) {
     if (!pos) throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': the map has no point embedding for the positions", o.output));
     std::ostringstream text;  // refused (a vertex without a position) before a file exists
     write_mesh(text, *host, pos->signature.name, o.output);
-    std::ofstream out(o.output);
-    if (!out || !(out << text.str())) throw InputError(o.output, 0, 0, "cannot write the result mesh");
+    write_file(o.output, text.str());
     fmt::print("written: {} (positions from {})\n", o.output, pos->signature.name);
   } else if (!o.output.empty()) {
-    std::ofstream out(o.output);
-    if (!out) throw InputError(o.output, 0, 0, "cannot write the result map");
-    write_map(out, host->map);
+    std::ostringstream text;
+    write_map(text, host->map);
+    write_file(o.output, text.str());
     fmt::print("written: {} (topology only; the values are printed above)\n", o.output);
   }
   return report.valid() && consistent ? ok : violation;
@@ -122,8 +121,7 @@ int apply_to_jba(const ApplyOptions& o, const CatalogRule& rule, Map map) {
   print_validity(stdout, map, report, o.limit);
   std::ostringstream text;  // refused (not an n-G-map) before a file exists
   write_jba(text, out, o.output);
-  std::ofstream file(o.output);
-  if (!file || !(file << text.str())) throw InputError(o.output, 0, 0, "cannot write the result map");
+  write_file(o.output, text.str());
   fmt::print("written: {}\n", o.output);
   return report.valid() ? ok : violation;
 }
@@ -179,9 +177,9 @@ int apply(const ApplyOptions& o) {
   const auto report = check_map(map);
   print_validity(stdout, map, report, o.limit);
   if (!o.output.empty()) {
-    std::ofstream out(o.output);
-    if (!out) throw InputError(o.output, 0, 0, "cannot write the result map");
-    write_map(out, map);
+    std::ostringstream text;
+    write_map(text, map);
+    write_file(o.output, text.str());
     fmt::print("written: {}\n", o.output);
   }
   return report.valid() ? ok : violation;

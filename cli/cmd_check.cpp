@@ -2,7 +2,7 @@
 // compared with the verdicts the catalog or a baseline records, rendered
 // as a table, JSON, SARIF or JUnit (reports/).
 #include <algorithm>
-#include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "io/baseline.hpp"
 #include "io/catalog.hpp"
 #include "reports/ci_formats.hpp"
@@ -35,11 +36,9 @@ void write_baseline_file(const std::string& path, const std::string& catalog_fil
   std::vector<BaselineEntry> entries;
   for (const auto& r : results) entries.push_back({r.name(), r.failures, {}});
   for (const auto& s : catalog.skipped) entries.push_back({s.name, std::nullopt, {}});
-  std::ofstream out(path);
-  if (!out) throw InputError("<command line>", 0, 0, fmt::format("--write-baseline: cannot write '{}'", path));
-  write_baseline(out, catalog_file, entries);
-  out.close();
-  if (!out) throw InputError(path, 0, 0, "--write-baseline: the file could not be written completely");
+  std::ostringstream text;
+  write_baseline(text, catalog_file, entries);
+  write_file(path, text.str());
   fmt::print(stderr, "wrote {} ({} verdicts, {} not checked)\n", path, results.size(), catalog.skipped.size());
 }
 
@@ -49,6 +48,7 @@ int check(const CheckOptions& o) {
   // SARIF and JUnit are read like text (errors on stderr as usual).
   const bool ci_format = o.format == "sarif" || o.format == "junit";
   Catalog catalog = read_command_catalog(o.catalog, o.rule, ci_format ? "text" : o.format);
+  if (!o.write_baseline.empty()) check_writable(o.write_baseline);  // before the work, not after it
   const auto baseline_mismatches = o.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, o.baseline);
   const RecordSource source = o.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
   const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.words.scheme; });

@@ -1,6 +1,5 @@
 // `dartcheck convert`: a catalog (a Jerboa .jme modeler, or YAML) written
 // as a YAML catalog that checks identically (core/catalog_writer).
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -9,6 +8,7 @@
 #include "analysis/map_sources.hpp"
 #include "io/catalog_writer.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 
 namespace dartcheck::cli {
 
@@ -19,8 +19,7 @@ int convert(const ConvertOptions& o) {
   if (!o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
     throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a file name ending in .yaml or .yml", o.output));
   const std::string text = catalog_yaml(catalog);
-  std::ofstream out(o.output, std::ios::binary);
-  if (!out || !out.write(text.data(), static_cast<std::streamsize>(text.size()))) throw InputError(o.output, 0, 0, "cannot write the catalog");
+  write_file(o.output, text);
   fmt::print("wrote {}: {} rules, {} skipped, {} embeddings\n", o.output, catalog.rules.size(), catalog.skipped.size(), catalog.embeddings.size());
   return ok;
 }

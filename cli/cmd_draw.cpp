@@ -2,7 +2,6 @@
 // highlighted) and `dartcheck draw-map` (a map, links colored by
 // dimension, invalid darts highlighted): one picture each, rendered by
 // libgvc in the format the output file's extension names.
-#include <fstream>
 
 #include <fmt/format.h>
 
@@ -15,6 +14,7 @@
 #include "analysis/map_sources.hpp"
 #include "rewriting/graph_derivation.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "reports/graph_dot.hpp"
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
@@ -32,9 +32,7 @@ void write_picture(const std::string& dot, const std::string& file, const std::s
     throw InputError("<command line>", 0, 0, fmt::format("-o: {}", e.what()));
   }
   const std::string data = format == "dot" ? dot : reports::render(dot, format, engine);
-  std::ofstream out(file, std::ios::binary);
-  if (!out || !out.write(data.data(), static_cast<std::streamsize>(data.size())))
-    throw InputError(file, 0, 0, "cannot write the picture");
+  write_file(file, data);
   fmt::print("wrote {} ({} bytes)\n", file, data.size());
 }
 

@@ -26,6 +26,7 @@
 #include "reports/rule_result_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "io/map_io.hpp"
 
 namespace dartcheck::cli {
@@ -74,6 +75,7 @@ int fuzz(const FuzzCommand& c) {
   Catalog catalog = read_command_catalog(c.catalog, c.rule, jsonl ? "json" : c.format);
   const auto baseline_mismatches = c.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, c.baseline);
   const RecordSource source = c.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
+  if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
   catch_interrupts();
   if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
 

@@ -1,17 +1,19 @@
 // dartcheck infer: one before/after example -> the Jerboa-style rule scheme
 // that performs it (000), checked by the static checker (Sec. 8.2) and
 // applied back to the example (App. A).
+#include <sstream>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
 #include "reports/json_document.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "inference/infer.hpp"
 #include "inference/kappa_file.hpp"
 #include "io/catalog.hpp"
@@ -60,12 +62,12 @@ void write_output(const InferCommand& o, const KappaGraph& graph, const std::vec
   for (const auto& a : attempts)
     if (a.inferred()) found.push_back(&a);
   const auto ext = std::filesystem::path(o.output).extension().string();
-  std::ofstream out(o.output, std::ios::binary);
-  if (!out) throw command_line(fmt::format("-o: cannot write {}", o.output));
   if (ext == ".jme") {
     std::vector<const Operation*> ops;
     for (const auto* a : found) ops.push_back(&a->rule->operation);
+    std::ostringstream out;
     write_jme(out, o.name, graph.model().dimension(), ops);
+    write_file(o.output, out.str());
     return;
   }
   Catalog c;
@@ -83,7 +85,7 @@ void write_output(const InferCommand& o, const KappaGraph& graph, const std::vec
     r.examples.push_back(e);
     c.rules.push_back(std::move(r));
   }
-  out << catalog_yaml(c, fmt::format("inferred by dartcheck infer: before {}, after {}, orbit {}", o.before, o.after, o.orbit));
+  write_file(o.output, catalog_yaml(c, fmt::format("inferred by dartcheck infer: before {}, after {}, orbit {}", o.before, o.after, o.orbit)));
 }
 
 }  // namespace
@@ -100,6 +102,7 @@ int infer(const InferCommand& o) {
   if (!o.output.empty()) {
     const auto ext = std::filesystem::path(o.output).extension().string();
     if (ext != ".yaml" && ext != ".yml" && ext != ".jme") throw command_line(fmt::format("-o: expected a .yaml or .jme file, got '{}'", o.output));
+    check_writable(o.output);  // before the work, not after it
   }
   const auto model = Model::by_name(o.model);
   if (!model) throw command_line(fmt::format("--model: unknown model '{}' (expected {})", o.model, Model::known_names()));

@@ -20,6 +20,7 @@
 #include "reports/rule_result_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "proofs/rule_prover.hpp"
 
 namespace dartcheck::cli {
@@ -43,6 +44,7 @@ int prove(const ProveCommand& c) {
   Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format);
   const auto baseline_mismatches = c.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, c.baseline);
   const RecordSource source = c.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
+  if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
   catch_interrupts();
   if (c.max_darts < 1 || c.max_darts > 256) throw InputError("<command line>", 0, 0, "--max-darts: expected 1 to 256");
   if (c.scheme_darts < 1 || c.scheme_darts > 256) throw InputError("<command line>", 0, 0, "--scheme-darts: expected 1 to 256");

@@ -3,6 +3,8 @@
 // by scaled Jacobian), each selected match merged into one volume, the
 // result checked and optionally written as a medit mesh of hexes and
 // tetrahedra.
+#include <sstream>
+
 #include <fmt/format.h>
 
 #include <sys/resource.h>
@@ -11,13 +13,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
 #include "reports/json_document.hpp"
 #include "cli/tet_input.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "querymodify/map_checks.hpp"
 #include "querymodify/recombination.hpp"
 
@@ -44,6 +46,7 @@ std::array<std::uint32_t, 8> medit_order(const std::array<std::uint32_t, 8>& c) 
 
 int recombine(const RecombineOptions& o) {
   if (o.format != "text" && o.format != "json") throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", o.format));
+  if (!o.output.empty()) check_writable(o.output);  // before the work, not after it
   Strategy strategy;
   if (o.strategy == "greedy") strategy = Strategy::greedy;
   else if (o.strategy == "global") strategy = Strategy::global;
@@ -80,9 +83,9 @@ int recombine(const RecombineOptions& o) {
     out.points = in.mesh.points;
     for (std::size_t k : r.remaining_tets) out.tets.push_back(in.mesh.tets[k]);
     for (const auto& c : r.hex_corners) out.hexes.push_back(medit_order(c));
-    std::ofstream f(o.output);
-    if (!f) throw InputError("<command line>", 0, 0, fmt::format("-o: cannot write {}", o.output));
-    write_medit(f, out);
+    std::ostringstream text;
+    write_medit(text, out);
+    write_file(o.output, text.str());
   }
   const double total = since(start);
   const double tets_per_second = total > 0 ? static_cast<double>(tets_in) / total : 0;

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <random>
 
 #include <fmt/format.h>
@@ -31,6 +30,7 @@
 #include "reports/rule_result_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "events/static_events.hpp"
 #include "rewriting/scheme_application.hpp"
 #include "reports/counterexample_dot.hpp"
@@ -53,9 +53,8 @@ class Pictures {
   std::string add(const std::string& dot, const std::string& file) {
     const std::string svg = reports::render(dot, "svg", engine_);
     const fs::path path = dir_ / file;
-    fs::create_directories(path.parent_path());
-    std::ofstream out(path, std::ios::binary);
-    if (!out || !out.write(svg.data(), static_cast<std::streamsize>(svg.size()))) throw InputError(path.string(), 0, 0, "cannot write the picture");
+    ensure_directory(path.parent_path().string());
+    write_file(path.string(), svg);
     ++count_;
     return fmt::format("<div class=\"picture\">{}</div>\n<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n",
                        reports::inline_svg(svg, fmt::format("p{}_", count_)), html_text(file), html_text(file));
@@ -309,9 +308,7 @@ int report(const ReportOptions& o) {
   if (!o.fuzz.empty()) seconds = parse_duration(o.fuzz, "--fuzz");
   if (o.prove_darts > 256) throw InputError("<command line>", 0, 0, "--prove: expected 0 (no proof) to 256 darts");
   const fs::path dir(o.output);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) throw InputError(o.output, 0, 0, fmt::format("-o: cannot create the directory ({})", ec.message()));
+  ensure_directory(o.output);
 
   std::vector<RuleResult> rows;
   std::vector<const Operation*> rules;
@@ -372,10 +369,7 @@ int report(const ReportOptions& o) {
 
   const fs::path index = dir / "index.html";
   const std::string page = reports::html_document("dartcheck report: " + o.catalog, body);
-  std::ofstream out(index, std::ios::binary);
-  if (!out || !out.write(page.data(), static_cast<std::streamsize>(page.size()))) throw InputError(index.string(), 0, 0, "cannot write the report");
-  out.close();
-  if (!out) throw InputError(index.string(), 0, 0, "cannot write the report (the file could not be written completely)");
+  write_file(index.string(), page);
   // The same results as data, in check's JSON form, beside the page.
   reports::Json doc = reports::json_document("report");
   doc["catalog"] = o.catalog;
@@ -387,10 +381,7 @@ int report(const ReportOptions& o) {
   doc["counts"] = reports::counts_json(count_results(rows));
   const fs::path data = dir / "results.json";
   const std::string text = reports::json_text(std::move(doc)) + "\n";
-  std::ofstream json_out(data, std::ios::binary);
-  json_out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  json_out.close();
-  if (!json_out) throw InputError(data.string(), 0, 0, "cannot write the report's results (the file could not be written completely)");
+  write_file(data.string(), text);
   fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes) and {}\n", index.string(), rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size(),
              data.string());
   // Every non-zero exit says why.

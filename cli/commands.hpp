@@ -1,6 +1,7 @@
 // The dartcheck subcommands. Each returns the process exit status:
 // 0 success, 1 a violation or a failed expectation, 2 bad input, 3 a
-// soundness bug (a rule judged consistent broke a map).
+// soundness bug (a rule judged consistent broke a map), 4 an output that
+// could not be written (core/output_file.hpp).
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,7 @@
 
 namespace dartcheck::cli {
 
-enum Exit : int { ok = 0, violation = 1, bad_input = 2, soundness_bug = 3 };
+enum Exit : int { ok = 0, violation = 1, bad_input = 2, soundness_bug = 3, output_error = 4 };
 
 struct ValidateOptions {
   std::string target;

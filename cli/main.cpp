@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/suggest.hpp"
 #include "core/input_error.hpp"
+#include "core/output_file.hpp"
 #include "core/limits.hpp"
 #include "generators/shapes.hpp"
 
@@ -203,6 +204,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return cli::bad_input;
+  } catch (const OutputError& e) {
+    fmt::print(stderr, "error: {}\n", printable(e.what()));
+    return cli::output_error;
   } catch (const YAML::Exception& e) {
     // Readers turn YAML errors into positioned InputErrors; this is a last resort.
     fmt::print(stderr, "error: YAML at line {}, column {}: {}\n", e.mark.line + 1, e.mark.column + 1, printable(e.msg));
