@@ -6,7 +6,6 @@
 #include "core/input_error.hpp"
 #include "io/jerboa_jba.hpp"
 #include "io/map_io.hpp"
-#include "io/yaml_util.hpp"
 #include "io/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/shapes.hpp"
@@ -29,7 +28,7 @@ Map resolve_map(const std::string& target, const Model& model, const Catalog* ca
   const bool exists = std::filesystem::exists(target);
   if (is_mesh_path(target)) return load_mesh(model, target);
   const auto ext = std::filesystem::path(target).extension().string();
-  if (ext == ".yaml" || ext == ".yml") return read_map(target, load_yaml_file(target));
+  if (ext == ".yaml" || ext == ".yml") return read_map_file(target);
   if (ext == ".jba") return read_jba(target).map;  // the file names its dimension
   if (exists) throw InputError(target, 0, 0, "unknown map file type (expected .yaml, .yml, .off, .obj or .jba)");
   try {

@@ -58,7 +58,7 @@ int check(const CheckOptions& o) {
   for (const auto& entry : catalog.rules)
     if (o.rule.empty() || entry.rule.name() == o.rule) results.push_back(analyse_static(catalog, entry, o.confirm_darts, maps, source));
 
-  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", reports::printable(m));
+  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", printable(m));
   for (const auto& line : reports::mismatch_lines(results)) fmt::print(stderr, "{}\n", line);
   if (!o.write_baseline.empty()) write_baseline_file(o.write_baseline, o.catalog, catalog, results);
 
@@ -69,16 +69,8 @@ int check(const CheckOptions& o) {
   } else if (o.format == "junit") {
     fmt::print("{}", reports::junit_document("check", o.catalog, results, baseline_mismatches));
   } else if (o.format == "json") {
-    reports::Json doc = reports::json_document("check");
-    doc["catalog"] = o.catalog;
-    reports::Json rules = reports::Json::array();
-    for (const auto& r : results) rules.push_back(reports::rule_result_json(r));
-    doc["rules"] = std::move(rules);
-    doc["skipped"] = reports::skipped_json(catalog.skipped);
-    doc["baseline_mismatches"] = baseline_mismatches;
-    doc["counts"] = reports::counts_json(counts);
-    doc["mismatches"] = mismatches;
-    fmt::print("{}\n", reports::json_text(std::move(doc)));
+    const auto doc = reports::results_document("check", o.catalog, catalog, results, baseline_mismatches);
+    fmt::print("{}\n", reports::json_text(doc));
   } else {
     fmt::print("{}", reports::check_table(catalog, results, baseline_mismatches.size(), {o.explain, o.catalog}));
   }

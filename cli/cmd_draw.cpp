@@ -8,7 +8,7 @@
 #include "checkers/graph_constraints.hpp"
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
-#include "cli/embedding_picture.hpp"
+#include "reports/embedding_picture.hpp"
 #include "cli/options.hpp"
 #include "analysis/embedding_checks.hpp"
 #include "analysis/map_sources.hpp"
@@ -43,7 +43,7 @@ int draw(const DrawOptions& o) {
   const CatalogRule* entry = catalog.find_rule(o.rule);
   const RuleVerdict verdict = check_rule(entry->rule, entry->words);
   auto witnesses = reports::failed_witnesses(verdict);
-  const auto embedded = embedding_picture(*entry, embedding_checks(catalog, *entry));
+  const auto embedded = reports::embedding_picture(*entry, embedding_checks(catalog, *entry));
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
   write_picture(reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms), o.output,
                 o.engine);

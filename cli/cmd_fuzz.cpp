@@ -128,14 +128,7 @@ int fuzz(const FuzzCommand& c) {
   std::size_t applications = 0;
   for (const auto& r : results) ++classes[r.fuzz->verdict], applications += r.fuzz->applications;
   const auto counts = count_results(results);
-  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", reports::printable(m));
-  for (const auto& line : reports::mismatch_lines(results)) fmt::print(stderr, "{}\n", line);
-  int status = counts.unsound ? soundness_bug : counts.mismatches + baseline_mismatches.size() ? violation : ok;
-  // Interrupted (SIGINT, SIGTERM): the finished rules' results are kept.
-  if (interrupted()) {
-    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), rules.size(), rules.size() == 1 ? "" : "s");
-    if (status != soundness_bug) status = interrupted_exit;
-  }
+  const int status = finish_run(results, baseline_mismatches, rules.size());
 
   reports::Json summary{{"catalog", c.catalog},
                         {"seed", o.seed},
@@ -169,11 +162,11 @@ int fuzz(const FuzzCommand& c) {
   }
 
   std::size_t width = 4;
-  for (const auto& r : results) width = std::max(width, reports::printable(r.name()).size());
+  for (const auto& r : results) width = std::max(width, printable(r.name()).size());
   fmt::print("{:<{}}  {:<18} {}\n", "rule", width, "static", "dynamic");
   for (const auto& result : results) {
     const auto& r = *result.fuzz;
-    fmt::print("{:<{}}  {:<18} {}\n", reports::printable(result.name()), width, result.verdict_text(), outcome_text(r));
+    fmt::print("{:<{}}  {:<18} {}\n", printable(result.name()), width, result.verdict_text(), outcome_text(r));
     if (r.counterexample) {
       const auto& cx = *r.counterexample;
       fmt::print("{:<{}}  found in {}\n", "", width, cx.origin);
@@ -181,7 +174,7 @@ int fuzz(const FuzzCommand& c) {
       for (std::size_t e = 0; e < cx.embedding_failures.size() && e < 4; ++e) fmt::print("{:<{}}  H: {}\n", "", width, cx.embedding_failures[e]);
       if (cx.embedding_failures.size() > 4) fmt::print("{:<{}}  H: ... {} more\n", "", width, cx.embedding_failures.size() - 4);
       if (!result.fuzz_replay.empty())
-        fmt::print("{:<{}}  replay: {}\n", "", width, reports::printable(result.fuzz_replay));
+        fmt::print("{:<{}}  replay: {}\n", "", width, printable(result.fuzz_replay));
       else if (!result.entry->terms)
         fmt::print("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
     }
@@ -190,8 +183,7 @@ int fuzz(const FuzzCommand& c) {
   fmt::print("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
              results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs, bugs == 1 ? "" : "s",
              applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
-  if (counts.mismatches) fmt::print("{} differ{} from the {}\n", counts.mismatches == 1 ? "1 verdict" : fmt::format("{} verdicts", counts.mismatches),
-                                    counts.mismatches == 1 ? "s" : "", c.baseline.empty() ? "catalog" : "baseline");
+  if (const auto line = reports::mismatch_summary(results); !line.empty()) fmt::print("{}\n", line);
   return status;
 }
 

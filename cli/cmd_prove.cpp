@@ -72,14 +72,7 @@ int prove(const ProveCommand& c) {
       counts[static_cast<int>(a)] += r.proof->count(a);
   }
   const auto tally = count_results(results);
-  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", reports::printable(m));
-  for (const auto& line : reports::mismatch_lines(results)) fmt::print(stderr, "{}\n", line);
-  int status = tally.unsound ? soundness_bug : tally.mismatches + baseline_mismatches.size() ? violation : ok;
-  // Interrupted (SIGINT, SIGTERM): the finished rules' results are kept.
-  if (interrupted()) {
-    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), selected, selected == 1 ? "" : "s");
-    if (status != soundness_bug) status = interrupted_exit;
-  }
+  const int status = finish_run(results, baseline_mismatches, selected);
 
   if (c.format == "json") {
     reports::Json doc = reports::json_document("prove");
@@ -103,7 +96,7 @@ int prove(const ProveCommand& c) {
 
   for (const auto& result : results) {
     const auto& p = *result.proof;
-    fmt::print("{} ({}): ", reports::printable(p.rule), reports::printable(p.model));
+    fmt::print("{} ({}): ", printable(p.rule), printable(p.model));
     if (!p.out_of_scope.empty()) {
       fmt::print("out of the solver's scope: {}\n", p.out_of_scope);
       continue;
@@ -118,15 +111,13 @@ int prove(const ProveCommand& c) {
       if (!cp.note.empty()) fmt::print("  {:<11} {}\n", "", cp.note);
       if (cp.theorem && cp.theorem->status == Status::counterexample && c.explain)
         fmt::print("  {:<11} theorem host: {}\n  {:<11} H: {}\n", "", graph_arcs(cp.theorem->host_graph), "", graph_arcs(cp.theorem->result_graph));
-      if (!result.proof_replays[i].empty()) fmt::print("  {:<11} replay: {}\n", "", reports::printable(result.proof_replays[i]));
+      if (!result.proof_replays[i].empty()) fmt::print("  {:<11} replay: {}\n", "", printable(result.proof_replays[i]));
     }
   }
   fmt::print("\n{} rules ({} in the solver's scope); {} constraints agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
              "{:.1f} s\n",
              results.size(), scoped, counts[0], counts[1], counts[2], counts[3], o.max_darts, o.rlimit, total);
-  if (tally.mismatches)
-    fmt::print("{} differ{} from the {}\n", tally.mismatches == 1 ? "1 verdict" : fmt::format("{} verdicts", tally.mismatches), tally.mismatches == 1 ? "s" : "",
-               c.baseline.empty() ? "catalog" : "baseline");
+  if (const auto line = reports::mismatch_summary(results); !line.empty()) fmt::print("{}\n", line);
   return status;
 }
 

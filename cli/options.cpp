@@ -1,5 +1,9 @@
 #include "cli/options.hpp"
 
+#include "analysis/interrupt.hpp"
+#include "cli/commands.hpp"
+#include "reports/rule_result_text.hpp"
+
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
@@ -28,6 +32,17 @@ double parse_duration(const std::string& text, const std::string& option) {
   if (used == 0 || scale < 0 || !(v > 0))
     throw InputError("<command line>", 0, 0, fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, text));
   return v * scale;
+}
+
+int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected) {
+  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", printable(m));
+  for (const auto& line : reports::mismatch_lines(results)) fmt::print(stderr, "{}\n", line);
+  const auto counts = analysis::count_results(results);
+  if (analysis::interrupted())
+    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), selected, selected == 1 ? "" : "s");
+  if (counts.unsound) return soundness_bug;
+  if (analysis::interrupted()) return analysis::interrupted_exit;
+  return counts.mismatches + baseline_mismatches.size() > 0 ? violation : ok;
 }
 
 }  // namespace dartcheck::cli

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "analysis/rule_result.hpp"
 #include "io/catalog.hpp"
 
 namespace dartcheck::cli {
@@ -14,5 +15,11 @@ Catalog read_command_catalog(const std::string& file, const std::string& rule, c
 /// Seconds in "30s", "500ms", "2m", "1h" or a bare number of seconds;
 /// InputError naming `option` otherwise.
 double parse_duration(const std::string& text, const std::string& option);
+
+/// The end of a run of check, fuzz, prove or report: prints the baseline's
+/// disagreements and every mismatch line on stderr, says how many of
+/// `selected` rules finished if a signal stopped the run, and returns the
+/// exit status (3 a soundness bug, 130 interrupted, 1 a mismatch, 0).
+int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected);
 
 }  // namespace dartcheck::cli

@@ -1,16 +1,13 @@
 // YAML map files (io/map_io): any text; InputError is the only answer.
-#include <yaml-cpp/yaml.h>
-
 #include "checkers/map_validity.hpp"
 #include "core/input_error.hpp"
 #include "fuzz/harness.hpp"
 #include "io/map_io.hpp"
-#include "io/yaml_util.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace dartcheck;
   try {
-    const Map m = read_map("<fuzz>", load_yaml_file(fuzzing::input_file(data, size, ".yaml")));
+    const Map m = read_map_file(fuzzing::input_file(data, size, ".yaml"));
     (void)check_map(m);  // a map read is a map the checker can walk
   } catch (const InputError&) {
   }

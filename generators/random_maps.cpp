@@ -119,21 +119,6 @@ Map build_random_map(const Model& model, const MapRecipe& recipe) {
   return m;
 }
 
-rc::Gen<MapRecipe> gen_map_recipe(int min_faces, int max_faces) {
-  return rc::gen::mapcat(rc::gen::inRange(min_faces, max_faces + 1), [](int faces) {
-    return rc::gen::build<MapRecipe>(
-        rc::gen::set(&MapRecipe::face_sizes,
-                     rc::gen::container<std::vector<std::uint8_t>>(static_cast<std::size_t>(faces), rc::gen::inRange<std::uint8_t>(1, 7))),
-        rc::gen::set(&MapRecipe::sewings,
-                     rc::gen::container<std::vector<SewStep>>(
-                         static_cast<std::size_t>(2 * faces),
-                         rc::gen::build<SewStep>(rc::gen::set(&SewStep::dim, rc::gen::element<std::uint8_t>(2, 3)),
-                                                 rc::gen::set(&SewStep::a, rc::gen::inRange<std::uint32_t>(0, 1000)),
-                                                 rc::gen::set(&SewStep::b, rc::gen::inRange<std::uint32_t>(0, 1000)),
-                                                 rc::gen::set(&SewStep::twist, rc::gen::inRange<std::uint32_t>(0, 1000))))));
-  });
-}
-
 void apply_corruption(Map& map, const LinkCorruption& c) {
   const std::size_t n = map.size();
   if (n == 0) return;

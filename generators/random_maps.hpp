@@ -10,7 +10,6 @@
 #include <random>
 #include <vector>
 
-#include <rapidcheck.h>
 
 #include "core/map.hpp"
 
@@ -52,10 +51,6 @@ MapRecipe draw_recipe(std::mt19937& rng, std::uint32_t faces, int top_dim);
 /// shrinker outside RapidCheck (dartcheck fuzz) keeps validity too.
 std::vector<MapRecipe> shrink_candidates(const MapRecipe& r);
 
-/// Recipes with `min_faces`..`max_faces` faces and up to twice as many
-/// sewings.
-rc::Gen<MapRecipe> gen_map_recipe(int min_faces, int max_faces);
-
 /// Overwrite one link array entry: the link (or, with `inverse`, the
 /// recorded predecessor) of dart `dart % n` in dimension `dims[dim % |D|]`
 /// becomes `target % (n + 1)`, where n means no_dart. With `resew`, the
@@ -70,15 +65,3 @@ struct LinkCorruption {
 void apply_corruption(Map& map, const LinkCorruption& c);
 
 }  // namespace dartcheck
-
-namespace rc {
-template <>
-struct Arbitrary<dartcheck::LinkCorruption> {
-  static Gen<dartcheck::LinkCorruption> arbitrary() {
-    return gen::build<dartcheck::LinkCorruption>(
-        gen::set(&dartcheck::LinkCorruption::dart), gen::set(&dartcheck::LinkCorruption::dim),
-        gen::set(&dartcheck::LinkCorruption::target), gen::set(&dartcheck::LinkCorruption::inverse),
-        gen::set(&dartcheck::LinkCorruption::resew));
-  }
-};
-}  // namespace rc

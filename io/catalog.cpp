@@ -1,4 +1,5 @@
 #include "io/catalog.hpp"
+#include "io/yaml_readers.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

@@ -4,7 +4,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include <yaml-cpp/yaml.h>
 
 #include "core/input_error.hpp"
 #include "core/map.hpp"
@@ -70,21 +69,5 @@ struct Catalog {
 /// Reads a catalog; every error is an InputError with file:line:column.
 /// A file ending in .jme is read as a Jerboa modeler (io/jerboa_modeler).
 Catalog read_catalog(const std::string& file);
-
-/// Reads one side of a rule: {nodes: [...], arcs: ["a -0- b", ...]}.
-/// Arc notation: "a -i- b" is the non-oriented pair a -i-> b, b -i-> a
-/// (one loop arc when a == b); "a -i-> b" and "a <-i- b" one oriented arc.
-/// With `model` and `words`, arcs may carry scheme labels "(w,i)": `words`
-/// receives one word per arc (ε for plain labels) and `has_words` is set if
-/// any arc has one. With `jerboa` (the parameter orbit type), nodes are a
-/// mapping from names to generalized orbit types and are translated to
-/// (W,D) loops (rewriting/jerboa_scheme.hpp).
-TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model = nullptr,
-                    std::vector<ConjWord>* words = nullptr, bool* has_words = nullptr, const OrbitType* jerboa = nullptr,
-                    std::vector<OrbitType>* orbit_types = nullptr);
-
-/// Reads a model: a preset name, or {dims, non_oriented, exchangeable,
-/// partial, loop_free} for a custom one.
-Model read_model(const std::string& file, const YAML::Node& node, const std::vector<Model>& custom);
 
 }  // namespace dartcheck

@@ -1,4 +1,5 @@
 #include "io/map_io.hpp"
+#include "io/yaml_readers.hpp"
 
 #include <fmt/format.h>
 #include <limits>
@@ -128,6 +129,8 @@ Map read_map_links(const std::string& file, const YAML::Node& node, const Model&
   }
   return m;
 }
+
+Map read_map_file(const std::string& path) { return read_map(path, load_yaml_file(path)); }
 
 Map read_map(const std::string& file, const YAML::Node& node) {
   yaml::expect_map(file, node, "map");

@@ -15,17 +15,14 @@
 
 #include <iosfwd>
 #include <string>
-#include <yaml-cpp/yaml.h>
 
 #include "core/map.hpp"
 
 namespace dartcheck {
 
-/// Reads a map from a YAML mapping with keys model, darts, links[, pred].
-/// Every error is an InputError at the offending node of `file`.
-Map read_map(const std::string& file, const YAML::Node& node);
-/// Same, reusing a model already known (catalog entries may override it).
-Map read_map_links(const std::string& file, const YAML::Node& node, const Model& model);
+/// Reads the map file `path` (the YAML form below); InputError at the
+/// offending node.
+Map read_map_file(const std::string& path);
 
 /// Writes the explicit form (raw arrays, pred only where needed).
 void write_map(std::ostream& out, const Map& map);

@@ -14,10 +14,6 @@
 
 namespace dartcheck::proofs {
 
-/// Deliberate faults, for the tests that check that a wrong encoding is
-/// caught (a planted bug must produce disagreements).
-enum class EncodingFault { none, drop_dangling };
-
 class DpoEncoding : public HostEncoding {
  public:
   DpoEncoding(z3::context& ctx, const Rule& rule, const HostClass& cls, std::size_t max_darts, unsigned rlimit, unsigned timeout_ms = 0,

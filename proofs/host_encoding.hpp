@@ -20,18 +20,9 @@
 #include "core/conjugate_words.hpp"
 #include "core/map.hpp"
 #include "proofs/host_class.hpp"
+#include "proofs/solver_types.hpp"
 
 namespace dartcheck::proofs {
-
-/// A host the solver found: `size` darts and the links of the encoded
-/// dimensions (no_dart for none).
-struct SymbolicHost {
-  std::size_t size = 0;
-  std::vector<std::pair<Dim, std::vector<Dart>>> links;
-  const std::vector<Dart>* find(Dim d) const;
-};
-
-enum class Answer { sat, unsat, unknown };
 
 class HostEncoding {
  public:

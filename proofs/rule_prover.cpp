@@ -8,6 +8,7 @@
 #include "checkers/graph_constraints.hpp"
 #include "rewriting/graph_derivation.hpp"
 #include "rewriting/scheme_instantiation.hpp"
+#include "proofs/dpo_encoding.hpp"
 #include "proofs/scheme_encoding.hpp"
 
 namespace dartcheck::proofs {

@@ -13,7 +13,8 @@
 
 #include "rewriting/operation.hpp"
 #include "core/graph.hpp"
-#include "proofs/dpo_encoding.hpp"
+#include "proofs/host_class.hpp"
+#include "proofs/solver_types.hpp"
 
 namespace dartcheck::proofs {
 

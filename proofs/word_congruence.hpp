@@ -9,7 +9,7 @@
 
 #include "core/conjugate_words.hpp"
 #include "core/map.hpp"
-#include "proofs/dpo_encoding.hpp"
+#include "proofs/solver_types.hpp"
 
 namespace dartcheck::proofs {
 

@@ -158,6 +158,21 @@ Json skipped_json(const std::vector<SkippedRule>& skipped) {
   return out;
 }
 
+Json results_document(std::string_view command, const std::string& catalog_file, const Catalog& catalog, const std::vector<RuleResult>& results,
+                      const std::vector<std::string>& baseline_mismatches) {
+  Json doc = json_document(command);
+  doc["catalog"] = catalog_file;
+  Json rules = Json::array();
+  for (const auto& r : results) rules.push_back(rule_result_json(r));
+  doc["rules"] = std::move(rules);
+  doc["skipped"] = skipped_json(catalog.skipped);
+  doc["baseline_mismatches"] = baseline_mismatches;
+  const auto counts = count_results(results);
+  doc["counts"] = counts_json(counts);
+  doc["mismatches"] = counts.mismatches + baseline_mismatches.size();
+  return doc;
+}
+
 Json counts_json(const ResultCounts& c) {
   return Json{{"rules", c.rules}, {"consistent", c.consistent}, {"failing", c.failing}, {"mismatches", c.mismatches}, {"unsound", c.unsound}};
 }

@@ -25,6 +25,11 @@ Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& repl
 /// The rules a catalog names but dartcheck does not check, with why.
 Json skipped_json(const std::vector<SkippedRule>& skipped);
 
+/// check's document, also report's results.json: every rule's result, the
+/// rules not checked, the baseline's own disagreements and the counts.
+Json results_document(std::string_view command, const std::string& catalog_file, const Catalog& catalog,
+                      const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches);
+
 /// The counts every document ends with.
 Json counts_json(const analysis::ResultCounts& c);
 

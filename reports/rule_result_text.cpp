@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "reports/json_document.hpp"
+#include "core/input_error.hpp"
 
 namespace dartcheck::reports {
 
@@ -23,25 +23,18 @@ std::string plural(std::size_t n, const char* one, const char* many) { return fm
 
 }  // namespace
 
-std::string printable(const std::string& text) {
-  const std::string s = valid_utf8(text) ? text : replace_invalid_utf8(text);
-  std::string out;
-  for (char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7F)
-      out += fmt::format("\\x{:02x}", u);
-    else
-      out += c;
-  }
-  return out;
-}
-
 std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results) {
   std::vector<std::string> lines;
   for (const auto& r : results)
     for (const auto& m : r.mismatches)
       lines.push_back(printable(fmt::format("{}: error: {}: {}{}", r.entry->location.str(), r.name(), m.rfind("SOUNDNESS", 0) == 0 ? "" : "MISMATCH: ", m)));
   return lines;
+}
+
+std::string mismatch_summary(const std::vector<RuleResult>& results) {
+  const std::size_t n = count_results(results).mismatches;
+  if (n == 0) return "";
+  return fmt::format("{} differ{} from the {}", plural(n, "verdict", "verdicts"), n == 1 ? "s" : "", results.front().record_source_name());
 }
 
 std::string condition_cell(const RuleVerdict& v, RuleCondition kind) {

@@ -13,6 +13,9 @@ namespace dartcheck::reports {
 /// "catalog.yaml:12:3: error: rule-name: MISMATCH: the static verdict is ...".
 std::vector<std::string> mismatch_lines(const std::vector<analysis::RuleResult>& results);
 
+/// "2 verdicts differ from the baseline" ("" when every result matches its record).
+std::string mismatch_summary(const std::vector<analysis::RuleResult>& results);
+
 struct TableOptions {
   bool explain = false;  // every witness under its rule
   std::string catalog;   // for the Jerboa header line
@@ -27,9 +30,5 @@ std::string check_table(const Catalog& catalog, const std::vector<analysis::Rule
 /// The conditions of one kind, as a table cell: "ok", "fails 1,2",
 /// "skipped" or "-" (the model has none of that kind).
 std::string condition_cell(const RuleVerdict& v, RuleCondition kind);
-
-/// `s` safe on a terminal: control characters (ESC included) written as
-/// \xNN, invalid UTF-8 as U+FFFD.
-std::string printable(const std::string& s);
 
 }  // namespace dartcheck::reports

@@ -24,6 +24,7 @@
 #include "analysis/map_sources.hpp"
 #include "rewriting/derivation.hpp"
 #include "io/map_io.hpp"
+#include "io/yaml_readers.hpp"
 #include "rewriting/scheme_application.hpp"
 #include "io/yaml_util.hpp"
 

@@ -26,6 +26,7 @@
 #include "core/orbit.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 
 using namespace dartcheck;
 

@@ -4,6 +4,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 #include "generators/shapes.hpp"
 
 using namespace dartcheck;

@@ -6,6 +6,7 @@
 #include "checkers/map_validity.hpp"
 #include "core/conjugate_words.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 
 using namespace dartcheck;
 

@@ -23,6 +23,7 @@
 #include "checkers/rule_conditions.hpp"
 #include "events_support.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 
 namespace dartcheck::events::test {
 namespace {

@@ -19,6 +19,7 @@
 
 #include "checkers/rule_conditions.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 #include "inference_support.hpp"
 
 namespace dartcheck::inference::test {

@@ -29,7 +29,7 @@ inline std::string error_of(const std::string& text, bool catalog = false) {
     if (catalog)
       read_catalog(path.string());
     else
-      read_map(path.string(), load_yaml_file(path.string()));
+      read_map_file(path.string());
   } catch (const InputError& e) {
     return std::to_string(e.line()) + ":" + std::to_string(e.column()) + " " + e.what();
   }

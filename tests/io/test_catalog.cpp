@@ -9,6 +9,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "io/catalog.hpp"
+#include "io/yaml_readers.hpp"
 #include "core/input_error.hpp"
 #include "io/map_io.hpp"
 #include "io/yaml_util.hpp"

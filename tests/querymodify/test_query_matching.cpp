@@ -26,6 +26,7 @@
 #include "checkers/map_validity.hpp"
 #include "core/isomorphism.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 #include "querymodify/annotation.hpp"
 #include "querymodify/overlap.hpp"
 

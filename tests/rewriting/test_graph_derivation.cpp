@@ -9,6 +9,7 @@
 #include "rewriting/graph_derivation.hpp"
 #include "io/map_io.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 
 using namespace dartcheck;
 

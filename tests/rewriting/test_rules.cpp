@@ -8,6 +8,7 @@
 #include "core/isomorphism.hpp"
 #include "core/orbit.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 #include "generators/shapes.hpp"
 
 using namespace dartcheck;

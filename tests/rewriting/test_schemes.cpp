@@ -22,6 +22,7 @@
 #include "rewriting/scheme_instantiation.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_maps.hpp"
+#include "tests/map_recipe_gen.hpp"
 #include "generators/shapes.hpp"
 
 using namespace dartcheck;

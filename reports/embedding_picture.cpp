@@ -1,6 +1,6 @@
-#include "cli/embedding_picture.hpp"
+#include "reports/embedding_picture.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::reports {
 
 EmbeddingPicture embedding_picture(const Operation& entry, const std::vector<analysis::EmbeddingCheck>& checks) {
   EmbeddingPicture out;
@@ -14,4 +14,4 @@ EmbeddingPicture embedding_picture(const Operation& entry, const std::vector<ana
   return out;
 }
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::reports

@@ -7,15 +7,15 @@
 #include "analysis/embedding_checks.hpp"
 #include "reports/rule_dot.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::reports {
 
 /// What a rule picture shows of the checks (reports/rule_dot): the
 /// witnesses of the checks that fail (required or not), the rule's terms,
 /// and the embeddings of the failing checks ("pos" for "A(pos)").
 struct EmbeddingPicture {
   std::vector<RuleWitness> witnesses;
-  reports::TermLines terms;
+  TermLines terms;
 };
 EmbeddingPicture embedding_picture(const Operation& entry, const std::vector<analysis::EmbeddingCheck>& checks);
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::reports

@@ -1,0 +1,278 @@
+#include "reports/report_page.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "analysis/counterexample_files.hpp"
+#include "analysis/prove_replay.hpp"
+#include "checkers/violation.hpp"
+#include "core/output_file.hpp"
+#include "events/static_events.hpp"
+#include "reports/counterexample_dot.hpp"
+#include "reports/embedding_picture.hpp"
+#include "reports/html_page.hpp"
+#include "reports/render.hpp"
+#include "reports/rule_dot.hpp"
+#include "reports/rule_result_text.hpp"
+#include "rewriting/scheme_application.hpp"
+
+namespace dartcheck::reports {
+
+using namespace analysis;
+
+namespace fs = std::filesystem;
+
+Pictures::Pictures(std::string dir, std::string engine) : dir_(std::move(dir)), engine_(std::move(engine)) {}
+
+std::string Pictures::add(const std::string& dot, const std::string& file) {
+  const std::string svg = render(dot, "svg", engine_);
+  const fs::path path = fs::path(dir_) / file;
+  ensure_directory(path.parent_path().string());
+  write_file(path.string(), svg);
+  ++count_;
+  return fmt::format("<div class=\"picture\">{}</div>\n<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n",
+                     inline_svg(svg, fmt::format("p{}_", count_)), html_text(file), html_text(file));
+}
+
+namespace {
+
+const JerboaLabels* labels_of(const CatalogRule& e) { return e.jerboa ? &*e.jerboa : nullptr; }
+
+// The three panels of a counterexample: the match (DPO: L's node names on
+// their darts; schemes: every dart of each hook's pattern P_v, named by its
+// hook's node), the darts H breaks, and the rule.
+std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const Counterexample& cx, const std::string& title) {
+  CounterexamplePicture p;
+  p.title = title;
+  p.host = &cx.host;
+  p.match_tags.assign(cx.host.size(), "");
+  if (!cx.match.empty()) {
+    for (const auto& [node, d] : cx.match)
+      if (d < cx.host.size()) p.match_tags[d] = node;
+    p.match_label = "filled: the match";
+  } else {
+    const auto pattern = pattern_graphs(e.rule.model(), e.words, cx.host, cx.hooks);
+    for (std::size_t k = 0; k < cx.hooks.size(); ++k) {
+      const std::string node = e.rule.left().name(e.rule.hooks()[k]);
+      if (pattern.ok())
+        for (Dart d : pattern.value->darts[k]) p.match_tags[d] = node;
+      p.match_tags[cx.hooks[k]] = node + "*";
+    }
+    p.match_label = pattern.ok() ? "filled: P_v, * the hook" : "filled: the hooks";
+  }
+  if (cx.result) {
+    p.result = &*cx.result;
+    p.broken.assign(cx.result->size(), false);
+    for (const auto& viol : cx.violations)
+      if (viol.element < p.broken.size()) p.broken[viol.element] = true;
+    // Embedded rules: the orbits with two values or an unlabeled dart,
+    // each dart tagged with its value.
+    for (std::size_t d = 0; d < cx.orbit_values.size() && d < p.broken.size(); ++d)
+      if (!cx.orbit_values[d].empty()) p.broken[d] = true;
+    p.result_tags = cx.orbit_values;
+    p.broken_label = fmt::format("filled: breaks {}", fmt::join(cx.broken(), ", "));
+  } else {
+    p.no_result = cx.unrepresentable;
+  }
+  return counterexample_dot(e.rule, e.words, failed_witnesses(v), p, labels_of(e));
+}
+
+// What a counterexample breaks, one sentence per violation (up to 12).
+std::string violations_html(const Counterexample& cx) {
+  std::string out = "<ul class=\"witnesses\">\n";
+  if (!cx.unrepresentable.empty()) out += fmt::format("<li>H has no dense form: {}</li>\n", html_text(cx.unrepresentable));
+  for (std::size_t k = 0; k < cx.violations.size() && k < 12; ++k)
+    out += fmt::format("<li>{}</li>\n", html_text(describe(cx.violations[k], fmt::format("dart {}", cx.violations[k].element))));
+  if (cx.violations.size() > 12) out += fmt::format("<li>... and {} more</li>\n", cx.violations.size() - 12);
+  return out + "</ul>\n";
+}
+
+std::string counterexample_html(const RuleResult& r, const Counterexample& cx, const std::string& heading, const std::string& replay,
+                                Pictures& pictures, const std::string& file) {
+  const auto& e = *r.entry;
+  std::string out = fmt::format("<h3>{}</h3>\n<p>{} Found by {}{}.</p>\n", html_text(heading),
+                                html_text(fmt::format("A valid {} of {} darts; applied at hook{} {}, H breaks {}.", e.rule.model().name, cx.host.size(),
+                                                      cx.hooks.size() == 1 ? "" : "s", fmt::join(cx.hooks, ","), fmt::join(cx.broken(), ", "))),
+                                html_text(cx.origin), cx.minimal ? " (minimal: no smaller host breaks it)" : "");
+  out += pictures.add(counterexample_dot(e, r.verdict, cx, fmt::format("{}: {}", e.rule.name(), heading)), file);
+  out += violations_html(cx);
+  if (!replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(replay));
+  return out;
+}
+
+std::string kind_of(const CatalogRule& e) {
+  if (e.jerboa) return fmt::format("Jerboa-style rule scheme, parameter orbit type {}", orbit_type_str(e.jerboa->parameter));
+  return e.words.scheme ? "(W,D)-rule scheme" : "DPO rule";
+}
+
+std::string fuzz_cell(const FuzzReport& f) {
+  switch (f.verdict) {
+    case FuzzClass::consistent: return fmt::format("<td class=\"ok\">consistent ({} applications)</td>", f.applications);
+    case FuzzClass::confirmed: return fmt::format("<td class=\"fails\">confirmed ({} darts)</td>", f.counterexample->host.size());
+    case FuzzClass::unconfirmed: return "<td class=\"skipped\">unconfirmed</td>";
+    case FuzzClass::soundness_bug: return "<td class=\"bug\">SOUNDNESS BUG</td>";
+  }
+  return "<td></td>";
+}
+
+std::string prove_cell(const proofs::RuleProof& p) {
+  if (!p.out_of_scope.empty()) return "<td class=\"none\">out of scope</td>";
+  using proofs::Agreement;
+  const auto bad = p.count(Agreement::disagree);
+  return fmt::format("<td class=\"{}\">{} agree, {} disagree, {} unresolved, {} not compared</td>", bad ? "bug" : "ok", p.count(Agreement::agree), bad,
+                     p.count(Agreement::unresolved), p.count(Agreement::not_compared));
+}
+
+}  // namespace
+
+std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed, bool proved) {
+  static constexpr std::pair<RuleCondition, const char*> kinds[] = {{RuleCondition::incident_arcs, "I"},
+                                                                     {RuleCondition::dangling, "dangling"},
+                                                                     {RuleCondition::non_orientation, "O"},
+                                                                     {RuleCondition::cycle, "C"},
+                                                                     {RuleCondition::no_loop, "no-loop"}};
+  std::string out = "<table class=\"verdicts\">\n<tr><th>rule</th><th>model</th>";
+  for (const auto& [kind, name] : kinds) out += fmt::format("<th>{}</th>", name);
+  out += "<th>static verdict</th><th>recorded</th>";
+  if (fuzzed) out += "<th>fuzz</th>";
+  if (proved) out += "<th>prove</th>";
+  out += "</tr>\n";
+  for (const auto& r : rows) {
+    const auto& e = *r.entry;
+    const std::string id = html_id(e.rule.name());
+    out += fmt::format("<tr><td><a href=\"#{}\">{}</a></td><td>{}</td>", id, html_text(e.rule.name()), html_text(e.rule.model().name));
+    for (const auto& [kind, name] : kinds) {
+      const std::string text = condition_cell(r.verdict, kind);
+      const std::string cls = text == "ok" ? "ok" : text == "-" ? "none" : text == "skipped" ? "skipped" : "fails";
+      // A failing cell links to the first failing condition of its kind.
+      std::string target;
+      for (const auto& c : r.verdict.conditions)
+        if (c.condition == kind && !c.holds && target.empty()) target = html_id(e.rule.name() + "." + c.name());
+      out += target.empty() ? fmt::format("<td class=\"{}\">{}</td>", cls, html_text(text))
+                            : fmt::format("<td class=\"{}\"><a href=\"#{}\">{}</a></td>", cls, target, html_text(text));
+    }
+    out += fmt::format("<td>{}</td><td class=\"{}\">{}</td>", html_text(r.verdict_text()), r.matches_record() ? "ok" : "fails",
+                       html_text(r.matches_record() ? std::string("matches") : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
+    if (fuzzed) out += r.fuzz ? fuzz_cell(*r.fuzz) : "<td></td>";
+    if (proved) out += r.proof ? prove_cell(*r.proof) : "<td></td>";
+    out += "</tr>\n";
+  }
+  return out + "</table>\n";
+}
+
+namespace {
+
+// The rule's topological events per orbit type (004 Sec. 3), as
+// `dartcheck events` prints them: rule orbits with an event, their
+// completeness and the events with their certainty.
+std::string events_table(const Operation& op) {
+  const auto view = events::event_rule(op);
+  if (!view.rule) return fmt::format("<h3>Topological events (004)</h3>\n<p class=\"note\">Not analysed: {}</p>\n", html_text(view.why));
+  std::string rows;
+  for (const auto& kind : events::all_orbit_kinds(op.rule.model())) {
+    const auto k = events::static_events(*view.rule, kind);
+    for (int side = 0; side < 2; ++side) {
+      const auto& so = side == 0 ? k.left : k.right;
+      for (int o = 0; o < static_cast<int>(so.orbits.size()); ++o) {
+        std::vector<std::string> claims;
+        for (const auto& c : k.claims)
+          if (c.orbit == o && (c.event == events::Event::creation) == (side == 1)) claims.push_back(events::claim_summary(*view.rule, k, c));
+        if (claims.empty()) continue;
+        const auto& ro = so.orbits[static_cast<std::size_t>(o)];
+        rows += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", html_text(kind.str()),
+                            html_text(events::rule_orbit_name(*view.rule, k, side == 0, o)),
+                            html_text(ro.complete ? "complete" : fmt::format("incomplete ({})", fmt::join(ro.missing, "; "))),
+                            html_text(fmt::format("{}", fmt::join(claims, "; "))));
+      }
+    }
+  }
+  return "<h3>Topological events (004)</h3>\n<table>\n<tr><th>orbit type</th><th>rule orbit</th><th>complete</th><th>events</th></tr>\n" + rows +
+         "</table>\n";
+}
+
+}  // namespace
+
+std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
+  const auto& e = *r.entry;
+  const std::string name = e.rule.name(), stem = file_stem(name);
+  std::string out = fmt::format("<h2 id=\"{}\">{}</h2>\n<p>{} on {}; {}:{}. L has {} nodes, R has {}.</p>\n", html_id(name), html_text(name),
+                                html_text(kind_of(e)), html_text(e.rule.model().name), html_text(e.location.file), e.location.line,
+                                e.rule.left().node_count(), e.rule.right().node_count());
+  if (!e.note.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_text(e.note));
+  out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(r.verdict_text()), html_text(r.recorded_text()),
+                     r.matches_record() ? "" : " <span class=\"mismatch\">(MISMATCH)</span>");
+  auto embedded = embedding_picture(e, r.embedding);
+  auto witnesses = failed_witnesses(r.verdict);
+  witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
+  out += pictures.add(rule_dot(e.rule, e.words, witnesses, labels_of(e), embedded.terms), "rules/" + stem + ".svg");
+
+  // Every failing condition with its witnesses; skipped ones with the reason.
+  std::string failing;
+  for (const auto& c : r.verdict.conditions) {
+    if (c.holds && c.skipped.empty()) continue;
+    failing += fmt::format("<li id=\"{}\"><b>{}</b> {}", html_id(name + "." + c.name()), html_text(c.name()),
+                           c.holds ? "skipped: " + html_text(c.skipped) : "fails");
+    if (!c.witnesses.empty()) {
+      failing += "\n<ul class=\"witnesses\">\n";
+      for (const auto& w : c.witnesses)
+        failing += fmt::format("<li>{}in {}: {}</li>\n", w.subcondition ? fmt::format("sub-condition {} ", w.subcondition) : "", w.side,
+                               html_text(w.text));
+      failing += "</ul>\n";
+    }
+    failing += "</li>\n";
+  }
+  for (const auto& c : r.embedding) {
+    if (c.holds) continue;
+    failing += fmt::format("<li id=\"{}\"><b>{}</b> fails{} ({}: sufficient, not necessary)\n<ul class=\"witnesses\">\n",
+                           html_id(name + "." + c.name), html_text(c.name), c.required ? "" : " (not required)", c.source);
+    for (const auto& w : c.witnesses) failing += fmt::format("<li>{}</li>\n", html_text(w.text));
+    failing += "</ul></li>\n";
+  }
+  if (!failing.empty()) out += "<h3>Conditions that fail</h3>\n<ul>\n" + failing + "</ul>\n";
+  if (!e.expressions.empty()) {
+    out += "<h3>Embedding expressions (opaque)</h3>\n<ul>\n";
+    for (const auto& x : e.expressions) out += fmt::format("<li>{}.{}: <code>{}</code></li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code));
+    out += "</ul>\n";
+  }
+  for (const auto& caveat : e.caveats) out += fmt::format("<p class=\"note\">Not represented: {}</p>\n", html_text(caveat));
+  out += events_table(e);
+
+  if (r.fuzz) {
+    const auto& f = *r.fuzz;
+    out += fmt::format("<h3>Fuzz</h3>\n<p>{}</p>\n", html_text(outcome_text(f)));
+    if (!f.refusals.empty()) {
+      std::vector<std::string> refused;
+      for (const auto& [why, n] : f.refusals) refused.push_back(fmt::format("{} {}", n, why));
+      out += fmt::format("<p class=\"note\">Refused matches: {}.</p>\n", html_text(fmt::format("{}", fmt::join(refused, ", "))));
+    }
+    if (f.counterexample)
+      out += counterexample_html(r, *f.counterexample, "Fuzz counterexample", r.fuzz_replay, pictures, "counterexamples/" + stem + ".fuzz.svg");
+  }
+  if (r.proof) {
+    const auto& p = *r.proof;
+    out += "<h3>Prove (Z3)</h3>\n";
+    if (!p.out_of_scope.empty()) {
+      out += fmt::format("<p>Out of the solver's scope: {}</p>\n", html_text(p.out_of_scope));
+    } else {
+      out += "<table>\n<tr><th>constraint</th><th>static</th><th>theorem class</th><th>maps of the model</th><th>agreement</th><th>note</th></tr>\n";
+      for (const auto& c : p.constraints)
+        out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_text(c.constraint.name()),
+                           c.static_holds ? (*c.static_holds ? "holds" : "fails") : "-",
+                           html_text(c.theorem ? answer_text(*c.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)"),
+                           html_text(answer_text(c.model)), c.agreement == proofs::Agreement::disagree ? "bug" : "none",
+                           proofs::agreement_name(c.agreement), html_text(c.note));
+      out += "</table>\n";
+      for (std::size_t k = 0; k < p.constraints.size(); ++k)
+        if (r.proof_maps[k])
+          out += counterexample_html(r, *r.proof_maps[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
+                                     r.proof_replays[k], pictures,
+                                     "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
+    }
+  }
+  return out;
+}
+
+}  // namespace dartcheck::reports
