@@ -1,4 +1,6 @@
 #include "analysis/embedded_fuzz.hpp"
+
+#include "rewriting/application.hpp"
 #include "analysis/interrupt.hpp"
 
 #include <random>
@@ -8,6 +10,7 @@
 #include "checkers/embedding_conditions.hpp"
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
+#include "rewriting/application.hpp"
 #include "rewriting/embedded_application.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/term_eval.hpp"
@@ -23,15 +26,8 @@ using Clock = std::chrono::steady_clock;
 // The darts L's nodes match at `hooks` (first pattern copy for schemes),
 // or nothing when L does not match there.
 std::vector<std::vector<Dart>> match_darts(const Operation& entry, const Map& g, std::span<const Dart> hooks) {
-  if (entry.words.scheme) {
-    auto m = match_scheme(entry.rule, entry.words, g, hooks);
-    return m.ok() ? m.value->node : std::vector<std::vector<Dart>>{};
-  }
-  auto m = match_from_hooks(entry.rule, g, hooks);
-  std::vector<std::vector<Dart>> r;
-  if (m.ok())
-    for (Dart d : m.value->node) r.push_back({d});
-  return r;
+  auto m = Applier(entry).match(g, hooks);
+  return m.ok() ? std::move(*m.value) : std::vector<std::vector<Dart>>{};
 }
 
 // Gives the host orbits of L's matched darts the values of L's terms

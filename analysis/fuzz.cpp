@@ -13,7 +13,7 @@
 #include "checkers/host_search.hpp"
 #include "checkers/map_validity.hpp"
 #include "rewriting/derivation.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 #include "generators/random_maps.hpp"
 
 namespace dartcheck::analysis {
@@ -98,22 +98,19 @@ std::size_t darts_per_face(const Model& m) { return m.is_generalized() || m.dime
 }  // namespace
 
 std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
-                                              Refusal& refusal, SchemeRewriter* rewriter) {
+                                              Refusal& refusal, Applier* applier) {
   const Rule& rule = entry.rule;
   scratch = g;
-  std::string why;
+  std::optional<Applier> own;
+  if (!applier) applier = &own.emplace(entry);
+  auto r = applier->apply(scratch, hooks);
+  refusal = r.refusal;
+  std::string why = std::move(r.why);
   std::vector<std::pair<std::string, Dart>> match;
-  if (entry.words.scheme) {
-    auto r = rewriter ? rewriter->apply(scratch, hooks) : apply_scheme(rule, entry.words, scratch, hooks);
-    if (rewriter && r.ok()) rewriter->recycle(std::move(*r.value));
-    refusal = r.refusal;
-    why = std::move(r.why);
-  } else {
-    auto r = apply_rule(rule, scratch, hooks);
-    refusal = r.refusal;
-    why = std::move(r.why);
-    if (r.ok())
-      for (NodeId v = 0; v < rule.left().node_count(); ++v) match.emplace_back(rule.left().name(v), r.value->match.node[v]);
+  if (r.ok()) {
+    if (!r.value->pattern)  // a DPO rule: L's nodes on their darts
+      for (NodeId v = 0; v < rule.left().node_count(); ++v) match.emplace_back(rule.left().name(v), r.value->match[v][0]);
+    applier->recycle(std::move(*r.value));
   }
   if (refusal != Refusal::none && refusal != Refusal::not_representable) return std::nullopt;
   Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}, {}, {}};
@@ -164,7 +161,7 @@ class Fuzzer {
   std::mt19937 rng_;
   Clock::time_point start_;
   Map scratch_{Model::gmap(2)};
-  SchemeRewriter scheme_{entry_.rule, entry_.words};
+  Applier applier_{entry_};  // a scheme's tables stay from one application to the next
   // A consistent rule's static events, checked on its first applications.
   EventOracle events_;
   std::size_t attempts_ = 0, next_progress_ = 4096;
@@ -202,7 +199,7 @@ class Fuzzer {
       o_.progress({&rule_.name(), out_.applications, out_.hosts, std::chrono::duration<double>(Clock::now() - start_).count()});
     }
     Refusal refusal = Refusal::none;
-    auto cx = apply_and_check(entry_, g, hooks, scratch_, refusal, entry_.words.scheme ? &scheme_ : nullptr);
+    auto cx = apply_and_check(entry_, g, hooks, scratch_, refusal, &applier_);
     if (refusal == Refusal::not_representable) ++out_.refusals["not-representable"];
     else if (refusal != Refusal::none) ++out_.refusals[std::string(refusal_name(refusal))];
     else ++out_.applications;

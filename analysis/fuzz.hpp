@@ -26,7 +26,7 @@
 
 #include "checkers/rule_conditions.hpp"
 #include "checkers/violation.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 #include "rewriting/operation.hpp"
 #include "rewriting/match.hpp"
 
@@ -126,11 +126,11 @@ std::string outcome_text(const FuzzReport& r);
 /// One application on a copy of g (into `scratch`), checked with
 /// check_map: the counterexample if H is invalid or has no dense form,
 /// nullopt if H is valid or the rule does not apply (`refusal` says why;
-/// not_representable comes with a counterexample). A scheme is applied
-/// by `rewriter` when given (a SchemeRewriter of entry's rule, kept across
-/// calls so its tables are reused), else by a fresh one.
+/// not_representable comes with a counterexample). `applier` (an Applier
+/// of entry, kept across calls so a scheme's tables are reused) applies it
+/// when given, else a fresh one.
 std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
-                                              Refusal& refusal, SchemeRewriter* rewriter = nullptr);
+                                              Refusal& refusal, Applier* applier = nullptr);
 
 /// A stable per-rule random stream: the same rule gets the same hosts
 /// whether it is fuzzed alone (--rule) or with its whole catalog.

@@ -1,5 +1,7 @@
-#include <fmt/format.h>
 #include <sstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <random>
 
@@ -14,13 +16,11 @@
 #include "cli/report_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/derivation.hpp"
-#include "rewriting/scheme_application.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "io/map_io.hpp"
 #include "io/jerboa_jba.hpp"
-#include "events/application_trace.hpp"
+#include "rewriting/application.hpp"
 
 namespace dartcheck::cli {
 
@@ -97,13 +97,13 @@ int apply_to_jba(const ApplyOptions& o, const CatalogRule& rule, Map map) {
   JbaFile in{"dartcheck", Map(rule.rule.model()), {}, {}};
   if (o.map.ends_with(".jba")) in = read_jba(o.map);
   const Map before = map;
-  auto traced = events::apply_traced(rule, map, o.hooks);
+  auto traced = dartcheck::apply(rule, map, o.hooks);
   if (!traced.ok()) {
     fmt::print("not applied ({}): {}\n", refusal_name(traced.refusal), traced.why);
     return violation;
   }
   fmt::print("applied: {} -> {} darts\n", before.size(), map.size());
-  const events::Correspondence c(rule.rule, *traced.value);
+  const Renumbering c = traced.value->renumbering(rule.rule, map.size());
   JbaFile out{in.name, map, {}, {}};
   for (const auto& e : in.embeddings) {
     MapEmbedding carried{e.name, e.type, e.orbit, std::vector<std::optional<std::string>>(map.size()), {}};
@@ -153,27 +153,22 @@ int apply(const ApplyOptions& o) {
                      fmt::format("-o: '{}': a mesh needs positions, and rule '{}' computes none: apply an embedded rule with a point embedding, "
                                  "or write .yaml",
                                  o.output, o.rule));
-  if (rule->words.scheme) {
-    // A rule scheme: instantiated on the pattern graph of the hook dart.
-    auto result = apply_scheme(rule->rule, rule->words, map, o.hooks);
-    if (!result.ok()) {
-      fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
-      return violation;
-    }
-    fmt::print("applied scheme: pattern graph of {} darts, {} darts matched, {} added; result has {} darts\n",
-               result.value->pattern_nodes, result.value->matched_darts, result.value->added_darts, map.size());
-  } else {
-    auto result = apply_rule(rule->rule, map, o.hooks);
-    if (!result.ok()) {
-      fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
-      return violation;
-    }
-    const Derivation& d = *result.value;
-    std::string comatch;
-    for (NodeId v = 0; v < rule->rule.right().node_count(); ++v)
-      comatch += fmt::format("{}{}={}", v ? " " : "", rule->rule.right().name(v), d.comatch[v]);
-    fmt::print("applied: result has {} darts; comatch {}\n", map.size(), comatch);
+  // A DPO rule matched from the hooks, or a scheme instantiated on the
+  // hooks' pattern graph (002 Sec. 6.3).
+  auto result = dartcheck::apply(*rule, map, o.hooks);
+  if (!result.ok()) {
+    fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
+    return violation;
   }
+  const Application& a = *result.value;
+  std::string comatch;
+  for (NodeId v = 0; v < rule->rule.right().node_count(); ++v)
+    comatch += fmt::format("{}{}={}", v ? " " : "", rule->rule.right().name(v), fmt::join(a.comatch[v], ","));
+  if (a.pattern)
+    fmt::print("applied scheme: pattern graph of {} darts; result has {} darts; comatch {}\n", a.match.empty() ? 0 : a.match[0].size(), map.size(),
+               comatch);
+  else
+    fmt::print("applied: result has {} darts; comatch {}\n", map.size(), comatch);
   const auto report = check_map(map);
   print_validity(stdout, map, report, o.limit);
   if (!o.output.empty()) {

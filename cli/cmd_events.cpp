@@ -32,9 +32,9 @@ std::vector<OrbitKind> requested_kinds(const std::vector<std::string>& texts, co
   return out;
 }
 
-struct Application {
+struct AppliedMaps {
   Map before, after;
-  ApplicationTrace trace;
+  dartcheck::Application trace;
 };
 
 struct KindResult {
@@ -154,7 +154,7 @@ int events_command(const EventsOptions& o) {
       continue;
     }
     ++analysed;
-    std::optional<Application> app;
+    std::optional<AppliedMaps> app;
     std::string where;
     if (!o.map.empty()) {
       Map g = resolve_map(o.map, rule.rule.model(), &catalog);
@@ -162,14 +162,14 @@ int events_command(const EventsOptions& o) {
         throw InputError("<command line>", 0, 0, fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule,
                                                              rule.rule.model().name));
       Map h = g;
-      auto traced = apply_traced(rule, h, o.hooks);
+      auto traced = dartcheck::apply(rule, h, o.hooks);
       if (!traced.ok()) {
         fmt::print("rule {} does not apply at hook(s) {} of {} ({}): {}\n", rule.rule.name(), fmt::join(o.hooks, ","),
                    describe_target(o.map, g), refusal_name(traced.refusal), traced.why);
         return violation;
       }
       where = fmt::format("hook {} of {} -> {} darts", fmt::join(o.hooks, ","), describe_target(o.map, g), h.size());
-      app.emplace(Application{std::move(g), std::move(h), std::move(*traced.value)});
+      app.emplace(AppliedMaps{std::move(g), std::move(h), std::move(*traced.value)});
     }
     std::vector<KindResult> results;
     for (const OrbitKind& kind : kinds) {

@@ -4,6 +4,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
+#include "rewriting/application.hpp"
 #include "analysis/map_sources.hpp"
 #include "io/catalog.hpp"
 #include "rewriting/derivation.hpp"
@@ -37,17 +38,9 @@ int run(const RunOptions& o) {
       Map host = built[index];
       // A scheme is instantiated at the hook (002 Sec. 6.3), a DPO rule
       // matched from it.
-      Refusal refusal = Refusal::none;
-      std::string why;
-      if (r.words.scheme) {
-        auto result = apply_scheme(r.rule, r.words, host, e.hooks);
-        refusal = result.refusal;
-        why = result.why;
-      } else {
-        auto result = apply_rule(r.rule, host, e.hooks);
-        refusal = result.refusal;
-        why = result.why;
-      }
+      const auto result = dartcheck::apply(r, host, e.hooks);
+      const Refusal refusal = result.refusal;
+      const std::string& why = result.why;
       std::string got, detail;
       if (refusal != Refusal::none) {
         got = std::string(refusal_name(refusal));

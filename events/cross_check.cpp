@@ -26,7 +26,7 @@ bool involves(const LoggedEvent& e, bool before, Dart rep) {
 
 }  // namespace
 
-CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const ApplicationTrace& t,
+CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t,
                        const EventLog& dynamic, const EventLog& instantiated) {
   CrossCheck out;
   const std::string o = k.kind.str();
@@ -38,7 +38,7 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
       if (!a.count(e)) out.contradictions.push_back(fmt::format("{}: the instantiation finds '{}', dynamic detection does not", o, event_line(k.kind, e)));
   }
   const Rule& rule = *r.rule;
-  const Correspondence c(rule, t);
+  const Renumbering c = t.renumbering(rule, h.size());
   const std::vector<Dart> grep = representatives(g, k.kind), hrep = representatives(h, k.kind);
   // The G orbits each left rule orbit touches, and the H orbits of each right one.
   std::vector<std::set<Dart>> touched_g(k.left.orbits.size()), touched_h(k.right.orbits.size());

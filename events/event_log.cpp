@@ -8,7 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "core/orbit.hpp"
-#include "events/dart_index.hpp"
+#include "core/dart_index.hpp"
 
 namespace dartcheck::events {
 namespace {
@@ -206,8 +206,8 @@ void side_instance(const Map& m, const EventRule& r, const EventSide& side, cons
 
 }  // namespace
 
-EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const ApplicationTrace& t, const OrbitKind& kind) {
-  const Correspondence c(rule, t);
+EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const Application& t, const OrbitKind& kind) {
+  const Renumbering c = t.renumbering(rule, h.size());
   std::vector<Dart> g2h(g.size()), h2g(h.size());
   for (Dart d = 0; d < g.size(); ++d) g2h[d] = c.to_h(d);
   for (Dart d = 0; d < h.size(); ++d) h2g[d] = c.to_g(d);
@@ -221,12 +221,15 @@ EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const Applica
                     [&](Dart d) { return g_of[d]; }, [&](Dart d) { return matched[d] != 0; }, true)};
 }
 
-EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const KindEvents& k, const ApplicationTrace& t) {
-  const Correspondence c(*r.rule, t);
+EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const KindEvents& k, const Application& t) {
+  const Renumbering c = t.renumbering(*r.rule, h.size());
   Orbits go, ho;
   std::size_t matched = 0, comatched = 0;
   for (const auto& d : t.match) matched += d.size();
   for (const auto& d : t.comatch) comatched += d.size();
+  DartIndex is_matched(matched, g.size());
+  for (const auto& darts : t.match)
+    for (Dart d : darts) is_matched.set(d, 1);
   DartIndex g_of(matched, g.size()), h_of(comatched, h.size());
   side_instance(g, r, r.left, k.left, k.kind, t.match, t.pattern, go, g_of);
   side_instance(h, r, r.right, k.right, k.kind, t.comatch, t.pattern, ho, h_of);
@@ -240,7 +243,7 @@ EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const 
   return {k.kind, derive(
                       g, h, k.kind, go, ho, [&](Dart d) { return c.to_h(d); }, [&](Dart d) { return c.to_g(d); },
                       [&](Dart d) { return lookup(h_of, d); }, [&](Dart d) { return lookup(g_of, d); },
-                      [&](Dart d) { return c.matched(d); }, true)};
+                      [&](Dart d) { return is_matched.get(d) != DartIndex::none; }, true)};
 }
 
 std::string event_line(const OrbitKind& kind, const LoggedEvent& e) {

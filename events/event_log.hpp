@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "core/map.hpp"
-#include "events/application_trace.hpp"
+#include "rewriting/application.hpp"
 #include "events/static_events.hpp"
 
 namespace dartcheck::events {
@@ -39,13 +39,13 @@ struct EventLog {
 /// The oracle: every orbit of G and H labeled. Orbits of G without a
 /// matched dart that are unchanged are left out (there are as many as the
 /// map has orbits); any other event on them stays in.
-EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const ApplicationTrace& t, const OrbitKind& kind);
+EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const Application& t, const OrbitKind& kind);
 
 /// The static approach: orbits from the rule's orbits instantiated on the
 /// pattern (`k` from static_events), traversal only for incomplete ones.
 /// `g` is the map before the application; only matched darts and the
 /// orbits of incomplete rule orbits are read.
-EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const KindEvents& k, const ApplicationTrace& t);
+EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const KindEvents& k, const Application& t);
 
 /// "split G<1>(4) -> {H<1>(4), H<1>(17)}" (Table 1's notation).
 std::string event_line(const OrbitKind& kind, const LoggedEvent& e);

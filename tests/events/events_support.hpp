@@ -25,7 +25,7 @@ inline Map catalog_map(const std::string& name) { return analysis::build_source(
 /// One application G => H and what detection says about it.
 struct Applied {
   Map before, after;
-  ApplicationTrace trace;
+  Application trace;
   EventRule rule;
   std::map<std::string, KindEvents> statics;   // by orbit type text
   std::map<std::string, EventLog> dynamic, instantiated;
@@ -47,7 +47,7 @@ inline Applied apply_with_events(const Operation& op, Map g, std::vector<Dart> h
   auto view = event_rule(op);
   if (!view.rule) throw std::runtime_error(view.why);
   Map h = g;
-  auto traced = apply_traced(op, h, hooks);
+  auto traced = dartcheck::apply(op, h, hooks);
   if (!traced.ok()) throw std::runtime_error(traced.why);
   Applied a{std::move(g), std::move(h), std::move(*traced.value), std::move(*view.rule), {}, {}, {}, {}};
   a.rule.rule = &op.rule;

@@ -66,7 +66,7 @@ std::size_t check_on(const Subject& s, const Map& g) {
   }
   for (const auto& hooks : hook_sets) {
     Map h = g;
-    auto traced = apply_traced(*s.op, h, hooks);
+    auto traced = dartcheck::apply(*s.op, h, hooks);
     if (!traced.ok()) continue;
     ++applied;
     for (const OrbitKind& kind : s.kinds) {

@@ -10,7 +10,7 @@
 
 #include "core/map.hpp"
 
-namespace dartcheck::events {
+namespace dartcheck {
 
 class DartIndex {
  public:
@@ -21,6 +21,13 @@ class DartIndex {
     else sparse_.reserve(expected);
   }
   std::uint32_t get(Dart d) const { return d < dense_.size() ? dense_[d] : lookup(d); }
+  /// Calls f(dart, value) for every dart set (dense: in dart order).
+  template <class F>
+  void for_each(F&& f) const {
+    for (std::size_t d = 0; d < dense_.size(); ++d)
+      if (dense_[d] != none) f(static_cast<Dart>(d), dense_[d]);
+    for (const auto& [d, v] : sparse_) f(d, v);
+  }
   void set(Dart d, std::uint32_t v) {
     if (d < dense_.size()) {
       dense_[d] = v;
@@ -47,4 +54,4 @@ class DartIndex {
   std::unordered_map<Dart, std::uint32_t> sparse_;
 };
 
-}  // namespace dartcheck::events
+}  // namespace dartcheck
