@@ -26,12 +26,11 @@ std::string replay_command(const std::string& catalog, const std::string& rule, 
   return cmd;
 }
 
-
 }  // namespace
 
 std::string write_counterexample(const std::string& dir, const std::string& stem_name, const std::string& catalog, const std::string& rule,
-                                 const std::vector<std::pair<std::string, std::string>>& fields,
-                                 const std::vector<std::string>& static_failures, const Counterexample& cx) {
+                                 const std::vector<std::pair<std::string, std::string>>& fields, const std::vector<std::string>& static_failures,
+                                 const Counterexample& cx) {
   ensure_directory(dir);
   const std::string stem = (std::filesystem::path(dir) / stem_name).string();
   write_file(stem + ".host.yaml", map_to_yaml(cx.host));

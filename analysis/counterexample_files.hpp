@@ -20,7 +20,7 @@ std::string file_stem(const std::string& name);
 /// counterexample file (seed, class, constraint...). Returns the replay
 /// command.
 std::string write_counterexample(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule,
-                                 const std::vector<std::pair<std::string, std::string>>& fields,
-                                 const std::vector<std::string>& static_failures, const Counterexample& cx);
+                                 const std::vector<std::pair<std::string, std::string>>& fields, const std::vector<std::string>& static_failures,
+                                 const Counterexample& cx);
 
 }  // namespace dartcheck::analysis

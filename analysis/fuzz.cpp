@@ -20,10 +20,14 @@ namespace dartcheck::analysis {
 
 std::string_view fuzz_class_name(FuzzClass c) {
   switch (c) {
-    case FuzzClass::consistent: return "consistent";
-    case FuzzClass::confirmed: return "inconsistent, confirmed";
-    case FuzzClass::unconfirmed: return "inconsistent statically, unconfirmed";
-    case FuzzClass::soundness_bug: return "SOUNDNESS BUG";
+    case FuzzClass::consistent:
+      return "consistent";
+    case FuzzClass::confirmed:
+      return "inconsistent, confirmed";
+    case FuzzClass::unconfirmed:
+      return "inconsistent statically, unconfirmed";
+    case FuzzClass::soundness_bug:
+      return "SOUNDNESS BUG";
   }
   return "?";
 }
@@ -97,8 +101,8 @@ std::size_t darts_per_face(const Model& m) { return m.is_generalized() || m.dime
 
 }  // namespace
 
-std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
-                                              Refusal& refusal, Applier* applier) {
+std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch, Refusal& refusal,
+                                              Applier* applier) {
   const Rule& rule = entry.rule;
   scratch = g;
   std::optional<Applier> own;
@@ -130,7 +134,12 @@ namespace {
 class Fuzzer {
  public:
   Fuzzer(const Operation& entry, const FuzzOptions& o, FuzzReport& out)
-      : entry_(entry), rule_(entry.rule), o_(o), out_(out), rng_(static_cast<std::uint32_t>(rule_seed(o.seed, entry.rule.name()) % 4294967291U)), start_(Clock::now()),
+      : entry_(entry),
+        rule_(entry.rule),
+        o_(o),
+        out_(out),
+        rng_(static_cast<std::uint32_t>(rule_seed(o.seed, entry.rule.name()) % 4294967291U)),
+        start_(Clock::now()),
         events_(entry) {}
 
   // Where random maps exist the enumeration takes at most half of the
@@ -200,9 +209,12 @@ class Fuzzer {
     }
     Refusal refusal = Refusal::none;
     auto cx = apply_and_check(entry_, g, hooks, scratch_, refusal, &applier_);
-    if (refusal == Refusal::not_representable) ++out_.refusals["not-representable"];
-    else if (refusal != Refusal::none) ++out_.refusals[std::string(refusal_name(refusal))];
-    else ++out_.applications;
+    if (refusal == Refusal::not_representable)
+      ++out_.refusals["not-representable"];
+    else if (refusal != Refusal::none)
+      ++out_.refusals[std::string(refusal_name(refusal))];
+    else
+      ++out_.applications;
     if (!cx && refusal == Refusal::none && out_.static_failures.empty() && events_.active() && out_.event_checks < o_.event_checks) {
       ++out_.event_checks;
       Map h{rule_.model()};
@@ -393,7 +405,8 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
   std::vector<std::string> refused;
   for (const auto& [why, count] : out.refusals) refused.push_back(fmt::format("{} {}", count, why));
   if (out.applications == 0)
-    out.reason = fmt::format("never applied: every attempt was refused ({})", refused.empty() ? "L matched no host" : fmt::format("{}", fmt::join(refused, ", ")));
+    out.reason = fmt::format("never applied: every attempt was refused ({})",
+                             refused.empty() ? "L matched no host" : fmt::format("{}", fmt::join(refused, ", ")));
   else
     out.reason = fmt::format("no failure in {} applications on {} maps of up to {} darts", out.applications, out.hosts, out.largest_host);
   if (out.exhaustive_darts)
@@ -410,7 +423,8 @@ std::string outcome_text(const FuzzReport& r) {
       return r.reason.empty() ? fmt::format("consistent (checked {} applications on {} maps of up to {} darts{})", r.applications, r.hosts,
                                             r.largest_host, r.event_checks ? fmt::format("; events of {} cross-checked", r.event_checks) : "")
                               : fmt::format("consistent; {}", r.reason);
-    case FuzzClass::unconfirmed: return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
+    case FuzzClass::unconfirmed:
+      return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
     case FuzzClass::confirmed:
     case FuzzClass::soundness_bug: {
       const auto& cx = *r.counterexample;
@@ -434,8 +448,8 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
     if (seconds) {
       // An equal share of what is left for each remaining rule.
       const double left = *seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      o.deadline = std::chrono::steady_clock::now() +
-                   std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(std::max(0.0, left) / double(rules.size() - k)));
+      o.deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                          std::chrono::duration<double>(std::max(0.0, left) / double(rules.size() - k)));
     }
     if (progress)
       o.progress = [&, k](const FuzzProgress& p) {
@@ -451,7 +465,8 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
     const auto& r = reports.back();
     // Without a terminal (CI logs), a line per finished rule instead.
     if (!progress)
-      fmt::print(stderr, "[{}/{}] {}: {}, {} applications, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict), r.applications, r.seconds);
+      fmt::print(stderr, "[{}/{}] {}: {}, {} applications, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict), r.applications,
+                 r.seconds);
     if (finished) finished(k, r);
   }
   if (progress) fmt::print(stderr, "\r\033[K");

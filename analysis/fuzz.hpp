@@ -70,13 +70,13 @@ struct FuzzReport {
   std::string rule;
   std::vector<std::string> static_failures;
   FuzzClass verdict = FuzzClass::consistent;
-  std::string reason;  // why no failure was found (unconfirmed, or consistent but never applied)
-  std::size_t applications = 0;  // derivations that took place and were checked
-  std::size_t hosts = 0;         // host maps tried
-  std::size_t largest_host = 0;  // darts
-  std::size_t exhaustive_darts = 0;  // every host of up to this many darts was tried (0: none completely)
+  std::string reason;                           // why no failure was found (unconfirmed, or consistent but never applied)
+  std::size_t applications = 0;                 // derivations that took place and were checked
+  std::size_t hosts = 0;                        // host maps tried
+  std::size_t largest_host = 0;                 // darts
+  std::size_t exhaustive_darts = 0;             // every host of up to this many darts was tried (0: none completely)
   std::map<std::string, std::size_t> refusals;  // refusal name -> count (no-match, dangling, ...)
-  std::size_t event_checks = 0;  // applications whose event logs were cross-checked
+  std::size_t event_checks = 0;                 // applications whose event logs were cross-checked
   bool out_of_time = false;
   double seconds = 0;
   std::optional<Counterexample> counterexample;
@@ -92,8 +92,8 @@ struct FuzzOptions {
   std::uint64_t seed = 1;
   std::size_t runs = 10'000;  // applications per rule; the search stops at this count
   std::optional<std::chrono::steady_clock::time_point> deadline;
-  std::size_t max_darts = 128;             // largest random host
-  std::size_t exhaustive_hosts = 20'000;   // phase 1 budget for the models with a random generator
+  std::size_t max_darts = 128;            // largest random host
+  std::size_t exhaustive_hosts = 20'000;  // phase 1 budget for the models with a random generator
   /// Applications per consistent rule whose event logs are cross-checked
   /// against its static events (004; 0: none). Each costs a traversal of
   /// both maps per orbit type, so only the first ones are checked.
@@ -129,8 +129,8 @@ std::string outcome_text(const FuzzReport& r);
 /// not_representable comes with a counterexample). `applier` (an Applier
 /// of entry, kept across calls so a scheme's tables are reused) applies it
 /// when given, else a fresh one.
-std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch,
-                                              Refusal& refusal, Applier* applier = nullptr);
+std::optional<Counterexample> apply_and_check(const Operation& entry, const Map& g, std::span<const Dart> hooks, Map& scratch, Refusal& refusal,
+                                              Applier* applier = nullptr);
 
 /// A stable per-rule random stream: the same rule gets the same hosts
 /// whether it is fuzzed alone (--rule) or with its whole catalog.

@@ -34,11 +34,12 @@ Map resolve_map(const std::string& target, const Model& model, const Catalog* ca
   try {
     return build_shape(model, parse_shape(target));
   } catch (const BuildError& e) {
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("'{}' is not a catalog map, a map file or a shape: {}", target, e.what()));
+    throw InputError("<command line>", 0, 0, fmt::format("'{}' is not a catalog map, a map file or a shape: {}", target, e.what()));
   }
 }
 
-std::string describe_target(const std::string& target, const Map& map) { return fmt::format("{} ({}, {} darts)", target, map.model().name, map.size()); }
+std::string describe_target(const std::string& target, const Map& map) {
+  return fmt::format("{} ({}, {} darts)", target, map.model().name, map.size());
+}
 
 }  // namespace dartcheck::analysis

@@ -19,8 +19,7 @@ std::optional<Counterexample> replay_solver_map(const Operation& entry, proofs::
                          refusal == Refusal::none ? "H is valid" : std::string(refusal_name(refusal)));
     return std::nullopt;
   }
-  cx->origin = fmt::format("dartcheck prove: a valid {} of {} darts whose H breaks {}", entry.rule.model().name, host.size(),
-                           c.constraint.name());
+  cx->origin = fmt::format("dartcheck prove: a valid {} of {} darts whose H breaks {}", entry.rule.model().name, host.size(), c.constraint.name());
   cx->minimal = c.model.minimal;
   return cx;
 }
@@ -34,7 +33,8 @@ std::string constraint_stem(const proofs::ConstraintProof& c) {
 
 std::string answer_text(const proofs::ClassAnswer& a) {
   switch (a.status) {
-    case proofs::Status::counterexample: return fmt::format("counterexample at {} darts{}", a.darts, a.minimal ? " (minimal)" : "");
+    case proofs::Status::counterexample:
+      return fmt::format("counterexample at {} darts{}", a.darts, a.minimal ? " (minimal)" : "");
     case proofs::Status::none: {
       // An unsat core holding "holds I(d)" means no H satisfying I(d)
       // breaks the constraint (those that break I(d) are counted there).
@@ -42,11 +42,12 @@ std::string answer_text(const proofs::ClassAnswer& a) {
       for (const auto& c : a.core)
         if (c.starts_with("holds ")) premises.push_back(c.substr(6));
       const std::string among = premises.empty() ? "" : fmt::format(" with {}", fmt::join(premises, ", "));
-      return a.proved_for_all() ? fmt::format("none{}, all hosts (bound {})", among, a.bound)
-                                : fmt::format("none{} up to {} darts", among, a.darts);
+      return a.proved_for_all() ? fmt::format("none{}, all hosts (bound {})", among, a.bound) : fmt::format("none{} up to {} darts", among, a.darts);
     }
-    case proofs::Status::unknown: return fmt::format("unknown ({})", a.why);
-    case proofs::Status::vacuous: return "vacuous";
+    case proofs::Status::unknown:
+      return fmt::format("unknown ({})", a.why);
+    case proofs::Status::vacuous:
+      return "vacuous";
   }
   return "";
 }

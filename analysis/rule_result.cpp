@@ -66,8 +66,9 @@ std::string RuleResult::confirmation_text() const {
     const auto& f = *scheme_search;
     if (f.counterexample) {
       const auto& cx = *f.counterexample;
-      return fmt::format("{}confirmed: applied at dart{} {} of a {}-dart {}, it breaks ({})", unsound() ? "SOUNDNESS BUG: judged consistent, yet " : "",
-                         cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), model, fmt::join(cx.broken(), ", "));
+      return fmt::format("{}confirmed: applied at dart{} {} of a {}-dart {}, it breaks ({})",
+                         unsound() ? "SOUNDNESS BUG: judged consistent, yet " : "", cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","),
+                         cx.host.size(), model, fmt::join(cx.broken(), ", "));
     }
     if (f.applications == 0) return fmt::format("never applicable on {} {} maps of up to {} darts", f.hosts, model, f.largest_host);
     return fmt::format("no model-level counterexample in {} applications on {} {} maps of up to {} darts", f.applications, f.hosts, model,
@@ -150,11 +151,12 @@ void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::st
   for (auto& c : proof.constraints) {
     // The third opinion on a map counterexample: the library's derivation.
     maps.push_back(replay_solver_map(e, c));
-    replays.push_back(maps.back() && !out_dir.empty()
-                          ? write_counterexample(out_dir, file_stem(e.rule.name()) + suffix + "." + constraint_stem(c), catalog_file, e.rule.name(),
-                                                 {{"constraint", c.constraint.name()}, {"class", "counterexample on a map of the model (dartcheck prove)"}},
-                                                 proof.static_failures, *maps.back())
-                          : std::string());
+    replays.push_back(
+        maps.back() && !out_dir.empty()
+            ? write_counterexample(out_dir, file_stem(e.rule.name()) + suffix + "." + constraint_stem(c), catalog_file, e.rule.name(),
+                                   {{"constraint", c.constraint.name()}, {"class", "counterexample on a map of the model (dartcheck prove)"}},
+                                   proof.static_failures, *maps.back())
+            : std::string());
   }
   add_proof(r, std::move(proof), std::move(replays), std::move(maps));
 }
@@ -164,9 +166,10 @@ void compare_with_record(RuleResult& r) {
   r.mismatches.clear();
   const std::string_view source = r.record_source_name();
   if (!matches_record(e, r.verdict, r.embedding))
-    r.mismatches.push_back(e.expected_failures ? fmt::format("the static verdict is '{}', the {} records '{}'", r.verdict_text(), source, r.recorded_text())
-                                               : fmt::format("the static verdict is '{}' and the {} records no verdict, so every condition must hold",
-                                                             r.verdict_text(), source));
+    r.mismatches.push_back(
+        e.expected_failures
+            ? fmt::format("the static verdict is '{}', the {} records '{}'", r.verdict_text(), source, r.recorded_text())
+            : fmt::format("the static verdict is '{}' and the {} records no verdict, so every condition must hold", r.verdict_text(), source));
   if (contradicts_record(e, r.broke_a_map())) {
     std::vector<std::string> how;
     if (r.host_search && r.host_search->host) how.push_back("the model-level search");

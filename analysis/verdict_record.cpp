@@ -17,8 +17,9 @@ bool matches_record(const CatalogRule& entry, const RuleVerdict& v, const std::v
   for (const auto& name : *entry.expected_failures)
     if (!v.find(name) && std::none_of(embedding.begin(), embedding.end(), [&](const EmbeddingCheck& e) { return e.name == name; })) {
       const auto& at = entry.verdict_location;
-      throw InputError(at.file, at.line, at.column,
-                       fmt::format("rule '{}': verdict names '{}', which is not a condition of {}", entry.rule.name(), name, entry.rule.model().name));
+      throw InputError(
+          at.file, at.line, at.column,
+          fmt::format("rule '{}': verdict names '{}', which is not a condition of {}", entry.rule.name(), name, entry.rule.model().name));
     }
   auto want = *entry.expected_failures;
   std::sort(want.begin(), want.end());
@@ -51,7 +52,8 @@ std::vector<std::string> apply_baseline(Catalog& catalog, const std::string& fil
       mismatches.push_back(fmt::format("{}: the baseline records a verdict for rule '{}', which is not checked now", e.location.str(), e.rule));
   }
   for (const auto& s : catalog.skipped)
-    if (!b.find(s.name)) mismatches.push_back(fmt::format("rule '{}' is not checked ({}) and the baseline {} does not record it", s.name, s.why, file));
+    if (!b.find(s.name))
+      mismatches.push_back(fmt::format("rule '{}' is not checked ({}) and the baseline {} does not record it", s.name, s.why, file));
   return mismatches;
 }
 

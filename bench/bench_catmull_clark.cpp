@@ -138,8 +138,10 @@ Points points_of(const dartcheck::EmbeddedMap& g) {
       border |= g.map.link(2, x) == x;
     }
     const Value* v = g.embeddings[0].value(d);
-    if (border) ++out.boundary;
-    else if (v) out.interior.push_back(v->x);
+    if (border)
+      ++out.boundary;
+    else if (v)
+      out.interior.push_back(v->x);
   }
   return out;
 }
@@ -283,9 +285,10 @@ int main(int argc, char** argv) {
   cgal_catmull_clark(reference_mesh);
   const Points ref = points_of(reference_mesh);
   reference_mesh.clear();
-  std::printf("input: %s: V=%zu, F=%zu, %zu G-map darts, %zu halfedges; output: %zu interior points compared with CGAL's (tolerance %.3g), "
-              "%zu boundary points counted; median of %d runs\n\n",
-              off.c_str(), mesh.positions.size(), mesh.faces.size(), 2 * sides, sides, ref.interior.size(), tol, ref.boundary, runs);
+  std::printf(
+      "input: %s: V=%zu, F=%zu, %zu G-map darts, %zu halfedges; output: %zu interior points compared with CGAL's (tolerance %.3g), "
+      "%zu boundary points counted; median of %d runs\n\n",
+      off.c_str(), mesh.positions.size(), mesh.faces.size(), 2 * sides, sides, ref.interior.size(), tol, ref.boundary, runs);
 
   using dartcheck::Evaluation;
   struct Peer {
@@ -311,8 +314,9 @@ int main(int argc, char** argv) {
   for (const Peer& p : peers) rows.push_back(run_in_child<Row>(p.run));
   const Result& base = rows.back().r;
   bool ok = true;
-  std::printf("| peer | output | median ms | peak MiB | bytes / output element | ms / CGAL | max deviation | boundary points | result valid |\n"
-              "|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| peer | output | median ms | peak MiB | bytes / output element | ms / CGAL | max deviation | boundary points | result valid |\n"
+      "|---|---|---|---|---|---|---|---|---|\n");
   for (std::size_t k = 0; k < peers.size(); ++k) {
     const Row& x = rows[k];
     ok &= x.r.ok;

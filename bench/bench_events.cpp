@@ -67,8 +67,10 @@ int main(int argc, char** argv) {
   int runs = 5;
   bool quick = false;
   for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::max(1, std::atoi(argv[++k]));
-    else if (!std::strcmp(argv[k], "--quick")) quick = true;
+    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc)
+      runs = std::max(1, std::atoi(argv[++k]));
+    else if (!std::strcmp(argv[k], "--quick"))
+      quick = true;
   }
   const Catalog seed = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
   const Catalog ev = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/event-operations.yaml");

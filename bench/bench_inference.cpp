@@ -53,8 +53,10 @@ int main(int argc, char** argv) {
   int runs = 5;
   bool quick = false;
   for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
-    else if (!std::strcmp(argv[k], "--quick")) quick = true;
+    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc)
+      runs = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--quick"))
+      quick = true;
   }
   const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
   const Operation& quad = *catalog.find_rule("quad-subdivision-jerboa");
@@ -117,10 +119,12 @@ int main(int argc, char** argv) {
     const auto s = iterate(iterate(doo_sabin(cube_faces()), doo_sabin), doo_sabin);
     KappaSpec k;
     for (const auto& [b, a] : s.kappa) k.pairs.emplace_back(soup_dart(cube_faces(), b), soup_dart(s.faces, a));
-    if (!time_example("Doo-Sabin, 3rd iteration (cube, Fig. 32b)", make_kappa_graph(build_surface(m, cube_faces()), build_surface(m, s.faces), k), orbit))
+    if (!time_example("Doo-Sabin, 3rd iteration (cube, Fig. 32b)", make_kappa_graph(build_surface(m, cube_faces()), build_surface(m, s.faces), k),
+                      orbit))
       return 1;
     const std::vector<std::array<std::uint32_t, 3>> one{{0, 0, 0}};
-    for (const auto& [name, n, keep] : {std::tuple{"Menger (cube, Fig. 34)", 3u, &menger_local}, std::tuple{"(2,2,2)-Menger (cube, Fig. 35)", 5u, &menger222_local}}) {
+    for (const auto& [name, n, keep] :
+         {std::tuple{"Menger (cube, Fig. 34)", 3u, &menger_local}, std::tuple{"(2,2,2)-Menger (cube, Fig. 35)", 5u, &menger222_local}}) {
       const auto fine = refine(one, 1, n, *keep);
       if (!time_example(name, make_kappa_graph(polycube(one, 1), polycube(fine, n), corner_kappa(one, 1, fine, n)), {0, 1, 2, 3})) return 1;
     }

@@ -25,14 +25,18 @@ int main(int argc, char** argv) {
   std::string only;
   bool schemes = false;
   for (int a = 1; a < argc; ++a) {
-    if (std::string(argv[a]) == "--rule" && a + 1 < argc) only = argv[++a];
-    else if (std::string(argv[a]) == "--schemes") schemes = true;
-    else cap = std::atof(argv[a]);
+    if (std::string(argv[a]) == "--rule" && a + 1 < argc)
+      only = argv[++a];
+    else if (std::string(argv[a]) == "--schemes")
+      schemes = true;
+    else
+      cap = std::atof(argv[a]);
   }
   const std::vector<std::size_t> sizes = schemes ? std::vector<std::size_t>{4, 6, 8, 10} : std::vector<std::size_t>{12, 16, 24, 32};
   const std::size_t first = sizes.front() == 4 ? 6 : 12;  // the size whose times are listed
   const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/seed-operations.yaml");
-  fmt::print("{:<40} {:<8} {:>12} {:>12} {:>9} {:>9}\n", "rule", "constr.", fmt::format("thm k={} s", first), fmt::format("maps k={} s", first), "thm max k", "maps max k");
+  fmt::print("{:<40} {:<8} {:>12} {:>12} {:>9} {:>9}\n", "rule", "constr.", fmt::format("thm k={} s", first), fmt::format("maps k={} s", first),
+             "thm max k", "maps max k");
   double total12 = 0, worst12 = 0;
   for (const auto& e : catalog.rules) {
     if (e.words.scheme != schemes || (!only.empty() && e.rule.name() != only)) continue;
@@ -62,9 +66,9 @@ int main(int argc, char** argv) {
             return;
           }
           best[n] = a.status == Status::counterexample ? fmt::format("cx@{}", a.darts)
-                    : a.status == Status::vacuous        ? "vacuous"
-                    : a.proved_for_all()                 ? fmt::format("all@{}", a.darts)
-                                                         : std::to_string(k);
+                    : a.status == Status::vacuous      ? "vacuous"
+                    : a.proved_for_all()               ? fmt::format("all@{}", a.darts)
+                                                       : std::to_string(k);
           // A counterexample or a proof for all hosts does not grow with k.
           if (a.status == Status::counterexample || a.proved_for_all()) return;
           grew = true;
@@ -75,8 +79,8 @@ int main(int argc, char** argv) {
       if (!grew) break;
     }
     for (const auto& [n, t] : at12)
-      fmt::print("{:<40} {:<8} {:>12.4f} {:>12.4f} {:>9} {:>9}\n", e.rule.name(), n, t.first, t.second,
-                 thm_k.count(n) ? thm_k[n] : "-", map_k.count(n) ? map_k[n] : "-");
+      fmt::print("{:<40} {:<8} {:>12.4f} {:>12.4f} {:>9} {:>9}\n", e.rule.name(), n, t.first, t.second, thm_k.count(n) ? thm_k[n] : "-",
+                 map_k.count(n) ? map_k[n] : "-");
     std::fflush(stdout);
   }
   fmt::print("\nat k = {}: {:.2f} s for all queries, slowest query {:.3f} s (cap {} s)\n", first, total12, worst12, cap);

@@ -48,8 +48,10 @@ namespace {
 // [--runs N] [--grid RxC]; false (after the usage line) on anything else.
 bool torus_arguments(int argc, char** argv, int& runs, int& r, int& c) {
   for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
-    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc) std::sscanf(argv[++k], "%dx%d", &r, &c);
+    if (!std::strcmp(argv[k], "--runs") && k + 1 < argc)
+      runs = std::atoi(argv[++k]);
+    else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc)
+      std::sscanf(argv[++k], "%dx%d", &r, &c);
     else {
       std::fprintf(stderr, "usage: %s [--runs N] [--grid RxC]\n", argv[0]);
       return false;
@@ -57,7 +59,6 @@ bool torus_arguments(int argc, char** argv, int& runs, int& r, int& c) {
   }
   return true;
 }
-
 
 using LCC = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3>;
 using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
@@ -143,8 +144,8 @@ int main(int argc, char** argv) {
   if (!torus_arguments(argc, argv, runs, r, c)) return 2;
   const std::string off = "/tmp/dartcheck-bench-torus-" + std::to_string(getpid()) + ".off";
   write_torus_off(off, r, c);
-  std::printf("input: quad torus %dx%d: V=%d E=%d F=%d, %d G-map darts, %d O-map darts; median of %d runs\n\n", r, c, r * c, 2 * r * c,
-              r * c, 8 * r * c, 4 * r * c, runs);
+  std::printf("input: quad torus %dx%d: V=%d E=%d F=%d, %d G-map darts, %d O-map darts; median of %d runs\n\n", r, c, r * c, 2 * r * c, r * c,
+              8 * r * c, 4 * r * c, runs);
 
   struct Peer {
     const char* name;

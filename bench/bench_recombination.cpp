@@ -120,8 +120,10 @@ HexSet vertex_based_hexes(const TetMesh& m) {
                         for (int q = 0; q < 8; ++q)
                           if (v[static_cast<std::size_t>(q)] == x) mask |= 1u << q;
                       if (std::popcount(mask) != 4) continue;  // not inside
-                      if (index[mask] < 0) ok = false;         // the 4 corners of one face
-                      else subdivision |= std::uint64_t{1} << index[mask], inside.push_back(t);
+                      if (index[mask] < 0)
+                        ok = false;  // the 4 corners of one face
+                      else
+                        subdivision |= std::uint64_t{1} << index[mask], inside.push_back(t);
                     }
                   if (!ok || !std::binary_search(labeled.begin(), labeled.end(), subdivision)) continue;
                   std::sort(inside.begin(), inside.end());
@@ -250,9 +252,12 @@ void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid)
       for (auto v : vertices)
         for (auto t : around[v])
           if (std::all_of(mesh.tets[t].begin(), mesh.tets[t].end(), [&](std::uint32_t x) { return vertices.count(x) > 0; })) on_them.insert(t);
-      if (vertices.size() < 8) ++c.wrapped;
-      else if (on_them.size() > h.size()) ++c.extra_tet;
-      else ++c.unexplained;
+      if (vertices.size() < 8)
+        ++c.wrapped;
+      else if (on_them.size() > h.size())
+        ++c.extra_tet;
+      else
+        ++c.unexplained;
     }
     return c;
   });
@@ -260,17 +265,18 @@ void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid)
   results[0].ok = results[0].ok && results[0].out_elements == check.ours;
   results[1].ok = results[1].ok && results[1].out_elements == check.ours;
   results[3].ok = results[3].ok && results[3].out_elements == check.peer;
-  std::printf("\n%s: %zu tetrahedra, %zu points; candidate hexes: dartcheck %zu, peer %zu; every peer hex a dartcheck match: %s; "
-              "other dartcheck matches: %zu with a further tetrahedron on their 8 vertices, %zu on fewer than 8 vertices, %zu unexplained\n\n",
-              name.c_str(), tets, mesh.points.size(), check.ours, check.peer, check.peer_in_ours ? "yes" : "NO", check.extra_tet, check.wrapped,
-              check.unexplained);
+  std::printf(
+      "\n%s: %zu tetrahedra, %zu points; candidate hexes: dartcheck %zu, peer %zu; every peer hex a dartcheck match: %s; "
+      "other dartcheck matches: %zu with a further tetrahedron on their 8 vertices, %zu on fewer than 8 vertices, %zu unexplained\n\n",
+      name.c_str(), tets, mesh.points.size(), check.ours, check.peer, check.peer_in_ours ? "yes" : "NO", check.extra_tet, check.wrapped,
+      check.unexplained);
   std::printf("| run | found | median ms | tets / s | peak MiB | ms / peer | checked |\n|---|---|---|---|---|---|---|\n");
   const Result& p = results.back();
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const Result& x = results[k];
     std::printf("| %s | %zu | %.1f | %.0f | %.1f | %.2fx | %s |\n", rows[k].name, x.out_elements, x.median_ms,
-                x.median_ms > 0 ? 1000.0 * static_cast<double>(tets) / x.median_ms : 0.0, x.peak_mib, p.median_ms > 0 ? x.median_ms / p.median_ms : 0.0,
-                x.ok && agree ? "yes" : "NO");
+                x.median_ms > 0 ? 1000.0 * static_cast<double>(tets) / x.median_ms : 0.0, x.peak_mib,
+                p.median_ms > 0 ? x.median_ms / p.median_ms : 0.0, x.ok && agree ? "yes" : "NO");
   }
 }
 
@@ -281,9 +287,12 @@ int main(int argc, char** argv) {
   std::uint32_t grid = 31;
   std::string mesh_file;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--runs")) runs = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--grid")) grid = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
-    else if (!std::strcmp(argv[i], "--mesh")) mesh_file = argv[i + 1];
+    if (!std::strcmp(argv[i], "--runs"))
+      runs = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--grid"))
+      grid = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--mesh"))
+      mesh_file = argv[i + 1];
   }
   // The 322 queries are built once, before the children fork (about 3 s,
   // a constant of the method, not of the mesh).

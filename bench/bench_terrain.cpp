@@ -44,8 +44,10 @@ int main(int argc, char** argv) {
   int runs = 5;
   std::uint64_t seed = 2025;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--runs")) runs = std::max(1, std::atoi(argv[i + 1]));
-    else if (!std::strcmp(argv[i], "--seed")) seed = std::strtoull(argv[i + 1], nullptr, 10);
+    if (!std::strcmp(argv[i], "--runs"))
+      runs = std::max(1, std::atoi(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--seed"))
+      seed = std::strtoull(argv[i + 1], nullptr, 10);
     else {
       fmt::print(stderr, "usage: bench_terrain [--runs N] [--seed S]\n");
       return 2;
@@ -70,10 +72,10 @@ int main(int argc, char** argv) {
   fmt::print("Terrain with houses (001 Table 2), 128 x 128 voxels, {} runs (medians), every run checked\n\n", runs);
   fmt::print("| step | volumes | darts | 001 volumes / darts | time (s) | 001 time (s) |\n|---|---:|---:|---|---|---|\n");
   fmt::print("| (1) voxel grid | {} | {} | 16,384 / 425,984 | {:.3f} | 0.028 |\n", last.grid.volumes, last.grid.darts, median(grid));
-  fmt::print("| (2) 50 query-apply | {} | {} | 15,984 / 419,984 | {:.3f} ({:.3f} query, {:.3f} apply) | 0.012 (0.008, 0.004) |\n", last.flattened.volumes, last.flattened.darts,
-             median(query2) + median(apply2), median(query2), median(apply2));
-  fmt::print("| (3) 50 query-extend | {} | {} | 16,134 / 431,684 | {:.3f} ({:.3f} query, {:.3f} extend) | 0.68 (0.62, 0.06) |\n", last.housed.volumes, last.housed.darts,
-             median(query3) + median(extend3), median(query3), median(extend3));
+  fmt::print("| (2) 50 query-apply | {} | {} | 15,984 / 419,984 | {:.3f} ({:.3f} query, {:.3f} apply) | 0.012 (0.008, 0.004) |\n",
+             last.flattened.volumes, last.flattened.darts, median(query2) + median(apply2), median(query2), median(apply2));
+  fmt::print("| (3) 50 query-extend | {} | {} | 16,134 / 431,684 | {:.3f} ({:.3f} query, {:.3f} extend) | 0.68 (0.62, 0.06) |\n", last.housed.volumes,
+             last.housed.darts, median(query3) + median(extend3), median(query3), median(extend3));
   fmt::print("\nmatches: step (2) {} raw, {} distinct; step (3) {} raw, {} distinct; peak memory {:.1f} MiB ({:.0f} B per dart of step (3))\n",
              last.flattened.raw_matches, last.flattened.distinct_matches, last.housed.raw_matches, last.housed.distinct_matches, peak,
              peak * 1024 * 1024 / static_cast<double>(last.housed.darts));

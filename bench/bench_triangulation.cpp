@@ -206,7 +206,8 @@ Result run_generic_floor(const std::string& off, int runs, std::size_t triangles
   using namespace dartcheck;
   constexpr std::uint32_t none = DartTable::none;
   const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
-  const EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.find_rule("triangulation-all-faces-pos")->terms->embeddings[0]);
+  const EmbeddedMap input =
+      mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.find_rule("triangulation-all-faces-pos")->terms->embeddings[0]);
   const bool per_face = scope == Scope::per_face;
   const std::vector<Dart> hooks = orbit_hooks(input.map, per_face ? std::vector<Dim>{0, 1} : std::vector<Dim>{0, 1, 2});
   const Dim generators = per_face ? 2 : 3;
@@ -305,7 +306,8 @@ Result run_generic_floor(const std::string& off, int runs, std::size_t triangles
       for (std::uint32_t p = 0; p < np; ++p) pos.set_index(base + np + p, centre[face[p]]);
       for (std::uint32_t p = 0; p < np; ++p) {
         const std::uint32_t v = pos.slot[pattern[p]];
-        if (!per_face) pos.set_index(base + p, v);
+        if (!per_face)
+          pos.set_index(base + p, v);
         else if (shift[1][p] > p)
           for (Dart y : walker.orbit(pattern[p], vertex_gens)) pos.set_index(y, v);
       }
@@ -404,8 +406,8 @@ int main(int argc, char** argv) {
   for (std::size_t k = 0; k < peers.size(); ++k) {
     const Result& x = results[k];
     ok &= x.ok;
-    std::printf("| %s | %zu | %.1f | %.1f | %.2fx | %.2fx | %s |\n", peers[k].name, x.out_elements, x.median_ms, x.peak_mib, x.median_ms / g.median_ms,
-                g.peak_mib > 0 ? x.peak_mib / g.peak_mib : 0.0, x.ok ? "yes" : "NO");
+    std::printf("| %s | %zu | %.1f | %.1f | %.2fx | %.2fx | %s |\n", peers[k].name, x.out_elements, x.median_ms, x.peak_mib,
+                x.median_ms / g.median_ms, g.peak_mib > 0 ? x.peak_mib / g.peak_mib : 0.0, x.ok ? "yes" : "NO");
   }
   return ok ? 0 : 1;
 }

@@ -98,7 +98,8 @@ Case& get_case(const std::string& model, int millions, bool shuffle) {
 void counters(benchmark::State& s, const Map& m, double bytes_per_dart) {
   s.counters["darts"] = static_cast<double>(m.size());
   s.counters["bytes_per_dart"] = bytes_per_dart;
-  s.counters["ns_per_dart"] = benchmark::Counter(static_cast<double>(m.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  s.counters["ns_per_dart"] =
+      benchmark::Counter(static_cast<double>(m.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void register_all() {

@@ -13,9 +13,12 @@ namespace {
 
 Model pick(int k) {
   switch (k) {
-    case 0: return Model::gmap(2);
-    case 1: return Model::gmap(3);
-    case 2: return Model::omap(3);
+    case 0:
+      return Model::gmap(2);
+    case 1:
+      return Model::gmap(3);
+    case 2:
+      return Model::omap(3);
     default: {
       // Three oriented, pairwise exchangeable dimensions: the model where
       // R_{N,E} is not confluent, the hardest case for normal forms.

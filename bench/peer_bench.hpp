@@ -73,10 +73,14 @@ struct MeshInput {
     int r = 0, c = 0;
     off = default_mesh;
     for (int k = 1; k < argc; ++k) {
-      if (!std::strcmp(argv[k], "--runs") && k + 1 < argc) runs = std::atoi(argv[++k]);
-      else if (!std::strcmp(argv[k], "--mesh") && k + 1 < argc) off = argv[++k];
-      else if (!std::strcmp(argv[k], "--only") && k + 1 < argc) only = argv[++k];
-      else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc && std::sscanf(argv[++k], "%dx%d", &r, &c) == 2) continue;
+      if (!std::strcmp(argv[k], "--runs") && k + 1 < argc)
+        runs = std::atoi(argv[++k]);
+      else if (!std::strcmp(argv[k], "--mesh") && k + 1 < argc)
+        off = argv[++k];
+      else if (!std::strcmp(argv[k], "--only") && k + 1 < argc)
+        only = argv[++k];
+      else if (!std::strcmp(argv[k], "--grid") && k + 1 < argc && std::sscanf(argv[++k], "%dx%d", &r, &c) == 2)
+        continue;
       else {
         std::fprintf(stderr, "usage: %s [--runs N] [--mesh FILE.off | --grid RxC] [--only TEXT]\n", argv[0]);
         return false;

@@ -48,7 +48,8 @@ bool copy_invariant(const Term& t, const ConjWord& w, const TopoGraph& L, const 
   };
   switch (t.kind) {
     case Term::Kind::literal:
-    case Term::Kind::parameter: return true;
+    case Term::Kind::parameter:
+      return true;
     case Term::Kind::access:
     case Term::Kind::collect: {
       if (t.args[0].kind != Term::Kind::variable) return false;
@@ -59,8 +60,10 @@ bool copy_invariant(const Term& t, const ConjWord& w, const TopoGraph& L, const 
       return moves_inside(t.args[0].name, orbit);
     }
     case Term::Kind::variable:
-    case Term::Kind::neighbour: return false;
-    case Term::Kind::call: break;
+    case Term::Kind::neighbour:
+      return false;
+    case Term::Kind::call:
+      break;
   }
   return std::all_of(t.args.begin(), t.args.end(), [&](const Term& a) { return copy_invariant(a, w, L, words, terms); });
 }
@@ -114,7 +117,11 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
             first_node = v;
           } else if (!t->same(*first)) {
             a.holds = false;
-            a.witnesses.push_back({0, side, {g.name(first_node), g.name(v)}, {}, {},
+            a.witnesses.push_back({0,
+                                   side,
+                                   {g.name(first_node), g.name(v)},
+                                   {},
+                                   {},
                                    fmt::format("{}: nodes {} and {} share a {}-orbit {} ({}) but carry different terms {} and {}", side_name,
                                                g.name(first_node), g.name(v), pi, orbit, list(g, nodes), first->str(), t->str())});
           }
@@ -131,7 +138,11 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
             const Term* t = label_of(v);
             if (t && !copy_invariant(*t, w, L, words, terms)) {
               a.holds = false;
-              a.witnesses.push_back({0, side, {g.name(v)}, {arc_text(g, x, ws, true)}, {},
+              a.witnesses.push_back({0,
+                                     side,
+                                     {g.name(v)},
+                                     {arc_text(g, x, ws, true)},
+                                     {},
                                      fmt::format("{}: the copies of {} joined by {} lie in one {}-orbit, but its term {} may differ between copies "
                                                  "(a variable is not read through an orbit that contains the L loop moving the copy)",
                                                  side_name, g.name(v), arc_text(g, x, ws, true), pi, t->str())});
@@ -169,9 +180,13 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
         }
         if (why.empty()) continue;
         b.holds = false;
-        b.witnesses.push_back({0, 'R', {R.name(r), R.name(w)}, {}, {},
-                               fmt::format("{} changes {} from {} to {}, but node {} of its R-orbit {} {}: the orbit is not fully matched", R.name(r), pi,
-                                           shown(tl), shown(tr), R.name(w), orbit, why)});
+        b.witnesses.push_back({0,
+                               'R',
+                               {R.name(r), R.name(w)},
+                               {},
+                               {},
+                               fmt::format("{} changes {} from {} to {}, but node {} of its R-orbit {} {}: the orbit is not fully matched", R.name(r),
+                                           pi, shown(tl), shown(tr), R.name(w), orbit, why)});
         break;
       }
     }
@@ -188,15 +203,19 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
         for (NodeId w = 0; w < R.node_count() && grows.empty(); ++w) {
           if (ro[w] != ro[r]) continue;
           const NodeId lw = rule.to_left(w);
-          if (lw == no_node) grows = fmt::format("gains the added node {}", R.name(w));
-          else if (lo[lw] != lo[v]) grows = fmt::format("joins {}, of another {}-orbit of L", R.name(w), pi);
+          if (lw == no_node)
+            grows = fmt::format("gains the added node {}", R.name(w));
+          else if (lo[lw] != lo[v])
+            grows = fmt::format("joins {}, of another {}-orbit of L", R.name(w), pi);
         }
       } else {
         for (ArcId x = 0; x < R.arc_count() && grows.empty(); ++x) {
           const auto& arc = R.arc(x);
           if (ro[arc.source] != ro[r] || !in_orbit(e.orbit, arc.label)) continue;
-          if (rule.to_left(arc.target) == no_node) grows = fmt::format("gains the added node {}", R.name(arc.target));
-          else if (!rule.preserved_right_arc(x)) grows = fmt::format("gains the added arc {}", arc_text(R, x, words.right, true));
+          if (rule.to_left(arc.target) == no_node)
+            grows = fmt::format("gains the added node {}", R.name(arc.target));
+          else if (!rule.preserved_right_arc(x))
+            grows = fmt::format("gains the added arc {}", arc_text(R, x, words.right, true));
         }
       }
       if (grows.empty()) continue;
@@ -212,7 +231,11 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
       if (matched) continue;
       c.holds = false;
       reported[ro[r]] = true;
-      c.witnesses.push_back({0, 'R', {R.name(r)}, {}, {},
+      c.witnesses.push_back({0,
+                             'R',
+                             {R.name(r)},
+                             {},
+                             {},
                              fmt::format("the {}-orbit {} of {} in R {}, but {} has no node of K in both its orbits labeled in L{}: its old value "
                                          "would meet values that never were compared with it",
                                          pi, orbit, R.name(r), grows, scheme ? "the node itself" : R.name(r),
@@ -232,11 +255,16 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
       const bool needs = v == no_node || term('L', v);
       if (!needs || term('R', r) || (!direct && orbit_labeled(r))) continue;
       lab.holds = false;
-      lab.witnesses.push_back({0, 'R', {R.name(r)}, {}, {},
-                               v == no_node ? fmt::format("added node {} gets no {} value: {}", R.name(r), pi,
-                                                          direct ? "it is unlabeled in R (003 Def. 1)" : "no node of its R-orbit is labeled")
-                                            : fmt::format("preserved node {} is labeled in L ({}) but {}: its value would be lost (003 Def. 1)", R.name(r),
-                                                          term('L', v)->str(), direct ? "not in R" : "no node of its R-orbit is labeled")});
+      lab.witnesses.push_back({0,
+                               'R',
+                               {R.name(r)},
+                               {},
+                               {},
+                               v == no_node
+                                   ? fmt::format("added node {} gets no {} value: {}", R.name(r), pi,
+                                                 direct ? "it is unlabeled in R (003 Def. 1)" : "no node of its R-orbit is labeled")
+                                   : fmt::format("preserved node {} is labeled in L ({}) but {}: its value would be lost (003 Def. 1)", R.name(r),
+                                                 term('L', v)->str(), direct ? "not in R" : "no node of its R-orbit is labeled")});
     }
     out.push_back(std::move(lab));
   }

@@ -41,8 +41,10 @@ EmbeddingConsistency check_orbits(const Map& map, const std::string& name, const
     };
     for (Dart x : orbit) {
       seen[x] = true;
-      if (auto v = text(x)) note(x, *v);
-      else c.unlabeled.push_back(x);
+      if (auto v = text(x))
+        note(x, *v);
+      else
+        c.unlabeled.push_back(x);
     }
     for (const auto& [x, v] : reassigned)
       if (std::find(orbit.begin(), orbit.end(), x) != orbit.end()) note(x, v);

@@ -38,9 +38,12 @@ std::string names(const TopoGraph& g, const std::vector<NodeId>& nodes) {
 
 std::string EmbeddingVerdict::name() const {
   switch (condition) {
-    case EmbeddingCondition::defined: return fmt::format("defined({})", embedding);
-    case EmbeddingCondition::merge: return fmt::format("merge({})", embedding);
-    case EmbeddingCondition::one_value: return fmt::format("one-value({})", embedding);
+    case EmbeddingCondition::defined:
+      return fmt::format("defined({})", embedding);
+    case EmbeddingCondition::merge:
+      return fmt::format("merge({})", embedding);
+    case EmbeddingCondition::one_value:
+      return fmt::format("one-value({})", embedding);
   }
   return embedding;
 }
@@ -72,8 +75,9 @@ std::vector<EmbeddingVerdict> check_embedding_presence(const Rule& rule, const A
         defined.witnesses.push_back({0, 'R', {}, {}, {}, ""});
         auto& w = defined.witnesses.back();
         for (NodeId v : nodes) w.nodes.push_back(R.name(v));
-        w.text = fmt::format("added node{} {} form{} a {}-orbit <{}> with no preserved node and no {} expression: its value is undefined",
-                             nodes.size() == 1 ? "" : "s", names(R, nodes), nodes.size() == 1 ? "s" : "", ebd.name, fmt::join(ebd.orbit, ","), ebd.name);
+        w.text =
+            fmt::format("added node{} {} form{} a {}-orbit <{}> with no preserved node and no {} expression: its value is undefined",
+                        nodes.size() == 1 ? "" : "s", names(R, nodes), nodes.size() == 1 ? "s" : "", ebd.name, fmt::join(ebd.orbit, ","), ebd.name);
       }
       if (kept.contains(orbit) && !labeled) {
         // Preserved nodes of this R-orbit, grouped by their L-orbit.
@@ -87,9 +91,10 @@ std::vector<EmbeddingVerdict> check_embedding_presence(const Rule& rule, const A
             groups.push_back(fmt::format("{{{}}}", names(R, vs)));
             for (NodeId v : vs) w.nodes.push_back(R.name(v));
           }
-          w.text = fmt::format("preserved nodes from {} different {}-orbits of L ({}) share one {}-orbit of R, which carries no {} expression: "
-                               "the merged orbit gets two values",
-                               from.size(), ebd.name, fmt::join(groups, " "), ebd.name, ebd.name);
+          w.text = fmt::format(
+              "preserved nodes from {} different {}-orbits of L ({}) share one {}-orbit of R, which carries no {} expression: "
+              "the merged orbit gets two values",
+              from.size(), ebd.name, fmt::join(groups, " "), ebd.name, ebd.name);
           merge.witnesses.push_back(std::move(w));
         }
       }
@@ -98,7 +103,11 @@ std::vector<EmbeddingVerdict> check_embedding_presence(const Rule& rule, const A
         for (std::size_t k = 1; k < xs.size(); ++k)
           if (xs[k]->code != xs[0]->code) {
             one.holds = false;
-            one.witnesses.push_back({0, 'R', {xs[0]->node, xs[k]->node}, {}, {},
+            one.witnesses.push_back({0,
+                                     'R',
+                                     {xs[0]->node, xs[k]->node},
+                                     {},
+                                     {},
                                      fmt::format("nodes {} and {} of one {}-orbit carry different expressions: \"{}\" and \"{}\"", xs[0]->node,
                                                  xs[k]->node, ebd.name, xs[0]->code, xs[k]->code)});
           }

@@ -19,9 +19,8 @@ bool non_oriented_at(const TopoGraph& g, NodeId v, Dim i) {
   const auto& arcs = g.arcs();
   for (const auto& e : arcs) {
     if (e.label != i || (e.source != v && e.target != v)) continue;
-    const bool reversed = std::any_of(arcs.begin(), arcs.end(), [&](const auto& r) {
-      return r.label == i && r.source == e.target && r.target == e.source;
-    });
+    const bool reversed =
+        std::any_of(arcs.begin(), arcs.end(), [&](const auto& r) { return r.label == i && r.source == e.target && r.target == e.source; });
     if (!reversed) return false;
   }
   return true;

@@ -15,9 +15,9 @@ struct Search {
   const Model& model;
   const std::function<bool(const Violation&)>& relevant;
   std::size_t budget;
-  std::size_t n = 0;                          // host size
-  std::vector<std::vector<NodeId>> sigma;     // per dimension index
-  std::vector<std::vector<bool>> used;        // targets taken, per dimension index
+  std::size_t n = 0;                       // host size
+  std::vector<std::vector<NodeId>> sigma;  // per dimension index
+  std::vector<std::vector<bool>> used;     // targets taken, per dimension index
   HostSearch out;
   bool stop = false;
   std::function<bool(const std::vector<std::vector<NodeId>>&)> visit;
@@ -37,9 +37,7 @@ struct Search {
     }
     return true;
   }
-  std::size_t index(Dim d) const {
-    return static_cast<std::size_t>(std::find(model.dims.begin(), model.dims.end(), d) - model.dims.begin());
-  }
+  std::size_t index(Dim d) const { return static_cast<std::size_t>(std::find(model.dims.begin(), model.dims.end(), d) - model.dims.begin()); }
 
   void host_ready() {
     if (++out.hosts > budget) {
@@ -138,8 +136,8 @@ void reset(Search& s, std::size_t n) {
 
 }  // namespace
 
-HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra,
-                        const std::function<bool(const Violation&)>& relevant, std::size_t budget) {
+HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra, const std::function<bool(const Violation&)>& relevant,
+                        std::size_t budget) {
   Search s{&rule, host_model, relevant, budget, 0, {}, {}, {}, false, {}};
   const TopoGraph& L = rule.left();
   const std::size_t nl = L.node_count();

@@ -29,8 +29,8 @@ struct HostSearch {
 /// `host_model`) satisfying O on its N, C on its E, and no loops if it is
 /// loop-free. `relevant` selects the violations of H that count (all by
 /// default). Stops after `budget` hosts.
-HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra,
-                        const std::function<bool(const Violation&)>& relevant = {}, std::size_t budget = 2'000'000);
+HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t extra, const std::function<bool(const Violation&)>& relevant = {},
+                        std::size_t budget = 2'000'000);
 
 /// Calls `visit` with every map of `model` on exactly `n` darts (the same
 /// class as search_hosts: one permutation per dimension, sigma[k][v] for
@@ -39,8 +39,7 @@ HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t e
 /// in which the identity on its nodes is an image of its arcs (its nodes
 /// are darts 0..|nodes|-1). Returns the number of maps visited; fewer than
 /// `budget` and no early stop means every such map was visited.
-std::size_t for_each_small_map(const Model& model, std::size_t n,
-                               const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
+std::size_t for_each_small_map(const Model& model, std::size_t n, const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
                                std::size_t budget = 2'000'000, const TopoGraph* containing = nullptr);
 
 }  // namespace dartcheck

@@ -181,15 +181,20 @@ ValidityReport check_map(const Map& map, unsigned threads) {
   const Layout mine = layout_of(map);
   bool ok;
   if (same_layout(mine, gmap2))
-    ok = split_pass(base, n, threads, [] () -> const Layout& { return gmap2; }, report.violations);
+    ok = split_pass(
+        base, n, threads, []() -> const Layout& { return gmap2; }, report.violations);
   else if (same_layout(mine, omap2))
-    ok = split_pass(base, n, threads, [] () -> const Layout& { return omap2; }, report.violations);
+    ok = split_pass(
+        base, n, threads, []() -> const Layout& { return omap2; }, report.violations);
   else if (same_layout(mine, gmap3))
-    ok = split_pass(base, n, threads, [] () -> const Layout& { return gmap3; }, report.violations);
+    ok = split_pass(
+        base, n, threads, []() -> const Layout& { return gmap3; }, report.violations);
   else if (same_layout(mine, omap3))
-    ok = split_pass(base, n, threads, [] () -> const Layout& { return omap3; }, report.violations);
+    ok = split_pass(
+        base, n, threads, []() -> const Layout& { return omap3; }, report.violations);
   else
-    ok = split_pass(base, n, threads, [&mine]() -> const Layout& { return mine; }, report.violations);
+    ok = split_pass(
+        base, n, threads, [&mine]() -> const Layout& { return mine; }, report.violations);
   return ok ? report : check_map_exact(map);
 }
 
@@ -238,8 +243,9 @@ ValidityReport check_map_exact(const Map& map) {
     for (Dart v = 0; v < n; ++v)
       if (follow(map, v, std::array<Dim, 4>{i, j, i, j}) != v) report.violations.push_back({Constraint::cycle, i, j, v});
 
-  std::sort(report.violations.begin(), report.violations.end(),
-            [](const Violation& a, const Violation& b) { return std::tie(a.element, a.constraint, a.i, a.j) < std::tie(b.element, b.constraint, b.i, b.j); });
+  std::sort(report.violations.begin(), report.violations.end(), [](const Violation& a, const Violation& b) {
+    return std::tie(a.element, a.constraint, a.i, a.j) < std::tie(b.element, b.constraint, b.i, b.j);
+  });
   report.violations.erase(std::unique(report.violations.begin(), report.violations.end()), report.violations.end());
   return report;
 }

@@ -9,11 +9,16 @@ namespace dartcheck {
 
 std::string condition_name(RuleCondition c, Dim i, Dim j) {
   switch (c) {
-    case RuleCondition::incident_arcs: return fmt::format("I({})", i);
-    case RuleCondition::dangling: return fmt::format("dangling({})", i);
-    case RuleCondition::non_orientation: return fmt::format("O({})", i);
-    case RuleCondition::cycle: return fmt::format("C({},{})", i, j);
-    case RuleCondition::no_loop: return fmt::format("no-loop({})", i);
+    case RuleCondition::incident_arcs:
+      return fmt::format("I({})", i);
+    case RuleCondition::dangling:
+      return fmt::format("dangling({})", i);
+    case RuleCondition::non_orientation:
+      return fmt::format("O({})", i);
+    case RuleCondition::cycle:
+      return fmt::format("C({},{})", i, j);
+    case RuleCondition::no_loop:
+      return fmt::format("no-loop({})", i);
   }
   return "?";
 }
@@ -45,9 +50,7 @@ void fail(ConditionVerdict& v, RuleWitness w) {
 
 }  // namespace
 
-std::string label_text(Dim d, const ConjWord& w, bool scheme) {
-  return scheme ? fmt::format("({},{})", w.str(), d) : std::to_string(d);
-}
+std::string label_text(Dim d, const ConjWord& w, bool scheme) { return scheme ? fmt::format("({},{})", w.str(), d) : std::to_string(d); }
 
 std::string arc_text(const TopoGraph& g, ArcId e, const std::vector<ConjWord>& words, bool scheme) {
   const auto& a = g.arc(e);
@@ -66,11 +69,19 @@ ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords&) {
       // with one arc in L and two in R the host's arc is kept and a second
       // added (found by the Theorem 1 brute force). Algorithm 1's test.
       if (nl > 1)
-        fail(v, {1, 'L', {L.name(x)}, {}, {},
+        fail(v, {1,
+                 'L',
+                 {L.name(x)},
+                 {},
+                 {},
                  fmt::format("preserved node {} is the {} of {} {}-arcs in L: no host satisfying I({}) contains L", L.name(x),
                              out ? "source" : "target", nl, i, i)});
       else if (nl != nr)
-        fail(v, {1, 'L', {L.name(x)}, {}, {},
+        fail(v, {1,
+                 'L',
+                 {L.name(x)},
+                 {},
+                 {},
                  fmt::format("preserved node {} is the {} of {} {}-arc{} in L and {} in R", L.name(x), out ? "source" : "target", nl, i,
                              nl == 1 ? "" : "s", nr)});
     }
@@ -80,7 +91,11 @@ ConditionVerdict check_incident_arcs(const Rule& rule, Dim i, const ArcWords&) {
     for (bool out : {true, false}) {
       const std::size_t nr = count_arcs(R, y, i, out);
       if (nr != 1)
-        fail(v, {2, 'R', {R.name(y)}, {}, {},
+        fail(v, {2,
+                 'R',
+                 {R.name(y)},
+                 {},
+                 {},
                  fmt::format("added node {} is the {} of {} {}-arcs in R (exactly one needed)", R.name(y), out ? "source" : "target", nr, i)});
     }
   }
@@ -95,7 +110,11 @@ ConditionVerdict check_dangling(const Rule& rule, Dim i, const ArcWords&) {
     for (bool out : {true, false}) {
       const std::size_t nl = count_arcs(L, x, i, out);
       if (nl != 1)
-        fail(v, {0, 'L', {L.name(x)}, {}, {},
+        fail(v, {0,
+                 'L',
+                 {L.name(x)},
+                 {},
+                 {},
                  fmt::format("deleted node {} is the {} of {} {}-arcs in L: {}", L.name(x), out ? "source" : "target", nl, i,
                              nl == 0 ? "the host's arc would dangle" : "no combinatorial host matches it")});
     }
@@ -123,12 +142,19 @@ ConditionVerdict check_non_orientation(const Rule& rule, Dim i, const ArcWords& 
       }
       const char* what = side == 'L' ? "deleted" : "added";
       if (reverse.size() != 1) {
-        fail(v, {0, side, {g.name(a.source), g.name(a.target)}, {arc_text(g, e, ws, words.scheme)}, {},
+        fail(v, {0,
+                 side,
+                 {g.name(a.source), g.name(a.target)},
+                 {arc_text(g, e, ws, words.scheme)},
+                 {},
                  fmt::format("{} arc {} has {} reverse arcs {} -{}-> {} in {} (exactly one needed)", what, arc_text(g, e, ws, words.scheme),
                              reverse.size(), g.name(a.target), label_text(i, back, words.scheme), g.name(a.source), side)});
       } else if (kept(reverse[0])) {
-        fail(v, {0, side, {g.name(a.source), g.name(a.target)},
-                 {arc_text(g, e, ws, words.scheme), arc_text(g, reverse[0], ws, words.scheme)}, {},
+        fail(v, {0,
+                 side,
+                 {g.name(a.source), g.name(a.target)},
+                 {arc_text(g, e, ws, words.scheme), arc_text(g, reverse[0], ws, words.scheme)},
+                 {},
                  fmt::format("{} arc {} has its reverse {} in the interface", what, arc_text(g, e, ws, words.scheme),
                              arc_text(g, reverse[0], ws, words.scheme))});
       }
@@ -160,8 +186,7 @@ std::string path_text(const CycleSide& s, const std::vector<int>& p) {
   std::string t = s.graph->name(s.arcs[static_cast<std::size_t>(p.front())].source);
   for (int e : p) {
     const auto& a = s.arcs[static_cast<std::size_t>(e)];
-    t += fmt::format(" -{}-> {}", a.word.empty() ? std::to_string(a.label) : fmt::format("({},{})", a.word.str(), a.label),
-                     s.graph->name(a.target));
+    t += fmt::format(" -{}-> {}", a.word.empty() ? std::to_string(a.label) : fmt::format("({},{})", a.word.str(), a.label), s.graph->name(a.target));
   }
   return t;
 }
@@ -264,9 +289,8 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
           if (left.arcs[c].source != left.arcs[b].target || left.arcs[c].label != left.arcs[a].label) continue;
           const NodeId s = left.arcs[a].source, t = left.arcs[c].target;
           const Dim y = left.arcs[b].label;
-          const bool closed = std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& x) {
-            return x.source == t && x.target == s && x.label == y;
-          });
+          const bool closed =
+              std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& x) { return x.source == t && x.target == s && x.label == y; });
           if (closed) continue;
           const ConjWord w = rw.conjugate(left.arcs[a].word + left.arcs[b].word + left.arcs[c].word);
           const bool interface = rule.to_right(s) != no_node && rule.to_right(t) != no_node;
@@ -297,15 +321,21 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
       if (coherent.size() != 1) {
         std::vector<std::string> shown{path_text(*s, p)};
         for (auto* q : coherent) shown.push_back(path_text(*o, *q));
-        fail(v, {1, s->name, {}, shown, {},
-                 fmt::format("({},{})-optimal path {} in {} has {} coherent optimal paths in {} (exactly one needed)", i, j,
-                             path_text(*s, p), s->name, coherent.size(), o->name)});
+        fail(v, {1,
+                 s->name,
+                 {},
+                 shown,
+                 {},
+                 fmt::format("({},{})-optimal path {} in {} has {} coherent optimal paths in {} (exactly one needed)", i, j, path_text(*s, p),
+                             s->name, coherent.size(), o->name)});
       } else if (!rw.congruent(path_word(*s, p), path_word(*o, *coherent[0]))) {
-        fail(v, {1, s->name, {}, {path_text(*s, p), path_text(*o, *coherent[0])},
+        fail(v, {1,
+                 s->name,
+                 {},
+                 {path_text(*s, p), path_text(*o, *coherent[0])},
                  {path_word(*s, p).str(), path_word(*o, *coherent[0]).str()},
-                 fmt::format("coherent optimal paths {} in {} and {} in {} have W-labels {} and {}, not congruent in R_{{N,E}}",
-                             path_text(*s, p), s->name, path_text(*o, *coherent[0]), o->name, path_word(*s, p).str(),
-                             path_word(*o, *coherent[0]).str())});
+                 fmt::format("coherent optimal paths {} in {} and {} in {} have W-labels {} and {}, not congruent in R_{{N,E}}", path_text(*s, p),
+                             s->name, path_text(*o, *coherent[0]), o->name, path_word(*s, p).str(), path_word(*o, *coherent[0]).str())});
       }
     }
   }
@@ -320,7 +350,11 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
       const std::vector<int> p(c.begin(), c.end());
       const ConjWord w = path_word(*s, p);
       if (!rw.reduces_to_empty(w))
-        fail(v, {0, s->name, {}, {path_text(*s, p)}, {w.str()},
+        fail(v, {0,
+                 s->name,
+                 {},
+                 {path_text(*s, p)},
+                 {w.str()},
                  fmt::format("({},{})-cycle {} in {} has W-label {}, which does not reduce to ε", i, j, path_text(*s, p), s->name, w.str())});
       reported.push_back(key);
     }
@@ -339,9 +373,8 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
     const NodeId x = rule.to_left(y);
     for (Dim d : {i, j}) {
       if (x != no_node) {
-        const bool loses = std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& a) {
-          return a.source == x && a.label == d && a.changed;
-        });
+        const bool loses =
+            std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& a) { return a.source == x && a.label == d && a.changed; });
         if (!loses) continue;
       }
       bool ok = false;
@@ -350,11 +383,15 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
         if (a.source == y && a.label == d && on_cycle_or_path(e)) ok = true;
       }
       if (!ok)
-        fail(v, {x != no_node ? 2 : 3, 'R', {R.name(y)}, {}, {},
+        fail(v, {x != no_node ? 2 : 3,
+                 'R',
+                 {R.name(y)},
+                 {},
+                 {},
                  x != no_node ? fmt::format("preserved node {} loses a {}-arc but is the source of no {}-arc in R on a ({},{})-cycle "
-                                            "or optimal path", R.name(y), d, d, i, j)
-                              : fmt::format("added node {} is the source of no {}-arc in R on a ({},{})-cycle or optimal path",
-                                            R.name(y), d, i, j)});
+                                            "or optimal path",
+                                            R.name(y), d, d, i, j)
+                              : fmt::format("added node {} is the source of no {}-arc in R on a ({},{})-cycle or optimal path", R.name(y), d, i, j)});
     }
   }
   return v;
@@ -374,7 +411,11 @@ RuleVerdict check_rule(const Rule& rule, const ArcWords& words) {
       const TopoGraph& R = rule.right();
       for (ArcId e = 0; e < R.arc_count(); ++e)
         if (R.arc(e).label == i && R.arc(e).source == R.arc(e).target && !rule.preserved_right_arc(e))
-          fail(v, {0, 'R', {R.name(R.arc(e).source)}, {arc_text(R, e, words.right, words.scheme)}, {},
+          fail(v, {0,
+                   'R',
+                   {R.name(R.arc(e).source)},
+                   {arc_text(R, e, words.right, words.scheme)},
+                   {},
                    fmt::format("added arc {} is a loop", arc_text(R, e, words.right, words.scheme))});
       r.conditions.push_back(std::move(v));
     }

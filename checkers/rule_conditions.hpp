@@ -54,7 +54,6 @@ struct RuleVerdict {
   const ConditionVerdict* find(const std::string& name) const;
 };
 
-
 /// An arc label as witnesses write it: "1", or "(w,1)" in a scheme.
 std::string label_text(Dim d, const ConjWord& w, bool scheme);
 /// An arc as witnesses write it: "a -1-> b", "a -(~1,2)-> b".

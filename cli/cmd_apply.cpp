@@ -133,8 +133,9 @@ int apply(const ApplyOptions& o) {
   // YAML file that its readers reject (or an OFF file without positions).
   const bool jba_out = o.output.ends_with(".jba"), mesh_out = is_mesh_path(o.output);
   if (!o.output.empty() && !jba_out && !mesh_out && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or OFF/OBJ meshes (.off, .obj)", o.output));
+    throw InputError(
+        "<command line>", 0, 0,
+        fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or OFF/OBJ meshes (.off, .obj)", o.output));
   const Catalog catalog = read_catalog(o.catalog);
   const CatalogRule* rule = catalog.find_rule(o.rule);
   if (!rule) throw InputError(o.catalog, 0, 0, fmt::format("no rule named '{}'", o.rule));

@@ -116,7 +116,11 @@ reports::Json json_rule(const CatalogRule& rule, const EventRule& view, const st
     }
     kinds.push_back(std::move(kind));
   }
-  return Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", true}, {"parameter", view.parameter}, {"orbit_types", std::move(kinds)}};
+  return Json{{"rule", rule.rule.name()},
+              {"model", rule.rule.model().name},
+              {"analysed", true},
+              {"parameter", view.parameter},
+              {"orbit_types", std::move(kinds)}};
 }
 
 }  // namespace
@@ -159,13 +163,13 @@ int events_command(const EventsOptions& o) {
     if (!o.map.empty()) {
       Map g = resolve_map(o.map, rule.rule.model(), &catalog);
       if (!(g.model() == rule.rule.model()))
-        throw InputError("<command line>", 0, 0, fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule,
-                                                             rule.rule.model().name));
+        throw InputError("<command line>", 0, 0,
+                         fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule, rule.rule.model().name));
       Map h = g;
       auto traced = dartcheck::apply(rule, h, o.hooks);
       if (!traced.ok()) {
-        fmt::print("rule {} does not apply at hook(s) {} of {} ({}): {}\n", rule.rule.name(), fmt::join(o.hooks, ","),
-                   describe_target(o.map, g), refusal_name(traced.refusal), traced.why);
+        fmt::print("rule {} does not apply at hook(s) {} of {} ({}): {}\n", rule.rule.name(), fmt::join(o.hooks, ","), describe_target(o.map, g),
+                   refusal_name(traced.refusal), traced.why);
         return violation;
       }
       where = fmt::format("hook {} of {} -> {} darts", fmt::join(o.hooks, ","), describe_target(o.map, g), h.size());

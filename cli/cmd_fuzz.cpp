@@ -35,8 +35,7 @@ using namespace analysis;  // the engines the commands call
 namespace {
 
 // The user's maps, built once per model that the fuzzed rules rewrite.
-std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::vector<Model>& models,
-                            const Catalog& catalog) {
+std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::vector<Model>& models, const Catalog& catalog) {
   std::vector<Map> out;
   if (models.empty()) return out;  // a catalog without rules: nothing to fuzz
   for (const auto& t : targets) {
@@ -55,14 +54,16 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
         why.push_back(fmt::format("{}: {}", m.name, e.what()));
       }
     }
-    if (built == 0) throw InputError("<command line>", 0, 0, fmt::format("--maps {}: not built for any model of the rules ({})", t, fmt::join(why, "; ")));
+    if (built == 0)
+      throw InputError("<command line>", 0, 0, fmt::format("--maps {}: not built for any model of the rules ({})", t, fmt::join(why, "; ")));
     for (const auto& w : why) fmt::print(stderr, "note: --maps {} is not used for {}\n", t, w);
   }
   for (const Map& m : out) {
     const auto report = check_map(m);
     if (!report.valid())
-      throw InputError("<command line>", 0, 0, fmt::format("--maps: a given {} of {} darts is not valid ({} violations): fuzzing needs valid hosts",
-                                                           m.model().name, m.size(), report.violations.size()));
+      throw InputError("<command line>", 0, 0,
+                       fmt::format("--maps: a given {} of {} darts is not valid ({} violations): fuzzing needs valid hosts", m.model().name, m.size(),
+                                   report.violations.size()));
   }
   return out;
 }
@@ -101,8 +102,7 @@ int fuzz(const FuzzCommand& c) {
     if (std::find(models.begin(), models.end(), s.model) != models.end()) seeds.push_back(build_source(s));
   for (auto& m : given_maps(c.maps, models, catalog)) seeds.push_back(std::move(m));
 
-  fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {} rule{}, {}\n", o.seed, o.seed, rules.size(),
-             rules.size() == 1 ? "" : "s",
+  fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {} rule{}, {}\n", o.seed, o.seed, rules.size(), rules.size() == 1 ? "" : "s",
              seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
                      : fmt::format("{} applications per rule", o.runs));
   const auto start = std::chrono::steady_clock::now();
@@ -181,8 +181,8 @@ int fuzz(const FuzzCommand& c) {
   }
   const std::size_t bugs = classes[FuzzClass::soundness_bug];
   fmt::print("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
-             results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs, bugs == 1 ? "" : "s",
-             applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
+             results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs,
+             bugs == 1 ? "" : "s", applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
   if (const auto line = reports::mismatch_summary(results); !line.empty()) fmt::print("{}\n", line);
   return status;
 }

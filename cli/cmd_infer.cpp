@@ -75,8 +75,13 @@ void write_output(const InferCommand& o, const KappaGraph& graph, const std::vec
   c.maps.push_back({"before", graph.model(), graph.before(), {}, {}, {}});
   c.maps.push_back({"after", graph.model(), graph.after(), {}, {}, {}});
   for (const auto* a : found) {
-    CatalogRule r{a->rule->operation, fmt::format("inferred by dartcheck infer from dart {} of {} on {}", a->start, o.before, orbit_type_str(a->rule->operation.jerboa->parameter)),
-                  {}, {}, std::vector<std::string>{}, {}};
+    CatalogRule r{
+        a->rule->operation,
+        fmt::format("inferred by dartcheck infer from dart {} of {} on {}", a->start, o.before, orbit_type_str(a->rule->operation.jerboa->parameter)),
+        {},
+        {},
+        std::vector<std::string>{},
+        {}};
     Example e;
     e.map = "before";
     e.hooks = {a->start};
@@ -93,11 +98,16 @@ void write_output(const InferCommand& o, const KappaGraph& graph, const std::vec
 int infer(const InferCommand& o) {
   if (o.format != "text" && o.format != "json") throw command_line(fmt::format("--format: expected text or json, got '{}'", o.format));
   UndecidedPolicy policy;
-  if (o.undecided == "keep") policy = UndecidedPolicy::keep;
-  else if (o.undecided == "free") policy = UndecidedPolicy::free;
-  else if (o.undecided == "fail") policy = UndecidedPolicy::fail;
-  else throw command_line(fmt::format("--undecided: expected keep, free or fail, got '{}'", o.undecided));
-  if (o.strict && policy != UndecidedPolicy::keep) throw command_line("--strict is the paper's algorithm, which relabels undecided positions: it takes no --undecided");
+  if (o.undecided == "keep")
+    policy = UndecidedPolicy::keep;
+  else if (o.undecided == "free")
+    policy = UndecidedPolicy::free;
+  else if (o.undecided == "fail")
+    policy = UndecidedPolicy::fail;
+  else
+    throw command_line(fmt::format("--undecided: expected keep, free or fail, got '{}'", o.undecided));
+  if (o.strict && policy != UndecidedPolicy::keep)
+    throw command_line("--strict is the paper's algorithm, which relabels undecided positions: it takes no --undecided");
   if (o.start && o.all) throw command_line("--start and --all exclude each other");
   if (!o.output.empty()) {
     const auto ext = std::filesystem::path(o.output).extension().string();
@@ -117,8 +127,10 @@ int infer(const InferCommand& o) {
     throw command_line(fmt::format("--orbit: {}", e.what()));
   }
   KappaSpec spec;
-  if (o.kappa == "identity") spec.identity = true;
-  else spec = read_kappa_file(o.kappa, before.model());
+  if (o.kappa == "identity")
+    spec.identity = true;
+  else
+    spec = read_kappa_file(o.kappa, before.model());
   const std::size_t g_size = before.size(), h_size = after.size();
   std::optional<KappaGraph> graph;
   try {
@@ -172,15 +184,16 @@ int infer(const InferCommand& o) {
     doc["attempts"] = std::move(rows);
     fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
-    fmt::print("infer {} from {} ({} darts) to {} ({} darts), {} preserved darts\n", orbit_type_str(OrbitType(orbit.begin(), orbit.end())), o.before, g_size,
-               o.after, h_size, graph->preserved());
+    fmt::print("infer {} from {} ({} darts) to {} ({} darts), {} preserved darts\n", orbit_type_str(OrbitType(orbit.begin(), orbit.end())), o.before,
+               g_size, o.after, h_size, graph->preserved());
     for (const auto& a : attempts) {
       fmt::print("  start {}: {} ({:.3f} ms)\n", a.start, outcome(a), a.seconds * 1e3);
       if (!a.inferred()) continue;
       const auto& op = a.rule->operation;
       fmt::print("    rule {}: |L| = {}, |R| = {}, {} preserved\n", op.rule.name(), op.rule.left().node_count(), op.rule.right().node_count(),
                  a.rule->preserved);
-      fmt::print("    L: {}\n    R: {}\n", side_text(op.rule.left(), op.words.left, op.jerboa->left), side_text(op.rule.right(), op.words.right, op.jerboa->right));
+      fmt::print("    L: {}\n    R: {}\n", side_text(op.rule.left(), op.words.left, op.jerboa->left),
+                 side_text(op.rule.right(), op.words.right, op.jerboa->right));
       if (!a.scheme->undecided.empty())
         fmt::print("    warning: positions the example does not decide (every link of that dimension in the hook orbit is a loop): {}\n",
                    undecided_text(*a.scheme, &*a.rule));

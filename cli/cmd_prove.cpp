@@ -106,7 +106,10 @@ int prove(const ProveCommand& c) {
     for (std::size_t i = 0; i < p.constraints.size(); ++i) {
       const auto& cp = p.constraints[i];
       fmt::print("  {:<11} static {:<5}  theorem: {:<36}  maps: {:<32}  {}\n", cp.constraint.name(),
-                 cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-", cp.theorem ? answer_text(*cp.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)",
+                 cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-",
+                 cp.theorem ? answer_text(*cp.theorem)
+                 : p.scheme ? "(scheme: maps only)"
+                            : "(no theorem)",
                  answer_text(cp.model), proofs::agreement_name(cp.agreement));
       if (!cp.note.empty()) fmt::print("  {:<11} {}\n", "", cp.note);
       if (cp.theorem && cp.theorem->status == Status::counterexample && c.explain)
@@ -114,9 +117,10 @@ int prove(const ProveCommand& c) {
       if (!result.proof_replays[i].empty()) fmt::print("  {:<11} replay: {}\n", "", printable(result.proof_replays[i]));
     }
   }
-  fmt::print("\n{} rules ({} in the solver's scope); {} constraints agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
-             "{:.1f} s\n",
-             results.size(), scoped, counts[0], counts[1], counts[2], counts[3], o.max_darts, o.rlimit, total);
+  fmt::print(
+      "\n{} rules ({} in the solver's scope); {} constraints agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
+      "{:.1f} s\n",
+      results.size(), scoped, counts[0], counts[1], counts[2], counts[3], o.max_darts, o.rlimit, total);
   if (const auto line = reports::mismatch_summary(results); !line.empty()) fmt::print("{}\n", line);
   return status;
 }

@@ -63,8 +63,8 @@ int query(const QueryOptions& o) {
   for (const auto& target : o.queries) {
     const Map q = load(target, *model, cat);
     if (!(q.model() == input.model()))
-      throw command_line(fmt::format("--query {}: a {} query on a {} map (a query's letters are the map's dimensions)", target, q.model().name,
-                                     input.model().name));
+      throw command_line(
+          fmt::format("--query {}: a {} query on a {} map (a query's letters are the map's dimensions)", target, q.model().name, input.model().name));
     if (o.start >= q.size()) throw command_line(fmt::format("--start {}: the query {} has {} darts", o.start, target, q.size()));
     try {
       queries.push_back({target, query_word(q, o.start, free_links)});
@@ -83,9 +83,12 @@ int query(const QueryOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const AllMatches all = all_matches(input, trie);
   std::vector<QueryMatch> shown;
-  if (o.strategy == "all") shown = all.distinct;
-  else if (o.strategy == "greedy") shown = greedy_matches(input, trie);
-  else shown = global_matches(all, input.size(), [](const QueryMatch& m) { return static_cast<double>(m.darts.size()); });
+  if (o.strategy == "all")
+    shown = all.distinct;
+  else if (o.strategy == "greedy")
+    shown = greedy_matches(input, trie);
+  else
+    shown = global_matches(all, input.size(), [](const QueryMatch& m) { return static_cast<double>(m.darts.size()); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::vector<std::size_t> per_query(queries.size(), 0);
   for (const auto& m : all.distinct) ++per_query[static_cast<std::size_t>(m.query)];
@@ -119,7 +122,8 @@ int query(const QueryOptions& o) {
         fmt::print("  {:<24} {:>4} darts  {} distinct matches\n", queries[k].name, queries[k].word.darts, per_query[k]);
     fmt::print("matches   {} raw (found from every start dart), {} distinct ({:.3f} s)\n", all.raw, all.distinct.size(), seconds);
     if (o.strategy != "all")
-      fmt::print("selected  {} without overlap ({})\n", shown.size(), o.strategy == "greedy" ? "greedy: from each dart in order" : "global: largest first");
+      fmt::print("selected  {} without overlap ({})\n", shown.size(),
+                 o.strategy == "greedy" ? "greedy: from each dart in order" : "global: largest first");
     for (std::size_t k = 0; k < listed; ++k)
       fmt::print("  {}: darts {}\n", queries[static_cast<std::size_t>(shown[k].query)].name, fmt::join(shown[k].darts, " "));
     if (listed < shown.size()) fmt::print("  ... {} more (--limit)\n", shown.size() - listed);

@@ -45,12 +45,16 @@ std::array<std::uint32_t, 8> medit_order(const std::array<std::uint32_t, 8>& c) 
 }  // namespace
 
 int recombine(const RecombineOptions& o) {
-  if (o.format != "text" && o.format != "json") throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", o.format));
+  if (o.format != "text" && o.format != "json")
+    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", o.format));
   if (!o.output.empty()) check_writable(o.output);  // before the work, not after it
   Strategy strategy;
-  if (o.strategy == "greedy") strategy = Strategy::greedy;
-  else if (o.strategy == "global") strategy = Strategy::global;
-  else throw InputError("<command line>", 0, 0, fmt::format("--strategy: expected greedy or global, got '{}'", o.strategy));
+  if (o.strategy == "greedy")
+    strategy = Strategy::greedy;
+  else if (o.strategy == "global")
+    strategy = Strategy::global;
+  else
+    throw InputError("<command line>", 0, 0, fmt::format("--strategy: expected greedy or global, got '{}'", o.strategy));
   if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".mesh")
     throw InputError("<command line>", 0, 0, fmt::format("-o: expected a medit .mesh file, got '{}'", o.output));
   const auto start = Clock::now();
@@ -110,9 +114,14 @@ int recombine(const RecombineOptions& o) {
     doc["valid"] = output_check.valid();
     doc["quality_min"] = number_or_null(q_min);
     doc["quality_median"] = number_or_null(q_median);
-    doc["seconds"] = Json{{"read", read_seconds},   {"check_input", input_check_seconds}, {"queries", query_seconds},
-                          {"match", r.match_seconds}, {"select", r.select_seconds},         {"merge", r.merge_seconds},
-                          {"check_output", output_check_seconds}, {"total", total}};
+    doc["seconds"] = Json{{"read", read_seconds},
+                          {"check_input", input_check_seconds},
+                          {"queries", query_seconds},
+                          {"match", r.match_seconds},
+                          {"select", r.select_seconds},
+                          {"merge", r.merge_seconds},
+                          {"check_output", output_check_seconds},
+                          {"total", total}};
     doc["tets_per_second"] = tets_per_second;
     doc["peak_mib"] = peak_mib();
     fmt::print("{}\n", reports::json_text(std::move(doc)));
@@ -123,7 +132,8 @@ int recombine(const RecombineOptions& o) {
     fmt::print("matches     {} raw, {} distinct, {} with 8 distinct corners and scaled Jacobian above {} ({:.3f} s)\n", r.raw_matches,
                r.distinct_matches, r.acceptable, o.min_quality, r.match_seconds);
     fmt::print("selection   {} hexes, {} ({:.3f} s)\n", r.hexes,
-               strategy == Strategy::greedy ? "greedy: the first match from each dart in order" : "global: by scaled Jacobian, best first", r.select_seconds);
+               strategy == Strategy::greedy ? "greedy: the first match from each dart in order" : "global: by scaled Jacobian, best first",
+               r.select_seconds);
     if (!q.empty()) fmt::print("quality     scaled Jacobian of the hexes: min {:.3f}, median {:.3f}\n", q_min, q_median);
     fmt::print("merge       {:.3f} s\n", r.merge_seconds);
     fmt::print("result      {} hexes, {} tetrahedra; {} darts ({} expected: 36 per hex + 12 per tetrahedron), {} ({:.3f} s)\n", r.hexes, r.tets,
@@ -132,7 +142,8 @@ int recombine(const RecombineOptions& o) {
     if (!o.output.empty()) fmt::print("written     {}\n", o.output);
   }
   if (!output_check.valid() || !darts_ok) {
-    fmt::print(stderr, "BUG: the recombined map is {} ({} darts, {} expected)\n", output_check.valid() ? "valid" : "invalid", in.map.map.size(), expected_darts);
+    fmt::print(stderr, "BUG: the recombined map is {} ({} darts, {} expected)\n", output_check.valid() ? "valid" : "invalid", in.map.map.size(),
+               expected_darts);
     return soundness_bug;
   }
   return ok;

@@ -89,21 +89,23 @@ int report(const ReportOptions& o) {
   for (const auto& e : catalog.rules)
     if (o.rule.empty() || e.rule.name() == o.rule) rows.push_back(analyse_static(catalog, e, 0, {}, source));
   const auto static_counts = count_results(rows);
-  std::string summary = fmt::format("<p>{} rule{}: {} consistent, {} with failing conditions; {} static verdicts differ from the {}.</p>\n", rows.size(),
-                                    rows.size() == 1 ? "" : "s", static_counts.consistent, static_counts.failing, static_counts.mismatches,
-                                    o.baseline.empty() ? "catalog" : "baseline");
+  std::string summary = fmt::format("<p>{} rule{}: {} consistent, {} with failing conditions; {} static verdicts differ from the {}.</p>\n",
+                                    rows.size(), rows.size() == 1 ? "" : "s", static_counts.consistent, static_counts.failing,
+                                    static_counts.mismatches, o.baseline.empty() ? "catalog" : "baseline");
   if (seconds) summary += fuzz_stage(rows, catalog, o, *seconds, cx_dir);
   if (o.prove_darts > 0) summary += prove_stage(rows, o, cx_dir);
   for (const auto& sk : catalog.skipped)
     summary += fmt::format("<p class=\"mismatch\">Skipped {} ({}): {}</p>\n", html_text(sk.name), html_text(sk.location.str()), html_text(sk.why));
   const auto counts = count_results(rows);
   if (counts.unsound)
-    summary += fmt::format("<p class=\"mismatch\">{} rule{} with a SOUNDNESS BUG or a disagreement.</p>\n", counts.unsound, counts.unsound == 1 ? "" : "s");
+    summary +=
+        fmt::format("<p class=\"mismatch\">{} rule{} with a SOUNDNESS BUG or a disagreement.</p>\n", counts.unsound, counts.unsound == 1 ? "" : "s");
 
   reports::Pictures pictures(dir.string(), o.engine);
   std::string body = fmt::format("<h1>dartcheck report: {}</h1>\n", html_text(o.catalog)) + summary;
-  body += "<p class=\"note\">Pictures: L and R side by side; preserved black, deleted red, added green; hooks with a double border; "
-          "filled nodes and doubled arcs are the witnesses of a failed condition. Links: 0 black, 1 red, 2 blue, 3 green.</p>\n";
+  body +=
+      "<p class=\"note\">Pictures: L and R side by side; preserved black, deleted red, added green; hooks with a double border; "
+      "filled nodes and doubled arcs are the witnesses of a failed condition. Links: 0 black, 1 red, 2 blue, 3 green.</p>\n";
   body += reports::verdict_table_html(rows, seconds.has_value(), o.prove_darts > 0);
   for (const auto& r : rows) body += reports::rule_section_html(r, pictures);
   const std::string index = (dir / "index.html").string(), data = (dir / "results.json").string();
@@ -111,7 +113,8 @@ int report(const ReportOptions& o) {
   write_file(index, page);
   // The same results as data, in check's JSON form, beside the page.
   write_file(data, reports::json_text(reports::results_document("report", o.catalog, catalog, rows, baseline_mismatches)) + "\n");
-  fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes) and {}\n", index, rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size(), data);
+  fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes) and {}\n", index, rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size(),
+             data);
   return finish_run(rows, baseline_mismatches, rows.size());
 }
 

@@ -39,8 +39,8 @@ static std::optional<std::string> separating_map(const Model& model, const ConjW
     for (Dart d = 0; d < map.size(); ++d) {
       const Dart a = follow(map, d, w), b = follow(map, d, w2);
       if (a != b)
-        return fmt::format("on a random {} of {} darts (seed 1, attempt {}) the paths from dart {} end at {} and {}", model.name,
-                           map.size(), attempt, d, a, b);
+        return fmt::format("on a random {} of {} darts (seed 1, attempt {}) the paths from dart {} end at {} and {}", model.name, map.size(), attempt,
+                           d, a, b);
     }
   }
   return std::nullopt;
@@ -71,8 +71,10 @@ int words(const WordsOptions& o) {
         return fmt::format("\nZ3: a {} of {} darts separates them at dart 0 (ends {} and {}):\n{}", model->name, m.size(), follow(m, 0, w),
                            follow(m, 0, w2), map_to_yaml(m));
       }
-      case proofs::Answer::unsat: return fmt::format("\nZ3: no {} of up to {} darts separates them", model->name, o.prove_darts);
-      case proofs::Answer::unknown: return "\nZ3: unknown (rlimit reached)";
+      case proofs::Answer::unsat:
+        return fmt::format("\nZ3: no {} of up to {} darts separates them", model->name, o.prove_darts);
+      case proofs::Answer::unknown:
+        return "\nZ3: unknown (rlimit reached)";
     }
     return "";
   };
@@ -83,16 +85,15 @@ int words(const WordsOptions& o) {
   }
   if (solver && solver->answer != proofs::Answer::unknown) {
     fmt::print("{} and {}: {} has no rewriting to ε in R_{{N,E}}{}\n", w.str(), w2.str(), probe.str(), solver_line());
-    if (solver->answer == proofs::Answer::unsat)
-      fmt::print("note: R_{{N,E}} does not prove them congruent, yet no bounded map separates them\n");
+    if (solver->answer == proofs::Answer::unsat) fmt::print("note: R_{{N,E}} does not prove them congruent, yet no bounded map separates them\n");
     return violation;
   }
   if (auto witness = separating_map(*model, w, w2)) {
     fmt::print("{} and {}: not congruent: {}{}\n", w.str(), w2.str(), *witness, solver_line());
     return violation;
   }
-  fmt::print("{} and {}: not shown congruent ({} has no rewriting to ε, and no random map separates them){}\n", w.str(),
-             w2.str(), probe.str(), solver_line());
+  fmt::print("{} and {}: not shown congruent ({} has no rewriting to ε, and no random map separates them){}\n", w.str(), w2.str(), probe.str(),
+             solver_line());
   return violation;
 }
 

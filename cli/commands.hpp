@@ -36,9 +36,9 @@ int convert(const ConvertOptions& o);
 
 struct ReportOptions {
   std::string catalog, rule, output, engine = "dot";
-  std::string baseline;          // recorded verdicts from a YAML side file (io/baseline.hpp)
-  std::string fuzz;              // a duration: fuzz every rule within it (empty: no fuzzing)
-  std::size_t prove_darts = 0;   // ask Z3 for counterexamples of up to this many darts (0: no)
+  std::string baseline;         // recorded verdicts from a YAML side file (io/baseline.hpp)
+  std::string fuzz;             // a duration: fuzz every rule within it (empty: no fuzzing)
+  std::size_t prove_darts = 0;  // ask Z3 for counterexamples of up to this many darts (0: no)
   std::optional<std::uint64_t> seed;
 };
 /// DIR/index.html and the SVG pictures; 3 on a soundness bug or a

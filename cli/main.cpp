@@ -17,14 +17,16 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dartcheck ") + DARTCHECK_VERSION);
   // Counts and seeds: CLI11 would read "-5" into an unsigned option as 2^64 - 5.
-  const CLI::Validator counts(
-      [](std::string& text) { return text.starts_with('-') ? "expected a number >= 0, got " + text : std::string(); }, "NUMBER >= 0");
+  const CLI::Validator counts([](std::string& text) { return text.starts_with('-') ? "expected a number >= 0, got " + text : std::string(); },
+                              "NUMBER >= 0");
   // Input limits (core/limits.hpp), for the whole run, before input is read.
   auto& lim = limits();
   app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")->capture_default_str()->check(CLI::PositiveNumber);
   // At most 10,000: a 25,000-deep sum overflowed the checker's recursion on an 8 MiB stack.
-  app.add_option("--limit-term-depth", lim.term_depth, "deepest nesting of a term (at most 10000)")->capture_default_str()->check(CLI::Range(1, 10000));
+  app.add_option("--limit-term-depth", lim.term_depth, "deepest nesting of a term (at most 10000)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000));
   app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->check(CLI::PositiveNumber);
 
@@ -59,7 +61,8 @@ int main(int argc, char** argv) {
   c->add_flag("--explain", check.explain, "print the witnesses of every failing condition and the counterexample map");
   c->add_option("--confirm-darts", check.confirm_darts,
                 "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
-      ->capture_default_str()->check(counts);
+      ->capture_default_str()
+      ->check(counts);
 
   cli::EventsOptions events;
   auto* ev = app.add_subcommand("events", "Topological events of every rule (004): creation, deletion, split, merge, modification per orbit type");
@@ -79,31 +82,37 @@ int main(int argc, char** argv) {
   w->add_option("--prove", words.prove_darts, "with WORD2: ask Z3 for a map of up to this many darts on which the two paths differ")->check(counts);
 
   cli::FuzzCommand fuzz;
-  auto* f = app.add_subcommand("fuzz", "Apply every rule at many matches on enumerated, given and random maps; set failures against the static verdict");
+  auto* f =
+      app.add_subcommand("fuzz", "Apply every rule at many matches on enumerated, given and random maps; set failures against the static verdict");
   f->add_option("catalog", fuzz.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   f->add_option("--rule", fuzz.rule, "fuzz only this rule");
   f->add_option("--time", fuzz.time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
   f->add_option("--runs", fuzz.runs, "applications per rule (default 10000 without --time)")->check(counts);
   f->add_option("--event-checks", fuzz.event_checks,
                 "applications per consistent rule whose event logs are set against its static events (004; 0: none)")
-      ->capture_default_str()->check(counts);
+      ->capture_default_str()
+      ->check(counts);
   f->add_option("--baseline", fuzz.baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   f->add_option("--seed", fuzz.seed, "random seed (default: drawn and printed)")->check(counts);
   f->add_option("--max-darts", fuzz.max_darts, "largest random host")->capture_default_str()->check(counts);
   f->add_option("--maps", fuzz.maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
   // -o/--output as every other command; --out, the old spelling, stays.
   f->add_option("-o,--output,--out", fuzz.out, "directory: write each counterexample here (host, match, result and a replay command)");
-  f->add_option("--format", fuzz.format, "text, json, or jsonl (a JSON line per rule as it finishes, then a summary line)")->capture_default_str()->check(CLI::IsMember({"text", "json", "jsonl"}));
+  f->add_option("--format", fuzz.format, "text, json, or jsonl (a JSON line per rule as it finishes, then a summary line)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"text", "json", "jsonl"}));
 
   cli::ProveCommand prove;
-  auto* p = app.add_subcommand("prove", "Ask Z3 for a host whose derived map breaks a constraint (bounded), and set the answer against the static verdict");
+  auto* p =
+      app.add_subcommand("prove", "Ask Z3 for a host whose derived map breaks a constraint (bounded), and set the answer against the static verdict");
   p->add_option("catalog", prove.catalog, "YAML catalog or Jerboa .jme modeler")->required();
   p->add_option("--rule", prove.rule, "prove only this rule");
   p->add_option("--baseline", prove.baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   p->add_option("--max-darts", prove.max_darts, "search hosts of up to this many darts")->capture_default_str()->check(counts);
   p->add_option("--scheme-darts", prove.scheme_darts,
                 "for rule schemes, hosts of up to this many darts (at most --max-darts): H has that many darts per node of R")
-      ->capture_default_str()->check(counts);
+      ->capture_default_str()
+      ->check(counts);
   p->add_option("--rlimit", prove.rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str()->check(counts);
   p->add_option("--timeout", prove.timeout, "also stop a query after this many seconds (answers then depend on the machine)")->check(counts);
   p->add_option("-o,--output,--out", prove.out, "directory: write each counterexample on a map of the model here, with a replay command");
@@ -122,10 +131,12 @@ int main(int argc, char** argv) {
   cv->add_option("-o,--output", convert.output, "the YAML catalog to write")->required();
   cli::InferCommand infer;
   auto* inf = app.add_subcommand("infer", "Infer the rule scheme of one before/after example by folding (000), check it and apply it back");
-  inf->add_option("--before", infer.before, "the map before: catalog map name (with --catalog), map file (.yaml, .jba, .off, .obj) or shape")->required();
+  inf->add_option("--before", infer.before, "the map before: catalog map name (with --catalog), map file (.yaml, .jba, .off, .obj) or shape")
+      ->required();
   inf->add_option("--after", infer.after, "the map after, same forms")->required();
   inf->add_option("--orbit", infer.orbit, "the rule's parameter orbit type, e.g. \"<0,1,2>\"")->required();
-  inf->add_option("--kappa", infer.kappa, "preserved darts: identity (same dart ids) or a YAML file of pairs and orbit associations")->capture_default_str();
+  inf->add_option("--kappa", infer.kappa, "preserved darts: identity (same dart ids) or a YAML file of pairs and orbit associations")
+      ->capture_default_str();
   inf->add_option("--catalog", infer.catalog, "catalog whose maps --before and --after may name");
   inf->add_option("--model", infer.model, "model for meshes and shapes")->capture_default_str();
   inf->add_option("--start", infer.start, "fold from this dart of the before map only")->check(counts);
@@ -141,7 +152,8 @@ int main(int argc, char** argv) {
   cli::RecombineOptions recombine;
   auto* rc = app.add_subcommand("recombine", "Recombine a tetrahedral mesh into hexahedra by query-modify (001 Sec. 7.1) and check the result");
   rc->add_option("mesh", recombine.mesh, "tetrahedral mesh: TetGen .node/.ele or medit .mesh")->required();
-  rc->add_option("--strategy", recombine.strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")->capture_default_str();
+  rc->add_option("--strategy", recombine.strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")
+      ->capture_default_str();
   rc->add_option("--min-quality", recombine.min_quality, "smallest scaled Jacobian a hex must exceed (-1 keeps inverted ones)")
       ->capture_default_str()
       ->check(CLI::Range(-1.0, 1.0));
@@ -150,12 +162,15 @@ int main(int argc, char** argv) {
 
   cli::QueryOptions query;
   auto* qy = app.add_subcommand("query", "Find query maps in a map by query words (001 Sec. 5): every match, or a selection without overlap");
-  qy->add_option("map", query.map, "the map: map file (.yaml, .jba, .off, .obj), tetrahedral mesh (.node, .ele, .mesh), catalog map name or shape")->required();
+  qy->add_option("map", query.map, "the map: map file (.yaml, .jba, .off, .obj), tetrahedral mesh (.node, .ele, .mesh), catalog map name or shape")
+      ->required();
   qy->add_option("--query", query.queries, "a query map, same forms (repeat); connected");
   qy->add_flag("--hex", query.hex, "add the 322 hex patterns of the tet -> hex recombination (open 3-O-maps)");
   qy->add_option("--start", query.start, "the query dart labeled 1")->capture_default_str()->check(counts);
-  qy->add_option("--free", query.free, "condition on the queries' free links: any (*), boundary (ε), interior (ε̄) or no-link (↔)")->capture_default_str();
-  qy->add_option("--strategy", query.strategy, "all (every distinct match), greedy or global (largest first), without overlap")->capture_default_str();
+  qy->add_option("--free", query.free, "condition on the queries' free links: any (*), boundary (ε), interior (ε̄) or no-link (↔)")
+      ->capture_default_str();
+  qy->add_option("--strategy", query.strategy, "all (every distinct match), greedy or global (largest first), without overlap")
+      ->capture_default_str();
   qy->add_option("--catalog", query.catalog, "catalog whose maps the map and queries may name");
   qy->add_option("--model", query.model, "model for meshes and shapes")->capture_default_str();
   qy->add_option("--limit", query.limit, "matches printed")->capture_default_str()->check(counts);

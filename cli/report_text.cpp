@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-
 #include "core/input_error.hpp"
 #include "core/orbit.hpp"
 

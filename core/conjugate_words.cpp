@@ -44,8 +44,7 @@ ConjWord parse_conj_word(std::string_view text, const Model& model) {
       continue;
     }
     // U+0304 COMBINING MACRON (0xCC 0x84) after a digit: the paper's overbar.
-    if (static_cast<unsigned char>(c) == 0xCC && k + 1 < text.size() &&
-        static_cast<unsigned char>(text[k + 1]) == 0x84) {
+    if (static_cast<unsigned char>(c) == 0xCC && k + 1 < text.size() && static_cast<unsigned char>(text[k + 1]) == 0x84) {
       if (w.empty()) fail(k, "an overbar must follow a dimension");
       const Dim d = w.dim(w.size() - 1);
       ConjWord shorter = ConjWord::from_code(w.code().substr(0, w.size() - 1));
@@ -66,8 +65,7 @@ ConjWord parse_conj_word(std::string_view text, const Model& model) {
 }
 
 Dart follow(const Map& map, Dart d, const ConjWord& w) {
-  for (std::size_t k = 0; k < w.size() && d != no_dart; ++k)
-    d = w.bar(k) ? map.inverse_link(w.dim(k), d) : map.link(w.dim(k), d);
+  for (std::size_t k = 0; k < w.size() && d != no_dart; ++k) d = w.bar(k) ? map.inverse_link(w.dim(k), d) : map.link(w.dim(k), d);
   return d;
 }
 
@@ -85,9 +83,7 @@ ConjWord ConjugateRewriting::normalize(ConjWord w) const {
 }
 
 // The conjugate of a letter: flip the bar of an oriented dimension.
-static char conj_letter(const Model& m, char x) {
-  return m.is_oriented(static_cast<unsigned char>(x) >> 1) ? static_cast<char>(x ^ 1) : x;
-}
+static char conj_letter(const Model& m, char x) { return m.is_oriented(static_cast<unsigned char>(x) >> 1) ? static_cast<char>(x ^ 1) : x; }
 
 ConjWord ConjugateRewriting::conjugate(const ConjWord& w) const {
   std::string code(w.code().rbegin(), w.code().rend());
@@ -123,8 +119,7 @@ std::vector<ConjugateRewriting::Step> ConjugateRewriting::steps(const ConjWord& 
   const std::string& c = w.code();
   std::string child;
   for (std::size_t k = 0; k + 1 < c.size(); ++k)
-    if (rewrite_at(c, k, child))
-      out.push_back({cancels(c[k], c[k + 1]) ? Step::cancel : Step::swap, k, ConjWord::from_code(child)});
+    if (rewrite_at(c, k, child)) out.push_back({cancels(c[k], c[k + 1]) ? Step::cancel : Step::swap, k, ConjWord::from_code(child)});
   return out;
 }
 
@@ -163,9 +158,8 @@ const std::vector<ConjWord>& ConjugateRewriting::normal_forms(const ConjWord& w)
   const auto& ids = nf_ids(normalize(w).code());
   nf_result_.clear();
   for (auto id : ids) nf_result_.push_back(interned_[id]);
-  std::sort(nf_result_.begin(), nf_result_.end(), [](const ConjWord& a, const ConjWord& b) {
-    return a.size() != b.size() ? a.size() < b.size() : a < b;
-  });
+  std::sort(nf_result_.begin(), nf_result_.end(),
+            [](const ConjWord& a, const ConjWord& b) { return a.size() != b.size() ? a.size() < b.size() : a < b; });
   return nf_result_;
 }
 

@@ -17,8 +17,10 @@ class DartIndex {
   static constexpr std::uint32_t none = static_cast<std::uint32_t>(-1);
   /// `expected` darts will be stored among darts below `universe`.
   DartIndex(std::size_t expected, std::size_t universe) : universe_(universe) {
-    if (expected * 8 >= universe) dense_.assign(universe, none);
-    else sparse_.reserve(expected);
+    if (expected * 8 >= universe)
+      dense_.assign(universe, none);
+    else
+      sparse_.reserve(expected);
   }
   std::uint32_t get(Dart d) const { return d < dense_.size() ? dense_[d] : lookup(d); }
   /// Calls f(dart, value) for every dart set (dense: in dart order).

@@ -87,9 +87,7 @@ class Map {
   int pred_slot(Dim i) const { return pred_slot_[i]; }
   std::span<const Dart> raw() const { return links_; }
 
-  friend bool operator==(const Map& a, const Map& b) {
-    return a.model_ == b.model_ && a.size() == b.size() && a.links_ == b.links_;
-  }
+  friend bool operator==(const Map& a, const Map& b) { return a.model_ == b.model_ && a.size() == b.size() && a.links_ == b.links_; }
 
  private:
   Dart& slot(Dart d, int s) { return links_[d * stride_ + static_cast<std::size_t>(s)]; }

@@ -56,9 +56,7 @@ Model Model::open_omap(int n) {
   return m;
 }
 
-std::string_view Model::known_names() {
-  return "N-gmap, N-omap, N-closed-gmap, N-open-omap (N from 1 to 15 for O-maps, 0 to 15 for G-maps)";
-}
+std::string_view Model::known_names() { return "N-gmap, N-omap, N-closed-gmap, N-open-omap (N from 1 to 15 for O-maps, 0 to 15 for G-maps)"; }
 
 std::optional<Model> Model::by_name(std::string_view name) {
   int n = -1;

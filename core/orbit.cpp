@@ -87,8 +87,7 @@ std::size_t OrbitWalker::count_orbits(std::span<const Word> generators) {
 
 long long CellCounts::euler() const {
   long long chi = 0;
-  for (std::size_t k = 0; k < cells.size(); ++k)
-    chi += (k % 2 == 0 ? 1 : -1) * static_cast<long long>(cells[k]);
+  for (std::size_t k = 0; k < cells.size(); ++k) chi += (k % 2 == 0 ? 1 : -1) * static_cast<long long>(cells[k]);
   return chi;
 }
 

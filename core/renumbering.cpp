@@ -10,13 +10,9 @@ void Renumbering::map(Dart g, Dart h) {
   h2g_.set(h, g);
 }
 
-void Renumbering::deleted(Dart g) {
-  g2h_.set(g, gone);
-}
+void Renumbering::deleted(Dart g) { g2h_.set(g, gone); }
 
-void Renumbering::created(Dart h) {
-  h2g_.set(h, gone);
-}
+void Renumbering::created(Dart h) { h2g_.set(h, gone); }
 
 Renumbering Renumbering::then(const Renumbering& next) const {
   Renumbering out(g_size_, next.h_size_, 16);

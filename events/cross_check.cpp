@@ -26,16 +26,18 @@ bool involves(const LoggedEvent& e, bool before, Dart rep) {
 
 }  // namespace
 
-CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t,
-                       const EventLog& dynamic, const EventLog& instantiated) {
+CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t, const EventLog& dynamic,
+                       const EventLog& instantiated) {
   CrossCheck out;
   const std::string o = k.kind.str();
   if (dynamic.events != instantiated.events) {
     std::set<LoggedEvent> a(dynamic.events.begin(), dynamic.events.end()), b(instantiated.events.begin(), instantiated.events.end());
     for (const auto& e : a)
-      if (!b.count(e)) out.contradictions.push_back(fmt::format("{}: dynamic detection finds '{}', the instantiation does not", o, event_line(k.kind, e)));
+      if (!b.count(e))
+        out.contradictions.push_back(fmt::format("{}: dynamic detection finds '{}', the instantiation does not", o, event_line(k.kind, e)));
     for (const auto& e : b)
-      if (!a.count(e)) out.contradictions.push_back(fmt::format("{}: the instantiation finds '{}', dynamic detection does not", o, event_line(k.kind, e)));
+      if (!a.count(e))
+        out.contradictions.push_back(fmt::format("{}: the instantiation finds '{}', dynamic detection does not", o, event_line(k.kind, e)));
   }
   const Rule& rule = *r.rule;
   const Renumbering c = t.renumbering(rule, h.size());
@@ -55,7 +57,8 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
     return std::any_of(dynamic.events.begin(), dynamic.events.end(), [&](const LoggedEvent& e) { return e.event == ev && involves(e, before, rep); });
   };
   auto claim_name = [&](const EventClaim& cl) {
-    return fmt::format("{} {} of {}", certainty_name(cl.certainty), event_name(cl.event), rule_orbit_name(r, k, cl.event != Event::creation, cl.orbit));
+    return fmt::format("{} {} of {}", certainty_name(cl.certainty), event_name(cl.event),
+                       rule_orbit_name(r, k, cl.event != Event::creation, cl.orbit));
   };
 
   for (const EventClaim& cl : k.claims) {
@@ -85,7 +88,8 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
           for (Dart d : t.match[v]) {
             if (grep[d] != rep || !witness.empty()) continue;
             const Dart e = g.link(*label, d);
-            if (e == d) witness = fmt::format("the {}-link of dart {} is a loop", *label, d);
+            if (e == d)
+              witness = fmt::format("the {}-link of dart {} is a loop", *label, d);
             else if (e != no_dart && c.to_h(d) != no_dart && c.to_h(e) != no_dart && hrep[c.to_h(d)] == hrep[c.to_h(e)])
               witness = fmt::format("darts {} and {} ({}-linked in G) stay in one orbit of H: the orbit is folded", d, e, *label);
           }
@@ -98,7 +102,8 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
           for (Dart d : t.comatch[v]) {
             if (!witness.empty() || c.to_g(d) == no_dart || grep[c.to_g(d)] != rep) continue;
             const Dart e = h.link(*label, d);
-            if (e == d) witness = fmt::format("the {}-link of dart {} of H is a loop", *label, d);
+            if (e == d)
+              witness = fmt::format("the {}-link of dart {} of H is a loop", *label, d);
             else if (e != no_dart && c.to_g(e) != no_dart && grep[c.to_g(d)] == grep[c.to_g(e)])
               witness = fmt::format("darts {} and {} of H ({}-linked) were already in one orbit of G: the orbit is folded", d, e, *label);
           }
@@ -129,7 +134,8 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
       for (const EventClaim& cl : k.claims)
         announced = announced || (cl.event == e.event && cl.event != Event::creation && touched_g[static_cast<std::size_t>(cl.orbit)].count(rep));
       if (!announced)
-        out.contradictions.push_back(fmt::format("{}: '{}' on G{}({}) was not announced by any rule orbit that matches it", o, event_line(k.kind, e), o, rep));
+        out.contradictions.push_back(
+            fmt::format("{}: '{}' on G{}({}) was not announced by any rule orbit that matches it", o, event_line(k.kind, e), o, rep));
     }
   }
   return out;

@@ -27,7 +27,7 @@ struct CrossCheck {
 };
 
 /// `g` before and `h` after the application traced by `t`.
-CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t,
-                       const EventLog& dynamic, const EventLog& instantiated);
+CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t, const EventLog& dynamic,
+                       const EventLog& instantiated);
 
 }  // namespace dartcheck::events

@@ -136,8 +136,7 @@ int find(std::vector<std::uint32_t>& parent, std::uint32_t x) {
 // The orbits of one side's instance: complete rule orbits by union-find on
 // (node, position) pairs, incomplete ones by traversal from their darts.
 void side_instance(const Map& m, const EventRule& r, const EventSide& side, const SideOrbits& so, const OrbitKind& kind,
-                   const std::vector<std::vector<Dart>>& darts, const std::optional<PatternGraphs>& pattern, Orbits& out,
-                   DartIndex& orbit_of) {
+                   const std::vector<std::vector<Dart>>& darts, const std::optional<PatternGraphs>& pattern, Orbits& out, DartIndex& orbit_of) {
   const std::size_t np = darts.empty() ? 0 : darts[0].size();
   std::vector<int> step_of(r.parameter.size(), -1);
   if (pattern)
@@ -163,7 +162,8 @@ void side_instance(const Map& m, const EventRule& r, const EventSide& side, cons
     std::iota(parent.begin(), parent.end(), 0U);
     auto local = [&](NodeId v) { return static_cast<std::size_t>(std::lower_bound(x.nodes.begin(), x.nodes.end(), v) - x.nodes.begin()); };
     auto unite = [&](std::size_t i, std::size_t j) {
-      parent[static_cast<std::size_t>(find(parent, static_cast<std::uint32_t>(i)))] = static_cast<std::uint32_t>(find(parent, static_cast<std::uint32_t>(j)));
+      parent[static_cast<std::size_t>(find(parent, static_cast<std::uint32_t>(i)))] =
+          static_cast<std::uint32_t>(find(parent, static_cast<std::uint32_t>(j)));
     };
     for (ArcId e : side.explicit_arcs) {
       const auto& a = side.graph->arc(e);
@@ -240,10 +240,10 @@ EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const 
     if (v == DartIndex::none) throw std::logic_error(fmt::format("dart {} is outside the instantiated orbits", d));
     return v;
   };
-  return {k.kind, derive(
-                      g, h, k.kind, go, ho, [&](Dart d) { return c.to_h(d); }, [&](Dart d) { return c.to_g(d); },
-                      [&](Dart d) { return lookup(h_of, d); }, [&](Dart d) { return lookup(g_of, d); },
-                      [&](Dart d) { return is_matched.get(d) != DartIndex::none; }, true)};
+  return {k.kind,
+          derive(
+              g, h, k.kind, go, ho, [&](Dart d) { return c.to_h(d); }, [&](Dart d) { return c.to_g(d); }, [&](Dart d) { return lookup(h_of, d); },
+              [&](Dart d) { return lookup(g_of, d); }, [&](Dart d) { return is_matched.get(d) != DartIndex::none; }, true)};
 }
 
 std::string event_line(const OrbitKind& kind, const LoggedEvent& e) {
@@ -254,9 +254,12 @@ std::string event_line(const OrbitKind& kind, const LoggedEvent& e) {
     return n.size() == 1 ? n[0] : fmt::format("{{{}}}", fmt::join(n, ", "));
   };
   switch (e.event) {
-    case Event::creation: return fmt::format("creation {}", names('H', e.after));
-    case Event::deletion: return fmt::format("deletion {}", names('G', e.before));
-    default: return fmt::format("{} {} -> {}", event_name(e.event), names('G', e.before), names('H', e.after));
+    case Event::creation:
+      return fmt::format("creation {}", names('H', e.after));
+    case Event::deletion:
+      return fmt::format("deletion {}", names('G', e.before));
+    default:
+      return fmt::format("{} {} -> {}", event_name(e.event), names('G', e.before), names('H', e.after));
   }
 }
 

@@ -12,8 +12,7 @@ std::string arc_text(const TopoGraph& g, const Arc<int>& a, const ConjWord& w) {
 }
 
 // Fills side.labels and side.explicit_arcs; returns why not, or "".
-std::string read_side(const TopoGraph& g, const std::vector<ConjWord>& words, const std::vector<Dim>& parameter, EventSide& side,
-                      const char* which) {
+std::string read_side(const TopoGraph& g, const std::vector<ConjWord>& words, const std::vector<Dim>& parameter, EventSide& side, const char* which) {
   side.graph = &g;
   side.labels.assign(g.node_count(), std::vector<std::optional<Dim>>(parameter.size()));
   for (ArcId e = 0; e < g.arc_count(); ++e) {

@@ -38,8 +38,7 @@ OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
       s += text[i];
     }
   }
-  if (s.size() < 2 || s.front() != '<' || s.back() != '>')
-    throw std::invalid_argument(fmt::format("orbit type '{}' is not of the form <0,1>", text));
+  if (s.size() < 2 || s.front() != '<' || s.back() != '>') throw std::invalid_argument(fmt::format("orbit type '{}' is not of the form <0,1>", text));
   OrbitKind kind;
   const std::string body = s.substr(1, s.size() - 2);
   if (body.empty()) throw std::invalid_argument(fmt::format("orbit type '{}' is empty: give at least one dimension", text));
@@ -59,8 +58,7 @@ OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
       for (char c : entry) w.push_back(c - '0');
     }
     for (Dim d : w)
-      if (!model.contains(d))
-        throw std::invalid_argument(fmt::format("orbit type '{}': {} is not a dimension of {}", text, d, model.name));
+      if (!model.contains(d)) throw std::invalid_argument(fmt::format("orbit type '{}': {} is not a dimension of {}", text, d, model.name));
     if (std::find(kind.generators.begin(), kind.generators.end(), w) != kind.generators.end())
       throw std::invalid_argument(fmt::format("orbit type '{}': '{}' repeats", text, entry));
     kind.generators.push_back(std::move(w));

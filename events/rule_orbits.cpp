@@ -8,7 +8,8 @@ namespace dartcheck::events {
 namespace {
 
 int find(std::vector<int>& parent, int x) {
-  while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+  while (parent[static_cast<std::size_t>(x)] != x)
+    x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
   return x;
 }
 

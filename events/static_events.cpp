@@ -10,21 +10,30 @@ namespace dartcheck::events {
 
 std::string_view event_name(Event e) {
   switch (e) {
-    case Event::creation: return "creation";
-    case Event::deletion: return "deletion";
-    case Event::split: return "split";
-    case Event::merge: return "merge";
-    case Event::non_modification: return "no-modification";
-    case Event::modification: return "modification";
+    case Event::creation:
+      return "creation";
+    case Event::deletion:
+      return "deletion";
+    case Event::split:
+      return "split";
+    case Event::merge:
+      return "merge";
+    case Event::non_modification:
+      return "no-modification";
+    case Event::modification:
+      return "modification";
   }
   return "?";
 }
 
 std::string_view certainty_name(Certainty c) {
   switch (c) {
-    case Certainty::certain: return "certain";
-    case Certainty::conditional: return "conditional";
-    case Certainty::potential: return "potential";
+    case Certainty::certain:
+      return "certain";
+    case Certainty::conditional:
+      return "conditional";
+    case Certainty::potential:
+      return "potential";
   }
   return "?";
 }
@@ -52,8 +61,7 @@ namespace {
 
 // The explicit arcs of `side` inside node set `nodes` whose label is a
 // letter of a generator of <o>, as (source name, target name, label).
-std::multiset<std::tuple<std::string, std::string, int>> orbit_arcs(const EventSide& side, const std::vector<NodeId>& nodes,
-                                                                     const OrbitKind& kind) {
+std::multiset<std::tuple<std::string, std::string, int>> orbit_arcs(const EventSide& side, const std::vector<NodeId>& nodes, const OrbitKind& kind) {
   std::set<Dim> letters;
   for (const Word& w : kind.generators) letters.insert(w.begin(), w.end());
   std::multiset<std::tuple<std::string, std::string, int>> out;
@@ -76,7 +84,12 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
   for (int ri = 0; ri < static_cast<int>(k.right.orbits.size()); ++ri) {
     const RuleOrbit& y = k.right.orbits[static_cast<std::size_t>(ri)];
     if (std::all_of(y.nodes.begin(), y.nodes.end(), [&](NodeId v) { return rule.to_left(v) == no_node; }))
-      k.claims.push_back({Event::creation, y.complete ? Certainty::certain : Certainty::potential, ri, false, -1, {},
+      k.claims.push_back({Event::creation,
+                          y.complete ? Certainty::certain : Certainty::potential,
+                          ri,
+                          false,
+                          -1,
+                          {},
                           y.complete ? fmt::format("every node of {} is created (Prop. 3.1.1)", name(false, ri))
                                      : fmt::format("every node of {} is created but it is {}", name(false, ri), incompleteness(y))});
   }
@@ -91,8 +104,8 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
     for (NodeId v : x.nodes)
       if (rule.to_right(v) != no_node) preserved.push_back(v);
     if (preserved.empty()) {
-      k.claims.push_back({Event::deletion, explicit_certainty, li, false, -1, {},
-                          fmt::format("every node of {} is deleted (Prop. 3.4.1){}", xn, incomplete)});
+      k.claims.push_back(
+          {Event::deletion, explicit_certainty, li, false, -1, {}, fmt::format("every node of {} is deleted (Prop. 3.4.1){}", xn, incomplete)});
       continue;
     }
     std::set<int> ys;
@@ -101,18 +114,27 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
     if (ys.size() >= 2) {
       std::vector<std::string> parts;
       for (int y : ys) parts.push_back(name(false, y));
-      claims.push_back({Event::split, explicit_certainty, li, false, -1, {ys.begin(), ys.end()},
+      claims.push_back({Event::split,
+                        explicit_certainty,
+                        li,
+                        false,
+                        -1,
+                        {ys.begin(), ys.end()},
                         fmt::format("the preserved nodes of {} go to {} (explicit, Def. 3.2.1){}", xn, fmt::join(parts, ", "), incomplete)});
     }
     // Explicit merge: a preserved node of another left orbit lands in one of ys.
     std::set<int> joined;
     for (NodeId v = 0; v < rule.left().node_count(); ++v)
-      if (k.left.orbit_of[v] != li && rule.to_right(v) != no_node && ys.count(k.right.orbit_of[rule.to_right(v)]))
-        joined.insert(k.left.orbit_of[v]);
+      if (k.left.orbit_of[v] != li && rule.to_right(v) != no_node && ys.count(k.right.orbit_of[rule.to_right(v)])) joined.insert(k.left.orbit_of[v]);
     if (!joined.empty()) {
       std::vector<std::string> parts;
       for (int o : joined) parts.push_back(name(true, o));
-      claims.push_back({Event::merge, explicit_certainty, li, false, -1, {joined.begin(), joined.end()},
+      claims.push_back({Event::merge,
+                        explicit_certainty,
+                        li,
+                        false,
+                        -1,
+                        {joined.begin(), joined.end()},
                         fmt::format("{} and {} meet in one right orbit (explicit, Def. 3.3.1){}", xn, fmt::join(parts, ", "), incomplete)});
     }
     // Implicit events along position k, per right orbit of the preserved nodes.
@@ -122,11 +144,21 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
         const bool in_left = std::any_of(x.nodes.begin(), x.nodes.end(), [&](NodeId v) { return in_kind(kind, r.left.labels[v][pos]); });
         const bool in_right = std::any_of(yo.nodes.begin(), yo.nodes.end(), [&](NodeId v) { return in_kind(kind, r.right.labels[v][pos]); });
         if (in_left && !in_right)
-          claims.push_back({Event::split, implicit_certainty, li, true, static_cast<int>(pos), {y},
+          claims.push_back({Event::split,
+                            implicit_certainty,
+                            li,
+                            true,
+                            static_cast<int>(pos),
+                            {y},
                             fmt::format("position {} (letter {}) links {} inside <o> but no node of {} keeps it there (implicit, Def. 3.2.1){}", pos,
                                         r.parameter[pos], xn, name(false, y), incomplete)});
         if (!in_left && in_right)
-          claims.push_back({Event::merge, implicit_certainty, li, true, static_cast<int>(pos), {y},
+          claims.push_back({Event::merge,
+                            implicit_certainty,
+                            li,
+                            true,
+                            static_cast<int>(pos),
+                            {y},
                             fmt::format("position {} (letter {}) links {} inside <o> but no node of {} did (implicit, Def. 3.3.1){}", pos,
                                         r.parameter[pos], name(false, y), xn, incomplete)});
       }
@@ -160,10 +192,15 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
       }
     }
     if (unchanged) {
-      claims.push_back({Event::non_modification, explicit_certainty, li, false, -1, {},
-                        x.complete ? fmt::format("{} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2)", xn)
-                                   : fmt::format("{} keeps its nodes, o-labels and o-arcs, but the map's orbit may reach other matched parts{}", xn,
-                                                 incomplete)});
+      claims.push_back(
+          {Event::non_modification,
+           explicit_certainty,
+           li,
+           false,
+           -1,
+           {},
+           x.complete ? fmt::format("{} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2)", xn)
+                      : fmt::format("{} keeps its nodes, o-labels and o-arcs, but the map's orbit may reach other matched parts{}", xn, incomplete)});
     } else {
       // Word generators: a generator path may pass through matched darts
       // and end outside the match, so an incomplete orbit whose paths the
@@ -172,7 +209,8 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
       if (!kind.single_letters() && !x.complete) {
         const bool has_split = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::split; });
         const bool has_merge = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::merge; });
-        const std::string why = fmt::format("a generator path of {} leaves the pattern and the rule changes the orbit (word orbit types){}", xn, incomplete);
+        const std::string why =
+            fmt::format("a generator path of {} leaves the pattern and the rule changes the orbit (word orbit types){}", xn, incomplete);
         if (!has_split) claims.push_back({Event::split, Certainty::potential, li, false, -1, {}, why});
         if (!has_merge) claims.push_back({Event::merge, Certainty::potential, li, false, -1, {}, why});
       }
@@ -181,9 +219,15 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
       const bool certain_other = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.certainty == Certainty::certain; });
       if (!certain_other) {
         const Certainty c = !claims.empty() ? (x.complete ? Certainty::conditional : Certainty::potential) : explicit_certainty;
-        claims.push_back({Event::modification, c, li, false, -1, {},
-                          claims.empty() ? fmt::format("{} changes its nodes, o-labels or o-arcs without a split or merge (Sec. 3.4.3){}", xn, incomplete)
-                                         : fmt::format("{} is modified where the announced split or merge does not happen{}", xn, incomplete)});
+        claims.push_back({Event::modification,
+                          c,
+                          li,
+                          false,
+                          -1,
+                          {},
+                          claims.empty()
+                              ? fmt::format("{} changes its nodes, o-labels or o-arcs without a split or merge (Sec. 3.4.3){}", xn, incomplete)
+                              : fmt::format("{} is modified where the announced split or merge does not happen{}", xn, incomplete)});
       }
     }
     k.claims.insert(k.claims.end(), claims.begin(), claims.end());

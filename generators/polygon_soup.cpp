@@ -51,12 +51,10 @@ GSurface sew_gmap_surface(Map& m, const std::vector<Polygon>& faces, std::size_t
   }
   for (auto& [key, uses] : edges) {
     if (uses.size() > 2)
-      throw BuildError(fmt::format("edge ({}, {}) is shared by {} faces (a non-manifold edge; at most 2 expected)", key >> 32,
-                                   key & 0xffffffffU, uses.size()),
-                       static_cast<long>(face_base + uses[2].first));
-    auto dart_at = [&](std::size_t fi, std::size_t e, std::uint32_t vertex) {
-      return s.first[fi] + 2 * e + (faces[fi][e] == vertex ? 0 : 1);
-    };
+      throw BuildError(
+          fmt::format("edge ({}, {}) is shared by {} faces (a non-manifold edge; at most 2 expected)", key >> 32, key & 0xffffffffU, uses.size()),
+          static_cast<long>(face_base + uses[2].first));
+    auto dart_at = [&](std::size_t fi, std::size_t e, std::uint32_t vertex) { return s.first[fi] + 2 * e + (faces[fi][e] == vertex ? 0 : 1); };
     const auto u = static_cast<std::uint32_t>(key >> 32), w = static_cast<std::uint32_t>(key & 0xffffffffU);
     if (uses.size() == 1) {
       auto [fi, e] = uses[0];
@@ -74,8 +72,8 @@ GSurface sew_gmap_surface(Map& m, const std::vector<Polygon>& faces, std::size_t
 
 Map build_omap_surface(const Model& model, const std::vector<Polygon>& faces) {
   if (model.dimension() != 2)
-    throw BuildError(fmt::format("surfaces are built for 2-O-maps only, not {}: a {}-O-map needs every face {}-sewn", model.name,
-                                 model.dimension(), model.dimension()));
+    throw BuildError(fmt::format("surfaces are built for 2-O-maps only, not {}: a {}-O-map needs every face {}-sewn", model.name, model.dimension(),
+                                 model.dimension()));
   Map m(model);
   std::unordered_map<Key, Dart> half_edges;  // directed edge -> dart
   std::unordered_map<Key, std::size_t> face_of;
@@ -159,7 +157,8 @@ Map build_volumes(const Model& model, const std::vector<Polyhedron>& volumes) {
   for (Dart d = 0; d < m.size(); ++d) m.sew(3, d, d);
   for (const auto& [key, uses] : shared) {
     if (uses.size() == 1) continue;
-    if (uses.size() > 2) throw BuildError(fmt::format("a face with vertices {} is shared by {} volumes (at most 2 expected)", fmt::join(key, ","), uses.size()));
+    if (uses.size() > 2)
+      throw BuildError(fmt::format("a face with vertices {} is shared by {} volumes (at most 2 expected)", fmt::join(key, ","), uses.size()));
     // Named, not structured bindings: clang 14 cannot capture those.
     const std::size_t v1 = uses[0].first, f1 = uses[0].second;
     const std::size_t v2 = uses[1].first, f2 = uses[1].second;

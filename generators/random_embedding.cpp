@@ -13,17 +13,23 @@ Value random_value(ValueType t, std::mt19937& rng) {
   auto coord = [&] { return static_cast<double>(small(rng)) / 3.0; };
   switch (t) {
     case ValueType::point2:
-    case ValueType::vector2: return Value::coords(t, {coord(), coord(), 0});
+    case ValueType::vector2:
+      return Value::coords(t, {coord(), coord(), 0});
     case ValueType::point3:
-    case ValueType::vector3: return Value::coords(t, {coord(), coord(), coord()});
+    case ValueType::vector3:
+      return Value::coords(t, {coord(), coord(), coord()});
     case ValueType::color: {
       static constexpr std::array<std::array<double, 3>, 4> corners{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}}};
       return Value::coords(t, corners[static_cast<std::size_t>(small(rng))]);
     }
-    case ValueType::real: return Value::real(coord());
-    case ValueType::integer: return Value::integer(small(rng));
-    case ValueType::boolean: return Value::boolean(small(rng) % 2 == 0);
-    case ValueType::string: return Value::text(fmt::format("s{}", small(rng)));
+    case ValueType::real:
+      return Value::real(coord());
+    case ValueType::integer:
+      return Value::integer(small(rng));
+    case ValueType::boolean:
+      return Value::boolean(small(rng) % 2 == 0);
+    case ValueType::string:
+      return Value::text(fmt::format("s{}", small(rng)));
   }
   return Value::real(0);
 }

@@ -158,7 +158,8 @@ MapRecipe draw_recipe(std::mt19937& rng, std::uint32_t faces, int top_dim) {
   for (std::uint32_t f = 0; f < faces; ++f) recipe.face_sizes.push_back(static_cast<std::uint8_t>(pick(1, 6)));
   const std::uint32_t sewings = pick(0, 2 * faces);
   const auto top = static_cast<std::uint32_t>(std::max(2, top_dim));
-  for (std::uint32_t k = 0; k < sewings; ++k) recipe.sewings.push_back({static_cast<std::uint8_t>(pick(2, top)), pick(0, 999), pick(0, 999), pick(0, 999)});
+  for (std::uint32_t k = 0; k < sewings; ++k)
+    recipe.sewings.push_back({static_cast<std::uint8_t>(pick(2, top)), pick(0, 999), pick(0, 999), pick(0, 999)});
   return recipe;
 }
 

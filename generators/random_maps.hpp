@@ -10,7 +10,6 @@
 #include <random>
 #include <vector>
 
-
 #include "core/map.hpp"
 
 namespace dartcheck {

@@ -140,9 +140,7 @@ Rule random_combinatorial_rule(std::mt19937& rng, const Model& host_class, const
             R.add_arc(v, v, d);
             break;
           }
-          auto back_out = std::find_if(outs.begin(), outs.end(), [&, k = std::size_t{0}](NodeId x) mutable {
-            return !out_used[k++] && x == w;
-          });
+          auto back_out = std::find_if(outs.begin(), outs.end(), [&, k = std::size_t{0}](NodeId x) mutable { return !out_used[k++] && x == w; });
           auto back_in = std::find_if(ins.begin(), ins.end(), [&, k = std::size_t{0}](NodeId x) mutable { return !in_used[k++] && x == v; });
           if (back_out == outs.end() || back_in == ins.end()) continue;
           out_used[a] = in_used[b] = true;
@@ -179,8 +177,7 @@ Rule random_rule_for(std::mt19937& rng, const Model& model) {
     if (rng() % 4) R.add_node(L.name(v));
   for (int k = static_cast<int>(rng() % 3); k > 0; --k) R.add_node(fmt::format("a{}", k));
   if (R.node_count() == 0) R.add_node("a0");
-  for (int k = static_cast<int>(rng() % 8); k > 0; --k)
-    R.add_arc(pick(R.node_count()), pick(R.node_count()), model.dims[rng() % model.dims.size()]);
+  for (int k = static_cast<int>(rng() % 8); k > 0; --k) R.add_arc(pick(R.node_count()), pick(R.node_count()), model.dims[rng() % model.dims.size()]);
   return Rule("random", model, L, R, first_node_per_component(L));
 }
 

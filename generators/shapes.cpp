@@ -42,9 +42,7 @@ std::vector<Polygon> prism_faces(int k) {
   return faces;
 }
 
-std::string_view shape_usage() {
-  return "polygon:K (K>=3), grid:RxC, cube, tetrahedron, prism:K (K>=3), stacked-cubes";
-}
+std::string_view shape_usage() { return "polygon:K (K>=3), grid:RxC, cube, tetrahedron, prism:K (K>=3), stacked-cubes"; }
 
 ShapeSpec parse_shape(std::string_view text) {
   ShapeSpec s;

@@ -9,11 +9,16 @@ namespace dartcheck::inference {
 
 const char* failure_name(FailureKind k) {
   switch (k) {
-    case FailureKind::arc: return "arc failure";
-    case FailureKind::instantiation: return "instantiation failure";
-    case FailureKind::relabeling: return "relabeling failure";
-    case FailureKind::undecided: return "undecided position";
-    case FailureKind::unreached: return "unreached dart";
+    case FailureKind::arc:
+      return "arc failure";
+    case FailureKind::instantiation:
+      return "instantiation failure";
+    case FailureKind::relabeling:
+      return "relabeling failure";
+    case FailureKind::undecided:
+      return "undecided position";
+    case FailureKind::unreached:
+      return "unreached dart";
   }
   return "?";
 }
@@ -68,7 +73,8 @@ class Folder {
       if (owner_[u] < 0) {
         fail(FailureKind::unreached, 0, 0, u,
              fmt::format("dart {} is not reached from the hook: κ(G, H) is not connected (the example must be one connected piece, "
-                         "before and after joined by preserved darts)", g_.name(u)));
+                         "before and after joined by preserved darts)",
+                         g_.name(u)));
         return {std::nullopt, failure_};
       }
     return {std::move(scheme_), std::nullopt};
@@ -121,8 +127,8 @@ class Folder {
       for (std::size_t q = 1; q < k_; ++q)
         if (const Dart y = link(d, dart(m, q)); y != no_dart)
           return fail(FailureKind::instantiation, m, d, dart(m, q),
-                      fmt::format("node n{}: {} has no κ-link but {} is preserved as {}: the node is preserved for some darts only",
-                                  m, g_.name(a), g_.name(dart(m, q)), g_.name(y)));
+                      fmt::format("node n{}: {} has no κ-link but {} is preserved as {}: the node is preserved for some darts only", m, g_.name(a),
+                                  g_.name(dart(m, q)), g_.name(y)));
       return true;
     }
     if (owner_[x] >= 0) {
@@ -130,13 +136,14 @@ class Folder {
       if (position_[x] != 0)
         return fail(FailureKind::arc, m, d, a,
                     fmt::format("node n{}: the {}-link {} - {} joins the copy of b_0 to the copy of b_{} in node n{}: no explicit arc "
-                                "instantiates it (arc failure)", m, dim_name(d), g_.name(a), g_.name(x), position_[x], target));
+                                "instantiates it (arc failure)",
+                                m, dim_name(d), g_.name(a), g_.name(x), position_[x], target));
       // Arc addition: every dart of m must be d-linked to its counterpart.
       for (std::size_t q = 1; q < k_; ++q)
         if (const Dart y = link(d, dart(m, q)); y != dart(target, q))
           return fail(FailureKind::instantiation, m, d, dart(m, q),
-                      fmt::format("node n{}: the {}-arc n{} - n{} folds {} - {}, but {} is {}-linked to {} instead of {} (instantiation failure)",
-                                  m, dim_name(d), m, target, g_.name(a), g_.name(x), g_.name(dart(m, q)), dim_name(d),
+                      fmt::format("node n{}: the {}-arc n{} - n{} folds {} - {}, but {} is {}-linked to {} instead of {} (instantiation failure)", m,
+                                  dim_name(d), m, target, g_.name(a), g_.name(x), g_.name(dart(m, q)), dim_name(d),
                                   y == no_dart ? std::string("nothing") : g_.name(y), g_.name(dart(target, q))));
       if (arc_slot(m, d) < 0) {
         arc_slot(m, d) = target;
@@ -153,8 +160,8 @@ class Folder {
       const Dart y = link(d, dart(m, q));
       if (y == no_dart || owner_[y] >= 0)
         return fail(FailureKind::instantiation, m, d, dart(m, q),
-                    fmt::format("node n{}: {} is {}-linked to the new dart {}, but {} is {}-linked to {} (instantiation failure)", m,
-                                g_.name(a), dim_name(d), g_.name(x), g_.name(dart(m, q)), dim_name(d),
+                    fmt::format("node n{}: {} is {}-linked to the new dart {}, but {} is {}-linked to {} (instantiation failure)", m, g_.name(a),
+                                dim_name(d), g_.name(x), g_.name(dart(m, q)), dim_name(d),
                                 y == no_dart ? std::string("nothing") : fmt::format("{}, a dart of node n{}", g_.name(y), owner_[y])));
       v.darts[q] = y;
     }
@@ -220,8 +227,8 @@ class Folder {
         const Dart q = position_[first_break];
         return fail(FailureKind::relabeling, v, i, first_break,
                     fmt::format("node n{}: relabeling {} -> {} holds at {} but not at {}: its {}-link does not reach {}, the copy of "
-                                "the {}-neighbour of b_{} (relabeling failure)", v, i, first_j, g_.name(a), g_.name(first_break), first_j,
-                                g_.name(dart(v, neighbour_[q * r + p])), i, q));
+                                "the {}-neighbour of b_{} (relabeling failure)",
+                                v, i, first_j, g_.name(a), g_.name(first_break), first_j, g_.name(dart(v, neighbour_[q * r + p])), i, q));
       }
       if (undecided) scheme_.undecided.push_back({v, p, chosen});
       if (chosen) {

@@ -53,9 +53,9 @@ struct UndecidedPosition {
 };
 
 struct GraphScheme {
-  std::vector<Dim> orbit;        // <o>, the hook's label
-  std::vector<SchemeNode> nodes; // nodes[0] is the hook
-  std::vector<SchemeArc> arcs;   // each arc once, in creation order
+  std::vector<Dim> orbit;         // <o>, the hook's label
+  std::vector<SchemeNode> nodes;  // nodes[0] is the hook
+  std::vector<SchemeArc> arcs;    // each arc once, in creation order
   std::vector<UndecidedPosition> undecided;
 };
 
@@ -70,10 +70,10 @@ const char* failure_name(FailureKind k);
 
 struct FoldFailure {
   FailureKind kind = FailureKind::arc;
-  int node = 0;       // the node being built
-  Dim dim = 0;        // the dimension (kappa_arc for κ); for relabeling the orbit dimension i
-  Dart dart = 0;      // the dart of κ(G, H) where it fails
-  std::string text;   // the sentence, with node, dimension and darts named
+  int node = 0;      // the node being built
+  Dim dim = 0;       // the dimension (kappa_arc for κ); for relabeling the orbit dimension i
+  Dart dart = 0;     // the dart of κ(G, H) where it fails
+  std::string text;  // the sentence, with node, dimension and darts named
 };
 
 /// What to do with undecided positions.

@@ -18,13 +18,13 @@ namespace dartcheck::inference {
 /// One start dart and what came of it.
 struct Attempt {
   Dart start = 0;
-  std::optional<FoldFailure> failure;       // the folding failed
-  std::optional<GraphScheme> scheme;        // the folding succeeded
-  std::string not_a_rule;                   // the scheme is not a one-hook rule
+  std::optional<FoldFailure> failure;  // the folding failed
+  std::optional<GraphScheme> scheme;   // the folding succeeded
+  std::string not_a_rule;              // the scheme is not a one-hook rule
   std::optional<InferredRule> rule;
-  std::vector<std::string> ill_formed;      // failing conditions (Sec. 8.2), empty if well-formed
-  std::optional<Verification> verification; // App. A, for well-formed rules
-  int duplicate_of = -1;                    // index of an earlier attempt with the same scheme
+  std::vector<std::string> ill_formed;       // failing conditions (Sec. 8.2), empty if well-formed
+  std::optional<Verification> verification;  // App. A, for well-formed rules
+  int duplicate_of = -1;                     // index of an earlier attempt with the same scheme
   double seconds = 0;
   bool inferred() const { return rule && ill_formed.empty() && duplicate_of < 0 && verification && verification->holds; }
 };

@@ -84,7 +84,8 @@ std::optional<std::string> canonical_form(const Operation& op) {
     const TopoGraph& g = graph(u);
     for (ArcId e = 0; e < g.arc_count(); ++e)
       if (g.arc(e).source == local(u) && arc_word(words(u), e).empty())
-        next[u * static_cast<std::size_t>(n + 2) + static_cast<std::size_t>(g.arc(e).label)].push_back(u < nl ? g.arc(e).target : nl + g.arc(e).target);
+        next[u * static_cast<std::size_t>(n + 2) + static_cast<std::size_t>(g.arc(e).label)].push_back(u < nl ? g.arc(e).target
+                                                                                                              : nl + g.arc(e).target);
     const NodeId partner = u < nl ? r.to_right(local(u)) : r.to_left(local(u));
     if (partner != no_node) next[u * static_cast<std::size_t>(n + 2) + static_cast<std::size_t>(n + 1)].push_back(u < nl ? nl + partner : partner);
   }

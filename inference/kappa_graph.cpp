@@ -26,7 +26,8 @@ void associate(std::vector<Dart>& kappa, std::vector<Dart>& inverse, Dart x, Dar
   if (y >= inverse.size()) throw std::invalid_argument(fmt::format("kappa: dart {} is not a dart of the after map ({} darts)", y, inverse.size()));
   if (kappa[x] == y) return;
   if (kappa[x] != no_dart) throw std::invalid_argument(fmt::format("kappa maps before dart {} to both {} and {}", x, kappa[x], y));
-  if (inverse[y] != no_dart) throw std::invalid_argument(fmt::format("kappa is not injective: before darts {} and {} both map to {}", inverse[y], x, y));
+  if (inverse[y] != no_dart)
+    throw std::invalid_argument(fmt::format("kappa is not injective: before darts {} and {} both map to {}", inverse[y], x, y));
   kappa[x] = y;
   inverse[y] = x;
 }
@@ -37,7 +38,8 @@ void associate_orbits(const Map& g, const Map& h, const KappaSpec::OrbitPair& p,
   for (Dim d : p.orbit)
     if (!g.model().contains(d)) throw std::invalid_argument(fmt::format("kappa: dimension {} is not a dimension of {}", d, g.model().name));
   if (p.before >= g.size() || p.after >= h.size())
-    throw std::invalid_argument(fmt::format("kappa: orbit pair ({}, {}) names a dart outside the maps ({} and {} darts)", p.before, p.after, g.size(), h.size()));
+    throw std::invalid_argument(
+        fmt::format("kappa: orbit pair ({}, {}) names a dart outside the maps ({} and {} darts)", p.before, p.after, g.size(), h.size()));
   std::vector<Dart> seen_g(g.size(), no_dart), seen_h(h.size(), no_dart);
   std::vector<std::pair<Dart, Dart>> queue{{p.before, p.after}};
   seen_g[p.before] = p.after;
@@ -46,12 +48,12 @@ void associate_orbits(const Map& g, const Map& h, const KappaSpec::OrbitPair& p,
     const auto [x, y] = queue[k];
     for (Dim d : p.orbit) {
       const Dart nx = g.link(d, x), ny = h.link(d, y);
-      if (nx == no_dart || ny == no_dart)
-        throw std::invalid_argument(fmt::format("kappa: dart {} or {} has no {}-link", x, y, d));
+      if (nx == no_dart || ny == no_dart) throw std::invalid_argument(fmt::format("kappa: dart {} or {} has no {}-link", x, y, d));
       const bool new_x = seen_g[nx] == no_dart, new_y = seen_h[ny] == no_dart;
       if (new_x != new_y || (!new_x && (seen_g[nx] != ny || seen_h[ny] != nx)))
-        throw std::invalid_argument(fmt::format("kappa: the orbits of before dart {} and after dart {} differ in shape: their {}-links from {} and {} disagree",
-                                                p.before, p.after, d, x, y));
+        throw std::invalid_argument(
+            fmt::format("kappa: the orbits of before dart {} and after dart {} differ in shape: their {}-links from {} and {} disagree", p.before,
+                        p.after, d, x, y));
       if (new_x) {
         seen_g[nx] = ny;
         seen_h[ny] = nx;

@@ -31,9 +31,7 @@ class KappaGraph {
   std::size_t size() const { return before_.size() + after_.size(); }
   bool in_before(Dart u) const { return u < before_.size(); }
   /// The d-neighbour of u (d a dimension of the model).
-  Dart link(Dim d, Dart u) const {
-    return in_before(u) ? before_.link(d, u) : offset(after_.link(d, u - static_cast<Dart>(before_.size())));
-  }
+  Dart link(Dim d, Dart u) const { return in_before(u) ? before_.link(d, u) : offset(after_.link(d, u - static_cast<Dart>(before_.size()))); }
   /// The κ-neighbour of u: its image in H for a dart of G, its preimage
   /// for a dart of H; no_dart for a dart the operation does not preserve.
   Dart kappa(Dart u) const { return in_before(u) ? offset(kappa_[u]) : inverse_[u - before_.size()]; }

@@ -30,8 +30,9 @@ Verification verify(const KappaGraph& graph, const GraphScheme& scheme, const In
     const auto& node = scheme.nodes[static_cast<std::size_t>(rule.node_of_left[x])];
     for (std::size_t p = 0; p < pattern.size(); ++p)
       if (match.value->node[x][p] != graph.local(node.darts[position[pattern[p]]]))
-        return {false, fmt::format("node {} at pattern dart {} matches G dart {}, the folding put {} there", op.rule.left().name(static_cast<NodeId>(x)),
-                                   pattern[p], match.value->node[x][p], graph.name(node.darts[position[pattern[p]]]))};
+        return {false,
+                fmt::format("node {} at pattern dart {} matches G dart {}, the folding put {} there", op.rule.left().name(static_cast<NodeId>(x)),
+                            pattern[p], match.value->node[x][p], graph.name(node.darts[position[pattern[p]]]))};
   }
   const auto derivation = rewrite_scheme(op.rule, op.words, host, *match.value);
   if (host.size() != graph.after().size())
@@ -49,8 +50,7 @@ Verification verify(const KappaGraph& graph, const GraphScheme& scheme, const In
     for (std::size_t p = 0; p < pattern.size(); ++p) {
       const Dart r = derivation.comatch[y][p];
       const Dart h = graph.local(node.darts[position[pattern[p]]]);
-      if (r >= phi.size() || phi[r] != no_dart)
-        return {false, fmt::format("result dart {} is the image of two darts of the instantiated R", r)};
+      if (r >= phi.size() || phi[r] != no_dart) return {false, fmt::format("result dart {} is the image of two darts of the instantiated R", r)};
       phi[r] = h;
       if (left != no_node) {
         // Preserved: the result keeps the matched dart, and κ sends it to h.
@@ -67,8 +67,8 @@ Verification verify(const KappaGraph& graph, const GraphScheme& scheme, const In
     for (Dim d : host.model().dims) {
       const Dart t = host.link(d, r);
       if (t == no_dart || phi[t] != graph.after().link(d, phi[r]))
-        return {false, fmt::format("result dart {} is {}-linked to {}, but H dart {} is {}-linked to {}", r, d, t == no_dart ? -1L : static_cast<long>(t),
-                                   phi[r], d, static_cast<long>(graph.after().link(d, phi[r])))};
+        return {false, fmt::format("result dart {} is {}-linked to {}, but H dart {} is {}-linked to {}", r, d,
+                                   t == no_dart ? -1L : static_cast<long>(t), phi[r], d, static_cast<long>(graph.after().link(d, phi[r])))};
     }
   // Every preserved dart of G is in the match, so κ is extended.
   for (Dart g = 0; g < graph.before().size(); ++g)

@@ -16,7 +16,6 @@
 
 namespace dartcheck {
 
-
 const MapSource* Catalog::find_map(const std::string& name) const {
   for (const auto& m : maps)
     if (m.name == name) return &m;
@@ -81,7 +80,6 @@ std::optional<ArcText> parse_arc(const std::string& text) {
   return a;
 }
 
-
 }  // namespace
 
 Model read_model(const std::string& file, const YAML::Node& node, const std::vector<Model>& custom) {
@@ -92,10 +90,8 @@ Model read_model(const std::string& file, const YAML::Node& node, const std::vec
   fail_at(file, node, fmt::format("unknown model '{}' (expected {}, or a model declared under 'models')", name, Model::known_names()));
 }
 
-
-TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model,
-                    std::vector<ConjWord>* words, bool* has_words, const OrbitType* jerboa,
-                    std::vector<OrbitType>* orbit_types) {
+TopoGraph read_side(const std::string& file, const YAML::Node& side, const char* which, const Model* model, std::vector<ConjWord>* words,
+                    bool* has_words, const OrbitType* jerboa, std::vector<OrbitType>* orbit_types) {
   yaml::expect_map(file, side, which);
   yaml::allow_keys(file, side, {"nodes", "arcs"});
   TopoGraph g;
@@ -133,8 +129,10 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
       const auto text = yaml::as_string(file, a, "arc");
       const auto arc = parse_arc(text);
       if (!arc)
-        fail_at(file, a, fmt::format("arc '{}': expected 'x -i- y' (non-oriented pair), 'x -i-> y' or 'x <-i- y' (one oriented arc), "
-                                     "with i a dimension or a scheme label (w,i)", text));
+        fail_at(file, a,
+                fmt::format("arc '{}': expected 'x -i- y' (non-oriented pair), 'x -i-> y' or 'x <-i- y' (one oriented arc), "
+                            "with i a dimension or a scheme label (w,i)",
+                            text));
       auto node = [&](const std::string& name) {
         auto v = g.find(name);
         if (!v) fail_at(file, a, fmt::format("arc '{}': node '{}' is not declared in {}.nodes", text, name, which));
@@ -180,7 +178,8 @@ Example read_example(const std::string& file, const YAML::Node& n) {
   for (const auto& h : hooks) e.hooks.push_back(static_cast<Dart>(yaml::as_int(file, h, "hook dart", 0, (1LL << 31))));
   const auto expect = yaml::require(file, n, "expect");
   e.expect = yaml::as_string(file, expect, "expect");
-  static const std::vector<std::string> allowed{"valid", "invalid", "no-match", "not-injective", "dangling", "not-representable", "not-combinatorial", "bad-hooks", "disconnected-instance"};
+  static const std::vector<std::string> allowed{
+      "valid", "invalid", "no-match", "not-injective", "dangling", "not-representable", "not-combinatorial", "bad-hooks", "disconnected-instance"};
   if (std::find(allowed.begin(), allowed.end(), e.expect) == allowed.end())
     fail_at(file, expect, fmt::format("expect: '{}' is not one of {}", e.expect, fmt::join(allowed, ", ")));
   if (const auto cells = n["cells"]) {
@@ -294,7 +293,12 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
   } catch (const std::invalid_argument& e) {
     fail_at(file, hn ? hn : v, fmt::format("rule '{}': {}", name, e.what()));
   }
-  CatalogRule cr{{std::move(*rule), words, std::move(labels), {}, {}, std::nullopt}, v["note"] ? yaml::as_string(file, v["note"], "note") : "", {}, where(file, v), {}, {}};
+  CatalogRule cr{{std::move(*rule), words, std::move(labels), {}, {}, std::nullopt},
+                 v["note"] ? yaml::as_string(file, v["note"], "note") : "",
+                 {},
+                 where(file, v),
+                 {},
+                 {}};
   if (v["labels"] || v["parameters"] || v["instantiation"] || v["embeddings"] || base_terms) {
     if (c.signatures.size() != c.embeddings.size())
       fail_at(file, v["labels"] ? v["labels"] : v, "labels need typed embeddings: declare each under 'embeddings' with a type (point2, color, ...)");
@@ -427,8 +431,9 @@ static Catalog read_yaml_catalog(const std::string& file) {
     yaml::expect_sequence(file, rules, "rules");
     for (const auto& n : rules) {
       yaml::expect_map(file, n, "rule");
-      yaml::allow_keys(file, n, {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats",
-                                  "labels", "parameters", "instantiation", "embeddings"});
+      yaml::allow_keys(file, n,
+                       {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats", "labels",
+                        "parameters", "instantiation", "embeddings"});
       const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
       const Model model = model_of(n);
       const auto left = yaml::require(file, n, "left"), right = yaml::require(file, n, "right");

@@ -32,7 +32,7 @@ struct SkippedRule {
 struct Example {
   std::string map;
   std::vector<Dart> hooks;
-  std::string expect;  // "valid", "invalid", or a refusal name (no-match, dangling, ...)
+  std::string expect;                             // "valid", "invalid", or a refusal name (no-match, dangling, ...)
   std::optional<std::vector<std::size_t>> cells;  // expected cell counts of H
   /// A catalog map H must be isomorphic to (an inferred rule's example:
   /// applied to the before map it gives the after map), or empty.

@@ -80,7 +80,8 @@ std::vector<Dim> orbit_of(const Lines& lines, const std::string& text, int dimen
 
 JbaFile read_jba(const std::string& file) {
   Lines lines(file);
-  if (lines.next("the header") != "Jerboa JBA Generic Format") lines.fail("not a Jerboa G-map file: the first line must be 'Jerboa JBA Generic Format'");
+  if (lines.next("the header") != "Jerboa JBA Generic Format")
+    lines.fail("not a Jerboa G-map file: the first line must be 'Jerboa JBA Generic Format'");
   keyed(lines, "version");
   std::string name = keyed(lines, "name");
   const long long dimension = number(lines, keyed(lines, "dimension"), "dimension");
@@ -114,7 +115,8 @@ JbaFile read_jba(const std::string& file) {
   for (long long d = 0; d < darts; ++d) {
     auto w = words(lines.next(fmt::format("dart {} of {}", d + 1, darts)));
     if (w.size() != static_cast<std::size_t>(n) + 2)
-      lines.fail(fmt::format("a dart line holds the dart's id and its {} links alpha_0..alpha_{}: expected {} numbers, got {}", n + 1, n, n + 2, w.size()));
+      lines.fail(
+          fmt::format("a dart line holds the dart's id and its {} links alpha_0..alpha_{}: expected {} numbers, got {}", n + 1, n, n + 2, w.size()));
     if (!index.emplace(w[0], static_cast<Dart>(d)).second) lines.fail(fmt::format("dart {} is declared twice", w[0]));
     out.ids.push_back(w[0]);
     rows.emplace_back(lines.number(), std::move(w));
@@ -125,7 +127,8 @@ JbaFile read_jba(const std::string& file) {
   for (const auto& [line, w] : rows)
     for (int i = 0; i <= n; ++i) {
       const auto it = index.find(w[static_cast<std::size_t>(i) + 1]);
-      if (it == index.end()) throw InputError(file, line, 1, fmt::format("dart {}: alpha_{} names dart {}, which the file does not declare", w[0], i, w[i + 1]));
+      if (it == index.end())
+        throw InputError(file, line, 1, fmt::format("dart {}: alpha_{} names dart {}, which the file does not declare", w[0], i, w[i + 1]));
       map.set_link(static_cast<Dim>(i), index.at(w[0]), it->second);
     }
 
@@ -148,8 +151,10 @@ JbaFile read_jba(const std::string& file) {
         const auto it = index.find(id);
         if (it == index.end()) throw InputError(file, ids_line, 1, fmt::format("{} record {}: dart {} is not declared", e->name, r + 1, id));
         auto& slot = e->values[it->second];
-        if (slot && *slot != value) e->reassigned.emplace_back(it->second, value);
-        else slot = value;
+        if (slot && *slot != value)
+          e->reassigned.emplace_back(it->second, value);
+        else
+          slot = value;
       }
     }
   }
@@ -191,8 +196,10 @@ void write_jba(std::ostream& out, const JbaFile& f, const std::string& path) {
         seen[x] = true;
         if (x >= e.values.size() || !e.values[x]) continue;
         auto it = std::find_if(by_value.begin(), by_value.end(), [&](const auto& r) { return r.first == *e.values[x]; });
-        if (it == by_value.end()) by_value.push_back({*e.values[x], {x}});
-        else it->second.push_back(x);
+        if (it == by_value.end())
+          by_value.push_back({*e.values[x], {x}});
+        else
+          it->second.push_back(x);
       }
       records.insert(records.end(), by_value.begin(), by_value.end());
     }

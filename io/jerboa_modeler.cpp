@@ -52,8 +52,7 @@ int integer(const Positions& p, const pugi::xml_node& n, std::string_view text, 
   const std::string t = trimmed(text);
   int v = 0;
   const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (t.empty() || ec != std::errc() || end != t.data() + t.size())
-    p.fail(n, fmt::format("{}: expected an integer, got '{}'", what, t));
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size()) p.fail(n, fmt::format("{}: expected an integer, got '{}'", what, t));
   if (v < lo || v > hi) p.fail(n, fmt::format("{} {} is out of range ({} to {})", what, v, lo, hi));
   return v;
 }
@@ -102,7 +101,8 @@ JmeSide read_side(const Positions& p, const pugi::xml_node& side, int dimension)
     if (name.empty()) p.fail(n, "a node without a name");
     if (s.find(name)) p.fail(n, fmt::format("node '{}' is declared twice in <{}>", name, side.name()));
     const std::string kind = n.attribute("kind").value();
-    if (!kind.empty() && kind != "HOOK" && kind != "SIMPLE") p.fail(n, fmt::format("node '{}': unknown kind '{}' (expected HOOK or SIMPLE)", name, kind));
+    if (!kind.empty() && kind != "HOOK" && kind != "SIMPLE")
+      p.fail(n, fmt::format("node '{}': unknown kind '{}' (expected HOOK or SIMPLE)", name, kind));
     s.nodes.push_back({name, orbit_label(p, n, n.attribute("orbit").value(), dimension), kind == "HOOK", n});
   }
   for (const auto& a : side.child("arcs").children()) {
@@ -146,7 +146,8 @@ std::string unrepresentable(const pugi::xml_node& rule) {
     for (const auto& n : rule.child(side).child("nodes").children("node")) {
       const std::string m = trimmed(n.attribute("multiplicity").value());
       if (!m.empty() && m != "{1}")
-        return fmt::format("node '{}' of <{}> has multiplicity {}: dartcheck represents only {{1}} (one copy per match)", n.attribute("name").value(), side, m);
+        return fmt::format("node '{}' of <{}> has multiplicity {}: dartcheck represents only {{1}} (one copy per match)", n.attribute("name").value(),
+                           side, m);
     }
   return {};
 }
@@ -161,8 +162,7 @@ std::vector<std::string> caveats_of(const pugi::xml_node& rule) {
   std::vector<std::string> params;
   for (const auto& e : rule.child("paramsebd").children("paramebd"))
     params.push_back(fmt::format("{} ({})", e.attribute("name").value(), e.attribute("type").value()));
-  if (!params.empty())
-    out.push_back(fmt::format("embedding parameters {} kept opaque: they only feed expressions", fmt::join(params, ", ")));
+  if (!params.empty()) out.push_back(fmt::format("embedding parameters {} kept opaque: they only feed expressions", fmt::join(params, ", ")));
   return out;
 }
 
@@ -206,7 +206,8 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
   // The parameter orbit type is the first hook's label (000 Sec. 4.3.2).
   const OrbitType parameter = hooks.empty() ? OrbitType{} : left.find(hooks.front())->label;
   if (std::find(parameter.begin(), parameter.end(), std::nullopt) != parameter.end())
-    return skip(fmt::format("the hook '{}' is labeled {}, with '_': a hook's label is the parameter orbit type", hooks.front(), orbit_type_str(parameter)));
+    return skip(
+        fmt::format("the hook '{}' is labeled {}, with '_': a hook's label is the parameter orbit type", hooks.front(), orbit_type_str(parameter)));
   std::vector<std::string> caveats = caveats_of(r);
   for (std::size_t k = 1; k < hooks.size(); ++k)
     if (left.find(hooks[k])->label != parameter)
@@ -215,8 +216,8 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
   for (const auto* side : {&left, &right})
     for (const auto& n : side->nodes)
       if (n.label.size() != parameter.size())
-        return skip(fmt::format("node '{}' is labeled {} ({} positions) but the parameter orbit type {} has {}", n.name, orbit_type_str(n.label), n.label.size(),
-                                orbit_type_str(parameter), parameter.size()));
+        return skip(fmt::format("node '{}' is labeled {} ({} positions) but the parameter orbit type {} has {}", n.name, orbit_type_str(n.label),
+                                n.label.size(), orbit_type_str(parameter), parameter.size()));
 
   ArcWords words;
   JerboaLabels labels{parameter, {}, {}};
@@ -231,10 +232,21 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
   } catch (const std::invalid_argument& e) {
     return skip(e.what());
   }
-  if (parameter.empty()) words = ArcWords{};
-  else words.scheme = true;
-  CatalogRule cr{{std::move(*rule), words, parameter.empty() ? std::nullopt : std::optional<JerboaLabels>(std::move(labels)), {}, std::move(caveats), std::nullopt},
-                 trimmed(r.child_value("comment")), {}, at, std::nullopt, {}};
+  if (parameter.empty())
+    words = ArcWords{};
+  else
+    words.scheme = true;
+  CatalogRule cr{{std::move(*rule),
+                  words,
+                  parameter.empty() ? std::nullopt : std::optional<JerboaLabels>(std::move(labels)),
+                  {},
+                  std::move(caveats),
+                  std::nullopt},
+                 trimmed(r.child_value("comment")),
+                 {},
+                 at,
+                 std::nullopt,
+                 {}};
   for (const auto* side : {&left, &right})
     for (const auto& n : side->nodes)
       for (const auto& e : n.xml.children("expr")) {
@@ -242,7 +254,8 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
         if (std::none_of(c.embeddings.begin(), c.embeddings.end(), [&](const EmbeddingDecl& d) { return d.name == ebd; }))
           p.fail(e, fmt::format("node '{}': <expr ebd=\"{}\">, but the modeler declares no embedding '{}'", n.name, ebd, ebd));
         if (side == &left) {
-          cr.caveats.push_back(fmt::format("expression for {} on node '{}' of the left side ignored (Jerboa reads embeddings on the left)", ebd, n.name));
+          cr.caveats.push_back(
+              fmt::format("expression for {} on node '{}' of the left side ignored (Jerboa reads embeddings on the left)", ebd, n.name));
           continue;
         }
         cr.expressions.push_back({n.name, ebd, trimmed(e.child_value()), p.at(e)});

@@ -90,8 +90,8 @@ void write_model(std::ostream& out, const Model& model) {
       if (has_dim(s, i)) v.push_back(i);
     return fmt::format("[{}]", fmt::join(v, ", "));
   };
-  out << "model: {name: " << model.name << ", dims: [" << fmt::format("{}", fmt::join(model.dims, ", ")) << "], non_oriented: "
-      << dims(model.non_oriented) << ", exchangeable: [";
+  out << "model: {name: " << model.name << ", dims: [" << fmt::format("{}", fmt::join(model.dims, ", "))
+      << "], non_oriented: " << dims(model.non_oriented) << ", exchangeable: [";
   for (std::size_t k = 0; k < model.exchangeable.size(); ++k)
     out << (k ? ", " : "") << '[' << model.exchangeable[k].first << ", " << model.exchangeable[k].second << ']';
   out << "], partial: " << dims(model.partial) << ", loop_free: " << (model.loop_free ? "true" : "false") << "}\n";
@@ -121,7 +121,8 @@ Map read_map_links(const std::string& file, const YAML::Node& node, const Model&
     yaml::expect_map(file, pred, "pred");
     for (const auto& kv : pred) {
       const auto i = static_cast<Dim>(yaml::as_int(file, kv.first, "dimension", 0, max_dimension));
-      if (!model.contains(i) || !model.is_oriented(i)) fail_at(file, kv.first, fmt::format("pred: {} is not an oriented dimension of {}", i, model.name));
+      if (!model.contains(i) || !model.is_oriented(i))
+        fail_at(file, kv.first, fmt::format("pred: {} is not an oriented dimension of {}", i, model.name));
       yaml::expect_sequence(file, kv.second, "pred");
       if (kv.second.size() != m.size()) fail_at(file, kv.second, fmt::format("pred of dimension {}: expected {} entries", i, m.size()));
       for (Dart d = 0; d < m.size(); ++d) m.set_inverse_link_raw(i, d, as_dart(file, kv.second[d], m.size()));
@@ -141,7 +142,6 @@ Map read_map(const std::string& file, const YAML::Node& node) {
     throw yaml_input_error(file, e);
   }
 }
-
 
 void write_map(std::ostream& out, const Map& m) {
   auto row = [&](auto get) {

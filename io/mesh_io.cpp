@@ -67,7 +67,8 @@ Mesh read_off(const std::string& file) {
   }
   const auto nv = number<long long>(r, counts, skip, "the number of vertices");
   const auto nf = number<long long>(r, counts, skip + 1, "the number of faces");
-  if (nv < 0 || nf < 0 || nv > (1LL << 30) || nf > (1LL << 30)) r.fail(counts.number, counts.tokens[skip].second, "vertex or face count out of range");
+  if (nv < 0 || nf < 0 || nv > (1LL << 30) || nf > (1LL << 30))
+    r.fail(counts.number, counts.tokens[skip].second, "vertex or face count out of range");
   for (long long v = 0; v < nv; ++v) {
     auto l = r.next();
     if (!l) r.fail(r.line(), 0, fmt::format("expected {} vertices, the file ends after {}", nv, v));
@@ -87,7 +88,8 @@ Mesh read_off(const std::string& file) {
     std::vector<std::uint32_t> face;
     for (long long j = 1; j <= k; ++j) {
       const auto v = number<long long>(r, *l, static_cast<std::size_t>(j), "a vertex index");
-      if (v < 0 || v >= nv) r.fail(l->number, l->tokens[static_cast<std::size_t>(j)].second, fmt::format("vertex index {} is out of range [0, {})", v, nv));
+      if (v < 0 || v >= nv)
+        r.fail(l->number, l->tokens[static_cast<std::size_t>(j)].second, fmt::format("vertex index {} is out of range [0, {})", v, nv));
       face.push_back(static_cast<std::uint32_t>(v));
     }
     check_face(r, *l, face);

@@ -32,7 +32,8 @@ void write_mesh(std::ostream& out, const EmbeddedMap& m, const std::string& posi
       vertex[e] = static_cast<std::uint32_t>(points.size());
       const Value* w = pos->value(e);
       if (!w) fail(fmt::format("dart {} (vertex {}) has no {}", e, points.size(), position));
-      if (v && !(*v == *w)) fail(fmt::format("vertex {} has two {} values, {} and {} (darts {} and {})", points.size(), position, v->str(), w->str(), d, e));
+      if (v && !(*v == *w))
+        fail(fmt::format("vertex {} has two {} values, {} and {} (darts {} and {})", points.size(), position, v->str(), w->str(), d, e));
       v = w;
     }
     points.push_back(v->x);

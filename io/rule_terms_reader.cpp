@@ -64,8 +64,9 @@ std::vector<NodeTerm> read_side(const std::string& file, const YAML::Node& side,
       Sort sort;
       const Term t = parse_checked(file, e.second, scope, fmt::format("term of {} on {}", ebd, names.front()), &sort);
       if (sort != Sort::of(sig->type))
-        fail_at(file, e.second, fmt::format("the term '{}' is a {}, but {} : <{}> -> {}", t.str(), sort.str(), ebd, fmt::join(sig->orbit, ","),
-                                            type_name(sig->type)));
+        fail_at(
+            file, e.second,
+            fmt::format("the term '{}' is a {}, but {} : <{}> -> {}", t.str(), sort.str(), ebd, fmt::join(sig->orbit, ","), type_name(sig->type)));
       for (const auto& node : names) {
         for (const NodeTerm& o : out)
           if (o.node == node && o.embedding == ebd) fail_at(file, e.first, fmt::format("labels.{}: {} on '{}' is given twice", side_name, ebd, node));
@@ -132,9 +133,12 @@ RuleTerms read_rule_terms(const std::string& file, const YAML::Node& rule, const
   scope.parameters = r.parameters;
   if (const auto in = rule["instantiation"]) {
     const auto s = yaml::as_string(file, in, "instantiation");
-    if (s == "direct") r.instantiation = Instantiation::direct;
-    else if (s == "extended") r.instantiation = Instantiation::extended;
-    else fail_at(file, in, fmt::format("instantiation: expected 'direct' (003 Sec. 5.2, Theorem 2) or 'extended' (Def. 13, Theorem 4), found '{}'", s));
+    if (s == "direct")
+      r.instantiation = Instantiation::direct;
+    else if (s == "extended")
+      r.instantiation = Instantiation::extended;
+    else
+      fail_at(file, in, fmt::format("instantiation: expected 'direct' (003 Sec. 5.2, Theorem 2) or 'extended' (Def. 13, Theorem 4), found '{}'", s));
   }
   if (const auto labels = rule["labels"]) {
     yaml::expect_map(file, labels, "labels");

@@ -46,12 +46,14 @@ TetMesh read_tetgen(const std::string& file) {
     const Line h = need_line(r, "the .node header");
     const auto count = number<long>(r, h, 0, "the number of points");
     if (count < 0) r.fail(h.number, h.tokens[0].second, "a negative number of points");
-    if (h.tokens.size() > 1 && number<int>(r, h, 1, "the dimension") != 3) r.fail(h.number, h.tokens[1].second, "only 3-dimensional .node files are read");
+    if (h.tokens.size() > 1 && number<int>(r, h, 1, "the dimension") != 3)
+      r.fail(h.number, h.tokens[1].second, "only 3-dimensional .node files are read");
     for (long k = 0; k < count; ++k) {
       const Line l = need_line(r, fmt::format("point {} of {}", k + 1, count));
       const auto index = number<long>(r, l, 0, "a point index");
       if (k == 0) first_index = index;
-      if (index != first_index + k) r.fail(l.number, l.tokens[0].second, fmt::format("point index {} out of sequence (expected {})", index, first_index + k));
+      if (index != first_index + k)
+        r.fail(l.number, l.tokens[0].second, fmt::format("point index {} out of sequence (expected {})", index, first_index + k));
       m.points.push_back({number<double>(r, l, 1, "x"), number<double>(r, l, 2, "y"), number<double>(r, l, 3, "z")});
     }
     if (first_index != 0 && first_index != 1) r.fail(1, 0, "point indices start at 0 or 1");
@@ -140,7 +142,8 @@ void write_medit(std::ostream& out, const TetMesh& m) {
   }
   if (!m.hexes.empty()) {
     out << fmt::format("Hexahedra\n{}\n", m.hexes.size());
-    for (const auto& h : m.hexes) out << fmt::format("{} {} {} {} {} {} {} {} 0\n", h[0] + 1, h[1] + 1, h[2] + 1, h[3] + 1, h[4] + 1, h[5] + 1, h[6] + 1, h[7] + 1);
+    for (const auto& h : m.hexes)
+      out << fmt::format("{} {} {} {} {} {} {} {} 0\n", h[0] + 1, h[1] + 1, h[2] + 1, h[3] + 1, h[4] + 1, h[5] + 1, h[6] + 1, h[7] + 1);
   }
   out << "End\n";
 }

@@ -118,7 +118,8 @@ z3::expr DpoEncoding::violation(const HConstraint& c) {
   const std::size_t n = k_ + added_;
   z3::expr bad = ctx_.bool_val(false);
   switch (c.kind) {
-    case RuleCondition::incident_arcs: return incident_violation(c.i);
+    case RuleCondition::incident_arcs:
+      return incident_violation(c.i);
     case RuleCondition::non_orientation: {
       const Exprs& h = hlink_[static_cast<std::size_t>(c.i)];
       for (std::size_t x : r_nodes_) {
@@ -153,7 +154,8 @@ z3::expr DpoEncoding::violation(const HConstraint& c) {
       for (std::size_t x : r_nodes_) bad = bad || h[x] == val(x);
       return bad;
     }
-    default: return ctx_.bool_val(false);
+    default:
+      return ctx_.bool_val(false);
   }
 }
 

@@ -37,7 +37,8 @@ std::optional<HostClass> theorem_class(const HConstraint& c) {
       h.cycles = {{c.i, c.j}};
       h.others_combinatorial = true;
       break;
-    default: return std::nullopt;
+    default:
+      return std::nullopt;
   }
   return h;
 }

@@ -69,8 +69,7 @@ void HostEncoding::encode_host() {
   }
   for (auto [i, j] : cls_.cycles) {
     const Exprs &li = links(i), &lj = links(j);
-    for (std::size_t x = 0; x < k_; ++x)
-      solver_.add(z3::implies(active(x), lookup(lj, lookup(li, lookup(lj, li[x]))) == val(x)));
+    for (std::size_t x = 0; x < k_; ++x) solver_.add(z3::implies(active(x), lookup(lj, lookup(li, lookup(lj, li[x]))) == val(x)));
   }
 }
 

@@ -56,8 +56,8 @@ class HostEncoding {
   /// itself is NONE. `rlimit` bounds each check by Z3's deterministic
   /// resource counter; `ctx` may serve several encodings (creating a
   /// context costs more than a small query) and must outlive this object.
-  HostEncoding(z3::context& ctx, const Model& model, const HostClass& cls, std::size_t max_darts, std::size_t min_darts,
-               std::size_t index_bound, unsigned rlimit, unsigned timeout_ms);
+  HostEncoding(z3::context& ctx, const Model& model, const HostClass& cls, std::size_t max_darts, std::size_t min_darts, std::size_t index_bound,
+               unsigned rlimit, unsigned timeout_ms);
 
   /// The disjunction of the places where H breaks c.
   virtual z3::expr violation(const HConstraint& c) = 0;

@@ -15,20 +15,28 @@ namespace dartcheck::proofs {
 
 std::string_view status_name(Status s) {
   switch (s) {
-    case Status::counterexample: return "counterexample";
-    case Status::none: return "none";
-    case Status::unknown: return "unknown";
-    case Status::vacuous: return "vacuous";
+    case Status::counterexample:
+      return "counterexample";
+    case Status::none:
+      return "none";
+    case Status::unknown:
+      return "unknown";
+    case Status::vacuous:
+      return "vacuous";
   }
   return "";
 }
 
 std::string_view agreement_name(Agreement a) {
   switch (a) {
-    case Agreement::agree: return "agree";
-    case Agreement::disagree: return "DISAGREE";
-    case Agreement::unresolved: return "unresolved";
-    case Agreement::not_compared: return "not compared";
+    case Agreement::agree:
+      return "agree";
+    case Agreement::disagree:
+      return "DISAGREE";
+    case Agreement::unresolved:
+      return "unresolved";
+    case Agreement::not_compared:
+      return "not compared";
   }
   return "";
 }
@@ -96,7 +104,8 @@ bool graph_breaks(const TopoGraph& g, const HConstraint& c, bool partial) {
       case RuleCondition::cycle:
         if (!cycle_at(g, v, c.i, c.j)) return true;
         break;
-      default: break;
+      default:
+        break;
     }
   }
   if (c.kind == RuleCondition::no_loop)
@@ -251,7 +260,9 @@ class ClassRun {
           else
             replay(rule_, cls_, c, a);
           break;
-        case Answer::unsat: a.status = Status::none; break;
+        case Answer::unsat:
+          a.status = Status::none;
+          break;
         case Answer::unknown:
           a.status = Status::unknown;
           a.why = "rlimit reached";
@@ -364,7 +375,6 @@ void judge(ConstraintProof& p, bool combinatorial_rule, bool consistent) {
     p.note = fmt::format("a host of Theorem {}'s class breaks it, none of the {} up to {} darts does", n, p.model.class_name, p.model.darts);
 }
 
-
 // Schemes are asked about maps of the model only. Theorems 4-6 give the
 // (=>) direction on them: a scheme whose condition holds (with the
 // theorem's premise: Theorem 5 a (W,D)-combinatorial scheme, Theorem 6
@@ -414,9 +424,10 @@ void judge_scheme(ConstraintProof& p, const RuleVerdict& v) {
   }
   p.note = c.kind == RuleCondition::cycle
                ? fmt::format("static {} fails, no map up to {} darts breaks it: Theorem 6 is sufficient, not necessary", c.name(), m.darts)
-               : fmt::format("static {} fails, no map up to {} darts breaks it: Theorem {}'s (<=) ranges over W-pattern graphs, not over "
-                             "the P_v of maps where L matches",
-                             c.name(), m.darts, theorem);
+               : fmt::format(
+                     "static {} fails, no map up to {} darts breaks it: Theorem {}'s (<=) ranges over W-pattern graphs, not over "
+                     "the P_v of maps where L matches",
+                     c.name(), m.darts, theorem);
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ struct ClassAnswer {
   std::string why;                // for vacuous and unknown answers
   std::optional<SymbolicHost> host;
   TopoGraph host_graph, result_graph;  // the counterexample as D-graphs
-  bool replayed = false;  // the library's derivation on host_graph breaks the constraint too
+  bool replayed = false;               // the library's derivation on host_graph breaks the constraint too
   std::string replay_failure;
   double seconds = 0;
   bool proved_for_all() const { return status == Status::none && bound > 0 && darts >= bound; }
@@ -68,7 +68,7 @@ std::string_view agreement_name(Agreement a);
 
 struct ConstraintProof {
   HConstraint constraint;
-  std::optional<bool> static_holds;  // the static condition of the same name
+  std::optional<bool> static_holds;    // the static condition of the same name
   std::optional<ClassAnswer> theorem;  // none for no-loop: no theorem covers it
   ClassAnswer model;
   Agreement agreement = Agreement::not_compared;

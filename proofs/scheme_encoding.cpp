@@ -8,9 +8,10 @@
 namespace dartcheck::proofs {
 std::string scheme_out_of_scope(const Rule& core) {
   if (core.left().node_count() != 1)
-    return fmt::format("rule scheme whose L has {} nodes and {} hook{}: the solver encodes schemes whose L is one hook node with loops "
-                       "(002 Sec. 10); `dartcheck fuzz` checks the others",
-                       core.left().node_count(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
+    return fmt::format(
+        "rule scheme whose L has {} nodes and {} hook{}: the solver encodes schemes whose L is one hook node with loops "
+        "(002 Sec. 10); `dartcheck fuzz` checks the others",
+        core.left().node_count(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
   return {};
 }
 
@@ -82,8 +83,7 @@ void SchemeEncoding::encode_pattern_and_match() {
   }
   // The match: every loop (w, d) of L instantiates to p -d-> p·w.
   for (ArcId e = 0; e < L.arc_count(); ++e)
-    for (std::size_t x = 0; x < k_; ++x)
-      solver_.add(z3::implies(in_pattern(x), links(L.arc(e).label)[x] == shift(x, arc_word(words_.left, e))));
+    for (std::size_t x = 0; x < k_; ++x) solver_.add(z3::implies(in_pattern(x), links(L.arc(e).label)[x] == shift(x, arc_word(words_.left, e))));
   // Dangling: a deleted hook's darts keep no arc of a dimension L has no
   // loop of (the loops' instances are all the arcs of the others: they
   // map P_v into itself injectively, hence onto).
@@ -117,8 +117,7 @@ void SchemeEncoding::encode_derived() {
       const auto& a = R.arc(e);
       if (a.label != d || core_.preserved_right_arc(e)) continue;
       const std::size_t from = block_[a.source], to = block_[a.target];
-      for (std::size_t p = 0; p < k_; ++p)
-        arcs.push_back({from * k_ + p, in_pattern(p), index(to, shift(p, arc_word(words_.right, e))), to});
+      for (std::size_t p = 0; p < k_; ++p) arcs.push_back({from * k_ + p, in_pattern(p), index(to, shift(p, arc_word(words_.right, e))), to});
     }
     Exprs& h = hlink_[static_cast<std::size_t>(d)];
     h.assign(n, none());
@@ -174,7 +173,8 @@ z3::expr SchemeEncoding::violation(const HConstraint& c) {
   z3::expr bad = ctx_.bool_val(false);
   const std::size_t n = present_.size();
   switch (c.kind) {
-    case RuleCondition::incident_arcs: return incident_violation(c.i);
+    case RuleCondition::incident_arcs:
+      return incident_violation(c.i);
     case RuleCondition::non_orientation: {
       const Exprs& h = hlink_[static_cast<std::size_t>(c.i)];
       for (std::size_t x : touched_) {
@@ -202,7 +202,8 @@ z3::expr SchemeEncoding::violation(const HConstraint& c) {
     case RuleCondition::no_loop:
       for (const auto& a : arcs_[static_cast<std::size_t>(c.i)]) bad = bad || (a.present && a.target == val(a.source));
       return bad;
-    default: return bad;
+    default:
+      return bad;
   }
 }
 

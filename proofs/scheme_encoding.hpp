@@ -41,11 +41,11 @@ class SchemeEncoding : public HostEncoding {
   struct Candidate {
     std::size_t source;  // H index
     z3::expr present;
-    z3::expr target;     // H index
-    std::size_t block;   // the block the target lies in
+    z3::expr target;    // H index
+    std::size_t block;  // the block the target lies in
   };
   z3::expr in_pattern(std::size_t x) { return z3::ult(val(x), np_); }
-  z3::expr shift(std::size_t x, const ConjWord& w);        // the host dart p·w for pattern dart x
+  z3::expr shift(std::size_t x, const ConjWord& w);         // the host dart p·w for pattern dart x
   z3::expr index(std::size_t block, const z3::expr& dart);  // the H index of (dart, node of that block)
   z3::expr present_at(const z3::expr& index);
   void encode_pattern_and_match();
@@ -60,11 +60,11 @@ class SchemeEncoding : public HostEncoding {
   std::size_t blocks_;
   z3::expr np_;
   std::vector<ConjWord> gens_;
-  std::vector<Exprs> shift_;  // per generator, per host dart
+  std::vector<Exprs> shift_;                  // per generator, per host dart
   std::vector<std::vector<Candidate>> arcs_;  // per dimension
-  Exprs present_;             // per H index
-  std::vector<std::size_t> touched_;  // H indices of the images of R's nodes
-  std::vector<Exprs> hlink_;  // per dimension, per H index: the first present candidate
+  Exprs present_;                             // per H index
+  std::vector<std::size_t> touched_;          // H indices of the images of R's nodes
+  std::vector<Exprs> hlink_;                  // per dimension, per H index: the first present candidate
   /// Per dimension, per H index: the blocks hlink's value may lie in (bit
   /// b), so that look-ups into H read k entries per block, not all.
   std::vector<std::vector<std::uint32_t>> hblocks_;

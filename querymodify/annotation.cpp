@@ -159,8 +159,10 @@ struct TrieSearch {
     std::vector<std::pair<Dart, std::uint32_t>> spill;
     std::size_t done = 0;
     auto record = [&](Dart di, std::uint32_t result) {
-      if (done < local.size()) local[done] = {di, result};
-      else spill.emplace_back(di, result);
+      if (done < local.size())
+        local[done] = {di, result};
+      else
+        spill.emplace_back(di, result);
       ++done;
     };
     while (true) {
@@ -197,10 +199,14 @@ struct TrieSearch {
                      bd = static_cast<std::uint32_t>(Constraint::boundary), any = static_cast<std::uint32_t>(Constraint::any);
       std::array<std::uint32_t, 4> wanted{};
       std::size_t count = 0;
-      if (free) wanted = {0, nc, bd, any}, count = 4;
-      else if (m == empty_mark) wanted = {nc, in, any, 0}, count = 3;
-      else if (m == unmatched) wanted = {labeled + 1, nc, in, any}, count = 4;
-      else wanted = {m, in, any, 0}, count = 3;
+      if (free)
+        wanted = {0, nc, bd, any}, count = 4;
+      else if (m == empty_mark)
+        wanted = {nc, in, any, 0}, count = 3;
+      else if (m == unmatched)
+        wanted = {labeled + 1, nc, in, any}, count = 4;
+      else
+        wanted = {m, in, any, 0}, count = 3;
       auto it = children.begin();
       for (std::size_t w = 0; w < count; ++w) {
         it = std::lower_bound(it, children.end(), std::pair<std::uint32_t, std::uint32_t>{wanted[w], 0});

@@ -44,7 +44,8 @@ CellMap build_cell_map(const std::vector<Polyhedron>& cells) {
         out.vertex[d] = u;
         out.cell[d] = static_cast<std::uint32_t>(c);
         m.sew(1, d, j + 1 < f.size() ? d + 1 : first);
-        if (!edges.emplace(std::pair{u, v}, d).second) throw CellMapError(c, fmt::format("cell {} traverses the edge {} -> {} twice (faces not oriented alike)", c, u, v));
+        if (!edges.emplace(std::pair{u, v}, d).second)
+          throw CellMapError(c, fmt::format("cell {} traverses the edge {} -> {} twice (faces not oriented alike)", c, u, v));
       }
       auto key = f;
       std::sort(key.begin(), key.end());
@@ -53,7 +54,8 @@ CellMap build_cell_map(const std::vector<Polyhedron>& cells) {
     }
     for (const auto& [uv, d] : edges) {
       const auto it = edges.find({uv.second, uv.first});
-      if (it == edges.end()) throw CellMapError(c, fmt::format("cell {} is not closed: its edge {} -> {} has no face on the other side", c, uv.first, uv.second));
+      if (it == edges.end())
+        throw CellMapError(c, fmt::format("cell {} is not closed: its edge {} -> {} has no face on the other side", c, uv.first, uv.second));
       if (d < it->second) m.sew(2, d, it->second);
     }
   }
@@ -76,7 +78,8 @@ CellMap build_cell_map(const std::vector<Polyhedron>& cells) {
           const Dart f = b.first + static_cast<Dart>(y);
           if (out.vertex[f] == v && out.vertex[m.link(1, f)] == u) e = f;
         }
-        if (e == no_dart) throw CellMapError(b.cell, fmt::format("cells {} and {} traverse their shared face the same way (orientations differ)", a.cell, b.cell));
+        if (e == no_dart)
+          throw CellMapError(b.cell, fmt::format("cells {} and {} traverse their shared face the same way (orientations differ)", a.cell, b.cell));
         m.sew(3, d, e);
       }
     }

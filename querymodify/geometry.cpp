@@ -20,7 +20,8 @@ double det(const Point3& a, const Point3& b, const Point3& c) {
 
 }  // namespace
 
-std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles, const Point3& x) {
+std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
+                                           const Point3& x) {
   constexpr double eps = 1e-12;
   const std::size_t n = vertices.size();
   std::vector<double> w(n, 0.0), d(n);
@@ -63,17 +64,20 @@ std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std
     if (flat) continue;  // x in t's plane but outside t, or t degenerate
     for (int i = 0; i < 3; ++i) {
       const int next = (i + 1) % 3, prev = (i + 2) % 3;
-      w[t[static_cast<std::size_t>(i)]] += (theta[i] - c[next] * theta[prev] - c[prev] * theta[next]) / (d[t[static_cast<std::size_t>(i)]] * std::sin(theta[next]) * s[prev]);
+      w[t[static_cast<std::size_t>(i)]] +=
+          (theta[i] - c[next] * theta[prev] - c[prev] * theta[next]) / (d[t[static_cast<std::size_t>(i)]] * std::sin(theta[next]) * s[prev]);
     }
   }
   double sum = 0;
   for (double v : w) sum += v;
-  if (!(std::abs(sum) > eps)) throw std::invalid_argument(fmt::format("mean value coordinates of ({}, {}, {}) are undefined: the weights cancel", x[0], x[1], x[2]));
+  if (!(std::abs(sum) > eps))
+    throw std::invalid_argument(fmt::format("mean value coordinates of ({}, {}, {}) are undefined: the weights cancel", x[0], x[1], x[2]));
   for (double& v : w) v /= sum;
   return w;
 }
 
-std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<const Point3> t_points, std::span<const Dart> q_to_t, std::span<const Point3> matched_points) {
+std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<const Point3> t_points, std::span<const Dart> q_to_t,
+                                        std::span<const Point3> matched_points) {
   if (t_points.size() != t.size() || q_to_t.size() != q.size() || matched_points.size() != q.size())
     throw std::invalid_argument("place_target_points needs a point per target dart, and an image and a matched point per query dart");
   // T's vertices.

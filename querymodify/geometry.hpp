@@ -25,7 +25,8 @@ using Point3 = std::array<double, 3>;
 /// On a vertex or a triangle, x gets that vertex's or the triangle's own
 /// barycentric coordinates. Throws std::invalid_argument when the weights
 /// cancel out (no triangle sees x).
-std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles, const Point3& x);
+std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
+                                           const Point3& x);
 
 /// Points for a target's darts after a modification (001 Sec. 6.5).
 /// `t_points` is T's point per dart, `q_to_t` is m_QT (no_dart where a
@@ -38,7 +39,8 @@ std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std
 /// input points. An affine map between T's and the input's points of the
 /// kept vertices thus carries the created vertices along (tested). Throws
 /// std::invalid_argument if a vertex is created and Q has no boundary.
-std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<const Point3> t_points, std::span<const Dart> q_to_t, std::span<const Point3> matched_points);
+std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<const Point3> t_points, std::span<const Dart> q_to_t,
+                                        std::span<const Point3> matched_points);
 
 /// A point per dart from the point of each dart's vertex.
 std::vector<Point3> dart_points(std::span<const std::uint32_t> vertex_of_dart, std::span<const Point3> points);

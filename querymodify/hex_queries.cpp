@@ -103,31 +103,31 @@ static std::vector<std::array<std::uint8_t, 8>> readings(std::uint64_t s) {
 
 const std::vector<HexQuery>& hex_queries() {
   static const std::vector<HexQuery> all = [] {
-  std::set<std::uint64_t> classes;
-  for (auto s : enumerate_hex_subdivisions()) classes.insert(canonical_subdivision(s));
-  std::vector<HexQuery> out;
-  std::set<std::vector<std::uint32_t>> seen;
-  for (std::uint64_t s : classes)
-    for (bool mirror : {false, true}) {
-      auto tets = subdivision_tets(s);
-      // Without points, build_tet_map keeps the first tetrahedron's
-      // orientation as given and propagates it: reflecting every
-      // tetrahedron gives the mirror image.
-      if (mirror)
-        for (auto& t : tets) std::swap(t[2], t[3]);
-      TetMap tm = build_tet_map(tets);
-      auto key = canonical_word(tm.map);
-      if (!seen.insert(key).second) continue;
-      HexQuery q;
-      q.readings = readings(s);
-      q.subdivision = s;
-      q.mirrored = mirror;
-      q.tets = tm.tets.size();
-      q.word = query_word(tm.map, 0, Constraint::no_connection);
-      q.map = std::move(tm.map);
-      out.push_back(std::move(q));
-    }
-  return out;
+    std::set<std::uint64_t> classes;
+    for (auto s : enumerate_hex_subdivisions()) classes.insert(canonical_subdivision(s));
+    std::vector<HexQuery> out;
+    std::set<std::vector<std::uint32_t>> seen;
+    for (std::uint64_t s : classes)
+      for (bool mirror : {false, true}) {
+        auto tets = subdivision_tets(s);
+        // Without points, build_tet_map keeps the first tetrahedron's
+        // orientation as given and propagates it: reflecting every
+        // tetrahedron gives the mirror image.
+        if (mirror)
+          for (auto& t : tets) std::swap(t[2], t[3]);
+        TetMap tm = build_tet_map(tets);
+        auto key = canonical_word(tm.map);
+        if (!seen.insert(key).second) continue;
+        HexQuery q;
+        q.readings = readings(s);
+        q.subdivision = s;
+        q.mirrored = mirror;
+        q.tets = tm.tets.size();
+        q.word = query_word(tm.map, 0, Constraint::no_connection);
+        q.map = std::move(tm.map);
+        out.push_back(std::move(q));
+      }
+    return out;
   }();
   return all;
 }

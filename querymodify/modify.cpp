@@ -90,7 +90,8 @@ Renumbering merge_faces(Map& m, const std::vector<Dart>& darts) {
     if (m.link(3, d) != no_dart) throw std::invalid_argument(fmt::format("dart {} is 3-sewn: only 3-free faces can be merged", d));
   }
   for (Dart d : in)
-    if (const Dart e = m.link(1, d); !contains(in, e)) throw std::invalid_argument(fmt::format("darts {} and {} are 1-linked but only {} is listed: not whole faces", d, e, d));
+    if (const Dart e = m.link(1, d); !contains(in, e))
+      throw std::invalid_argument(fmt::format("darts {} and {} are 1-linked but only {} is listed: not whole faces", d, e, d));
   return merge_across(m, in, 1, 2);
 }
 
@@ -156,7 +157,8 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
   return t_to_m;
 }
 
-std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m, Renumbering* moved_out) {
+std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m,
+                          Renumbering* moved_out) {
   check_models(m, q, t, q_to_t, q_to_m);
   // The boundaries must coincide: Q's 3-free darts onto T's, β1 kept.
   std::vector<Dart> t_boundary_of(t.size(), no_dart);
@@ -182,8 +184,10 @@ std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<
     if (q.link(3, x) != no_dart) continue;
     const Dart o = m.link(3, q_to_m[x]);
     if (o == no_dart) continue;
-    if (const auto it = query_dart_of.find(o); it != query_dart_of.end()) inside[x] = it->second;
-    else outside[x] = o;
+    if (const auto it = query_dart_of.find(o); it != query_dart_of.end())
+      inside[x] = it->second;
+    else
+      outside[x] = o;
   }
   std::vector<Dart> matched(q_to_m.begin(), q_to_m.end());
   const Renumbering moved = delete_volumes(m, matched);

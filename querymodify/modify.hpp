@@ -71,6 +71,7 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
 /// std::invalid_argument otherwise, before changing `m`). Returns m_TM;
 /// `moved`, if given, receives the renumbering of the input's other darts
 /// (the match's darts are removed before T's are appended).
-std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m, Renumbering* moved = nullptr);
+std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m,
+                          Renumbering* moved = nullptr);
 
 }  // namespace dartcheck::querymodify

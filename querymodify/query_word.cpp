@@ -38,10 +38,14 @@ std::vector<std::uint32_t> word(const Map& m, const Labeling& l) {
 
 const char* constraint_symbol(Constraint c) {
   switch (c) {
-    case Constraint::any: return "*";
-    case Constraint::boundary: return "ε";
-    case Constraint::interior: return "ε̄";
-    case Constraint::no_connection: return "↔";
+    case Constraint::any:
+      return "*";
+    case Constraint::boundary:
+      return "ε";
+    case Constraint::interior:
+      return "ε̄";
+    case Constraint::no_connection:
+      return "↔";
   }
   return "?";
 }
@@ -49,7 +53,8 @@ const char* constraint_symbol(Constraint c) {
 QueryWord query_word(const Map& query, Dart start, Constraint free_links, const std::vector<ConstraintOverride>& overrides) {
   const Labeling l = bfs_labeling(query, start);
   if (l.darts.size() != query.size())
-    throw std::invalid_argument(fmt::format("the query is not connected: {} of its {} darts are reached from dart {}", l.darts.size(), query.size(), start));
+    throw std::invalid_argument(
+        fmt::format("the query is not connected: {} of its {} darts are reached from dart {}", l.darts.size(), query.size(), start));
   QueryWord w;
   w.dims = query.model().dims;
   w.darts = l.darts.size();

@@ -49,8 +49,8 @@ const char* constraint_symbol(Constraint c);
 /// A query word (001 Def. 5): the word of a query map whose free links
 /// carry boundary conditions instead of 0.
 struct QueryWord {
-  std::vector<Dim> dims;              // the letters' dimensions, ascending
-  std::vector<std::uint32_t> letters; // |dims| * darts entries
+  std::vector<Dim> dims;               // the letters' dimensions, ascending
+  std::vector<std::uint32_t> letters;  // |dims| * darts entries
   std::size_t darts = 0;
   std::uint32_t at(std::uint32_t label, std::size_t letter) const { return letters[(label - 1) * dims.size() + letter]; }
 };

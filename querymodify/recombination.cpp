@@ -34,7 +34,9 @@ double scaled_jacobian(const std::array<std::array<double, 3>, 8>& p) {
     for (int axis = 0; axis < 3; ++axis) {
       const int w = v ^ (1 << axis);
       const double sign = (v >> axis) & 1 ? -1.0 : 1.0;  // always along +axis
-      for (int c = 0; c < 3; ++c) e[axis][c] = sign * (p[static_cast<std::size_t>(w)][static_cast<std::size_t>(c)] - p[static_cast<std::size_t>(v)][static_cast<std::size_t>(c)]);
+      for (int c = 0; c < 3; ++c)
+        e[axis][c] =
+            sign * (p[static_cast<std::size_t>(w)][static_cast<std::size_t>(c)] - p[static_cast<std::size_t>(v)][static_cast<std::size_t>(c)]);
     }
     const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
                        e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);

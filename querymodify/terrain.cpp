@@ -82,16 +82,20 @@ std::vector<Polyhedron> voxel_cells(std::uint32_t n) {
     for (std::uint32_t i = 0; i < n; ++i) {
       const std::uint32_t b00 = g.lower(i, j), b10 = g.lower(i + 1, j), b11 = g.lower(i + 1, j + 1), b01 = g.lower(i, j + 1);
       const std::uint32_t t00 = g.upper(i, j), t10 = g.upper(i + 1, j), t11 = g.upper(i + 1, j + 1), t01 = g.upper(i, j + 1);
-      cells.push_back({{t00, t10, t11, t01},                    // upper face first: darts 26c .. 26c+3
-                       {b00, b11, b10}, {b00, b01, b11},        // bottom, split by (i, j)-(i+1, j+1)
-                       {b00, b10, t10, t00}, {b10, b11, t11, t10},  // sides -y, +x
-                       {b11, b01, t01, t11}, {b01, b00, t00, t01}});  // sides +y, -x
+      cells.push_back({{t00, t10, t11, t01},  // upper face first: darts 26c .. 26c+3
+                       {b00, b11, b10},
+                       {b00, b01, b11},  // bottom, split by (i, j)-(i+1, j+1)
+                       {b00, b10, t10, t00},
+                       {b10, b11, t11, t10},  // sides -y, +x
+                       {b11, b01, t01, t11},
+                       {b01, b00, t00, t01}});  // sides +y, -x
     }
   return cells;
 }
 
 std::vector<Point3> voxel_points(std::uint32_t n, const std::vector<double>& heights) {
-  if (heights.size() != std::size_t{n + 1} * (n + 1)) throw std::invalid_argument(fmt::format("a {0} x {0} voxel grid needs {1} heights, not {2}", n, (n + 1) * (n + 1), heights.size()));
+  if (heights.size() != std::size_t{n + 1} * (n + 1))
+    throw std::invalid_argument(fmt::format("a {0} x {0} voxel grid needs {1} heights, not {2}", n, (n + 1) * (n + 1), heights.size()));
   std::vector<Point3> p(2 * heights.size());
   for (std::uint32_t j = 0; j <= n; ++j)
     for (std::uint32_t i = 0; i <= n; ++i) {
@@ -276,7 +280,8 @@ Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
     Point3 centre{0, 0, 0};
     for (Dart d : q_to_m) matched.push_back(x.mesh.points[d]);
     for (Dart d : house.upper)
-      for (int c = 0; c < 3; ++c) centre[static_cast<std::size_t>(c)] += matched[d][static_cast<std::size_t>(c)] / static_cast<double>(house.upper.size());
+      for (int c = 0; c < 3; ++c)
+        centre[static_cast<std::size_t>(c)] += matched[d][static_cast<std::size_t>(c)] / static_cast<double>(house.upper.size());
     const auto t_to_m = extend(x.mesh.map, house.query.map, house.target.map, identity, q_to_m);
     const auto placed = place_target_points(house.query.map, house.target.map, house.target.points, identity, matched);
     x.mesh.points.resize(x.mesh.map.size());

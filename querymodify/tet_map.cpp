@@ -31,7 +31,8 @@ Key sorted(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 }
 
 Key face_key(const std::array<std::uint32_t, 4>& t, int f) {
-  return sorted(t[static_cast<std::size_t>(face_vertices[f][0])], t[static_cast<std::size_t>(face_vertices[f][1])], t[static_cast<std::size_t>(face_vertices[f][2])]);
+  return sorted(t[static_cast<std::size_t>(face_vertices[f][0])], t[static_cast<std::size_t>(face_vertices[f][1])],
+                t[static_cast<std::size_t>(face_vertices[f][2])]);
 }
 
 // Face f2 and position j2 of the other face of a tetrahedron along the
@@ -46,7 +47,8 @@ constexpr auto across_table = [] {
       const int a = face_vertices[f][j], b = face_vertices[f][(j + 1) % 3];
       for (int g = 0; g < 4; ++g)
         for (int k = 0; k < 3; ++k)
-          if (g != f && face_vertices[g][k] == b && face_vertices[g][(k + 1) % 3] == a) out[static_cast<std::size_t>(f)][static_cast<std::size_t>(j)] = {g, k};
+          if (g != f && face_vertices[g][k] == b && face_vertices[g][(k + 1) % 3] == a)
+            out[static_cast<std::size_t>(f)][static_cast<std::size_t>(j)] = {g, k};
     }
   return out;
 }();
@@ -112,7 +114,8 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
     }
     for (const auto& [a, b] : shared)
       if (!opposite(uses[a], uses[b]))
-        throw TetMapError(uses[b].tet, fmt::format("tetrahedra {} and {} lie on the same side of their shared face (the mesh folds over)", uses[a].tet, uses[b].tet));
+        throw TetMapError(uses[b].tet, fmt::format("tetrahedra {} and {} lie on the same side of their shared face (the mesh folds over)",
+                                                   uses[a].tet, uses[b].tet));
   } else {
     // Propagate an orientation from each component's first tetrahedron.
     std::vector<std::vector<std::pair<std::size_t, std::size_t>>> around(n);  // (my use, the other's use)
@@ -145,7 +148,9 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
   Map& m = out.map;
   m = Map(Model::open_omap(3), 12 * std::size_t{n});
   out.vertex.resize(m.size());
-  auto dart = [](std::uint32_t t, int f, int j) { return static_cast<Dart>(12 * t + 3 * static_cast<std::uint32_t>(f) + static_cast<std::uint32_t>(j)); };
+  auto dart = [](std::uint32_t t, int f, int j) {
+    return static_cast<Dart>(12 * t + 3 * static_cast<std::uint32_t>(f) + static_cast<std::uint32_t>(j));
+  };
   for (std::uint32_t t = 0; t < n; ++t)
     for (int f = 0; f < 4; ++f)
       for (int j = 0; j < 3; ++j) {

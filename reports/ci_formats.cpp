@@ -32,9 +32,9 @@ Json sarif_location(const std::string& file, const SourceLocation& at) {
   const std::string path = at.file.empty() ? file : at.file;
   Json artifact{{"uri", uri_path(path)}};
   if (!path.empty() && path.front() != '/') artifact["uriBaseId"] = "SRCROOT";
-  return Json::array({Json{{"physicalLocation",
-                            Json{{"artifactLocation", std::move(artifact)},
-                                 {"region", Json{{"startLine", std::max(at.line, 1)}, {"startColumn", std::max(at.column, 1)}}}}}}});
+  return Json::array(
+      {Json{{"physicalLocation", Json{{"artifactLocation", std::move(artifact)},
+                                      {"region", Json{{"startLine", std::max(at.line, 1)}, {"startColumn", std::max(at.column, 1)}}}}}}});
 }
 
 // The code point at s[k] of valid UTF-8, and its length.
@@ -99,7 +99,8 @@ std::string sarif_document(const std::string& catalog, const std::vector<RuleRes
       add(v.name(), !is_recorded(v.name()), fmt::format("rule {}: {} fails: {}", r.name(), v.name(), fmt::join(texts, "; ")), r);
     }
     for (const auto& name : failing_names(r.embedding)) add(name, !is_recorded(name), fmt::format("rule {}: {} fails", r.name(), name), r);
-    for (const auto& m : r.mismatches) add(r.unsound() && m.rfind("SOUNDNESS", 0) == 0 ? "soundness" : "mismatch", true, fmt::format("rule {}: {}", r.name(), m), r);
+    for (const auto& m : r.mismatches)
+      add(r.unsound() && m.rfind("SOUNDNESS", 0) == 0 ? "soundness" : "mismatch", true, fmt::format("rule {}: {}", r.name(), m), r);
   }
   Json rules = Json::array();
   for (const auto& id : ids) rules.push_back(Json{{"id", id}, {"shortDescription", Json{{"text", describe_rule_id(id)}}}});

@@ -19,7 +19,8 @@ std::string counterexample_dot(const Rule& rule, const ArcWords& words, const st
   std::optional<TopoGraph> result;
   if (p.result) {
     result = to_graph(*p.result);
-    GraphPicture h{"H:", fmt::format("H: result, {} dart{}", p.result->size(), p.result->size() == 1 ? "" : "s"), p.broken, p.broken_label, p.result_tags};
+    GraphPicture h{"H:", fmt::format("H: result, {} dart{}", p.result->size(), p.result->size() == 1 ? "" : "s"), p.broken, p.broken_label,
+                   p.result_tags};
     body += graph_cluster(*result, p.result->model(), h);
   } else {
     body += fmt::format("  subgraph \"cluster_H:\" {{\n    label=\"H\"; color=\"#9e9e9e\";\n    \"H:none\" [shape=note, label={}];\n  }}\n",
@@ -44,10 +45,11 @@ std::string counterexample_dot(const Rule& rule, const ArcWords& words, const st
     for (const auto& n : panels[k]) body += fmt::format("  {} -> {} [style=invis, weight=0];\n", quote(n), quote(sep));
     for (const auto& n : panels[k + 1]) body += fmt::format("  {} -> {} [style=invis, weight=0];\n", quote(sep), quote(n));
   }
-  return fmt::format("digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; labelloc=t;\n"
-                     "  label=<<table border=\"0\"><tr><td>{}</td></tr><tr><td>{}</td></tr></table>>;\n"
-                     "  node [shape=circle, fontname=\"Helvetica\", fontsize=10, width=0.3]; edge [fontname=\"Helvetica\", fontsize=9];\n{}}}\n",
-                     quote(p.title), html_escape(p.title), dimension_legend(p.host->model()), body);
+  return fmt::format(
+      "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; labelloc=t;\n"
+      "  label=<<table border=\"0\"><tr><td>{}</td></tr><tr><td>{}</td></tr></table>>;\n"
+      "  node [shape=circle, fontname=\"Helvetica\", fontsize=10, width=0.3]; edge [fontname=\"Helvetica\", fontsize=9];\n{}}}\n",
+      quote(p.title), html_escape(p.title), dimension_legend(p.host->model()), body);
 }
 
 }  // namespace dartcheck::reports

@@ -18,13 +18,13 @@ namespace dartcheck::reports {
 struct CounterexamplePicture {
   std::string title;
   const Map* host = nullptr;
-  std::vector<std::string> match_tags;  // per dart of G: what it matches ("a", "hook", ...), empty if untouched
-  std::string match_label;              // what the filled darts of G are
-  const Map* result = nullptr;          // H; null when H has no dense form
-  std::vector<bool> broken;             // per dart of H
+  std::vector<std::string> match_tags;   // per dart of G: what it matches ("a", "hook", ...), empty if untouched
+  std::string match_label;               // what the filled darts of G are
+  const Map* result = nullptr;           // H; null when H has no dense form
+  std::vector<bool> broken;              // per dart of H
   std::vector<std::string> result_tags;  // per dart of H: e.g. its value in a conflicting orbit, may be empty
-  std::string broken_label;             // which constraints, for the panel's title
-  std::string no_result;                // why H is not drawn, when result is null
+  std::string broken_label;              // which constraints, for the panel's title
+  std::string no_result;                 // why H is not drawn, when result is null
 };
 
 /// G, H and the rule, left to right, with one legend of the dimensions.

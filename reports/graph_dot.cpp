@@ -12,10 +12,9 @@ std::string graph_cluster(const TopoGraph& g, const Model& model, const GraphPic
   for (NodeId v = 0; v < g.node_count(); ++v) {
     const bool lit = v < p.highlight.size() && p.highlight[v];
     const bool tagged = v < p.tags.size() && !p.tags[v].empty();
-    out += fmt::format("    {} [label={}{}];\n", quote(p.prefix + g.name(v)), quote(tagged ? g.name(v) + "\n" + p.tags[v] : g.name(v)),
-                       lit ? fmt::format(", style=filled, fillcolor=\"{}\", color=\"{}\", penwidth=2, highlight=\"true\"", highlight_fill,
-                                         highlight_line)
-                           : "");
+    out += fmt::format(
+        "    {} [label={}{}];\n", quote(p.prefix + g.name(v)), quote(tagged ? g.name(v) + "\n" + p.tags[v] : g.name(v)),
+        lit ? fmt::format(", style=filled, fillcolor=\"{}\", color=\"{}\", penwidth=2, highlight=\"true\"", highlight_fill, highlight_line) : "");
   }
   // A non-oriented dimension's arc and its reverse are one edge.
   std::vector<bool> drawn(g.arc_count(), false);
@@ -39,9 +38,10 @@ std::string graph_cluster(const TopoGraph& g, const Model& model, const GraphPic
 }
 
 std::string graph_dot(const TopoGraph& g, const Model& model, const GraphPicture& p) {
-  return fmt::format("digraph {} {{\n  fontname=\"Helvetica\"; node [shape=circle, fontname=\"Helvetica\", fontsize=10, width=0.3]; "
-                     "edge [fontname=\"Helvetica\", fontsize=9];\n  label=<{}>; labelloc=b;\n{}}}\n",
-                     quote(p.title), dimension_legend(model), graph_cluster(g, model, p));
+  return fmt::format(
+      "digraph {} {{\n  fontname=\"Helvetica\"; node [shape=circle, fontname=\"Helvetica\", fontsize=10, width=0.3]; "
+      "edge [fontname=\"Helvetica\", fontsize=9];\n  label=<{}>; labelloc=b;\n{}}}\n",
+      quote(p.title), dimension_legend(model), graph_cluster(g, model, p));
 }
 
 }  // namespace dartcheck::reports

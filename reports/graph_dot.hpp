@@ -12,10 +12,10 @@
 namespace dartcheck::reports {
 
 struct GraphPicture {
-  std::string prefix;           // prefixes node ids, so several panels share one picture
-  std::string title;            // the panel's label
-  std::vector<bool> highlight;  // per node: drawn filled, with the attribute highlight="true"
-  std::string highlight_label;  // what the highlight means, for the panel's label
+  std::string prefix;             // prefixes node ids, so several panels share one picture
+  std::string title;              // the panel's label
+  std::vector<bool> highlight;    // per node: drawn filled, with the attribute highlight="true"
+  std::string highlight_label;    // what the highlight means, for the panel's label
   std::vector<std::string> tags;  // per node: text under the dart's number (e.g. the L node it matches), may be empty
 };
 

@@ -93,10 +93,11 @@ std::string violations_html(const Counterexample& cx) {
 std::string counterexample_html(const RuleResult& r, const Counterexample& cx, const std::string& heading, const std::string& replay,
                                 Pictures& pictures, const std::string& file) {
   const auto& e = *r.entry;
-  std::string out = fmt::format("<h3>{}</h3>\n<p>{} Found by {}{}.</p>\n", html_text(heading),
-                                html_text(fmt::format("A valid {} of {} darts; applied at hook{} {}, H breaks {}.", e.rule.model().name, cx.host.size(),
-                                                      cx.hooks.size() == 1 ? "" : "s", fmt::join(cx.hooks, ","), fmt::join(cx.broken(), ", "))),
-                                html_text(cx.origin), cx.minimal ? " (minimal: no smaller host breaks it)" : "");
+  std::string out =
+      fmt::format("<h3>{}</h3>\n<p>{} Found by {}{}.</p>\n", html_text(heading),
+                  html_text(fmt::format("A valid {} of {} darts; applied at hook{} {}, H breaks {}.", e.rule.model().name, cx.host.size(),
+                                        cx.hooks.size() == 1 ? "" : "s", fmt::join(cx.hooks, ","), fmt::join(cx.broken(), ", "))),
+                  html_text(cx.origin), cx.minimal ? " (minimal: no smaller host breaks it)" : "");
   out += pictures.add(counterexample_dot(e, r.verdict, cx, fmt::format("{}: {}", e.rule.name(), heading)), file);
   out += violations_html(cx);
   if (!replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(replay));
@@ -110,10 +111,14 @@ std::string kind_of(const CatalogRule& e) {
 
 std::string fuzz_cell(const FuzzReport& f) {
   switch (f.verdict) {
-    case FuzzClass::consistent: return fmt::format("<td class=\"ok\">consistent ({} applications)</td>", f.applications);
-    case FuzzClass::confirmed: return fmt::format("<td class=\"fails\">confirmed ({} darts)</td>", f.counterexample->host.size());
-    case FuzzClass::unconfirmed: return "<td class=\"skipped\">unconfirmed</td>";
-    case FuzzClass::soundness_bug: return "<td class=\"bug\">SOUNDNESS BUG</td>";
+    case FuzzClass::consistent:
+      return fmt::format("<td class=\"ok\">consistent ({} applications)</td>", f.applications);
+    case FuzzClass::confirmed:
+      return fmt::format("<td class=\"fails\">confirmed ({} darts)</td>", f.counterexample->host.size());
+    case FuzzClass::unconfirmed:
+      return "<td class=\"skipped\">unconfirmed</td>";
+    case FuzzClass::soundness_bug:
+      return "<td class=\"bug\">SOUNDNESS BUG</td>";
   }
   return "<td></td>";
 }
@@ -122,18 +127,18 @@ std::string prove_cell(const proofs::RuleProof& p) {
   if (!p.out_of_scope.empty()) return "<td class=\"none\">out of scope</td>";
   using proofs::Agreement;
   const auto bad = p.count(Agreement::disagree);
-  return fmt::format("<td class=\"{}\">{} agree, {} disagree, {} unresolved, {} not compared</td>", bad ? "bug" : "ok", p.count(Agreement::agree), bad,
-                     p.count(Agreement::unresolved), p.count(Agreement::not_compared));
+  return fmt::format("<td class=\"{}\">{} agree, {} disagree, {} unresolved, {} not compared</td>", bad ? "bug" : "ok", p.count(Agreement::agree),
+                     bad, p.count(Agreement::unresolved), p.count(Agreement::not_compared));
 }
 
 }  // namespace
 
 std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed, bool proved) {
   static constexpr std::pair<RuleCondition, const char*> kinds[] = {{RuleCondition::incident_arcs, "I"},
-                                                                     {RuleCondition::dangling, "dangling"},
-                                                                     {RuleCondition::non_orientation, "O"},
-                                                                     {RuleCondition::cycle, "C"},
-                                                                     {RuleCondition::no_loop, "no-loop"}};
+                                                                    {RuleCondition::dangling, "dangling"},
+                                                                    {RuleCondition::non_orientation, "O"},
+                                                                    {RuleCondition::cycle, "C"},
+                                                                    {RuleCondition::no_loop, "no-loop"}};
   std::string out = "<table class=\"verdicts\">\n<tr><th>rule</th><th>model</th>";
   for (const auto& [kind, name] : kinds) out += fmt::format("<th>{}</th>", name);
   out += "<th>static verdict</th><th>recorded</th>";
@@ -154,8 +159,9 @@ std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed,
       out += target.empty() ? fmt::format("<td class=\"{}\">{}</td>", cls, html_text(text))
                             : fmt::format("<td class=\"{}\"><a href=\"#{}\">{}</a></td>", cls, target, html_text(text));
     }
-    out += fmt::format("<td>{}</td><td class=\"{}\">{}</td>", html_text(r.verdict_text()), r.matches_record() ? "ok" : "fails",
-                       html_text(r.matches_record() ? std::string("matches") : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
+    out += fmt::format(
+        "<td>{}</td><td class=\"{}\">{}</td>", html_text(r.verdict_text()), r.matches_record() ? "ok" : "fails",
+        html_text(r.matches_record() ? std::string("matches") : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
     if (fuzzed) out += r.fuzz ? fuzz_cell(*r.fuzz) : "<td></td>";
     if (proved) out += r.proof ? prove_cell(*r.proof) : "<td></td>";
     out += "</tr>\n";
@@ -218,8 +224,8 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
     if (!c.witnesses.empty()) {
       failing += "\n<ul class=\"witnesses\">\n";
       for (const auto& w : c.witnesses)
-        failing += fmt::format("<li>{}in {}: {}</li>\n", w.subcondition ? fmt::format("sub-condition {} ", w.subcondition) : "", w.side,
-                               html_text(w.text));
+        failing +=
+            fmt::format("<li>{}in {}: {}</li>\n", w.subcondition ? fmt::format("sub-condition {} ", w.subcondition) : "", w.side, html_text(w.text));
       failing += "</ul>\n";
     }
     failing += "</li>\n";
@@ -234,7 +240,8 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
   if (!failing.empty()) out += "<h3>Conditions that fail</h3>\n<ul>\n" + failing + "</ul>\n";
   if (!e.expressions.empty()) {
     out += "<h3>Embedding expressions (opaque)</h3>\n<ul>\n";
-    for (const auto& x : e.expressions) out += fmt::format("<li>{}.{}: <code>{}</code></li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code));
+    for (const auto& x : e.expressions)
+      out += fmt::format("<li>{}.{}: <code>{}</code></li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code));
     out += "</ul>\n";
   }
   for (const auto& caveat : e.caveats) out += fmt::format("<p class=\"note\">Not represented: {}</p>\n", html_text(caveat));
@@ -259,17 +266,19 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
     } else {
       out += "<table>\n<tr><th>constraint</th><th>static</th><th>theorem class</th><th>maps of the model</th><th>agreement</th><th>note</th></tr>\n";
       for (const auto& c : p.constraints)
-        out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_text(c.constraint.name()),
-                           c.static_holds ? (*c.static_holds ? "holds" : "fails") : "-",
-                           html_text(c.theorem ? answer_text(*c.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)"),
+        out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n",
+                           html_text(c.constraint.name()), c.static_holds ? (*c.static_holds ? "holds" : "fails") : "-",
+                           html_text(c.theorem  ? answer_text(*c.theorem)
+                                     : p.scheme ? "(scheme: maps only)"
+                                                : "(no theorem)"),
                            html_text(answer_text(c.model)), c.agreement == proofs::Agreement::disagree ? "bug" : "none",
                            proofs::agreement_name(c.agreement), html_text(c.note));
       out += "</table>\n";
       for (std::size_t k = 0; k < p.constraints.size(); ++k)
         if (r.proof_maps[k])
-          out += counterexample_html(r, *r.proof_maps[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
-                                     r.proof_replays[k], pictures,
-                                     "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
+          out +=
+              counterexample_html(r, *r.proof_maps[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
+                                  r.proof_replays[k], pictures, "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
     }
   }
   return out;

@@ -53,8 +53,8 @@ std::string node_label(const std::string& name, const std::string& type, const T
   return fmt::format("label=<{}>, shape=box, style=\"rounded{}\"", html, lit ? ",filled" : "");
 }
 
-std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses,
-                         const std::string& prefix, const JerboaLabels* labels, const TermLines& terms) {
+std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
+                         const JerboaLabels* labels, const TermLines& terms) {
   const TopoGraph& g = left ? rule.left() : rule.right();
   const std::vector<ConjWord>& ws = left ? words.left : words.right;
   const Model& model = rule.model();
@@ -108,8 +108,7 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
       for (ArcId f = e + 1; f < g.arc_count() && !pair; ++f) {
         const auto& b = g.arc(f);
         const bool f_kept = left ? rule.preserved_left_arc(f) : rule.preserved_right_arc(f);
-        if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source && f_kept == kept &&
-            arc_word(ws, f) == rw.conjugate(w))
+        if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source && f_kept == kept && arc_word(ws, f) == rw.conjugate(w))
           drawn[f] = pair = true, partner = f;
       }
     }
@@ -118,7 +117,8 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     // A Jerboa node's orbit type already says what its implicit loops say.
     if (labels && a.source == a.target && !w.empty() && !lit) continue;
     out += fmt::format("      {} -> {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(a.source)),
-                       quote(prefix + side + ":" + g.name(a.target)), quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
+                       quote(prefix + side + ":" + g.name(a.target)),
+                       quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
                        lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, pair ? ", dir=none" : "",
                        lit ? ", penwidth=2, witness=\"true\"" : "");
   }
@@ -158,15 +158,17 @@ std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vec
 
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,
                      const TermLines& terms) {
-  std::string legend = fmt::format(R"(<font color="{}">preserved</font>  <font color="{}">deleted</font>  <font color="{}">added</font>  )"
-                                   R"(double border: hook{}{})",
-                                   preserved_color, deleted_color, added_color, witnesses.empty() ? "" : "  filled: witness",
-                                   terms.terms ? fmt::format(R"(  embedding: term{})", terms.failing.empty() ? ""
-                                                                                         : fmt::format(R"(, <font color="{}"><b>bold</b></font>: failing)", highlight_line))
-                                               : "");
-  return fmt::format("digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; label=<{}>; labelloc=b;\n"
-                     "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n{}}}\n",
-                     quote(rule.name()), legend, rule_cluster(rule, words, witnesses, "", labels, terms));
+  std::string legend = fmt::format(
+      R"(<font color="{}">preserved</font>  <font color="{}">deleted</font>  <font color="{}">added</font>  )"
+      R"(double border: hook{}{})",
+      preserved_color, deleted_color, added_color, witnesses.empty() ? "" : "  filled: witness",
+      terms.terms ? fmt::format(R"(  embedding: term{})",
+                                terms.failing.empty() ? "" : fmt::format(R"(, <font color="{}"><b>bold</b></font>: failing)", highlight_line))
+                  : "");
+  return fmt::format(
+      "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; label=<{}>; labelloc=b;\n"
+      "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n{}}}\n",
+      quote(rule.name()), legend, rule_cluster(rule, words, witnesses, "", labels, terms));
 }
 
 }  // namespace dartcheck::reports

@@ -38,7 +38,7 @@ std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vec
                          const JerboaLabels* labels = nullptr, const TermLines& terms = {});
 
 /// A whole picture of the rule, titled with its name.
-std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {},
-                     const JerboaLabels* labels = nullptr, const TermLines& terms = {});
+std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {}, const JerboaLabels* labels = nullptr,
+                     const TermLines& terms = {});
 
 }  // namespace dartcheck::reports

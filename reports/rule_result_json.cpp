@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-
 namespace dartcheck::reports {
 
 using namespace analysis;
@@ -40,9 +39,9 @@ std::string graph_arcs(const TopoGraph& g) {
 }
 
 Json answer_json(const proofs::ClassAnswer& a) {
-  Json j{{"class", a.class_name},  {"status", proofs::status_name(a.status)}, {"darts", a.darts},
-         {"minimal", a.minimal},   {"bound", a.bound},                        {"proved_for_all", a.proved_for_all()},
-         {"core", a.core},         {"why", a.why},                            {"seconds", a.seconds}};
+  Json j{{"class", a.class_name}, {"status", proofs::status_name(a.status)}, {"darts", a.darts}, {"minimal", a.minimal},
+         {"bound", a.bound},      {"proved_for_all", a.proved_for_all()},    {"core", a.core},   {"why", a.why},
+         {"seconds", a.seconds}};
   if (a.status == proofs::Status::counterexample) {
     j["replayed"] = a.replayed;
     j["host"] = graph_arcs(a.host_graph);
@@ -90,10 +89,14 @@ Json fuzz_json(const FuzzReport& f, const std::string& replay) {
          {"outcome", outcome_text(f)}};
   if (f.counterexample) {
     const auto& cx = *f.counterexample;
-    j["counterexample"] = Json{{"darts", cx.host.size()},       {"hooks", cx.hooks},
-                               {"broken", cx.broken()},         {"minimal", cx.minimal},
-                               {"origin", cx.origin},           {"unrepresentable", cx.unrepresentable},
-                               {"embedding", cx.embedding_failures}, {"events", cx.event_contradictions},
+    j["counterexample"] = Json{{"darts", cx.host.size()},
+                               {"hooks", cx.hooks},
+                               {"broken", cx.broken()},
+                               {"minimal", cx.minimal},
+                               {"origin", cx.origin},
+                               {"unrepresentable", cx.unrepresentable},
+                               {"embedding", cx.embedding_failures},
+                               {"events", cx.event_contradictions},
                                {"replay", replay}};
   } else {
     j["counterexample"] = nullptr;
@@ -132,7 +135,9 @@ Json rule_result_json(const RuleResult& r) {
   Json j{{"name", e.rule.name()},
          {"model", e.rule.model().name},
          {"location", location_json(e.location)},
-         {"kind", e.jerboa ? "jerboa-scheme" : e.words.scheme ? "scheme" : "dpo"},
+         {"kind", e.jerboa         ? "jerboa-scheme"
+                  : e.words.scheme ? "scheme"
+                                   : "dpo"},
          {"consistent", r.consistent()},
          {"failures", r.failures},
          {"verdict", r.verdict_text()},

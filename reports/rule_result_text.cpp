@@ -27,7 +27,8 @@ std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results) 
   std::vector<std::string> lines;
   for (const auto& r : results)
     for (const auto& m : r.mismatches)
-      lines.push_back(printable(fmt::format("{}: error: {}: {}{}", r.entry->location.str(), r.name(), m.rfind("SOUNDNESS", 0) == 0 ? "" : "MISMATCH: ", m)));
+      lines.push_back(
+          printable(fmt::format("{}: error: {}: {}{}", r.entry->location.str(), r.name(), m.rfind("SOUNDNESS", 0) == 0 ? "" : "MISMATCH: ", m)));
   return lines;
 }
 
@@ -66,20 +67,21 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
   if (!catalog.modeler.empty()) {
     std::vector<std::string> e;
     for (const auto& d : catalog.embeddings) e.push_back(fmt::format("{} <{}>", d.name, fmt::join(d.orbit, ",")));
-    out += printable(fmt::format("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}", catalog.modeler, o.catalog, catalog.rules.size(),
-                                 catalog.skipped.size(), e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", ")))) +
-           "\n\n";
+    out +=
+        printable(fmt::format("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}", catalog.modeler, o.catalog, catalog.rules.size(),
+                              catalog.skipped.size(), e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", ")))) +
+        "\n\n";
   }
   out += fmt::format("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7}  {}\n", "rule", width, "model", "I", "dangling", "O", "C",
                      embedded ? fmt::format("{:<{}} ", "embeddings", ebd_width) : "", "ms", "verdict");
   for (std::size_t row = 0; row < results.size(); ++row) {
     const auto& r = results[row];
     const auto& v = r.verdict;
-    out += fmt::format("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7.2f}  {}{}\n", printable(r.name()), width, printable(r.entry->rule.model().name),
-                       condition_cell(v, RuleCondition::incident_arcs), condition_cell(v, RuleCondition::dangling),
-                       condition_cell(v, RuleCondition::non_orientation), condition_cell(v, RuleCondition::cycle),
-                       embedded ? fmt::format("{:<{}} ", ebd_cells[row], ebd_width) : "", r.static_ms, r.verdict_text(),
-                       r.matches_record() ? "" : fmt::format("   (differs from the {}: see stderr)", r.record_source_name()));
+    out += fmt::format("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7.2f}  {}{}\n", printable(r.name()), width,
+                       printable(r.entry->rule.model().name), condition_cell(v, RuleCondition::incident_arcs),
+                       condition_cell(v, RuleCondition::dangling), condition_cell(v, RuleCondition::non_orientation),
+                       condition_cell(v, RuleCondition::cycle), embedded ? fmt::format("{:<{}} ", ebd_cells[row], ebd_width) : "", r.static_ms,
+                       r.verdict_text(), r.matches_record() ? "" : fmt::format("   (differs from the {}: see stderr)", r.record_source_name()));
     for (const auto& caveat : r.entry->caveats) out += fmt::format("{:<{}}  note: {}\n", "", width, printable(caveat));
     if (r.host_search || r.scheme_search) out += fmt::format("{:<{}}  {}\n", "", width, r.confirmation_text());
     if (o.explain && !r.failures.empty()) {
@@ -90,7 +92,8 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
                              printable(w.text));
       }
       for (const auto& e : r.embedding)
-        for (const auto& w : e.witnesses) out += fmt::format("{:<{}}    {}{}: {}\n", "", width, e.name, e.required ? "" : " (not required)", printable(w.text));
+        for (const auto& w : e.witnesses)
+          out += fmt::format("{:<{}}    {}{}: {}\n", "", width, e.name, e.required ? "" : " (not required)", printable(w.text));
       if (r.scheme_search && r.scheme_search->counterexample)
         out += fmt::format("{:<{}}    host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)\n", "", width,
                            r.scheme_search->counterexample->origin, printable(r.name()));
@@ -101,7 +104,8 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
   }
   const bool whole_catalog = results.size() == catalog.rules.size();
   if (whole_catalog)
-    for (const auto& sk : catalog.skipped) out += printable(fmt::format("{:<{}}  not checked ({}): {}", sk.name, width, sk.location.str(), sk.why)) + "\n";
+    for (const auto& sk : catalog.skipped)
+      out += printable(fmt::format("{:<{}}  not checked ({}): {}", sk.name, width, sk.location.str(), sk.why)) + "\n";
   if (embedded)
     out += fmt::format("\nembeddings: {}{}\n", sufficiency_note,
                        catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated");

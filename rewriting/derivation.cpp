@@ -24,13 +24,12 @@ std::string representability(const Rule& rule, const Map& g, const Match& m) {
     const NodeId x = rule.to_left(a.source);
     if (x == no_node || g.link(a.label, m.node[x]) == no_dart) continue;
     bool freed = false;
-    for (ArcId f = 0; f < L.arc_count(); ++f)
-      freed |= !rule.preserved_left_arc(f) && L.arc(f).source == x && L.arc(f).label == a.label;
+    for (ArcId f = 0; f < L.arc_count(); ++f) freed |= !rule.preserved_left_arc(f) && L.arc(f).source == x && L.arc(f).label == a.label;
     bool kept = false;
     for (ArcId f = 0; f < R.arc_count(); ++f) kept |= rule.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label;
     if (!freed || kept)
-      return fmt::format("R adds a {}-arc out of '{}' (dart {}), which keeps its {}-arc to dart {}; H would break I({}) there", a.label, R.name(a.source),
-                         m.node[x], a.label, g.link(a.label, m.node[x]), a.label);
+      return fmt::format("R adds a {}-arc out of '{}' (dart {}), which keeps its {}-arc to dart {}; H would break I({}) there", a.label,
+                         R.name(a.source), m.node[x], a.label, g.link(a.label, m.node[x]), a.label);
   }
   return {};
 }

@@ -36,7 +36,8 @@ struct Instances {
 
 // `x.pi` on node x for its own pi label: its value is the matched dart's.
 bool own_value(const NodeTerm& t) {
-  return t.term.kind == Term::Kind::access && t.term.name == t.embedding && t.term.args[0].kind == Term::Kind::variable && t.term.args[0].name == t.node;
+  return t.term.kind == Term::Kind::access && t.term.name == t.embedding && t.term.args[0].kind == Term::Kind::variable &&
+         t.term.args[0].name == t.node;
 }
 
 // Where the value of a labeled instance of R is: a stored value of G (a
@@ -97,7 +98,7 @@ struct EmbeddedRewriter::Context {
   // evaluation per class or a write per class needs them (kept for the
   // next application's tables).
   std::vector<InstantiatedClasses> classes;
-  InstantiatedClasses left_classes;  // of Lemma 3's check
+  InstantiatedClasses left_classes;          // of Lemma 3's check
   std::vector<std::vector<Word>> used_gens;  // generators of used[u]'s orbit
   // Per-application tables, kept for their memory: a loop of small
   // applications allocates nothing once they have grown.
@@ -169,9 +170,10 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, std::size_t 
         if (i == DartTable::none || i == covered) continue;  // covered: links that are not permutations (an invalid host)
         const auto z = static_cast<NodeId>(i / np);
         if (left_classes.of(z, i % np) != cls)
-          return fmt::format("nodes {} and {} are in different {}-orbits <{}> of L, but their darts {} and {} share one {}-orbit of the map (003 Lemma 3, "
-                             "non-overlap): the extended rule would give that orbit the labels of both",
-                             in.name(L, x, p), in.name(L, z, i % np), e.name, fmt::join(e.orbit, ","), d, y, e.name);
+          return fmt::format(
+              "nodes {} and {} are in different {}-orbits <{}> of L, but their darts {} and {} share one {}-orbit of the map (003 Lemma 3, "
+              "non-overlap): the extended rule would give that orbit the labels of both",
+              in.name(L, x, p), in.name(L, z, i % np), e.name, fmt::join(e.orbit, ","), d, y, e.name);
         orbit_of.set(y, covered);
       }
     }
@@ -183,8 +185,8 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   // Every embedding the rule labels is written, so the map must have it.
   for (const EmbeddingSignature* e : used)
     if (!g.find(e->name))
-      return refuse<EmbeddedDerivation>(Refusal::no_value, fmt::format("the rule labels {} <{}>, and the map has no embedding {}", e->name,
-                                                                        fmt::join(e->orbit, ","), e->name));
+      return refuse<EmbeddedDerivation>(
+          Refusal::no_value, fmt::format("the rule labels {} <{}>, and the map has no embedding {}", e->name, fmt::join(e->orbit, ","), e->name));
   // 1. The match (nothing is written yet).
   Instances in;
   std::optional<SchemeMatch> scheme_match;
@@ -246,8 +248,8 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
         const Value want = ev.value(left_code[k], binding(p));
         if (!have || !(*have == want))
           return refuse<EmbeddedDerivation>(Refusal::label_mismatch,
-                                            fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding, t.term.str(),
-                                                        want.str(), in.at(x, p), have ? have->str() : "no value"));
+                                            fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding,
+                                                        t.term.str(), want.str(), in.at(x, p), have ? have->str() : "no value"));
       }
     }
   } catch (const EvaluationError& e) {
@@ -273,8 +275,10 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       has_classes[u] = true;
     }
     per_class[u] = has_classes[u] && evaluation == Evaluation::one_per_orbit;
-    if (per_class[u]) class_source[u].assign(classes[u].count, Source{});
-    else if (source.empty()) source.assign(terms.right.size() * np, Source{});
+    if (per_class[u])
+      class_source[u].assign(classes[u].count, Source{});
+    else if (source.empty())
+      source.assign(terms.right.size() * np, Source{});
   }
   try {
     for (std::size_t u = 0; u < used.size(); ++u) {
@@ -408,11 +412,14 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
           if ((from.index == first.from.index && from.stored == first.from.stored) || (from.stored && first.value == from.index) ||
               e->pool[first.value] == v)
             continue;
-          out.conflicts.push_back(fmt::format("the {}-orbit of dart {} gets {} from {} and {} from {}: the extended rule breaks (A), so the propagation "
-                                              "of 003 Def. 12 does not exist",
-                                              sig->name, d, e->pool[first.value].str(), in.name(R, right_node[first.k], first.p), v.str(), in.name(R, y, p)));
-          if (by_class) second_values.emplace_back(d, stored());  // H shows both values
-          else e->set_index(d, stored());
+          out.conflicts.push_back(
+              fmt::format("the {}-orbit of dart {} gets {} from {} and {} from {}: the extended rule breaks (A), so the propagation "
+                          "of 003 Def. 12 does not exist",
+                          sig->name, d, e->pool[first.value].str(), in.name(R, right_node[first.k], first.p), v.str(), in.name(R, y, p)));
+          if (by_class)
+            second_values.emplace_back(d, stored());  // H shows both values
+          else
+            e->set_index(d, stored());
           continue;
         }
         // An evaluated value is written once as its orbit's first value:

@@ -29,9 +29,7 @@ bool in_orbit(const std::vector<Dim>& orbit, Dim d) { return std::find(orbit.beg
 
 std::size_t copies(const PatternGraphs* pattern) { return pattern ? pattern->darts[0].size() : 1; }
 int generator(const PatternGraphs* pattern, const ConjWord& w) { return pattern ? pattern->generator(w) : -1; }
-std::uint32_t step(const PatternGraphs* pattern, std::size_t p, int w) {
-  return pattern ? pattern->step(p, w) : static_cast<std::uint32_t>(p);
-}
+std::uint32_t step(const PatternGraphs* pattern, std::size_t p, int w) { return pattern ? pattern->step(p, w) : static_cast<std::uint32_t>(p); }
 
 // out[p] = the dense number of uf's root of first + p, numbers given in
 // order of first appearance from `count` on (number: per root, none first).
@@ -52,8 +50,8 @@ void renumber(UnionFind& uf, std::size_t first, std::size_t np, std::vector<std:
 // are its whole orbit. Each step is checked when its source is popped; one
 // into an earlier class (a step that is not injective, possible on an
 // invalid host) returns false, and the caller takes the symmetric closure.
-bool label_orbits(const PatternGraphs* pattern, std::size_t np, const std::vector<int>& words, std::vector<std::uint32_t>& stack, std::uint32_t& count,
-                  std::vector<std::uint32_t>& out) {
+bool label_orbits(const PatternGraphs* pattern, std::size_t np, const std::vector<int>& words, std::vector<std::uint32_t>& stack,
+                  std::uint32_t& count, std::vector<std::uint32_t>& out) {
   out.assign(np, none);
   stack.clear();
   for (std::size_t p = 0; p < np; ++p) {
@@ -127,8 +125,10 @@ void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& wo
     const auto& arc = side.arc(a);
     if (!in_orbit(orbit, arc.label)) continue;
     const int w = generator(pattern, arc_word(words, a));
-    if (w < 0) nodes.unite(arc.source, arc.target);
-    else shifted.emplace_back(a, w);
+    if (w < 0)
+      nodes.unite(arc.source, arc.target);
+    else
+      shifted.emplace_back(a, w);
   }
   std::size_t groups = 0;
   out.group_of.resize(n);

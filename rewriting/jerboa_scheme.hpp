@@ -45,7 +45,6 @@ struct JerboaLabels {
   std::vector<OrbitType> left, right;
 };
 
-void add_implicit_arcs(TopoGraph& g, std::vector<ConjWord>& words, NodeId v, const OrbitType& parameter, const OrbitType& label,
-                       const Model& model);
+void add_implicit_arcs(TopoGraph& g, std::vector<ConjWord>& words, NodeId v, const OrbitType& parameter, const OrbitType& label, const Model& model);
 
 }  // namespace dartcheck

@@ -7,17 +7,28 @@ namespace dartcheck {
 
 std::string_view refusal_name(Refusal r) {
   switch (r) {
-    case Refusal::none: return "none";
-    case Refusal::bad_hooks: return "bad-hooks";
-    case Refusal::not_combinatorial: return "not-combinatorial";
-    case Refusal::no_match: return "no-match";
-    case Refusal::not_injective: return "not-injective";
-    case Refusal::dangling: return "dangling";
-    case Refusal::not_representable: return "not-representable";
-    case Refusal::disconnected: return "disconnected-instance";
-    case Refusal::label_mismatch: return "label-mismatch";
-    case Refusal::overlap: return "overlap";
-    case Refusal::no_value: return "no-value";
+    case Refusal::none:
+      return "none";
+    case Refusal::bad_hooks:
+      return "bad-hooks";
+    case Refusal::not_combinatorial:
+      return "not-combinatorial";
+    case Refusal::no_match:
+      return "no-match";
+    case Refusal::not_injective:
+      return "not-injective";
+    case Refusal::dangling:
+      return "dangling";
+    case Refusal::not_representable:
+      return "not-representable";
+    case Refusal::disconnected:
+      return "disconnected-instance";
+    case Refusal::label_mismatch:
+      return "label-mismatch";
+    case Refusal::overlap:
+      return "overlap";
+    case Refusal::no_value:
+      return "no-value";
   }
   return "?";
 }
@@ -57,7 +68,8 @@ Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const 
   Match m{std::vector<Dart>(L.node_count(), no_dart)};
   std::vector<NodeId> queue;
   for (std::size_t k = 0; k < hook_darts.size(); ++k) {
-    if (hook_darts[k] >= g.size()) return refuse(Refusal::bad_hooks, fmt::format("hook dart {} is not a dart of the map ({} darts)", hook_darts[k], g.size()));
+    if (hook_darts[k] >= g.size())
+      return refuse(Refusal::bad_hooks, fmt::format("hook dart {} is not a dart of the map ({} darts)", hook_darts[k], g.size()));
     m.node[rule.hooks()[k]] = hook_darts[k];
     queue.push_back(rule.hooks()[k]);
   }
@@ -80,7 +92,8 @@ Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const 
         continue;
       }
       if (image == no_dart)
-        return refuse(Refusal::no_match, fmt::format("L has {} -{}-> {} but dart {} has no {}-arc that way", L.name(a.source), a.label, L.name(a.target), m.node[v], a.label));
+        return refuse(Refusal::no_match, fmt::format("L has {} -{}-> {} but dart {} has no {}-arc that way", L.name(a.source), a.label,
+                                                     L.name(a.target), m.node[v], a.label));
       m.node[other] = image;
       queue.push_back(other);
     }
@@ -89,18 +102,20 @@ Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const 
   // arcs on distinct arcs (an arc of G is identified by source and label).
   for (const auto& a : L.arcs())
     if (g.link(a.label, m.node[a.source]) != m.node[a.target])
-      return refuse(Refusal::no_match, fmt::format("L has {} -{}-> {} (darts {} and {}) but the {}-arc of dart {} goes elsewhere", L.name(a.source), a.label,
-                                                   L.name(a.target), m.node[a.source], m.node[a.target], a.label, m.node[a.source]));
+      return refuse(Refusal::no_match, fmt::format("L has {} -{}-> {} (darts {} and {}) but the {}-arc of dart {} goes elsewhere", L.name(a.source),
+                                                   a.label, L.name(a.target), m.node[a.source], m.node[a.target], a.label, m.node[a.source]));
   std::vector<std::pair<Dart, NodeId>> images;
   for (NodeId v = 0; v < L.node_count(); ++v) images.emplace_back(m.node[v], v);
   std::sort(images.begin(), images.end());
   for (std::size_t k = 1; k < images.size(); ++k)
     if (images[k].first == images[k - 1].first)
-      return refuse(Refusal::not_injective, fmt::format("nodes '{}' and '{}' of L both match dart {}", L.name(images[k - 1].second), L.name(images[k].second), images[k].first));
+      return refuse(Refusal::not_injective, fmt::format("nodes '{}' and '{}' of L both match dart {}", L.name(images[k - 1].second),
+                                                        L.name(images[k].second), images[k].first));
   for (ArcId e = 0; e < L.arc_count(); ++e)
     for (ArcId f = e + 1; f < L.arc_count(); ++f)
       if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label)
-        return refuse(Refusal::not_injective, fmt::format("L has two {}-arcs out of '{}', but a dart has one", L.arc(e).label, L.name(L.arc(e).source)));
+        return refuse(Refusal::not_injective,
+                      fmt::format("L has two {}-arcs out of '{}', but a dart has one", L.arc(e).label, L.name(L.arc(e).source)));
   return {std::move(m), Refusal::none, {}};
 }
 
@@ -119,7 +134,9 @@ std::string dangling_violation(const Rule& rule, const Map& g, const Match& m) {
         in |= a.target == v;
       }
       if (!out) return fmt::format("deleted node '{}' (dart {}) keeps its {}-arc to dart {}, which L does not match", L.name(v), d, i, g.link(i, d));
-      if (!in) return fmt::format("deleted node '{}' (dart {}) keeps the {}-arc from dart {}, which L does not match", L.name(v), d, i, g.inverse_link(i, d));
+      if (!in)
+        return fmt::format("deleted node '{}' (dart {}) keeps the {}-arc from dart {}, which L does not match", L.name(v), d, i,
+                           g.inverse_link(i, d));
     }
   }
   return {};

@@ -59,8 +59,8 @@ std::vector<int> Rule::components(const TopoGraph& g, int* count) {
 Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks)
     : Rule(std::move(name), std::move(model), std::move(left), std::move(right), std::move(hooks), {}, {}) {}
 
-Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks,
-           const std::vector<ConjWord>& left_words, const std::vector<ConjWord>& right_words)
+Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks, const std::vector<ConjWord>& left_words,
+           const std::vector<ConjWord>& right_words)
     : name_(std::move(name)), model_(std::move(model)), left_(std::move(left)), right_(std::move(right)) {
   if ((!left_words.empty() && left_words.size() != left_.arc_count()) || (!right_words.empty() && right_words.size() != right_.arc_count()))
     throw std::invalid_argument("a rule scheme needs one word per arc");

@@ -27,8 +27,8 @@ class Rule {
   /// A rule scheme's core (002 Def. 18): arcs are identified by their full
   /// label (w, d), so `left_words` and `right_words` (one word per arc) take
   /// part in K = L ∩ R; the core itself keeps the D-labels.
-  Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks,
-       const std::vector<ConjWord>& left_words, const std::vector<ConjWord>& right_words);
+  Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::vector<std::string> hooks, const std::vector<ConjWord>& left_words,
+       const std::vector<ConjWord>& right_words);
 
   const std::string& name() const { return name_; }
   const Model& model() const { return model_; }

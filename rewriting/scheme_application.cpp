@@ -112,8 +112,7 @@ Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words,
   std::vector<Dart> queue;
   Refusal refusal = Refusal::none;
   std::string why;
-  if (!walk_patterns(g, hook_darts, letters_of(out.gens), position, queue, out, refusal, why))
-    return refuse<PatternGraphs>(refusal, std::move(why));
+  if (!walk_patterns(g, hook_darts, letters_of(out.gens), position, queue, out, refusal, why)) return refuse<PatternGraphs>(refusal, std::move(why));
   return {std::move(out), Refusal::none, {}};
 }
 
@@ -202,8 +201,10 @@ SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(
   for (NodeId x = 0; x < L.node_count(); ++x)
     for (ArcId e = 0; e < L.arc_count(); ++e) {
       const auto& a = L.arc(e);
-      if (a.source == x) steps[x].push_back({e, a.label, true, left_fwd[e], a.target});
-      else if (a.target == x) steps[x].push_back({e, a.label, false, left_bwd[e], a.source});
+      if (a.source == x)
+        steps[x].push_back({e, a.label, true, left_fwd[e], a.target});
+      else if (a.target == x)
+        steps[x].push_back({e, a.label, false, left_bwd[e], a.source});
     }
   for (ArcId e = 0; e < L.arc_count() && two_arcs_in_l.empty(); ++e)
     for (ArcId f = e + 1; f < L.arc_count(); ++f)

@@ -28,8 +28,7 @@ Rule instantiate(const Rule& core, const ArcWords& words, const PatternGraphs& p
   const std::vector<int> component = Rule::components(left, &count);
   std::vector<std::string> hooks(static_cast<std::size_t>(count));
   for (NodeId v = left.node_count(); v-- > 0;) hooks[static_cast<std::size_t>(component[v])] = left.name(v);
-  return Rule(core.name() + "@" + std::to_string(pattern.darts.front().front()), core.model(), std::move(left), std::move(right),
-              std::move(hooks));
+  return Rule(core.name() + "@" + std::to_string(pattern.darts.front().front()), core.model(), std::move(left), std::move(right), std::move(hooks));
 }
 
 }  // namespace dartcheck

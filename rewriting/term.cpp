@@ -76,7 +76,8 @@ class Parser {
 
   Term whole() {
     Term t = sum();
-    if (lex_.peek().kind != Token::end) throw TermError(lex_.peek().offset, fmt::format("unexpected {} after a complete term", describe(lex_.peek())));
+    if (lex_.peek().kind != Token::end)
+      throw TermError(lex_.peek().offset, fmt::format("unexpected {} after a complete term", describe(lex_.peek())));
     return t;
   }
 
@@ -107,8 +108,7 @@ class Parser {
   // parser's own nesting (parentheses, arguments, unary signs), and the
   // depth of the tree it builds (depth_: of the term just returned).
   void deeper(std::size_t depth, std::size_t offset) const {
-    if (depth > limits().term_depth)
-      throw TermError(offset, over_limit("the term's nesting", depth, limits().term_depth, "--limit-term-depth"));
+    if (depth > limits().term_depth) throw TermError(offset, over_limit("the term's nesting", depth, limits().term_depth, "--limit-term-depth"));
   }
   struct Nest {
     Parser& p;
@@ -208,8 +208,10 @@ class Parser {
           return inner;
         }
         throw TermError(t.offset, fmt::format("expected a term, found {}", describe(t)));
-      case Token::end: throw TermError(t.offset, "expected a term, found the end of the term");
-      case Token::name: break;
+      case Token::end:
+        throw TermError(t.offset, "expected a term, found the end of the term");
+      case Token::name:
+        break;
     }
     if (t.text == "true" || t.text == "false") {
       r.kind = Term::Kind::literal;
@@ -299,16 +301,21 @@ std::string Term::str() const {
   auto sub = [](const Term& t, int min) { return precedence(t) < min ? fmt::format("({})", t.str()) : t.str(); };
   switch (kind) {
     case Kind::variable:
-    case Kind::parameter: return name;
-    case Kind::literal: return literal.str();
-    case Kind::access: return fmt::format("{}.{}", sub(args[0], 4), name);
-    case Kind::neighbour: return fmt::format("{}.alpha{}", sub(args[0], 4), dim);
+    case Kind::parameter:
+      return name;
+    case Kind::literal:
+      return literal.str();
+    case Kind::access:
+      return fmt::format("{}.{}", sub(args[0], 4), name);
+    case Kind::neighbour:
+      return fmt::format("{}.alpha{}", sub(args[0], 4), dim);
     case Kind::collect: {
       std::string o;
       for (std::size_t k = 0; k < orbit.size(); ++k) o += (k ? "," : "") + std::to_string(orbit[k]);
       return fmt::format("{}<{}>({})", name, o, args[0].str());
     }
-    case Kind::call: break;
+    case Kind::call:
+      break;
   }
   if (implicit) return args[0].str();
   if (is_infix(*this)) {
@@ -367,8 +374,10 @@ Sort expect_node(Term& arg, const TermScope& scope, const Term& op, const char* 
 
 Sort check_term(Term& t, const TermScope& scope) {
   switch (t.kind) {
-    case Term::Kind::literal: return t.sort = Sort::of(t.literal.type);
-    case Term::Kind::parameter: return t.sort;
+    case Term::Kind::literal:
+      return t.sort = Sort::of(t.literal.type);
+    case Term::Kind::parameter:
+      return t.sort;
     case Term::Kind::variable: {
       if (std::find(scope.variables.begin(), scope.variables.end(), t.name) != scope.variables.end()) return t.sort = Sort::node_sort();
       if (const auto p = scope.parameters.find(t.name); p != scope.parameters.end()) {
@@ -378,7 +387,8 @@ Sort check_term(Term& t, const TermScope& scope) {
       }
       std::string vars;
       for (const auto& v : scope.variables) vars += (vars.empty() ? "" : ", ") + v;
-      throw TermError(t.offset, fmt::format("'{}' is neither a node of the left-hand side ({}) nor a parameter", t.name, vars.empty() ? "no nodes" : vars));
+      throw TermError(t.offset,
+                      fmt::format("'{}' is neither a node of the left-hand side ({}) nor a parameter", t.name, vars.empty() ? "no nodes" : vars));
     }
     case Term::Kind::access: {
       expect_node(t.args[0], scope, t, fmt::format("'.{}'", t.name).c_str());
@@ -400,7 +410,8 @@ Sort check_term(Term& t, const TermScope& scope) {
       expect_node(t.args[0], scope, t, fmt::format("the collect operator '{}'", t.name).c_str());
       return t.sort = Sort::bag(e->type);
     }
-    case Term::Kind::call: break;
+    case Term::Kind::call:
+      break;
   }
   std::vector<Sort> sorts;
   for (Term& a : t.args) sorts.push_back(check_term(a, scope));

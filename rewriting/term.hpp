@@ -81,10 +81,10 @@ class FunctionRegistry;
 
 /// What a term may refer to.
 struct TermScope {
-  const Model* model = nullptr;                      // alpha_i must name one of its dimensions
+  const Model* model = nullptr;  // alpha_i must name one of its dimensions
   const std::vector<EmbeddingSignature>* embeddings = nullptr;
-  std::vector<std::string> variables;                // node variables: L's node names
-  std::map<std::string, Value> parameters;           // rule parameters
+  std::vector<std::string> variables;       // node variables: L's node names
+  std::map<std::string, Value> parameters;  // rule parameters
   const FunctionRegistry* functions = nullptr;
   const EmbeddingSignature* find_embedding(const std::string& name) const;
 };

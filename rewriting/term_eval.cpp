@@ -54,7 +54,9 @@ void TermEvaluator::emit(const Term& t, std::span<const std::string> names, Comp
   };
   switch (t.kind) {
     case Term::Kind::literal:
-    case Term::Kind::parameter: s.op = Op::literal; break;
+    case Term::Kind::parameter:
+      s.op = Op::literal;
+      break;
     case Term::Kind::access:
     case Term::Kind::collect: {
       s.op = t.kind == Term::Kind::access ? Op::access : Op::collect;
@@ -71,7 +73,8 @@ void TermEvaluator::emit(const Term& t, std::span<const std::string> names, Comp
       break;
     }
     case Term::Kind::variable:
-    case Term::Kind::neighbour: return fail(fmt::format("'{}' is a node, not a value", t.str()));
+    case Term::Kind::neighbour:
+      return fail(fmt::format("'{}' is a node, not a value", t.str()));
     case Term::Kind::call:
       if (!t.function) return fail(fmt::format("'{}' was not type-checked", t.str()));
       for (const Term& a : t.args) emit(a, names, out);
@@ -210,7 +213,9 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
     for (CollectMemo& m : memo_) m.empty();
   for (const CompiledTerm::Step& s : c.steps_) {
     switch (s.op) {
-      case Op::literal: stack_.push_back({s.term->literal}); break;
+      case Op::literal:
+        stack_.push_back({s.term->literal});
+        break;
       case Op::access: {
         const Dart d = node(c, s, darts);
         const Value* v = g_.embeddings[s.target].value(d);
@@ -230,15 +235,18 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
         args_.clear();
         for (std::size_t k = base; k < stack_.size(); ++k) {
           const Entry& a = stack_[k];
-          if (a.memo == DartTable::none) args_.emplace_back(a.value);
-          else args_.emplace_back(memo_[a.memo].bag(a.bag));
+          if (a.memo == DartTable::none)
+            args_.emplace_back(a.value);
+          else
+            args_.emplace_back(memo_[a.memo].bag(a.bag));
         }
         const Value r = s.term->function->apply(args_);
         stack_.resize(base);
         stack_.push_back({r});
         break;
       }
-      case Op::fail: throw EvaluationError(c.failures_[s.target]);
+      case Op::fail:
+        throw EvaluationError(c.failures_[s.target]);
     }
   }
   if (stack_.back().memo != DartTable::none) throw EvaluationError(fmt::format("'{}' is a multiset, not a value", c.root_->str()));

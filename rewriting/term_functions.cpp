@@ -36,8 +36,9 @@ FunctionRegistry make_builtin() {
   for (VT t : {VT::point2, VT::vector2})
     r.add(std::string(type_name(t)), {real, real}, Sort::of(t), [t](auto a) { return Value::coords(t, {val(a, 0).x[0], val(a, 1).x[0], 0}); });
   for (VT t : {VT::point3, VT::vector3, VT::color})
-    r.add(std::string(type_name(t)), {real, real, real}, Sort::of(t),
-          [t](auto a) { return Value::coords(t, {val(a, 0).x[0], val(a, 1).x[0], val(a, 2).x[0]}); });
+    r.add(std::string(type_name(t)), {real, real, real}, Sort::of(t), [t](auto a) {
+      return Value::coords(t, {val(a, 0).x[0], val(a, 1).x[0], val(a, 2).x[0]});
+    });
 
   // Point and vector arithmetic, in 2D and 3D.
   for (const auto& types : {std::pair{VT::point2, VT::vector2}, std::pair{VT::point3, VT::vector3}}) {

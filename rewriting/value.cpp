@@ -55,11 +55,14 @@ std::optional<ValueType> type_by_name(std::string_view name) {
 int coordinates(ValueType t) {
   switch (t) {
     case ValueType::point2:
-    case ValueType::vector2: return 2;
+    case ValueType::vector2:
+      return 2;
     case ValueType::point3:
     case ValueType::vector3:
-    case ValueType::color: return 3;
-    default: return 0;
+    case ValueType::color:
+      return 3;
+    default:
+      return 0;
   }
 }
 
@@ -141,11 +144,16 @@ Value Value::coords(ValueType t, std::array<double, 3> c) {
 
 std::string Value::str() const {
   switch (type) {
-    case ValueType::real: return number(x[0]);
-    case ValueType::integer: return std::to_string(i);
-    case ValueType::boolean: return i ? "true" : "false";
-    case ValueType::string: return fmt::format("\"{}\"", string());
-    default: break;
+    case ValueType::real:
+      return number(x[0]);
+    case ValueType::integer:
+      return std::to_string(i);
+    case ValueType::boolean:
+      return i ? "true" : "false";
+    case ValueType::string:
+      return fmt::format("\"{}\"", string());
+    default:
+      break;
   }
   std::vector<std::string> parts;
   for (int k = 0; k < coordinates(type); ++k) parts.push_back(number(x[static_cast<std::size_t>(k)]));
@@ -192,8 +200,7 @@ std::optional<Value> parse_value(ValueType t, std::string_view text, std::string
     k = static_cast<std::size_t>(r.ptr - text.data());
   }
   const std::size_t want = t == ValueType::real ? 1 : static_cast<std::size_t>(coordinates(t));
-  if (xs.size() != want)
-    return fail(fmt::format("a {} has {} coordinate{}, '{}' has {}", type_name(t), want, want == 1 ? "" : "s", text, xs.size()));
+  if (xs.size() != want) return fail(fmt::format("a {} has {} coordinate{}, '{}' has {}", type_name(t), want, want == 1 ? "" : "s", text, xs.size()));
   if (t == ValueType::real) return Value::real(xs[0]);
   std::array<double, 3> c{};
   std::copy(xs.begin(), xs.end(), c.begin());

@@ -49,8 +49,8 @@ TEST(EmbeddingCatalog, FuzzConfirmsEveryRejectionExceptEqualTerms) {
   // Rejected rules whose two terms are equal on every map (hand
   // derivations in the catalog's notes): the static conditions are only
   // sufficient, so no map can break them.
-  const std::set<std::string> equal_terms = {"fig17b-vertex-insertion/two-terms", "fig19b-triangulation-col/equal-terms",
-                                             "triangulation-jerboa-col", "exploded-view/two-nodes"};
+  const std::set<std::string> equal_terms = {"fig17b-vertex-insertion/two-terms", "fig19b-triangulation-col/equal-terms", "triangulation-jerboa-col",
+                                             "exploded-view/two-nodes"};
   analysis::FuzzOptions o;
   o.seed = 3;
   o.runs = 2000;
@@ -102,9 +102,12 @@ TEST(EmbeddingTheorems, RulesThatPassTheConditionsNeverBreakAMap) {
     const auto& ln = topo.left().names();
     auto pool = [&]() {
       switch (rng() % 3) {
-        case 0: return fmt::format("point2({}, 0)", rng() % 2);
-        case 1: return fmt::format("{}.pos", ln[rng() % ln.size()]);
-        default: return fmt::format("midpoint({}.pos, {}.pos)", ln[rng() % ln.size()], ln[rng() % ln.size()]);
+        case 0:
+          return fmt::format("point2({}, 0)", rng() % 2);
+        case 1:
+          return fmt::format("{}.pos", ln[rng() % ln.size()]);
+        default:
+          return fmt::format("midpoint({}.pos, {}.pos)", ln[rng() % ln.size()], ln[rng() % ln.size()]);
       }
     };
     for (const auto& n : topo.left().names())

@@ -49,8 +49,8 @@ std::vector<Map> catalog_maps() {
 bool never_applicable(const std::string& name) { return name.rfind("fig26d-scheme", 0) == 0 || name.rfind("fig28-scheme", 0) == 0; }
 
 bool refused_by_dangling(const CatalogRule& r) {
-  return r.expected_failures && std::any_of(r.expected_failures->begin(), r.expected_failures->end(),
-                                            [](const std::string& f) { return f.rfind("dangling", 0) == 0; });
+  return r.expected_failures &&
+         std::any_of(r.expected_failures->begin(), r.expected_failures->end(), [](const std::string& f) { return f.rfind("dangling", 0) == 0; });
 }
 
 FuzzOptions options(std::size_t runs, std::uint64_t seed = 11) {

@@ -70,8 +70,8 @@ TEST(GraphConstraints, Example5TriangleOnSquareOMap) {
     g.add_arc(x, y, 2);
     g.add_arc(y, x, 2);
   };
-  cyc({0, 1, 2, 3});  // square darts: s0 = 0->1, s1 = 1->2, s2 = 2->3, s3 = 3->0
-  cyc({4, 5, 6});     // triangle: t0 = 3->2, t1 = 2->4, t2 = 4->3
+  cyc({0, 1, 2, 3});       // square darts: s0 = 0->1, s1 = 1->2, s2 = 2->3, s3 = 3->0
+  cyc({4, 5, 6});          // triangle: t0 = 3->2, t1 = 2->4, t2 = 4->3
   cyc({7, 8, 9, 10, 11});  // outer face, 5 boundary edges
   pair(2, 4);              // edge 23
   pair(0, 7), pair(1, 8), pair(5, 9), pair(6, 10), pair(3, 11);
@@ -88,6 +88,7 @@ TEST(GraphConstraints, Example5TriangleOnSquareOMap) {
   auto report = check_graph(broken, Model::omap(2));
   std::vector<std::pair<Constraint, std::uint32_t>> got;
   for (const auto& v : report.violations) got.emplace_back(v.constraint, v.element);
-  EXPECT_EQ(got, (std::vector<std::pair<Constraint, std::uint32_t>>{
-                     {Constraint::incident_out, 2}, {Constraint::non_orientation, 2}, {Constraint::incident_in, 4}, {Constraint::non_orientation, 4}}));
+  EXPECT_EQ(got,
+            (std::vector<std::pair<Constraint, std::uint32_t>>{
+                {Constraint::incident_out, 2}, {Constraint::non_orientation, 2}, {Constraint::incident_in, 4}, {Constraint::non_orientation, 4}}));
 }

@@ -45,7 +45,6 @@ Model two_dims() {
 
 enum class Host { incident_0, combinatorial_o0, combinatorial_c01 };
 
-
 // The host class of each theorem as a model: D-combinatorial graphs with
 // O on N and C on E.
 Model class_model(Host h) {
@@ -81,8 +80,8 @@ void extensions(std::size_t n, const std::vector<NodeId>& fixed, const std::func
 }
 
 struct Semantic {
-  bool matched = false;    // some host of the class, some match satisfying dangling
-  bool violated = false;   // some derived H breaks the constraint
+  bool matched = false;   // some host of the class, some match satisfying dangling
+  bool violated = false;  // some derived H breaks the constraint
   std::string counterexample;
 };
 
@@ -145,8 +144,10 @@ Semantic brute_force(const Rule& rule, Host h, std::size_t extra) {
       }
       for (ArcId e = 0; e < L.arc_count(); ++e) {
         const auto& a = L.arc(e);
-        if (a.label == 0) m.arc[e] = a.source;
-        else if (!free_label1) m.arc[e] = static_cast<ArcId>(n + a.source);
+        if (a.label == 0)
+          m.arc[e] = a.source;
+        else if (!free_label1)
+          m.arc[e] = static_cast<ArcId>(n + a.source);
       }
       if (!satisfies_dangling(rule, G, m)) return;
       out.matched = true;
@@ -191,14 +192,14 @@ struct Tally {
   int compared = 0, vacuous = 0, consistent = 0, disagreements = 0;
 };
 
-Tally agreement(Host h, std::uint32_t seed, std::size_t extra, const std::function<ConditionVerdict(const Rule&)>& check,
-                bool need_combinatorial) {
+Tally agreement(Host h, std::uint32_t seed, std::size_t extra, const std::function<ConditionVerdict(const Rule&)>& check, bool need_combinatorial) {
   std::mt19937 rng(seed);
   const Model model = two_dims();
   Tally t;
   for (int attempts = 0; t.compared < rule_count() && attempts < 50 * rule_count(); ++attempts) {
-    const Rule rule = need_combinatorial && attempts % 4 != 0 ? random_combinatorial_rule(rng, class_model(h), model)
-                                                              : random_rule(rng, class_model(h == Host::incident_0 ? Host::combinatorial_o0 : h), model, h == Host::incident_0);
+    const Rule rule = need_combinatorial && attempts % 4 != 0
+                          ? random_combinatorial_rule(rng, class_model(h), model)
+                          : random_rule(rng, class_model(h == Host::incident_0 ? Host::combinatorial_o0 : h), model, h == Host::incident_0);
     if (need_combinatorial && !combinatorial(rule)) continue;
     const Semantic sem = h == Host::incident_0 ? brute_force(rule, h, extra) : search_semantic(rule, h, extra);
     if (!sem.matched) {
@@ -216,8 +217,8 @@ Tally agreement(Host h, std::uint32_t seed, std::size_t extra, const std::functi
       if (t.disagreements > 5) break;
     }
   }
-  std::cout << fmt::format("{} rules compared ({} consistent), {} vacuous skipped, hosts up to |V_L| + {} nodes, {} disagreements\n",
-                           t.compared, t.consistent, t.vacuous, extra, t.disagreements);
+  std::cout << fmt::format("{} rules compared ({} consistent), {} vacuous skipped, hosts up to |V_L| + {} nodes, {} disagreements\n", t.compared,
+                           t.consistent, t.vacuous, extra, t.disagreements);
   return t;
 }
 
@@ -226,7 +227,8 @@ Tally agreement(Host h, std::uint32_t seed, std::size_t extra, const std::functi
 // Theorem 1: I_r(0)-weak iff every derivation on a D-graph satisfying I(0)
 // yields H satisfying I(0).
 TEST(Theorem1, WeakIncidentArcsIffPreservation) {
-  const Tally t = agreement(Host::incident_0, 1, 2, [](const Rule& r) { return check_incident_arcs(r, 0); }, false);
+  const Tally t = agreement(
+      Host::incident_0, 1, 2, [](const Rule& r) { return check_incident_arcs(r, 0); }, false);
   EXPECT_EQ(t.disagreements, 0);
   EXPECT_EQ(t.compared, rule_count());
 }
@@ -234,7 +236,8 @@ TEST(Theorem1, WeakIncidentArcsIffPreservation) {
 // Theorem 2: for D-combinatorial rules, O_r(0) iff every derivation on a
 // D-combinatorial graph satisfying O(0) yields H satisfying O(0).
 TEST(Theorem2, NonOrientationIffPreservation) {
-  const Tally t = agreement(Host::combinatorial_o0, 2, 3, [](const Rule& r) { return check_non_orientation(r, 0); }, true);
+  const Tally t = agreement(
+      Host::combinatorial_o0, 2, 3, [](const Rule& r) { return check_non_orientation(r, 0); }, true);
   EXPECT_EQ(t.disagreements, 0);
   EXPECT_EQ(t.compared, rule_count());
 }
@@ -242,7 +245,8 @@ TEST(Theorem2, NonOrientationIffPreservation) {
 // Theorem 3: for D-combinatorial rules, C_r(0,1) iff every derivation on a
 // D-combinatorial graph satisfying C(0,1) yields H satisfying C(0,1).
 TEST(Theorem3, CycleConditionIffPreservation) {
-  const Tally t = agreement(Host::combinatorial_c01, 3, 3, [](const Rule& r) { return check_cycle(r, 0, 1); }, true);
+  const Tally t = agreement(
+      Host::combinatorial_c01, 3, 3, [](const Rule& r) { return check_cycle(r, 0, 1); }, true);
   EXPECT_EQ(t.disagreements, 0);
   EXPECT_EQ(t.compared, rule_count());
 }
@@ -278,9 +282,10 @@ ModelTally model_level(const Model& model, std::uint32_t seed, std::size_t extra
     }
     if (!ok) (hs.host ? t.confirmed : t.gap) += 1;
   }
-  std::cout << fmt::format("{}: {} rules ({} consistent, {} inconsistent and confirmed on a map, {} inconsistent with no model-level "
-                           "counterexample), {} vacuous skipped, hosts up to |V_L| + {} darts, {} soundness exceptions\n",
-                           model.name, t.compared, t.consistent, t.confirmed, t.gap, t.vacuous, extra, t.unsound);
+  std::cout << fmt::format(
+      "{}: {} rules ({} consistent, {} inconsistent and confirmed on a map, {} inconsistent with no model-level "
+      "counterexample), {} vacuous skipped, hosts up to |V_L| + {} darts, {} soundness exceptions\n",
+      model.name, t.compared, t.consistent, t.confirmed, t.gap, t.vacuous, extra, t.unsound);
   return t;
 }
 }  // namespace

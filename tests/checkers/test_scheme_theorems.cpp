@@ -173,10 +173,11 @@ Tally run_model(const std::string& model_name, const std::vector<std::string>& b
       t.other_failing_broken += broken;
     }
   }
-  fmt::print("{}: {} mutants ({} rejected by the Rule constructor), {} consistent ({} applications in all), "
-             "{} fail only C: {} broke a host; {} fail I/dangling/O: {} broke a host; unsound: {}\n",
-             model_name, t.mutants, t.rejected, t.consistent, t.applications, t.cycle_only, t.cycle_only_broken, t.other_failing,
-             t.other_failing_broken, t.unsound);
+  fmt::print(
+      "{}: {} mutants ({} rejected by the Rule constructor), {} consistent ({} applications in all), "
+      "{} fail only C: {} broke a host; {} fail I/dangling/O: {} broke a host; unsound: {}\n",
+      model_name, t.mutants, t.rejected, t.consistent, t.applications, t.cycle_only, t.cycle_only_broken, t.other_failing, t.other_failing_broken,
+      t.unsound);
   return t;
 }
 

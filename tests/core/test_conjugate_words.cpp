@@ -53,8 +53,7 @@ TEST(ConjugateRewriting, NotConfluentAllNormalForms) {
   m.exchangeable = {{1, 2}, {1, 3}, {2, 3}};
   ConjugateRewriting r(m);
   EXPECT_EQ(nf_strings(r, "321"), (std::vector<std::string>{"~2~31", "3~1~2"}));
-  EXPECT_TRUE(r.congruent(parse_conj_word("3~1~2", m), parse_conj_word("~2~31", m)))
-      << "congruent although neither rewrites to the other";
+  EXPECT_TRUE(r.congruent(parse_conj_word("3~1~2", m), parse_conj_word("~2~31", m))) << "congruent although neither rewrites to the other";
 }
 
 // 2-G-map: N = {0,1,2}, E = {(0,2)}.
@@ -64,8 +63,7 @@ TEST(ConjugateRewriting, GmapNormalForms) {
   EXPECT_EQ(nf_strings(r, "0121"), (std::vector<std::string>{"0121"})) << "no exchangeable neighbours";
   EXPECT_EQ(nf_strings(r, "2101"), (std::vector<std::string>{"2101"}));
   EXPECT_EQ(nf_strings(r, "12021"), (std::vector<std::string>{"101"})) << "202 -> 022 -> 0";
-  EXPECT_FALSE(r.congruent(parse_conj_word("01", r.model()), parse_conj_word("10", r.model())))
-      << "0 and 1 are not exchangeable";
+  EXPECT_FALSE(r.congruent(parse_conj_word("01", r.model()), parse_conj_word("10", r.model()))) << "0 and 1 are not exchangeable";
 }
 
 // Example 23: the W-label of the 0202-cycle of a in the quad subdivision is
@@ -84,8 +82,7 @@ TEST(ConjugateRewriting, Examples21And22OrientedDimensions) {
   EXPECT_EQ(nf_strings(r, "1~11"), (std::vector<std::string>{"1"}));
   EXPECT_TRUE(r.reduces_to_empty(parse_conj_word("2121", r.model())));
   EXPECT_TRUE(r.reduces_to_empty(parse_conj_word("~2~1~2~1", r.model())));
-  EXPECT_FALSE(r.reduces_to_empty(parse_conj_word("2~12~1", r.model())))
-      << "an oriented letter does not swap with a conjugated one";
+  EXPECT_FALSE(r.reduces_to_empty(parse_conj_word("2~12~1", r.model()))) << "an oriented letter does not swap with a conjugated one";
   EXPECT_FALSE(r.reduces_to_empty(parse_conj_word("11", r.model()))) << "1 is oriented: 11 is no back-and-forth";
 }
 
@@ -124,8 +121,7 @@ RC_GTEST_PROP(Lemma3, RewritingPreservesPathEndpoints, ()) {
     if (steps.empty()) break;
     w = steps[*rc::gen::inRange<std::size_t>(0, steps.size())].result;
   }
-  for (Dart d = 0; d < map.size(); ++d)
-    RC_ASSERT(follow(map, d, start) == follow(map, d, w));
+  for (Dart d = 0; d < map.size(); ++d) RC_ASSERT(follow(map, d, start) == follow(map, d, w));
   // Corollary 2: a word that reduces to ε labels cycles only.
   if (r.reduces_to_empty(start))
     for (Dart d = 0; d < map.size(); ++d) RC_ASSERT(follow(map, d, start) == d);
@@ -146,8 +142,7 @@ RC_GTEST_PROP(ConjugateRewriting, CongruenceDecidesTheSymmetricClosure, ()) {
       // Backward swap: u -> v by swapping y x at k into x̄ ȳ = v[k] v[k+1].
       const std::size_t at = *rc::gen::inRange<std::size_t>(0, v.size() - 1);
       const ConjWord a = ConjWord::from_code(v.code().substr(at, 1)), b = ConjWord::from_code(v.code().substr(at + 1, 1));
-      const ConjWord u = ConjWord::from_code(v.code().substr(0, at)) + r.conjugate(b) + r.conjugate(a) +
-                         ConjWord::from_code(v.code().substr(at + 2));
+      const ConjWord u = ConjWord::from_code(v.code().substr(0, at)) + r.conjugate(b) + r.conjugate(a) + ConjWord::from_code(v.code().substr(at + 2));
       for (const auto& s : r.steps(u))
         if (s.kind == ConjugateRewriting::Step::swap && s.position == at && s.result == v) {
           v = u;

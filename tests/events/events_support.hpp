@@ -27,7 +27,7 @@ struct Applied {
   Map before, after;
   Application trace;
   EventRule rule;
-  std::map<std::string, KindEvents> statics;   // by orbit type text
+  std::map<std::string, KindEvents> statics;  // by orbit type text
   std::map<std::string, EventLog> dynamic, instantiated;
   std::map<std::string, CrossCheck> checks;
   /// The dynamic log's lines for an orbit type, e.g. "split G<1>(0) -> {H<1>(0), H<1>(7)}".

@@ -75,8 +75,8 @@ std::size_t check_on(const Subject& s, const Map& g) {
       const EventLog inst = instantiated_log(g, h, s.view, k, *traced.value);
       const CrossCheck cc = cross_check(s.view, k, g, h, *traced.value, dyn, inst);
       if (!cc.contradictions.empty()) {
-        const std::string what = fmt::format("{} at hooks [{}] of a {}-dart map: {}", s.op->rule.name(), fmt::join(hooks, ", "), g.size(),
-                                             cc.contradictions[0]);
+        const std::string what =
+            fmt::format("{} at hooks [{}] of a {}-dart map: {}", s.op->rule.name(), fmt::join(hooks, ", "), g.size(), cc.contradictions[0]);
         ADD_FAILURE() << what;
         RC_FAIL(what);
       }

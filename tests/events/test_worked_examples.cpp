@@ -111,7 +111,8 @@ TEST(WorkedExamples, SewMergesTwoEdges) {
   EXPECT_THAT(claim_texts(a, "<0,2>"), ElementsAre("merge certain L<0,2>(n0)", "merge certain L<0,2>(n1)"));
   const Dart lo = std::min({d, e, grid.link(0, d), grid.link(0, e)});
   const Dart lo_d = std::min(d, grid.link(0, d)), lo_e = std::min(e, grid.link(0, e));
-  EXPECT_THAT(a.lines("<0,2>"), ElementsAre(fmt::format("merge {{G<0,2>({}), G<0,2>({})}} -> H<0,2>({})", std::min(lo_d, lo_e), std::max(lo_d, lo_e), lo)));
+  EXPECT_THAT(a.lines("<0,2>"),
+              ElementsAre(fmt::format("merge {{G<0,2>({}), G<0,2>({})}} -> H<0,2>({})", std::min(lo_d, lo_e), std::max(lo_d, lo_e), lo)));
 }
 
 // Fig. 9 and 7(d): deleting an interior edge of the grid merges its two
@@ -202,7 +203,8 @@ TEST(WorkedExamples, JerboaSewAndUnsew) {
     const KindEvents k = static_events(view, parse_orbit_kind(kind, op.rule.model()));
     std::vector<std::string> out;
     for (const auto& c : k.claims)
-      out.push_back(fmt::format("{} {} {}", event_name(c.event), certainty_name(c.certainty), rule_orbit_name(view, k, c.event != Event::creation, c.orbit)));
+      out.push_back(
+          fmt::format("{} {} {}", event_name(c.event), certainty_name(c.certainty), rule_orbit_name(view, k, c.event != Event::creation, c.orbit)));
     return out;
   };
   EXPECT_THAT(claims("UnSewA2", "<0,2>"), ElementsAre("split certain L<0,2>(n0,n1)"));

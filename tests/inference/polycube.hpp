@@ -54,7 +54,7 @@ inline Dart cube_dart(std::size_t cube, const Polyhedron& faces, const SoupDart&
 // a grid of `coarse_n` per axis, `fine` the kept cubes of the refined grid
 // (n * coarse_n per axis).
 inline KappaSpec corner_kappa(const std::vector<std::array<std::uint32_t, 3>>& coarse, std::uint32_t coarse_n,
-                       const std::vector<std::array<std::uint32_t, 3>>& fine, std::uint32_t n) {
+                              const std::vector<std::array<std::uint32_t, 3>>& fine, std::uint32_t n) {
   const std::uint32_t side = coarse_n + 1, fine_side = n * coarse_n + 1;
   auto coords = [](std::uint32_t v, std::uint32_t s) { return std::array<std::uint32_t, 3>{v % s, (v / s) % s, v / (s * s)}; };
   auto id = [](const std::array<std::uint32_t, 3>& q, std::uint32_t s) { return q[0] + s * (q[1] + s * q[2]); };
@@ -77,7 +77,8 @@ inline KappaSpec corner_kappa(const std::vector<std::array<std::uint32_t, 3>>& c
           const auto it = std::find(fine.begin(), fine.end(), cube);
           if (it == fine.end()) throw std::logic_error("a corner cube is not kept");
           const auto index = static_cast<std::size_t>(it - fine.begin());
-          k.pairs.emplace_back(cube_dart(ci, big, {f, at, to}), cube_dart(index, unit_cube(cube, fine_side), {f, id(corner, fine_side), id(step, fine_side)}));
+          k.pairs.emplace_back(cube_dart(ci, big, {f, at, to}),
+                               cube_dart(index, unit_cube(cube, fine_side), {f, id(corner, fine_side), id(step, fine_side)}));
         }
   }
   return k;
@@ -87,8 +88,8 @@ inline KappaSpec corner_kappa(const std::vector<std::array<std::uint32_t, 3>>& c
 // n-grid iff `keep_local(q)`.
 using Keep = std::function<bool(std::array<std::uint32_t, 3>)>;
 
-inline std::vector<std::array<std::uint32_t, 3>> refine(const std::vector<std::array<std::uint32_t, 3>>& coarse, std::uint32_t coarse_n, std::uint32_t n,
-                                                 const Keep& keep_local) {
+inline std::vector<std::array<std::uint32_t, 3>> refine(const std::vector<std::array<std::uint32_t, 3>>& coarse, std::uint32_t coarse_n,
+                                                        std::uint32_t n, const Keep& keep_local) {
   return kept_cubes(n * coarse_n, [&](std::array<std::uint32_t, 3> p) {
     const std::array<std::uint32_t, 3> P{p[0] / n, p[1] / n, p[2] / n};
     return std::find(coarse.begin(), coarse.end(), P) != coarse.end() && keep_local({p[0] % n, p[1] % n, p[2] % n});
@@ -96,6 +97,8 @@ inline std::vector<std::array<std::uint32_t, 3>> refine(const std::vector<std::a
 }
 
 inline bool menger_local(std::array<std::uint32_t, 3> q) { return (q[0] == 1) + (q[1] == 1) + (q[2] == 1) < 2; }
-inline bool menger222_local(std::array<std::uint32_t, 3> q) { return (q[0] == 1 || q[0] == 3) + (q[1] == 1 || q[1] == 3) + (q[2] == 1 || q[2] == 3) < 2; }
+inline bool menger222_local(std::array<std::uint32_t, 3> q) {
+  return (q[0] == 1 || q[0] == 3) + (q[1] == 1 || q[1] == 3) + (q[2] == 1 || q[2] == 3) < 2;
+}
 
 }  // namespace dartcheck::inference::test

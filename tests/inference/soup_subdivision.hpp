@@ -67,8 +67,8 @@ class Midpoints {
 /// The old darts of corner v of face f (sides towards next and prev) stay
 /// at v in the after face `sub`, looking at the new vertices `to_next` and
 /// `to_prev` of those sides.
-inline void keep_corner(Subdivided& s, std::uint32_t f, std::uint32_t v, std::uint32_t next, std::uint32_t prev, std::uint32_t sub, std::uint32_t to_next,
-                        std::uint32_t to_prev) {
+inline void keep_corner(Subdivided& s, std::uint32_t f, std::uint32_t v, std::uint32_t next, std::uint32_t prev, std::uint32_t sub,
+                        std::uint32_t to_next, std::uint32_t to_prev) {
   s.kappa.push_back({{f, v, next}, {sub, v, to_next}});
   s.kappa.push_back({{f, v, prev}, {sub, v, to_prev}});
 }

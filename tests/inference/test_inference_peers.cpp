@@ -91,7 +91,8 @@ template <class M>
 M openmesh_from(const Soup& in) {
   M m;
   std::vector<typename M::VertexHandle> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex(typename M::Point(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
+  for (const auto& p : in.points)
+    v.push_back(m.add_vertex(typename M::Point(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
   for (const auto& f : in.faces) {
     std::vector<typename M::VertexHandle> h;
     for (auto i : f) h.push_back(v[i]);

@@ -22,8 +22,8 @@ inline std::string data(const std::string& f) { return std::string(DARTCHECK_SOU
 inline std::string error_of(const std::string& text, bool catalog = false) {
   // ctest runs each test in its own process, in parallel: one file per test.
   const auto path = std::filesystem::temp_directory_path() /
-                    (std::string(catalog ? "dartcheck-test-catalog-" : "dartcheck-test-map-") + ::testing::UnitTest::GetInstance()->current_test_info()->name() +
-                     "-" + std::to_string(::getpid()) + ".yaml");
+                    (std::string(catalog ? "dartcheck-test-catalog-" : "dartcheck-test-map-") +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" + std::to_string(::getpid()) + ".yaml");
   std::ofstream(path) << text;
   try {
     if (catalog)

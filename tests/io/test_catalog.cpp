@@ -42,9 +42,11 @@ TEST(Catalog, DanglingNameIsReportedAtTheArc) {
 TEST(Catalog, OtherErrors) {
   const std::string head = "rules:\n  - name: r\n    model: 2-gmap\n    hooks: [x]\n    left: {nodes: [x], arcs: [";
   EXPECT_NE(error_of(head + "\"x -0-> \"]}\n    right: {nodes: [x]}\n", true).find("5:"), std::string::npos);
-  EXPECT_NE(error_of(head + "\"x -0- x\"]}\n    right: {nodes: [x]}\n    examples: [{map: nowhere, hooks: [0], expect: valid}]\n", true).find("no map named 'nowhere'"),
+  EXPECT_NE(error_of(head + "\"x -0- x\"]}\n    right: {nodes: [x]}\n    examples: [{map: nowhere, hooks: [0], expect: valid}]\n", true)
+                .find("no map named 'nowhere'"),
             std::string::npos);
-  EXPECT_NE(error_of("rules:\n  - name: r\n    model: 2-gmap\n    hooks: [y]\n    left: {nodes: [x]}\n    right: {nodes: [x]}\n", true).find("4:12"), std::string::npos);
+  EXPECT_NE(error_of("rules:\n  - name: r\n    model: 2-gmap\n    hooks: [y]\n    left: {nodes: [x]}\n    right: {nodes: [x]}\n", true).find("4:12"),
+            std::string::npos);
   EXPECT_NE(error_of("maps:\n  m: {model: 2-gmap, shape: cube, file: x.off}\n", true).find("exactly one"), std::string::npos);
 }
 
@@ -53,7 +55,8 @@ TEST(Catalog, OtherErrors) {
 TEST(Catalog, CustomModel) {
   const auto path = std::filesystem::temp_directory_path() / "dartcheck-custom-model.yaml";
   std::ofstream(path) << "models:\n  half-oriented: {dims: [0, 1, 2], non_oriented: [0, 2], exchangeable: [[0, 2]]}\n"
-                         "maps:\n  m:\n    model: half-oriented\n    darts: 3\n    links:\n      0: {loops: all}\n      1: {cycles: [[0, 1, 2]]}\n      2: {loops: all}\n";
+                         "maps:\n  m:\n    model: half-oriented\n    darts: 3\n    links:\n      0: {loops: all}\n      1: {cycles: [[0, 1, 2]]}\n   "
+                         "   2: {loops: all}\n";
   const Catalog c = read_catalog(path.string());
   const Model& m = c.find_map("m")->model;
   EXPECT_TRUE(m.is_oriented(1));

@@ -116,9 +116,9 @@ TEST(Jme, SampleModelerReadsAsJerboaSchemes) {
 // refused, so no map is ever broken.
 TEST(Jme, ShippedRulesPassOrAreSettledDynamically) {
   const Catalog& c = modeler();
-  for (const char* name : {"InsertVertex", "SewA2", "UnSewA2", "CreateEdge", "CreateSquareFace", "RemoveEdge", "ExtrudeFaceEdge",
-                           "ExtrudeIndependantFace", "ExtrudeVolumeFace", "MergeEdge", "InsertEdge", "VertexCollapse", "ChanfreinCoin2D",
-                           "CreateCorner2D", "CreateDart"})
+  for (const char* name :
+       {"InsertVertex", "SewA2", "UnSewA2", "CreateEdge", "CreateSquareFace", "RemoveEdge", "ExtrudeFaceEdge", "ExtrudeIndependantFace",
+        "ExtrudeVolumeFace", "MergeEdge", "InsertEdge", "VertexCollapse", "ChanfreinCoin2D", "CreateCorner2D", "CreateDart"})
     EXPECT_TRUE(failures(*c.find_rule(name)).empty()) << name;
   EXPECT_EQ(failures(*c.find_rule("ExtrudeEdge")), (std::vector<std::string>{"I(1)", "I(3)"}));
   EXPECT_EQ(failures(*c.find_rule("DeleteFace")), (std::vector<std::string>{"dangling(2)"}));
@@ -206,7 +206,8 @@ TEST(Jba, SampleMapsAreValidEmbeddedThreeGmaps) {
     std::size_t darts;
     std::vector<std::size_t> cells;
   };
-  for (const auto& x : {Expect{"pyramid.jba", 32, {5, 8, 5, 1}}, Expect{"cube.jba", 48, {8, 12, 6, 1}}, Expect{"cube-frame.jba", 960, {64, 144, 96, 20}}}) {
+  for (const auto& x :
+       {Expect{"pyramid.jba", 32, {5, 8, 5, 1}}, Expect{"cube.jba", 48, {8, 12, 6, 1}}, Expect{"cube-frame.jba", 960, {64, 144, 96, 20}}}) {
     const JbaFile f = read_jba(samples + x.file);
     EXPECT_EQ(f.map.size(), x.darts) << x.file;
     EXPECT_TRUE(check_map(f.map).valid()) << x.file;
@@ -279,8 +280,10 @@ namespace {
 // The error's position for a corrupted sample, or "no error".
 std::string error_of(const std::string& text, const std::string& ext) {
   try {
-    if (ext == ".jme") read_jme(temp_file(text, ext));
-    else read_jba(temp_file(text, ext));
+    if (ext == ".jme")
+      read_jme(temp_file(text, ext));
+    else
+      read_jba(temp_file(text, ext));
   } catch (const InputError& e) {
     return fmt::format("{}:{}: {}", e.line(), e.column(), e.what());
   }

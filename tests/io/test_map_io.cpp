@@ -33,7 +33,8 @@ RC_GTEST_PROP(MapYaml, WriteThenReadIsIdentity, ()) {
 }
 
 TEST(MapYaml, CompactFormsMeanTheSameAsArrays) {
-  const Map compact = read_map("<memory>", YAML::Load("model: 2-omap\ndarts: 3\nlinks:\n  1: {cycles: [[0, 1, 2]]}\n  2: {pairs: [[0, 1]], loops: [2]}\n"));
+  const Map compact =
+      read_map("<memory>", YAML::Load("model: 2-omap\ndarts: 3\nlinks:\n  1: {cycles: [[0, 1, 2]]}\n  2: {pairs: [[0, 1]], loops: [2]}\n"));
   const Map raw = read_map("<memory>", YAML::Load("model: 2-omap\ndarts: 3\nlinks:\n  1: [1, 2, 0]\n  2: [1, 0, 2]\n"));
   EXPECT_EQ(compact, raw);
   EXPECT_EQ(raw.inverse_link(1, 0), 2u);

@@ -129,9 +129,10 @@ Tally random_agreement(const Model& model, std::uint32_t seed, int count, const 
       }
     }
   }
-  std::cout << fmt::format("{}: {} random rules, {} constraint answers compared with the static checker, {} map counterexamples, "
-                           "{} unresolved, {} disagreements (hosts up to {} darts)\n",
-                           model.name, t.rules, t.compared, t.counterexamples, t.unresolved, t.disagreements, o.max_darts);
+  std::cout << fmt::format(
+      "{}: {} random rules, {} constraint answers compared with the static checker, {} map counterexamples, "
+      "{} unresolved, {} disagreements (hosts up to {} darts)\n",
+      model.name, t.rules, t.compared, t.counterexamples, t.unresolved, t.disagreements, o.max_darts);
   return t;
 }
 
@@ -208,8 +209,8 @@ TEST(ProveSmallModelBound, Theorems1And2AgreeWithBruteForcePastTheBound) {
     if (!hs.matched) continue;
     ++compared;
     violated += hs.host.has_value();
-    EXPECT_EQ(a.status == Status::counterexample, hs.host.has_value())
-        << c.name() << " solver " << status_name(a.status) << " at bound " << a.bound << "\nL: " << text(rule.left()) << "\nR: " << text(rule.right());
+    EXPECT_EQ(a.status == Status::counterexample, hs.host.has_value()) << c.name() << " solver " << status_name(a.status) << " at bound " << a.bound
+                                                                       << "\nL: " << text(rule.left()) << "\nR: " << text(rule.right());
     if (a.status == Status::none) {
       EXPECT_EQ(a.darts, a.bound);
       EXPECT_TRUE(a.proved_for_all());

@@ -144,7 +144,8 @@ TEST(ProveSchemes, SeedCatalogAgreesWithHandVerdictsUpTo6Darts) {
       Map scratch(e.rule.model());
       Refusal refusal = Refusal::none;
       const Dart hook = 0;
-      EXPECT_TRUE(analysis::apply_and_check(e, host, std::span(&hook, 1), scratch, refusal).has_value()) << e.rule.name() << " " << c.constraint.name();
+      EXPECT_TRUE(analysis::apply_and_check(e, host, std::span(&hook, 1), scratch, refusal).has_value())
+          << e.rule.name() << " " << c.constraint.name();
       confirmed = confirmed || recorded;
     }
     if (confirmable) {

@@ -238,14 +238,15 @@ RC_GTEST_PROP(QueryOverlap, StrategiesSelectDisjointMatches, ()) {
   QueryTrie trie;
   for (int k = 0; k < 3; ++k) trie.add(query_word(component(random_map(kind, *gen_map_recipe(1, 2)), 0), 0, Constraint::any), k);
   const Map m = random_map(kind, *gen_map_recipe(2, 6));
-  for (const auto& chosen : {greedy_matches(m, trie), global_matches(m, trie, [](const QueryMatch& x) { return static_cast<double>(x.darts[0] % 7); })})
+  for (const auto& chosen :
+       {greedy_matches(m, trie), global_matches(m, trie, [](const QueryMatch& x) { return static_cast<double>(x.darts[0] % 7); })})
     for (std::size_t a = 0; a < chosen.size(); ++a)
       for (std::size_t b = a + 1; b < chosen.size(); ++b) RC_ASSERT(!conflict(chosen[a], chosen[b]));
   const auto all = all_matches(m, trie);
   if (!all.distinct.empty()) {
     const auto score = [](const QueryMatch& x) { return static_cast<double>(x.darts.size() * 100 + x.darts[0] % 7); };
-    const auto best = *std::max_element(all.distinct.begin(), all.distinct.end(),
-                                        [&](const QueryMatch& a, const QueryMatch& b) { return score(a) < score(b); });
+    const auto best =
+        *std::max_element(all.distinct.begin(), all.distinct.end(), [&](const QueryMatch& a, const QueryMatch& b) { return score(a) < score(b); });
     const auto chosen = global_matches(m, trie, score);
     RC_ASSERT(!chosen.empty());
     RC_ASSERT(score(chosen[0]) == score(best));

@@ -55,7 +55,8 @@ HexGrid kuhn_grid(std::uint32_t n) {
   const std::uint64_t s = kuhn();
   const int d = subdivision_diagonals(s);
   // Kuhn's diagonals: x faces split the same way on both sides, and so on.
-  return hex_grid(n, [&](auto, auto, auto, int) { return s; }, [&](auto, auto, auto, int axis) { return ((d >> (2 * axis)) & 1) != 0; });
+  return hex_grid(
+      n, [&](auto, auto, auto, int) { return s; }, [&](auto, auto, auto, int axis) { return ((d >> (2 * axis)) & 1) != 0; });
 }
 
 // A grid where every face gets a random diagonal and every hex a random

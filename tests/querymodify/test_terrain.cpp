@@ -84,7 +84,7 @@ TEST(Terrain, Table2) {
   // Only the 50 spots are flattened spots, each found from both halves.
   EXPECT_EQ(x.housed.distinct_matches, 50U);
   EXPECT_EQ(x.housed.raw_matches, 100U);
-  EXPECT_EQ(x.housed.volumes, 16134U);  // Table 2 (3)
+  EXPECT_EQ(x.housed.volumes, 16134U);              // Table 2 (3)
   EXPECT_EQ(x.housed.darts, 419984U + 50U * 192U);  // 001's house has 234 darts, ours 192
   EXPECT_TRUE(check_3map(x.mesh.map).valid());
   // The roof's apex is 4.5 spot heights up, above the spot's centre: the

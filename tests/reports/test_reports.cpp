@@ -90,8 +90,7 @@ TEST(RuleDot, BrokenVariantsHighlightTheirWitnesses) {
       // A highlighted node is named by a witness or lies on a witness arc.
       bool on_arc = named.contains(x);
       for (const auto& w : witnesses)
-        for (const auto& a : w.arcs)
-          on_arc = on_arc || (x[0] == w.side && a.find(x.substr(2)) != std::string::npos);
+        for (const auto& a : w.arcs) on_arc = on_arc || (x[0] == w.side && a.find(x.substr(2)) != std::string::npos);
       EXPECT_TRUE(on_arc) << e.rule.name() << ": " << x << " highlighted but in no witness";
     }
     EXPECT_FALSE(lit.empty()) << e.rule.name() << ": a failing rule with nothing highlighted";

@@ -90,8 +90,8 @@ TEST(CatmullClark, CubeGetsTheHandDerivedPoints) {
     EXPECT_EQ(count_cells(g.map).cells, (std::vector<std::size_t>{26, 48, 24}));
     const long one = 1000000000, three_quarters = 750000000, five_ninths = 555555556;
     std::multiset<std::array<long, 3>> want;
-    for (int k = 0; k < 6; ++k) want.insert({0, 0, one});          // face points
-    for (int k = 0; k < 12; ++k) want.insert({0, three_quarters, three_quarters});  // edge points
+    for (int k = 0; k < 6; ++k) want.insert({0, 0, one});                              // face points
+    for (int k = 0; k < 12; ++k) want.insert({0, three_quarters, three_quarters});     // edge points
     for (int k = 0; k < 8; ++k) want.insert({five_ninths, five_ninths, five_ninths});  // vertex points
     EXPECT_EQ(vertex_classes(g), want);
   }

@@ -62,14 +62,11 @@ TEST(QuadSubdivision, GmapGridWithBoundary) {
   // hold for V, E, F of the open surface.
   expect_quad_subdivision("quad-subdivision-gmap", build_shape(Model::gmap(2), {"grid", {2, 3}}));
 }
-TEST(QuadSubdivision, GmapTriangleMesh) {
-  expect_quad_subdivision("quad-subdivision-gmap", build_shape(Model::gmap(2), {"tetrahedron", {}}));
-}
+TEST(QuadSubdivision, GmapTriangleMesh) { expect_quad_subdivision("quad-subdivision-gmap", build_shape(Model::gmap(2), {"tetrahedron", {}})); }
 TEST(QuadSubdivision, OmapCube) { expect_quad_subdivision("quad-subdivision-omap", build_shape(Model::omap(2), {"cube", {}})); }
 TEST(QuadSubdivision, OmapPrism) { expect_quad_subdivision("quad-subdivision-omap", build_shape(Model::omap(2), {"prism", {5}})); }
 TEST(QuadSubdivision, OmapMesh) {
-  expect_quad_subdivision("quad-subdivision-omap",
-                          load_mesh(Model::omap(2), std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/meshes/cube.off"));
+  expect_quad_subdivision("quad-subdivision-omap", load_mesh(Model::omap(2), std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/meshes/cube.off"));
 }
 
 // The broken variants are refused or produce invalid maps, as their
@@ -462,7 +459,8 @@ TEST(InstantiatedClasses, PerPatternCopyEqualsTheDefinition) {
             for (const PatternGraphs* pattern : patterns) {
               instantiated_classes(side, words, pattern, orbit, fast);
               instantiated_classes_by_instance(side, words, pattern, orbit, reference);
-              ASSERT_TRUE(same_partition(fast, reference, side.node_count(), np)) << r.rule.name() << (pattern == &random_steps ? " (random steps)" : "");
+              ASSERT_TRUE(same_partition(fast, reference, side.node_count(), np))
+                  << r.rule.name() << (pattern == &random_steps ? " (random steps)" : "");
               (fast.by_pattern ? by_pattern : by_instance) += 1;
               scrambled += pattern == &random_steps;
               ++compared;

@@ -74,13 +74,13 @@ TEST(Terms, CanonicalTextAndSyntacticEquality) {
 }
 
 TEST(Terms, ErrorsNameTheOffendingToken) {
-  EXPECT_EQ(error_offset("a.pos + * b"), 8u);          // '*' where a term starts
-  EXPECT_EQ(error_offset("midpoint(a.pos, "), 16u);    // the end of the term
-  EXPECT_EQ(error_offset("c.pos"), 0u);                // not a node of L
-  EXPECT_EQ(error_offset("a.color"), 2u);              // no such embedding
-  EXPECT_EQ(error_offset("a.alpha7.pos"), 2u);         // not a dimension of a 2-G-map
-  EXPECT_EQ(error_offset("mix(a.col, a.pos)"), 0u);    // no profile color x point2
-  EXPECT_EQ(error_offset("center(a.pos)"), 0u);        // center takes a multiset
+  EXPECT_EQ(error_offset("a.pos + * b"), 8u);        // '*' where a term starts
+  EXPECT_EQ(error_offset("midpoint(a.pos, "), 16u);  // the end of the term
+  EXPECT_EQ(error_offset("c.pos"), 0u);              // not a node of L
+  EXPECT_EQ(error_offset("a.color"), 2u);            // no such embedding
+  EXPECT_EQ(error_offset("a.alpha7.pos"), 2u);       // not a dimension of a 2-G-map
+  EXPECT_EQ(error_offset("mix(a.col, a.pos)"), 0u);  // no profile color x point2
+  EXPECT_EQ(error_offset("center(a.pos)"), 0u);      // center takes a multiset
   EXPECT_EQ(error_offset("a.pos $ b"), 6u);
   EXPECT_EQ(error_offset("pos<0,x>(a)"), 6u);
   try {
@@ -150,7 +150,7 @@ TEST(Terms, UserFunctionsRegisteredWithTheirProfile) {
   const std::vector<std::string> names{"a"};
   const std::vector<Dart> darts{0};
   EXPECT_EQ(ev.value(t, names, darts), Value::coords(ValueType::point2, {5, 6, 0}));  // (4, 6) + (1, 0)
-  EXPECT_THROW(checked("scale(a.pos, 2)"), TermError);  // unknown to the built-in registry
+  EXPECT_THROW(checked("scale(a.pos, 2)"), TermError);                                // unknown to the built-in registry
 }
 
 // A call lends a memorised multiset to its function instead of copying it:
@@ -160,12 +160,10 @@ TEST(Terms, CollectArgumentsReachFunctionsWholeWhenRepeated) {
   FunctionRegistry f = FunctionRegistry::builtin();
   const Sort bag = Sort::bag(ValueType::point2), real = Sort::of(ValueType::real), point = Sort::of(ValueType::point2);
   // sizes(m1, m2) = |m1| + 10 |m2|; size_at(m, p) = |m| + p.x.
-  f.add("sizes", {bag, bag}, real, [](std::span<const Operand> a) {
-    return Value::real(static_cast<double>(multiset_arg(a, 0).size() + 10 * multiset_arg(a, 1).size()));
-  });
-  f.add("size_at", {bag, point}, real, [](std::span<const Operand> a) {
-    return Value::real(static_cast<double>(multiset_arg(a, 0).size()) + value_arg(a, 1).x[0]);
-  });
+  f.add("sizes", {bag, bag}, real,
+        [](std::span<const Operand> a) { return Value::real(static_cast<double>(multiset_arg(a, 0).size() + 10 * multiset_arg(a, 1).size())); });
+  f.add("size_at", {bag, point}, real,
+        [](std::span<const Operand> a) { return Value::real(static_cast<double>(multiset_arg(a, 0).size()) + value_arg(a, 1).x[0]); });
   // A triangle face: 6 darts, three corners (pos on <1,2>) at x = 0, 3, 6.
   EmbeddedMap g(Map(Model::gmap(2), 6));
   for (Dart k = 0; k < 3; ++k) {
