@@ -14,8 +14,14 @@ set(layers
   "inference:core,rewriting,io,checkers,inference"
   "querymodify:core,rewriting,io,checkers,querymodify"
   "analysis:core,rewriting,io,checkers,generators,proofs,events,analysis"
-  "fuzz:core,rewriting,io,checkers,generators,fuzz")
-set(known core rewriting io checkers generators proofs reports events inference querymodify analysis cli fuzz)
+  "fuzz:core,rewriting,io,checkers,generators,fuzz"
+  # The command, the benchmarks and the tests sit on top: they may use every
+  # library, but the command nothing test- or benchmark-only, and the
+  # benchmarks and tests not the command's own files.
+  "cli:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,cli"
+  "bench:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,bench"
+  "tests:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,cli,tests")
+set(known core rewriting io checkers generators proofs reports events inference querymodify analysis cli fuzz bench tests)
 set(errors 0)
 set(checked 0)
 foreach(entry IN LISTS layers)
@@ -23,7 +29,7 @@ foreach(entry IN LISTS layers)
   list(GET parts 0 layer)
   list(GET parts 1 allowed)
   string(REPLACE "," ";" allowed "${allowed}")
-  file(GLOB sources "${ROOT}/${layer}/*.hpp" "${ROOT}/${layer}/*.cpp")
+  file(GLOB_RECURSE sources "${ROOT}/${layer}/*.hpp" "${ROOT}/${layer}/*.cpp")
   foreach(source IN LISTS sources)
     math(EXPR checked "${checked} + 1")
     file(STRINGS "${source}" includes REGEX "^#include \"[a-z_]+/")
