@@ -23,20 +23,17 @@ const char* failure_name(FailureKind k) {
   return "?";
 }
 
-std::vector<Dart> orbit_darts(const Map& g, const std::vector<Dim>& orbit, Dart start) {
-  std::vector<Dart> out{start};
-  std::vector<bool> seen(g.size(), false);
-  seen[start] = true;
-  for (std::size_t k = 0; k < out.size(); ++k)
-    for (Dim i : orbit) {
-      const Dart y = g.link(i, out[k]);
-      if (y != no_dart && !seen[y]) {
-        seen[y] = true;
-        out.push_back(y);
-      }
-    }
-  return out;
+const std::vector<Dart>& orbit_darts(OrbitWalker& walker, const std::vector<Dim>& orbit, Dart start) {
+  const auto generators = dims_generators(orbit);
+  return walker.orbit(start, generators);
 }
+
+std::vector<Dart> orbit_darts(const Map& g, const std::vector<Dim>& orbit, Dart start) {
+  OrbitWalker walker(g);
+  return orbit_darts(walker, orbit, start);
+}
+
+FoldScratch::FoldScratch(const KappaGraph& graph) : walker(graph.before()), owner(graph.size(), -1), position(graph.size(), 0) {}
 
 namespace {
 
@@ -44,15 +41,21 @@ std::string dim_name(Dim d) { return d == kappa_arc ? std::string("κ") : std::t
 
 // One run of the folding. Nodes own their darts: owner_[u] is the node of
 // dart u of κ(G, H) (-1 if none yet) and position_[u] its q, so that
-// "(b, m') for which b?" is one lookup.
+// "(b, m') for which b?" is one lookup. The tables are the scratch's; the
+// run resets the darts it owned when it ends.
 class Folder {
  public:
-  Folder(const KappaGraph& g, const std::vector<Dim>& orbit, const FoldOptions& options)
-      : g_(g), orbit_(orbit), options_(options), n_(g.model().dimension()), owner_(g.size(), -1), position_(g.size(), 0) {}
+  Folder(const KappaGraph& g, const std::vector<Dim>& orbit, const FoldOptions& options, FoldScratch& scratch)
+      : g_(g), orbit_(orbit), options_(options), n_(g.model().dimension()), scratch_(scratch), owner_(scratch.owner), position_(scratch.position) {}
+  ~Folder() {
+    for (Dart u : owned_) owner_[u] = -1, position_[u] = 0;
+  }
+  Folder(const Folder&) = delete;
+  Folder& operator=(const Folder&) = delete;
 
   FoldResult run(Dart start) {
     // Step 1: the orbit graph G<o>(a) and the hook.
-    const auto darts = orbit_darts(g_.before(), orbit_, start);
+    const std::vector<Dart> darts = orbit_darts(scratch_.walker, orbit_, start);
     k_ = darts.size();
     scheme_.orbit = orbit_;
     SchemeNode hook;
@@ -69,7 +72,8 @@ class Folder {
     // Step 2: breadth-first over the nodes of S.
     for (std::size_t m = 0; m < scheme_.nodes.size(); ++m)
       if (!build_arcs(static_cast<int>(m))) return {std::nullopt, failure_};
-    for (Dart u = 0; u < g_.size(); ++u)
+    // Every dart of κ(G, H) must be reached; the scan runs only when not.
+    for (Dart u = 0; owned_.size() < g_.size() && u < g_.size(); ++u)
       if (owner_[u] < 0) {
         fail(FailureKind::unreached, 0, 0, u,
              fmt::format("dart {} is not reached from the hook: κ(G, H) is not connected (the example must be one connected piece, "
@@ -89,6 +93,7 @@ class Folder {
     for (std::size_t q = 0; q < node.darts.size(); ++q) {
       owner_[node.darts[q]] = m;
       position_[node.darts[q]] = static_cast<std::uint32_t>(q);
+      owned_.push_back(node.darts[q]);
     }
     scheme_.nodes.push_back(std::move(node));
     explicit_.resize(scheme_.nodes.size() * static_cast<std::size_t>(n_ + 2), -1);
@@ -245,8 +250,10 @@ class Folder {
   FoldOptions options_;
   Dim n_;
   std::size_t k_ = 0;
-  std::vector<int> owner_;
-  std::vector<std::uint32_t> position_;
+  FoldScratch& scratch_;
+  std::vector<int>& owner_;
+  std::vector<std::uint32_t>& position_;
+  std::vector<Dart> owned_;  // the darts whose owner_ this run set
   std::vector<std::uint32_t> neighbour_;
   std::vector<int> explicit_;
   GraphScheme scheme_;
@@ -255,8 +262,13 @@ class Folder {
 
 }  // namespace
 
+FoldResult fold(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const FoldOptions& options, FoldScratch& scratch) {
+  return Folder(graph, orbit, options, scratch).run(start);
+}
+
 FoldResult fold(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const FoldOptions& options) {
-  return Folder(graph, orbit, options).run(start);
+  FoldScratch scratch(graph);
+  return fold(graph, orbit, start, options, scratch);
 }
 
 }  // namespace dartcheck::inference

@@ -13,10 +13,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/orbit.hpp"
 #include "inference/kappa_graph.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 
@@ -98,12 +100,27 @@ struct FoldResult {
   std::optional<FoldFailure> failure;
 };
 
+/// The per-dart tables of the folding, kept across the foldings of one κ
+/// graph (multi-start, `infer --all`): each folding clears only the darts
+/// it owned, so a folding costs what it visits, not the size of the map
+/// (000 Sec. 8.3: linear in the darts it folds).
+class FoldScratch {
+ public:
+  explicit FoldScratch(const KappaGraph& graph);
+  OrbitWalker walker;               // over G
+  std::vector<int> owner;           // node of each dart of κ(G, H), -1 if none
+  std::vector<std::uint32_t> position;  // its position q in that node
+};
+
 /// Folds κ(G, H) from dart `start` of G along <o>. `orbit` lists distinct
 /// dimensions of the model (checked by the caller).
 FoldResult fold(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const FoldOptions& options = {});
+/// The same with tables kept across foldings of `graph`.
+FoldResult fold(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const FoldOptions& options, FoldScratch& scratch);
 
 /// The orbit G<o>(a) in the BFS order fold uses (a first, dimensions in
-/// the order of `orbit`).
+/// the order of `orbit`), by core's orbit walker.
 std::vector<Dart> orbit_darts(const Map& g, const std::vector<Dim>& orbit, Dart start);
+const std::vector<Dart>& orbit_darts(OrbitWalker& walker, const std::vector<Dim>& orbit, Dart start);
 
 }  // namespace dartcheck::inference

@@ -21,11 +21,12 @@ std::vector<Dim> parse_inference_orbit(const std::string& text, const Model& mod
 
 namespace {
 
-Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const InferOptions& options, const std::string& name) {
+Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const InferOptions& options, const std::string& name,
+                FoldScratch& scratch) {
   const auto t0 = std::chrono::steady_clock::now();
   Attempt a;
   a.start = start;
-  auto folded = fold(graph, orbit, start, options.fold);
+  auto folded = fold(graph, orbit, start, options.fold, scratch);
   if (folded.failure) {
     a.failure = std::move(folded.failure);
   } else {
@@ -52,16 +53,20 @@ std::vector<Attempt> infer(const KappaGraph& graph, const std::vector<Dim>& orbi
   if (options.start) {
     if (*options.start >= graph.before().size())
       throw std::invalid_argument(fmt::format("start dart {} is not a dart of the before map ({} darts)", *options.start, graph.before().size()));
-    out.push_back(attempt(graph, orbit, *options.start, options, options.name));
+    FoldScratch scratch(graph);
+    out.push_back(attempt(graph, orbit, *options.start, options, options.name, scratch));
     return out;
   }
+  // One start per orbit of G (000 Sec. 10.3); the tables are shared.
+  FoldScratch scratch(graph);
+  OrbitWalker walker(graph.before());
   std::vector<bool> marked(graph.before().size(), false);
   std::map<std::string, int> seen;
   int rules = 0;
   for (Dart a = 0; a < graph.before().size(); ++a) {
     if (marked[a]) continue;
-    for (Dart b : orbit_darts(graph.before(), orbit, a)) marked[b] = true;
-    Attempt t = attempt(graph, orbit, a, options, rules ? fmt::format("{}-{}", options.name, rules) : options.name);
+    for (Dart b : orbit_darts(walker, orbit, a)) marked[b] = true;
+    Attempt t = attempt(graph, orbit, a, options, rules ? fmt::format("{}-{}", options.name, rules) : options.name, scratch);
     if (t.scheme) {
       const auto [it, fresh] = seen.emplace(canonical_form(*t.scheme), static_cast<int>(out.size()));
       if (!fresh) t.duplicate_of = it->second;
