@@ -1,5 +1,7 @@
 #include "events/orbit_kind.hpp"
 
+#include "core/orbit_notation.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -28,26 +30,12 @@ std::string OrbitKind::str() const {
 }
 
 OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
-  // Accept ⟨ ⟩ as well as < >, and spaces anywhere.
-  std::string s;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text.substr(i, 3) == "\u27e8" || text.substr(i, 3) == "\u27e9") {
-      s += i + 3 <= text.size() && text.substr(i, 3) == "\u27e8" ? '<' : '>';
-      i += 2;
-    } else if (text[i] != ' ') {
-      s += text[i];
-    }
-  }
-  if (s.size() < 2 || s.front() != '<' || s.back() != '>') throw std::invalid_argument(fmt::format("orbit type '{}' is not of the form <0,1>", text));
+  const std::vector<OrbitEntry> entries = orbit_entries(text);  // std::invalid_argument with the byte
+  if (entries.empty()) throw std::invalid_argument(fmt::format("orbit type '{}' is empty: give at least one dimension", text));
   OrbitKind kind;
-  const std::string body = s.substr(1, s.size() - 2);
-  if (body.empty()) throw std::invalid_argument(fmt::format("orbit type '{}' is empty: give at least one dimension", text));
-  std::size_t start = 0;
-  while (start <= body.size()) {
-    const std::size_t comma = std::min(body.find(',', start), body.size());
-    const std::string entry = body.substr(start, comma - start);
-    if (entry.empty() || !std::all_of(entry.begin(), entry.end(), [](char c) { return c >= '0' && c <= '9'; }))
-      throw std::invalid_argument(fmt::format("orbit type '{}': entry '{}' is not a dimension", text, entry));
+  for (const OrbitEntry& e : entries) {
+    const std::string& entry = e.text;
+    if (entry == "_") throw std::invalid_argument(fmt::format("orbit type '{}': entry '{}' is not a dimension", text, entry));
     Word w;
     if (model.is_generalized()) {
       // G-maps: an entry is one dimension (10-15 have two digits).
@@ -62,7 +50,6 @@ OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
     if (std::find(kind.generators.begin(), kind.generators.end(), w) != kind.generators.end())
       throw std::invalid_argument(fmt::format("orbit type '{}': '{}' repeats", text, entry));
     kind.generators.push_back(std::move(w));
-    start = comma + 1;
   }
   std::sort(kind.generators.begin(), kind.generators.end(),
             [](const Word& a, const Word& b) { return a.size() != b.size() ? a.size() < b.size() : a < b; });

@@ -107,8 +107,8 @@ struct FoldResult {
 class FoldScratch {
  public:
   explicit FoldScratch(const KappaGraph& graph);
-  OrbitWalker walker;               // over G
-  std::vector<int> owner;           // node of each dart of κ(G, H), -1 if none
+  OrbitWalker walker;                   // over G
+  std::vector<int> owner;               // node of each dart of κ(G, H), -1 if none
   std::vector<std::uint32_t> position;  // its position q in that node
 };
 

@@ -4,52 +4,29 @@
 #include <fmt/format.h>
 #include <stdexcept>
 
+#include "core/orbit_notation.hpp"
+
 namespace dartcheck {
 
 OrbitType parse_orbit_type(std::string_view text) {
-  auto fail = [&](std::size_t pos, std::string_view what) {
-    throw std::invalid_argument(fmt::format("orbit type '{}', at byte {}: {}", text, pos + 1, what));
-  };
-  std::size_t i = 0;
-  auto skip_spaces = [&] {
-    while (i < text.size() && text[i] == ' ') ++i;
-  };
-  auto take = [&](std::string_view s) {
-    if (text.substr(i).starts_with(s)) {
-      i += s.size();
-      return true;
-    }
-    return false;
-  };
-  skip_spaces();
-  if (!take("<") && !take("\u27e8")) fail(i, "expected '<' or '⟨'");
   OrbitType t;
-  skip_spaces();
-  if (take(">") || take("\u27e9")) return t;  // <>: the empty orbit type
-  for (;;) {
-    skip_spaces();
-    if (take("_")) {
+  read_orbit_entries(text, [&](const OrbitEntry& e) {
+    auto fail = [&](std::string_view what) {
+      throw std::invalid_argument(fmt::format("orbit type '{}', at byte {}: {}", text, e.offset + e.text.size(), what));
+    };
+    if (e.text == "_") {
       t.emplace_back(std::nullopt);
-    } else if (i < text.size() && text[i] >= '0' && text[i] <= '9') {
-      int d = 0;
-      const std::size_t start = i;
-      // Saturated: any number above max_dimension is refused below (found
-      // by fuzz_word: "09999999999" overflowed int).
-      while (i < text.size() && text[i] >= '0' && text[i] <= '9') d = std::min(d * 10 + (text[i++] - '0'), 10 * max_dimension);
-      if (d > max_dimension) fail(i - 1, fmt::format("dimension {} is above {}", text.substr(start, i - start), max_dimension));
-      if (std::find(t.begin(), t.end(), std::optional<Dim>(static_cast<Dim>(d))) != t.end())
-        fail(i - 1, fmt::format("dimension {} appears twice (a relabeling is injective)", d));
-      t.emplace_back(static_cast<Dim>(d));
-    } else {
-      fail(i, "expected a dimension or '_'");
+      return;
     }
-    skip_spaces();
-    if (take(",")) continue;
-    if (take(">") || take("\u27e9")) break;
-    fail(i, "expected ',' or '>'");
-  }
-  skip_spaces();
-  if (i != text.size()) fail(i, "unexpected text after the orbit type");
+    // Saturated: any number above max_dimension is refused (found by
+    // fuzz_word: "09999999999" overflowed int).
+    int d = 0;
+    for (char c : e.text) d = std::min(d * 10 + (c - '0'), 10 * max_dimension);
+    if (d > max_dimension) fail(fmt::format("dimension {} is above {}", e.text, max_dimension));
+    if (std::find(t.begin(), t.end(), std::optional<Dim>(static_cast<Dim>(d))) != t.end())
+      fail(fmt::format("dimension {} appears twice (a relabeling is injective)", d));
+    t.emplace_back(static_cast<Dim>(d));
+  });
   return t;
 }
 
