@@ -68,6 +68,49 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
   return out;
 }
 
+// One line of --format jsonl, flushed: a run killed later keeps it.
+void print_jsonl(const char* type, reports::Json payload) {
+  reports::Json line = reports::json_document("fuzz-jsonl");
+  line["type"] = type;
+  line[type] = std::move(payload);
+  fmt::print("{}\n", reports::json_text(std::move(line)));
+  std::fflush(stdout);
+}
+
+// The rules to fuzz and the hosts they start from: the catalog's maps of
+// their models and the user's --maps.
+struct Targets {
+  std::vector<const Operation*> rules;
+  std::vector<const CatalogRule*> entries;
+  std::vector<Map> seeds;
+};
+
+Targets select_targets(const FuzzCommand& c, const Catalog& catalog) {
+  Targets t;
+  std::vector<Model> models;
+  for (const auto& e : catalog.rules) {
+    if (!c.rule.empty() && e.rule.name() != c.rule) continue;
+    t.rules.push_back(&e);
+    t.entries.push_back(&e);
+    if (std::find(models.begin(), models.end(), e.rule.model()) == models.end()) models.push_back(e.rule.model());
+  }
+  for (const auto& s : catalog.maps)
+    if (std::find(models.begin(), models.end(), s.model) != models.end()) t.seeds.push_back(build_source(s));
+  for (auto& m : given_maps(c.maps, models, catalog)) t.seeds.push_back(std::move(m));
+  return t;
+}
+
+// The engine's options from the command's: a drawn seed unless given; with
+// --time and no --runs, as many applications as the time allows.
+FuzzOptions fuzz_options(const FuzzCommand& c, std::optional<double> seconds) {
+  FuzzOptions o;
+  o.seed = c.seed ? *c.seed : std::random_device{}();
+  o.max_darts = c.max_darts;
+  o.runs = c.runs ? *c.runs : seconds ? SIZE_MAX : 10'000;
+  o.event_checks = c.event_checks;
+  return o;
+}
+
 }  // namespace
 
 int fuzz(const FuzzCommand& c) {
@@ -80,27 +123,14 @@ int fuzz(const FuzzCommand& c) {
   catch_interrupts();
   if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
 
-  FuzzOptions o;
-  o.seed = c.seed ? *c.seed : std::random_device{}();
-  o.max_darts = c.max_darts;
   std::optional<double> seconds;
   if (!c.time.empty()) seconds = parse_duration(c.time, "--time");
-  o.runs = c.runs ? *c.runs : seconds ? SIZE_MAX : 10'000;
-  o.event_checks = c.event_checks;
+  const FuzzOptions o = fuzz_options(c, seconds);
 
-  std::vector<const Operation*> rules;
-  std::vector<const CatalogRule*> entries;
-  std::vector<Model> models;
-  for (const auto& e : catalog.rules) {
-    if (!c.rule.empty() && e.rule.name() != c.rule) continue;
-    rules.push_back(&e);
-    entries.push_back(&e);
-    if (std::find(models.begin(), models.end(), e.rule.model()) == models.end()) models.push_back(e.rule.model());
-  }
-  std::vector<Map> seeds;
-  for (const auto& s : catalog.maps)
-    if (std::find(models.begin(), models.end(), s.model) != models.end()) seeds.push_back(build_source(s));
-  for (auto& m : given_maps(c.maps, models, catalog)) seeds.push_back(std::move(m));
+  const Targets targets = select_targets(c, catalog);
+  const auto& rules = targets.rules;
+  const auto& entries = targets.entries;
+  const auto& seeds = targets.seeds;
 
   fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {} rule{}, {}\n", o.seed, o.seed, rules.size(), rules.size() == 1 ? "" : "s",
              seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
@@ -113,77 +143,26 @@ int fuzz(const FuzzCommand& c) {
     std::string replay = fuzz_replay(*entries[k], r, o.seed, c.out, c.catalog);
     results.push_back(analyse_static(catalog, *entries[k], 0, {}, source));
     add_fuzz(results.back(), r, std::move(replay));
-    if (jsonl) {
-      reports::Json line = reports::json_document("fuzz-jsonl");
-      line["type"] = "rule";
-      line["rule"] = reports::rule_result_json(results.back());
-      fmt::print("{}\n", reports::json_text(std::move(line)));
-      std::fflush(stdout);
-    }
+    if (jsonl) print_jsonl("rule", reports::rule_result_json(results.back()));
   };
   fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::map<FuzzClass, std::size_t> classes;
-  std::size_t applications = 0;
-  for (const auto& r : results) ++classes[r.fuzz->verdict], applications += r.fuzz->applications;
-  const auto counts = count_results(results);
   const int status = finish_run(results, baseline_mismatches, rules.size());
-
-  reports::Json summary{{"catalog", c.catalog},
-                        {"seed", o.seed},
-                        {"seconds", total},
-                        {"rules", rules.size()},
-                        {"finished", results.size()},
-                        {"consistent", classes[FuzzClass::consistent]},
-                        {"confirmed", classes[FuzzClass::confirmed]},
-                        {"unconfirmed", classes[FuzzClass::unconfirmed]},
-                        {"soundness_bugs", classes[FuzzClass::soundness_bug]},
-                        {"applications", applications},
-                        {"interrupted", interrupted()},
-                        {"counts", reports::counts_json(counts)},
-                        {"baseline_mismatches", baseline_mismatches}};
+  const reports::FuzzRun run{c.catalog, o.seed, total, rules.size(), interrupted(), baseline_mismatches};
   if (jsonl) {
     // The rules' lines are out already; the last line sums the run up.
-    reports::Json line = reports::json_document("fuzz-jsonl");
-    line["type"] = "summary";
-    line["summary"] = std::move(summary);
-    fmt::print("{}\n", reports::json_text(std::move(line)));
-    return status;
-  }
-  if (c.format == "json") {
+    print_jsonl("summary", reports::fuzz_summary_json(run, results));
+  } else if (c.format == "json") {
     reports::Json doc = reports::json_document("fuzz");
     reports::Json rows = reports::Json::array();
     for (const auto& r : results) rows.push_back(reports::rule_result_json(r));
     doc["rules"] = std::move(rows);
-    doc["summary"] = std::move(summary);
+    doc["summary"] = reports::fuzz_summary_json(run, results);
     fmt::print("{}\n", reports::json_text(std::move(doc)));
-    return status;
+  } else {
+    fmt::print("{}", reports::fuzz_table(run, results));
   }
-
-  std::size_t width = 4;
-  for (const auto& r : results) width = std::max(width, printable(r.name()).size());
-  fmt::print("{:<{}}  {:<18} {}\n", "rule", width, "static", "dynamic");
-  for (const auto& result : results) {
-    const auto& r = *result.fuzz;
-    fmt::print("{:<{}}  {:<18} {}\n", printable(result.name()), width, result.verdict_text(), outcome_text(r));
-    if (r.counterexample) {
-      const auto& cx = *r.counterexample;
-      fmt::print("{:<{}}  found in {}\n", "", width, cx.origin);
-      if (!cx.unrepresentable.empty()) fmt::print("{:<{}}  H has no dense form: {}\n", "", width, cx.unrepresentable);
-      for (std::size_t e = 0; e < cx.embedding_failures.size() && e < 4; ++e) fmt::print("{:<{}}  H: {}\n", "", width, cx.embedding_failures[e]);
-      if (cx.embedding_failures.size() > 4) fmt::print("{:<{}}  H: ... {} more\n", "", width, cx.embedding_failures.size() - 4);
-      if (!result.fuzz_replay.empty())
-        fmt::print("{:<{}}  replay: {}\n", "", width, printable(result.fuzz_replay));
-      else if (!result.entry->terms)
-        fmt::print("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
-    }
-  }
-  const std::size_t bugs = classes[FuzzClass::soundness_bug];
-  fmt::print("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
-             results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs,
-             bugs == 1 ? "" : "s", applications, total, total > 0 ? double(applications) / total : 0.0, o.seed);
-  if (const auto line = reports::mismatch_summary(results); !line.empty()) fmt::print("{}\n", line);
   return status;
 }
 

@@ -1,5 +1,7 @@
 #include "reports/rule_result_json.hpp"
 
+#include <map>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -176,6 +178,25 @@ Json results_document(std::string_view command, const std::string& catalog_file,
   doc["counts"] = counts_json(counts);
   doc["mismatches"] = counts.mismatches + baseline_mismatches.size();
   return doc;
+}
+
+Json fuzz_summary_json(const FuzzRun& run, const std::vector<RuleResult>& results) {
+  std::map<FuzzClass, std::size_t> classes;
+  std::size_t applications = 0;
+  for (const auto& r : results) ++classes[r.fuzz->verdict], applications += r.fuzz->applications;
+  return Json{{"catalog", run.catalog},
+              {"seed", run.seed},
+              {"seconds", run.seconds},
+              {"rules", run.rules},
+              {"finished", results.size()},
+              {"consistent", classes[FuzzClass::consistent]},
+              {"confirmed", classes[FuzzClass::confirmed]},
+              {"unconfirmed", classes[FuzzClass::unconfirmed]},
+              {"soundness_bugs", classes[FuzzClass::soundness_bug]},
+              {"applications", applications},
+              {"interrupted", run.interrupted},
+              {"counts", counts_json(count_results(results))},
+              {"baseline_mismatches", run.baseline_mismatches}};
 }
 
 Json counts_json(const ResultCounts& c) {

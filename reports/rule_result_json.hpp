@@ -8,6 +8,7 @@
 
 #include "analysis/rule_result.hpp"
 #include "reports/json_document.hpp"
+#include "reports/rule_result_text.hpp"
 
 namespace dartcheck::reports {
 
@@ -29,6 +30,9 @@ Json skipped_json(const std::vector<SkippedRule>& skipped);
 /// rules not checked, the baseline's own disagreements and the counts.
 Json results_document(std::string_view command, const std::string& catalog_file, const Catalog& catalog,
                       const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches);
+
+/// fuzz's summary object (json's "summary", jsonl's last line).
+Json fuzz_summary_json(const FuzzRun& run, const std::vector<analysis::RuleResult>& results);
 
 /// The counts every document ends with.
 Json counts_json(const analysis::ResultCounts& c);

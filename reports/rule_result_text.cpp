@@ -1,6 +1,7 @@
 #include "reports/rule_result_text.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -36,6 +37,39 @@ std::string mismatch_summary(const std::vector<RuleResult>& results) {
   const std::size_t n = count_results(results).mismatches;
   if (n == 0) return "";
   return fmt::format("{} differ{} from the {}", plural(n, "verdict", "verdicts"), n == 1 ? "s" : "", results.front().record_source_name());
+}
+
+std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& results) {
+  std::string out;
+  std::size_t width = 4, applications = 0;
+  std::map<FuzzClass, std::size_t> classes;
+  for (const auto& r : results) {
+    width = std::max(width, printable(r.name()).size());
+    ++classes[r.fuzz->verdict];
+    applications += r.fuzz->applications;
+  }
+  out += fmt::format("{:<{}}  {:<18} {}\n", "rule", width, "static", "dynamic");
+  for (const auto& result : results) {
+    const auto& r = *result.fuzz;
+    out += fmt::format("{:<{}}  {:<18} {}\n", printable(result.name()), width, result.verdict_text(), outcome_text(r));
+    if (!r.counterexample) continue;
+    const auto& cx = *r.counterexample;
+    out += fmt::format("{:<{}}  found in {}\n", "", width, cx.origin);
+    if (!cx.unrepresentable.empty()) out += fmt::format("{:<{}}  H has no dense form: {}\n", "", width, cx.unrepresentable);
+    for (std::size_t e = 0; e < cx.embedding_failures.size() && e < 4; ++e)
+      out += fmt::format("{:<{}}  H: {}\n", "", width, cx.embedding_failures[e]);
+    if (cx.embedding_failures.size() > 4) out += fmt::format("{:<{}}  H: ... {} more\n", "", width, cx.embedding_failures.size() - 4);
+    if (!result.fuzz_replay.empty())
+      out += fmt::format("{:<{}}  replay: {}\n", "", width, printable(result.fuzz_replay));
+    else if (!result.entry->terms)
+      out += fmt::format("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
+  }
+  const std::size_t bugs = classes[FuzzClass::soundness_bug];
+  out += fmt::format("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
+                     results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs,
+                     bugs == 1 ? "" : "s", applications, run.seconds, run.seconds > 0 ? double(applications) / run.seconds : 0.0, run.seed);
+  if (const auto line = mismatch_summary(results); !line.empty()) out += line + "\n";
+  return out;
 }
 
 std::string condition_cell(const RuleVerdict& v, RuleCondition kind) {

@@ -2,6 +2,7 @@
 // for a rule that disagrees with its record, and check's verdict table.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,20 @@ struct TableOptions {
 /// the rules not checked and the summary line.
 std::string check_table(const Catalog& catalog, const std::vector<analysis::RuleResult>& results, std::size_t baseline_mismatches,
                         const TableOptions& options);
+
+/// A fuzz run as its renderers see it.
+struct FuzzRun {
+  std::string catalog;
+  std::uint64_t seed = 0;
+  double seconds = 0;
+  std::size_t rules = 0;  // selected; the results hold the finished ones
+  bool interrupted = false;
+  std::vector<std::string> baseline_mismatches;
+};
+
+/// fuzz's table: each rule's static verdict and fuzz outcome, where its
+/// counterexample was found and how to replay it, then the summary line.
+std::string fuzz_table(const FuzzRun& run, const std::vector<analysis::RuleResult>& results);
 
 /// The conditions of one kind, as a table cell: "ok", "fails 1,2",
 /// "skipped" or "-" (the model has none of that kind).
