@@ -34,20 +34,14 @@ Json embedding_json(const EmbeddingCheck& e) {
   return Json{{"check", e.name}, {"holds", e.holds}, {"required", e.required}, {"source", e.source}, {"witnesses", texts}};
 }
 
-std::string graph_arcs(const TopoGraph& g) {
-  std::vector<std::string> arcs;
-  for (const auto& a : g.arcs()) arcs.push_back(fmt::format("{} -{}-> {}", g.name(a.source), a.label, g.name(a.target)));
-  return fmt::format("{}", fmt::join(arcs, ", "));
-}
-
 Json answer_json(const proofs::ClassAnswer& a) {
   Json j{{"class", a.class_name}, {"status", proofs::status_name(a.status)}, {"darts", a.darts}, {"minimal", a.minimal},
          {"bound", a.bound},      {"proved_for_all", a.proved_for_all()},    {"core", a.core},   {"why", a.why},
          {"seconds", a.seconds}};
   if (a.status == proofs::Status::counterexample) {
     j["replayed"] = a.replayed;
-    j["host"] = graph_arcs(a.host_graph);
-    j["result"] = graph_arcs(a.result_graph);
+    j["host"] = arcs_text(a.host_graph);
+    j["result"] = arcs_text(a.result_graph);
   }
   return j;
 }
@@ -62,8 +56,8 @@ Json confirmation_json(const RuleResult& r) {
     j["largest_host"] = s.largest_host;
     j["confirmed"] = s.host.has_value();
     if (s.host) {
-      j["host"] = graph_arcs(*s.host);
-      j["result"] = graph_arcs(*s.result);
+      j["host"] = arcs_text(*s.host);
+      j["result"] = arcs_text(*s.result);
     }
   } else if (r.scheme_search) {
     j["search"] = "small, catalog and random maps of the model";
@@ -197,6 +191,31 @@ Json fuzz_summary_json(const FuzzRun& run, const std::vector<RuleResult>& result
               {"interrupted", run.interrupted},
               {"counts", counts_json(count_results(results))},
               {"baseline_mismatches", run.baseline_mismatches}};
+}
+
+Json prove_document(const ProveRun& run, const std::vector<RuleResult>& results) {
+  Json doc = json_document("prove");
+  doc["catalog"] = run.catalog;
+  doc["max_darts"] = run.max_darts;
+  doc["rlimit"] = run.rlimit;
+  doc["seconds"] = run.seconds;
+  Json rows = Json::array();
+  std::size_t scoped = 0, counts[4] = {};
+  for (const auto& r : results) {
+    rows.push_back(rule_result_json(r));
+    scoped += r.proof->out_of_scope.empty();
+    for (auto a : {proofs::Agreement::agree, proofs::Agreement::disagree, proofs::Agreement::unresolved, proofs::Agreement::not_compared})
+      counts[static_cast<int>(a)] += r.proof->count(a);
+  }
+  doc["rules"] = std::move(rows);
+  doc["in_scope"] = scoped;
+  doc["agree"] = counts[0];
+  doc["disagree"] = counts[1];
+  doc["unresolved"] = counts[2];
+  doc["not_compared"] = counts[3];
+  doc["counts"] = counts_json(count_results(results));
+  doc["baseline_mismatches"] = run.baseline_mismatches;
+  return doc;
 }
 
 Json counts_json(const ResultCounts& c) {

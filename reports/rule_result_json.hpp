@@ -34,6 +34,9 @@ Json results_document(std::string_view command, const std::string& catalog_file,
 /// fuzz's summary object (json's "summary", jsonl's last line).
 Json fuzz_summary_json(const FuzzRun& run, const std::vector<analysis::RuleResult>& results);
 
+/// prove's document: every rule's result with its proof, and the totals.
+Json prove_document(const ProveRun& run, const std::vector<analysis::RuleResult>& results);
+
 /// The counts every document ends with.
 Json counts_json(const analysis::ResultCounts& c);
 

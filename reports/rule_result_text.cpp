@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "analysis/prove_replay.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck::reports {
@@ -14,15 +15,53 @@ using namespace analysis;
 
 namespace {
 
+std::string plural(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
+
+}  // namespace
+
 std::string arcs_text(const TopoGraph& g) {
   std::string s;
   for (const auto& a : g.arcs()) s += fmt::format("{}{} -{}-> {}", s.empty() ? "" : ", ", g.name(a.source), a.label, g.name(a.target));
   return s;
 }
 
-std::string plural(std::size_t n, const char* one, const char* many) { return fmt::format("{} {}", n, n == 1 ? one : many); }
-
-}  // namespace
+std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& results) {
+  using proofs::Agreement;
+  std::string out;
+  std::size_t counts[4] = {}, scoped = 0;
+  for (const auto& result : results) {
+    const auto& p = *result.proof;
+    scoped += p.out_of_scope.empty();
+    for (auto a : {Agreement::agree, Agreement::disagree, Agreement::unresolved, Agreement::not_compared}) counts[static_cast<int>(a)] += p.count(a);
+    out += fmt::format("{} ({}): ", printable(p.rule), printable(p.model));
+    if (!p.out_of_scope.empty()) {
+      out += fmt::format("out of the solver's scope: {}\n", p.out_of_scope);
+      continue;
+    }
+    out += fmt::format("static {}; {:.2f} s\n", p.static_failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(p.static_failures, " ")),
+                       p.seconds);
+    for (std::size_t i = 0; i < p.constraints.size(); ++i) {
+      const auto& cp = p.constraints[i];
+      out += fmt::format("  {:<11} static {:<5}  theorem: {:<36}  maps: {:<32}  {}\n", cp.constraint.name(),
+                         cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-",
+                         cp.theorem ? answer_text(*cp.theorem)
+                         : p.scheme ? "(scheme: maps only)"
+                                    : "(no theorem)",
+                         answer_text(cp.model), proofs::agreement_name(cp.agreement));
+      if (!cp.note.empty()) out += fmt::format("  {:<11} {}\n", "", cp.note);
+      if (cp.theorem && cp.theorem->status == proofs::Status::counterexample && run.explain)
+        out += fmt::format("  {:<11} theorem host: {}\n  {:<11} H: {}\n", "", arcs_text(cp.theorem->host_graph), "",
+                           arcs_text(cp.theorem->result_graph));
+      if (!result.proof_replays[i].empty()) out += fmt::format("  {:<11} replay: {}\n", "", printable(result.proof_replays[i]));
+    }
+  }
+  out += fmt::format(
+      "\n{} rules ({} in the solver's scope); {} constraints agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
+      "{:.1f} s\n",
+      results.size(), scoped, counts[0], counts[1], counts[2], counts[3], run.max_darts, run.rlimit, run.seconds);
+  if (const auto line = mismatch_summary(results); !line.empty()) out += line + "\n";
+  return out;
+}
 
 std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results) {
   std::vector<std::string> lines;

@@ -28,6 +28,23 @@ struct TableOptions {
 std::string check_table(const Catalog& catalog, const std::vector<analysis::RuleResult>& results, std::size_t baseline_mismatches,
                         const TableOptions& options);
 
+/// A D-graph's arcs, "a -1-> b, b -1-> a" (hosts and results of witnesses).
+std::string arcs_text(const TopoGraph& g);
+
+/// A prove run as its renderers see it.
+struct ProveRun {
+  std::string catalog;
+  std::size_t max_darts = 0;
+  unsigned rlimit = 0;
+  double seconds = 0;
+  bool explain = false;  // the theorem-class hosts and their H
+  std::vector<std::string> baseline_mismatches;
+};
+
+/// prove's text: per rule and constraint, the static verdict, the theorem
+/// class's and the model's answers and their agreement, then the totals.
+std::string prove_text(const ProveRun& run, const std::vector<analysis::RuleResult>& results);
+
 /// A fuzz run as its renderers see it.
 struct FuzzRun {
   std::string catalog;
