@@ -1,6 +1,7 @@
 #include "reports/ci_formats.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 #include <fmt/format.h>

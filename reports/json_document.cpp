@@ -27,15 +27,22 @@ std::size_t sanitise(Json& j) {
     auto& s = j.get_ref<std::string&>();
     if (!valid_utf8(s)) s = replace_invalid_utf8(s), ++changed;
   } else if (j.is_object()) {
-    // Keys are names too (e.g. a rule name as a key).
-    Json copy = Json::object();
+    bool bad_key = false;
     for (auto& [key, value] : j.items()) {
       changed += sanitise(value);
-      const bool bad = !valid_utf8(key);
-      changed += bad;
-      copy[bad ? replace_invalid_utf8(key) : key] = std::move(value);
+      bad_key |= !valid_utf8(key);
     }
-    j = std::move(copy);
+    if (bad_key) {
+      // Keys are names too (e.g. a rule name as a key): rebuilt, in order,
+      // only when one of them is not UTF-8.
+      Json copy = Json::object();
+      for (auto& [key, value] : j.items()) {
+        const bool bad = !valid_utf8(key);
+        changed += bad;
+        copy[bad ? replace_invalid_utf8(key) : key] = std::move(value);
+      }
+      j = std::move(copy);
+    }
   } else if (j.is_array()) {
     for (auto& value : j) changed += sanitise(value);
   }
