@@ -20,9 +20,11 @@ std::string file_stem(const std::string& name) {
 
 namespace {
 
-std::string replay_command(const std::string& catalog, const std::string& rule, const std::string& host, const std::vector<Dart>& hooks) {
-  std::string cmd = fmt::format("dartcheck apply {} --rule {} --map {}", catalog, rule, host);
+std::string replay_command(ReplayCommand what, const std::string& catalog, const std::string& rule, const std::string& host,
+                           const std::vector<Dart>& hooks) {
+  std::string cmd = fmt::format("dartcheck {} {} --rule {} --map {}", what == ReplayCommand::apply ? "apply" : "events", catalog, rule, host);
   for (Dart h : hooks) cmd += fmt::format(" --hook {}", h);
+  if (what == ReplayCommand::events) cmd += " --dynamic";
   return cmd;
 }
 
@@ -30,12 +32,12 @@ std::string replay_command(const std::string& catalog, const std::string& rule, 
 
 std::string write_counterexample(const std::string& dir, const std::string& stem_name, const std::string& catalog, const std::string& rule,
                                  const std::vector<std::pair<std::string, std::string>>& fields, const std::vector<std::string>& static_failures,
-                                 const Counterexample& cx) {
+                                 const Counterexample& cx, ReplayCommand what) {
   ensure_directory(dir);
   const std::string stem = (std::filesystem::path(dir) / stem_name).string();
   write_file(stem + ".host.yaml", map_to_yaml(cx.host));
   if (cx.result) write_file(stem + ".result.yaml", map_to_yaml(*cx.result));
-  const std::string replay = replay_command(catalog, rule, stem + ".host.yaml", cx.hooks);
+  const std::string replay = replay_command(what, catalog, rule, stem + ".host.yaml", cx.hooks);
   YAML::Emitter y;
   y << YAML::BeginMap;
   y << YAML::Key << "rule" << YAML::Value << rule;
@@ -53,6 +55,7 @@ std::string write_counterexample(const std::string& dir, const std::string& stem
   if (cx.result) y << YAML::Key << "result" << YAML::Value << stem + ".result.yaml";
   y << YAML::Key << "broken" << YAML::Value << YAML::Flow << cx.broken();
   if (!cx.unrepresentable.empty()) y << YAML::Key << "not_representable" << YAML::Value << cx.unrepresentable;
+  if (!cx.event_contradictions.empty()) y << YAML::Key << "event_contradictions" << YAML::Value << cx.event_contradictions;
   y << YAML::Key << "violations" << YAML::Value << YAML::BeginSeq;
   for (const auto& v : cx.violations) {
     y << YAML::Flow << YAML::BeginMap << YAML::Key << "dart" << YAML::Value << v.element << YAML::Key << "constraint" << YAML::Value

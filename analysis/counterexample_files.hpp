@@ -16,11 +16,16 @@ namespace dartcheck::analysis {
 /// Rule names may hold '/' (variants): file names use '.' instead.
 std::string file_stem(const std::string& name);
 
+/// What the replay command runs: the application (`dartcheck apply`), or
+/// the event logs set against the static events (`dartcheck events
+/// --dynamic`).
+enum class ReplayCommand { apply, events };
+
 /// Writes the three files; `fields` are extra (key, value) lines of the
 /// counterexample file (seed, class, constraint...). Returns the replay
 /// command.
 std::string write_counterexample(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule,
                                  const std::vector<std::pair<std::string, std::string>>& fields, const std::vector<std::string>& static_failures,
-                                 const Counterexample& cx);
+                                 const Counterexample& cx, ReplayCommand replay = ReplayCommand::apply);
 
 }  // namespace dartcheck::analysis

@@ -171,9 +171,10 @@ class Fuzzer {
   Clock::time_point start_;
   Map scratch_{Model::gmap(2)};
   Applier applier_{entry_};  // a scheme's tables stay from one application to the next
-  // A consistent rule's static events, checked on its first applications.
+  // The rule's static events, checked on its first applications.
   EventOracle events_;
   std::size_t attempts_ = 0, next_progress_ = 4096;
+  std::string phase_;  // where hosts come from now: the origin of an event contradiction
   // Where the enumeration stands: hosts of n_ darts, the first skip_ of
   // them already tried; host_budget_ hosts left.
   std::size_t n_ = 1, first_n_ = 1, skip_ = 0, host_budget_ = 0;
@@ -215,14 +216,17 @@ class Fuzzer {
       ++out_.refusals[std::string(refusal_name(refusal))];
     else
       ++out_.applications;
-    if (!cx && refusal == Refusal::none && out_.static_failures.empty() && events_.active() && out_.event_checks < o_.event_checks) {
+    // Events are about the topology of a valid H, whatever the static
+    // verdict says of the rule (an embedding failure, a condition that
+    // does not bite on this host).
+    if (!cx && refusal == Refusal::none && events_.active() && !out_.event_contradiction && out_.event_checks < o_.event_checks) {
       ++out_.event_checks;
       Map h{rule_.model()};
       auto contradictions = events_.contradictions(g, hooks, h);
       if (!contradictions.empty()) {
-        Counterexample e{g, {hooks.begin(), hooks.end()}, {}, std::move(h), {}, {}, {}, false, {}, {}, {}, {}};
+        Counterexample e{g, {hooks.begin(), hooks.end()}, {}, std::move(h), {}, {}, phase_, false, {}, {}, {}, {}};
         e.event_contradictions = std::move(contradictions);
-        return e;
+        out_.event_contradiction = std::move(e);
       }
     }
     return cx;
@@ -276,6 +280,7 @@ class Fuzzer {
       const std::size_t n = n_;
       std::size_t seen = 0;
       bool stopped = false;
+      phase_ = fmt::format("every {} of {} darts{}, in enumeration order", model.name, n, dpo ? " containing L" : "");
       for_each_small_map(
           model, n,
           [&](const std::vector<std::vector<NodeId>>& sigma) {
@@ -308,6 +313,7 @@ class Fuzzer {
     std::stable_sort(maps.begin(), maps.end(), [](const Map* a, const Map* b) { return a->size() < b->size(); });
     for (const Map* g : maps) {
       note_host(*g);
+      phase_ = fmt::format("a given map of {} darts", g->size());
       if (auto cx = every_match(*g, true)) {
         cx->origin = fmt::format("a given map of {} darts", g->size());
         out_.counterexample = std::move(cx);
@@ -323,6 +329,7 @@ class Fuzzer {
   // here, and after 500 if some did (a rule that needs a rare shape).
   void random_hosts() {
     const Model& model = rule_.model();
+    phase_ = "a random map (not shrunk)";
     const std::size_t cap = std::max<std::size_t>(1, o_.max_darts / darts_per_face(model));
     const std::size_t attempts0 = attempts_, applications0 = out_.applications, runs = std::max<std::size_t>(o_.runs, 1);
     auto starving = [&] {
@@ -428,14 +435,18 @@ std::string outcome_text(const FuzzReport& r) {
     case FuzzClass::confirmed:
     case FuzzClass::soundness_bug: {
       const auto& cx = *r.counterexample;
-      if (!cx.event_contradictions.empty())
-        return fmt::format("{}: at hook{} {} of a {}-dart map, the event logs contradict the static events: {}", fuzz_class_name(r.verdict),
-                           cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), cx.event_contradictions[0]);
       return fmt::format("{}: at hook{} {} of a {}-dart map, H breaks {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
                          fmt::join(cx.hooks, ","), cx.host.size(), fmt::join(cx.broken(), ", "), cx.minimal ? " (minimal)" : "");
     }
   }
   return "";
+}
+
+std::string event_outcome_text(const FuzzReport& r) {
+  if (!r.event_contradiction) return "";
+  const auto& cx = *r.event_contradiction;
+  return fmt::format("EVENT ANALYSIS CONTRADICTED: at hook{} {} of a {}-dart map, {}", cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","),
+                     cx.host.size(), cx.event_contradictions.front());
 }
 
 std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, const std::vector<Map>& seeds, FuzzOptions o,

@@ -62,7 +62,8 @@ struct Counterexample {
   /// ("pos (1, 1)", "pos: none"), empty for the other darts.
   std::vector<std::string> orbit_values;
   /// A valid H whose event logs contradict the rule's static events
-  /// (analysis/event_checks): one sentence each.
+  /// (analysis/event_checks): one sentence each. Only in
+  /// FuzzReport::event_contradiction.
   std::vector<std::string> event_contradictions;
 };
 
@@ -80,6 +81,11 @@ struct FuzzReport {
   bool out_of_time = false;
   double seconds = 0;
   std::optional<Counterexample> counterexample;
+  /// The first application whose event logs contradict the rule's static
+  /// events (004): a defect of dartcheck's event analysis, not of the
+  /// rule, so `verdict` does not change. The search for a counterexample
+  /// goes on; event checks stop.
+  std::optional<Counterexample> event_contradiction;
 };
 
 struct FuzzProgress {
@@ -122,6 +128,10 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
 /// The outcome in one line: "consistent (checked ...)", "confirmed: at
 /// hook 3 of a 6-dart map, H breaks C(0,2) (minimal)", ...
 std::string outcome_text(const FuzzReport& r);
+
+/// "EVENT ANALYSIS CONTRADICTED: at hook 0 of a 2-dart map, <2>: ..."
+/// (the first contradiction; empty when there is none).
+std::string event_outcome_text(const FuzzReport& r);
 
 /// One application on a copy of g (into `scratch`), checked with
 /// check_map: the counterexample if H is invalid or has no dense form,

@@ -119,12 +119,6 @@ RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std:
   return r;
 }
 
-void add_fuzz(RuleResult& r, FuzzReport report, std::string replay) {
-  r.fuzz = std::move(report);
-  r.fuzz_replay = std::move(replay);
-  compare_with_record(r);
-}
-
 void add_proof(RuleResult& r, proofs::RuleProof proof, std::vector<std::string> replays, std::vector<std::optional<Counterexample>> maps) {
   r.proof = std::move(proof);
   r.proof_replays = std::move(replays);
@@ -132,14 +126,24 @@ void add_proof(RuleResult& r, proofs::RuleProof proof, std::vector<std::string> 
   compare_with_record(r);
 }
 
-std::string fuzz_replay(const CatalogRule& entry, const FuzzReport& report, std::uint64_t seed, const std::string& out_dir,
-                        const std::string& catalog_file, const std::string& suffix) {
-  if (!report.counterexample) return {};
-  if (entry.terms) return embedded_replay(catalog_file, report, seed);
-  if (out_dir.empty()) return {};
-  return write_counterexample(out_dir, file_stem(report.rule) + suffix, catalog_file, report.rule,
-                              {{"seed", std::to_string(seed)}, {"class", std::string(fuzz_class_name(report.verdict))}}, report.static_failures,
-                              *report.counterexample);
+void add_fuzz(RuleResult& r, FuzzReport report, std::uint64_t seed, const std::string& out_dir, const std::string& catalog_file,
+              const std::string& suffix) {
+  const CatalogRule& entry = *r.entry;
+  const std::vector<std::pair<std::string, std::string>> fields{{"seed", std::to_string(seed)},
+                                                                {"class", std::string(fuzz_class_name(report.verdict))}};
+  r.fuzz_replay.clear();
+  r.events_replay.clear();
+  if (report.counterexample && entry.terms)
+    r.fuzz_replay = embedded_replay(catalog_file, report, seed);
+  else if (report.counterexample && !out_dir.empty())
+    r.fuzz_replay = write_counterexample(out_dir, file_stem(report.rule) + suffix, catalog_file, report.rule, fields, report.static_failures,
+                                         *report.counterexample);
+  if (report.event_contradiction && !out_dir.empty())
+    r.events_replay = write_counterexample(out_dir, file_stem(report.rule) + suffix + ".events", catalog_file, report.rule,
+                                           {{"seed", std::to_string(seed)}, {"class", "EVENT ANALYSIS CONTRADICTED"}}, report.static_failures,
+                                           *report.event_contradiction, ReplayCommand::events);
+  r.fuzz = std::move(report);
+  compare_with_record(r);
 }
 
 void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::string& out_dir, const std::string& catalog_file,
@@ -189,6 +193,7 @@ ResultCounts count_results(const std::vector<RuleResult>& results) {
     (r.consistent() ? c.consistent : c.failing) += 1;
     c.mismatches += !r.matches_record();
     c.unsound += r.unsound();
+    c.events_contradicted += r.events_contradicted();
   }
   return c;
 }

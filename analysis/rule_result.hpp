@@ -43,6 +43,7 @@ struct RuleResult {
   // Fuzz stage, with the command that replays its counterexample.
   std::optional<FuzzReport> fuzz;
   std::string fuzz_replay;
+  std::string events_replay;  // replays the event contradiction, if any
 
   // Solver stage, with one replay command per constraint ("" when none);
   // a counterexample that replays dynamically as `proof_maps` (per constraint).
@@ -61,6 +62,10 @@ struct RuleResult {
   /// (model-level confirmation or fuzz), or the solver contradicts a
   /// theorem: a defect of dartcheck, exit 3.
   bool unsound() const;
+  /// fuzz found an application whose event logs contradict the static
+  /// events (004): a defect of the event analysis, reported apart from
+  /// the rule's verdict.
+  bool events_contradicted() const { return fuzz && fuzz->event_contradiction; }
   /// Whether some stage broke a map of the model.
   bool broke_a_map() const;
   bool matches_record() const { return mismatches.empty(); }
@@ -83,18 +88,16 @@ struct RuleResult {
 RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std::size_t confirm_darts, const std::vector<Map>& catalog_maps = {},
                           RecordSource source = RecordSource::catalog);
 
-/// Adds a fuzz report (and its replay command) and compares again.
-void add_fuzz(RuleResult& r, FuzzReport report, std::string replay);
+/// Adds a fuzz report and compares again. Its replay commands: an
+/// embedded rule's `fuzz --seed` line, or the files written under
+/// `out_dir` (host, match, H; named after the rule plus `suffix`, and
+/// ".events" for an event contradiction) and their `apply` or
+/// `events --dynamic` line; none when there is nowhere to write.
+void add_fuzz(RuleResult& r, FuzzReport report, std::uint64_t seed, const std::string& out_dir, const std::string& catalog_file,
+              const std::string& suffix = "");
 
 /// Adds a proof with its replays and dynamic counterexamples, and compares again.
 void add_proof(RuleResult& r, proofs::RuleProof proof, std::vector<std::string> replays, std::vector<std::optional<Counterexample>> maps);
-
-/// The fuzz stage's replay command for a counterexample: an embedded rule's
-/// `fuzz --seed` line, or the files written under `out_dir` (host, match,
-/// H; named after the rule plus `suffix`) and their `apply` line; "" when
-/// there is no counterexample or nowhere to write it.
-std::string fuzz_replay(const CatalogRule& entry, const FuzzReport& report, std::uint64_t seed, const std::string& out_dir,
-                        const std::string& catalog_file, const std::string& suffix = "");
 
 /// The solver stage: proves the rule, replays every counterexample on a map
 /// of the model through the library's own derivation, writes those under
@@ -110,7 +113,7 @@ void compare_with_record(RuleResult& r);
 
 /// Counts over a run's results, for every summary line.
 struct ResultCounts {
-  std::size_t rules = 0, consistent = 0, failing = 0, mismatches = 0, unsound = 0;
+  std::size_t rules = 0, consistent = 0, failing = 0, mismatches = 0, unsound = 0, events_contradicted = 0;
 };
 ResultCounts count_results(const std::vector<RuleResult>& results);
 

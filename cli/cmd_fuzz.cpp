@@ -140,9 +140,8 @@ int fuzz(const FuzzCommand& c) {
   // is written as soon as the rule finishes: a run killed later keeps them.
   std::vector<RuleResult> results;
   auto finished = [&](std::size_t k, const FuzzReport& r) {
-    std::string replay = fuzz_replay(*entries[k], r, o.seed, c.out, c.catalog);
     results.push_back(analyse_static(catalog, *entries[k], 0, {}, source));
-    add_fuzz(results.back(), r, std::move(replay));
+    add_fuzz(results.back(), r, o.seed, c.out, c.catalog);
     if (jsonl) print_jsonl("rule", reports::rule_result_json(results.back()));
   };
   fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);

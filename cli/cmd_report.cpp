@@ -49,8 +49,7 @@ std::string fuzz_stage(std::vector<RuleResult>& rows, const Catalog& catalog, co
   std::size_t applications = 0;
   for (std::size_t k = 0; k < found.size(); ++k) {  // fewer than rows if interrupted
     applications += found[k].applications;
-    std::string replay = fuzz_replay(*rows[k].entry, found[k], fo.seed, cx_dir, o.catalog, ".fuzz");
-    add_fuzz(rows[k], std::move(found[k]), std::move(replay));
+    add_fuzz(rows[k], std::move(found[k]), fo.seed, cx_dir, o.catalog, ".fuzz");
   }
   return fmt::format("<p>Fuzz: {} s, seed {} (<code>--seed {}</code> replays it), {} application{}.</p>\n", seconds, fo.seed, fo.seed, applications,
                      applications == 1 ? "" : "s");

@@ -40,7 +40,7 @@ int finish_run(const std::vector<analysis::RuleResult>& results, const std::vect
   const auto counts = analysis::count_results(results);
   if (analysis::interrupted())
     fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), selected, selected == 1 ? "" : "s");
-  if (counts.unsound) return soundness_bug;
+  if (counts.unsound || counts.events_contradicted) return soundness_bug;
   if (analysis::interrupted()) return analysis::interrupted_exit;
   return counts.mismatches + baseline_mismatches.size() > 0 ? violation : ok;
 }

@@ -61,14 +61,132 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
                        rule_orbit_name(r, k, cl.event != Event::creation, cl.orbit));
   };
 
+  // The condition of a loop-case no-modification on G orbit `rep`: at
+  // every matched dart of the orbit, the links along the letters the rule
+  // changes (its positions' letters on either side, inside <o>) are the
+  // same in G and H: loops, or a fold that the relabeling keeps. Empty
+  // when it holds, else the first link that changes.
+  auto changed_link = [&](const EventClaim& cl, Dart rep) -> std::string {
+    const RuleOrbit& x = k.left.orbits[static_cast<std::size_t>(cl.orbit)];
+    for (NodeId v : x.nodes)
+      for (Dart d : t.match[v]) {
+        const NodeId w = rule.to_right(v);
+        if (grep[d] != rep || w == no_node || c.to_h(d) == no_dart) continue;
+        for (int p : cl.loop_positions)
+          for (const auto& letter : {r.left.labels[v][static_cast<std::size_t>(p)], r.right.labels[w][static_cast<std::size_t>(p)]}) {
+            if (!in_kind(k.kind, letter)) continue;
+            const Dart before = g.link(*letter, d), after = h.link(*letter, c.to_h(d));
+            if ((before == no_dart ? no_dart : c.to_h(before)) != after)
+              return fmt::format("the {}-link of dart {} changes ({} in G, {} in H)", *letter, d,
+                                 before == d ? "a loop" : fmt::format("to {}", before), after == c.to_h(d) ? "a loop" : fmt::format("to {}", after));
+          }
+      }
+    return {};
+  };
+  auto loop_claim = [&](const EventClaim& cl) {
+    return std::find_if(k.claims.begin(), k.claims.end(),
+                        [&](const EventClaim& n) { return n.event == Event::non_modification && n.orbit == cl.orbit && !n.loop_positions.empty(); });
+  };
+
+  // Pattern positions: a matched dart of G and a comatched dart of H give
+  // their position; a position gives its G orbit through X's nodes (joined
+  // by explicit o-arcs, so one orbit) and its H orbit through one
+  // preserved node of Y. Created and deleted nodes have positions too.
+  constexpr std::size_t no_position = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> gpos(g.size(), no_position), hpos(h.size(), no_position);
+  for (const auto& darts : t.match)
+    for (std::size_t x = 0; x < darts.size(); ++x) gpos[darts[x]] = x;
+  for (const auto& darts : t.comatch)
+    for (std::size_t x = 0; x < darts.size(); ++x) hpos[darts[x]] = x;
+  auto g_orbit_at = [&](const RuleOrbit& x, std::size_t p) { return grep[t.match[x.nodes.front()][p]]; };
+  auto h_orbit_at = [&](const RuleOrbit& y, std::size_t p) {
+    for (NodeId w : y.nodes)
+      if (rule.to_left(w) != no_node) return hrep[t.comatch[w][p]];
+    return no_dart;
+  };
+  // Why an implicit split along k does not happen on G orbit `rep`: every
+  // k-link of X's matched darts there is a loop, or its ends stay in one
+  // orbit of H (a fold). Starts with "yet" when one is neither.
+  auto split_blocked = [&](const EventClaim& cl, Dart rep) -> std::string {
+    const RuleOrbit& x = k.left.orbits[static_cast<std::size_t>(cl.orbit)];
+    const RuleOrbit& y = k.right.orbits[static_cast<std::size_t>(cl.others.at(0))];
+    const auto pos = static_cast<std::size_t>(cl.position);
+    std::size_t loops = 0, folds = 0;
+    for (NodeId v : x.nodes) {
+      const auto& label = r.left.labels[v][pos];
+      if (!in_kind(k.kind, label)) continue;
+      for (std::size_t p = 0; p < t.match[v].size(); ++p) {
+        const Dart d = t.match[v][p];
+        if (g_orbit_at(x, p) != rep) continue;
+        const Dart e = g.link(*label, d);
+        if (e == d) {
+          ++loops;
+        } else if (e != no_dart && gpos[e] != no_position && h_orbit_at(y, p) == h_orbit_at(y, gpos[e])) {
+          ++folds;
+        } else {
+          return fmt::format("yet the {}-link of darts {} and {} is no loop and its ends go to two orbits of H", *label, d, e);
+        }
+      }
+    }
+    return fmt::format("every link at position {} (letter {}) there is a loop ({}) or folded ({})", pos, r.parameter[pos], loops, folds);
+  };
+  // Why an implicit merge along k does not happen: every k-link of Y's
+  // comatched darts there is a loop in H, or joins two darts of one G orbit.
+  auto merge_blocked = [&](const EventClaim& cl, Dart rep) -> std::string {
+    const RuleOrbit& x = k.left.orbits[static_cast<std::size_t>(cl.orbit)];
+    const RuleOrbit& y = k.right.orbits[static_cast<std::size_t>(cl.others.at(0))];
+    const auto pos = static_cast<std::size_t>(cl.position);
+    std::size_t loops = 0, folds = 0;
+    for (NodeId w : y.nodes) {
+      const auto& label = r.right.labels[w][pos];
+      if (!in_kind(k.kind, label)) continue;
+      for (std::size_t p = 0; p < t.comatch[w].size(); ++p) {
+        const Dart d = t.comatch[w][p];
+        if (g_orbit_at(x, p) != rep) continue;
+        const Dart e = h.link(*label, d);
+        if (e == d) {
+          ++loops;
+        } else if (e != no_dart && hpos[e] != no_position && g_orbit_at(x, hpos[e]) == rep) {
+          ++folds;
+        } else {
+          return fmt::format("yet the {}-link of darts {} and {} of H is no loop and joins two orbits of G", *label, d, e);
+        }
+      }
+    }
+    return fmt::format("every link at position {} (letter {}) there is a loop ({}) or folded ({})", pos, r.parameter[pos], loops, folds);
+  };
+
   for (const EventClaim& cl : k.claims) {
     const bool left = cl.event != Event::creation;
     const auto& touched = left ? touched_g[static_cast<std::size_t>(cl.orbit)] : touched_h[static_cast<std::size_t>(cl.orbit)];
     for (Dart rep : touched) {
-      if (happened(cl.event, left, rep)) continue;
+      const std::string where = fmt::format("{}{}({})", left ? 'G' : 'H', o, rep);
+      if (happened(cl.event, left, rep)) {
+        // A loop-case no-modification must have its loops.
+        if (!cl.loop_positions.empty() && cl.certainty == Certainty::conditional)
+          if (auto why = changed_link(cl, rep); !why.empty())
+            out.contradictions.push_back(fmt::format("{}: {} happens on {} but {}", o, claim_name(cl), where, why));
+        continue;
+      }
       // A modification gives way to a split or merge by definition (Sec. 3.4.3).
       if (cl.event == Event::modification && (happened(Event::split, true, rep) || happened(Event::merge, true, rep))) continue;
-      const std::string where = fmt::format("{}{}({})", left ? 'G' : 'H', o, rep);
+      // ... and to the no-modification of the loop case, where its loops are.
+      if (cl.event == Event::modification && happened(Event::non_modification, true, rep) && loop_claim(cl) != k.claims.end() &&
+          changed_link(*loop_claim(cl), rep).empty()) {
+        out.resolutions.push_back(
+            fmt::format("{} does not happen on {}: the links it changes are the same in G and H (loops or a fold), so the orbit is unchanged",
+                        claim_name(cl), where));
+        continue;
+      }
+      if (!cl.loop_positions.empty() && cl.certainty == Certainty::conditional) {
+        // A loop-case no-modification that does not happen: some link is no loop.
+        if (auto why = changed_link(cl, rep); !why.empty())
+          out.resolutions.push_back(fmt::format("{} does not happen on {}: {}", claim_name(cl), where, why));
+        else
+          out.contradictions.push_back(
+              fmt::format("{}: {} does not happen on {} though the links it changes are the same in G and H", o, claim_name(cl), where));
+        continue;
+      }
       if (cl.certainty == Certainty::certain) {
         out.contradictions.push_back(fmt::format("{}: {} does not happen on {}", o, claim_name(cl), where));
         continue;
@@ -77,42 +195,21 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
         out.resolutions.push_back(fmt::format("{} does not happen on {}", claim_name(cl), where));
         continue;
       }
-      // Conditional: find the loop or fold that prevents it.
-      std::string witness;
-      const RuleOrbit& x = k.left.orbits[static_cast<std::size_t>(cl.orbit)];
-      const auto pos = static_cast<std::size_t>(cl.position);
-      if (cl.event == Event::split && cl.implicit) {
-        for (NodeId v : x.nodes) {
-          const auto& label = r.left.labels[v][pos];
-          if (!in_kind(k.kind, label)) continue;
-          for (Dart d : t.match[v]) {
-            if (grep[d] != rep || !witness.empty()) continue;
-            const Dart e = g.link(*label, d);
-            if (e == d)
-              witness = fmt::format("the {}-link of dart {} is a loop", *label, d);
-            else if (e != no_dart && c.to_h(d) != no_dart && c.to_h(e) != no_dart && hrep[c.to_h(d)] == hrep[c.to_h(e)])
-              witness = fmt::format("darts {} and {} ({}-linked in G) stay in one orbit of H: the orbit is folded", d, e, *label);
-          }
-        }
-      } else if (cl.event == Event::merge && cl.implicit) {
-        const RuleOrbit& y = k.right.orbits[static_cast<std::size_t>(cl.others.at(0))];
-        for (NodeId v : y.nodes) {
-          const auto& label = r.right.labels[v][pos];
-          if (!in_kind(k.kind, label)) continue;
-          for (Dart d : t.comatch[v]) {
-            if (!witness.empty() || c.to_g(d) == no_dart || grep[c.to_g(d)] != rep) continue;
-            const Dart e = h.link(*label, d);
-            if (e == d)
-              witness = fmt::format("the {}-link of dart {} of H is a loop", *label, d);
-            else if (e != no_dart && c.to_g(e) != no_dart && grep[c.to_g(d)] == grep[c.to_g(e)])
-              witness = fmt::format("darts {} and {} of H ({}-linked) were already in one orbit of G: the orbit is folded", d, e, *label);
-          }
-        }
+      // Conditional: it fails only where every k-link of the orbit's
+      // matched darts is a loop or folded (its two ends stay in one orbit
+      // on the other side); one k-link that is neither makes it happen.
+      if (cl.event == Event::modification) {
+        // Not a split, a merge, nor the loop case's no-modification: what
+        // the orbit became was announced by none of its claims.
+        out.contradictions.push_back(
+            fmt::format("{}: {} does not happen on {}, and none of the other events announced for it does", o, claim_name(cl), where));
+        continue;
       }
-      if (witness.empty())
-        out.contradictions.push_back(fmt::format("{}: {} does not happen on {} and no loop or fold explains it", o, claim_name(cl), where));
+      const std::string why = cl.event == Event::split ? split_blocked(cl, rep) : merge_blocked(cl, rep);
+      if (why.rfind("yet", 0) == 0)
+        out.contradictions.push_back(fmt::format("{}: {} does not happen on {}, {}", o, claim_name(cl), where, why));
       else
-        out.resolutions.push_back(fmt::format("{} does not happen on {}: {}", claim_name(cl), where, witness));
+        out.resolutions.push_back(fmt::format("{} does not happen on {}: {}", claim_name(cl), where, why));
     }
   }
 

@@ -49,6 +49,12 @@ std::string rule_orbit_name(const EventRule& r, const KindEvents& k, bool left, 
 std::string claim_summary(const EventRule& r, const KindEvents& k, const EventClaim& c) {
   std::string s = fmt::format("{} {}", certainty_name(c.certainty), event_name(c.event));
   if (c.implicit) s += fmt::format(" along position {} (letter {})", c.position, r.parameter[static_cast<std::size_t>(c.position)]);
+  if (!c.loop_positions.empty()) {
+    std::vector<std::string> loops;
+    for (int pos : c.loop_positions) loops.push_back(fmt::format("{} (letter {})", pos, r.parameter[static_cast<std::size_t>(pos)]));
+    s += fmt::format(" where the links at position{} {} stay the same (loops, or a fold)", c.loop_positions.size() > 1 ? "s" : "",
+                     fmt::join(loops, ", "));
+  }
   if (!c.others.empty() && c.event == Event::merge && !c.implicit) {
     std::vector<std::string> names;
     for (int o : c.others) names.push_back(rule_orbit_name(r, k, true, o));
@@ -71,6 +77,42 @@ std::multiset<std::tuple<std::string, std::string, int>> orbit_arcs(const EventS
       out.emplace(side.graph->name(a.source), side.graph->name(a.target), a.label);
   }
   return out;
+}
+
+// Def. 3.4.2 on X and the right orbit Y of its preserved nodes (every
+// node of X preserved): the same nodes, the same labels at the positions
+// in <o> on either side, the same explicit o-arcs (by node names). The
+// positions in `as_loops` are read as explicit loops instead: this is the
+// rule on a match where those links are loops (the case the proof of
+// Prop. 3.2.1 names), where an implicit i-link at position k is an
+// explicit i-loop on either side.
+bool keeps_orbit(const EventRule& r, const OrbitKind& kind, const RuleOrbit& x, const RuleOrbit& yo, const std::set<std::size_t>& as_loops) {
+  const Rule& rule = *r.rule;
+  if (yo.nodes.size() != x.nodes.size()) return false;
+  auto arcs_l = orbit_arcs(r.left, x.nodes, kind), arcs_r = orbit_arcs(r.right, yo.nodes, kind);
+  for (NodeId v : x.nodes) {
+    const NodeId w = rule.to_right(v);
+    for (std::size_t pos = 0; pos < r.parameter.size(); ++pos) {
+      const auto &a = r.left.labels[v][pos], &b = r.right.labels[w][pos];
+      if (as_loops.count(pos)) {
+        if (in_kind(kind, a)) arcs_l.emplace(r.left.graph->name(v), r.left.graph->name(v), *a);
+        if (in_kind(kind, b)) arcs_r.emplace(r.right.graph->name(w), r.right.graph->name(w), *b);
+      } else if ((in_kind(kind, a) || in_kind(kind, b)) && a != b) {
+        return false;
+      }
+    }
+  }
+  if (kind.single_letters()) return arcs_l == arcs_r;
+  // Word generators (O-map vertices): the orbit is unchanged when every
+  // generator path ends at the same node on both sides, or leaves the
+  // pattern from the same node after the same prefix (by an unmatched arc
+  // of a preserved node, which the rule keeps). Nodes are compared by name.
+  for (NodeId v : x.nodes)
+    for (const Word& w : kind.generators) {
+      const ExplicitPathEnd a = follow_explicit(r.left, v, w), b = follow_explicit(r.right, rule.to_right(v), w);
+      if (a.letters != b.letters || r.left.graph->name(a.node) != r.right.graph->name(b.node)) return false;
+    }
+  return true;
 }
 
 }  // namespace
@@ -165,32 +207,8 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
     }
     // Non-modification (Def. 3.4.2): the same nodes, the same labels at the
     // positions that are in <o> on either side, the same explicit o-arcs.
-    bool unchanged = claims.empty() && preserved.size() == x.nodes.size() && ys.size() == 1;
-    if (unchanged) {
-      const RuleOrbit& yo = k.right.orbits[static_cast<std::size_t>(*ys.begin())];
-      unchanged = yo.nodes.size() == x.nodes.size();
-      for (NodeId v : x.nodes) {
-        const NodeId w = rule.to_right(v);
-        for (std::size_t pos = 0; unchanged && pos < r.parameter.size(); ++pos) {
-          const auto &a = r.left.labels[v][pos], &b = r.right.labels[w][pos];
-          if ((in_kind(kind, a) || in_kind(kind, b)) && a != b) unchanged = false;
-        }
-      }
-      if (kind.single_letters()) {
-        unchanged = unchanged && orbit_arcs(r.left, x.nodes, kind) == orbit_arcs(r.right, yo.nodes, kind);
-      } else {
-        // Word generators (O-map vertices): the orbit is unchanged when
-        // every generator path ends at the same node on both sides, or
-        // leaves the pattern from the same node after the same prefix (by
-        // an unmatched arc of a preserved node, which the rule keeps).
-        for (NodeId v : x.nodes)
-          for (const Word& w : kind.generators) {
-            // Nodes are compared by name across the two sides.
-            const ExplicitPathEnd a = follow_explicit(r.left, v, w), b = follow_explicit(r.right, rule.to_right(v), w);
-            unchanged = unchanged && a.letters == b.letters && r.left.graph->name(a.node) == r.right.graph->name(b.node);
-          }
-      }
-    }
+    const bool unchanged = claims.empty() && preserved.size() == x.nodes.size() && ys.size() == 1 &&
+                           keeps_orbit(r, kind, x, k.right.orbits[static_cast<std::size_t>(*ys.begin())], {});
     if (unchanged) {
       claims.push_back(
           {Event::non_modification,
@@ -214,21 +232,48 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
         if (!has_split) claims.push_back({Event::split, Certainty::potential, li, false, -1, {}, why});
         if (!has_merge) claims.push_back({Event::merge, Certainty::potential, li, false, -1, {}, why});
       }
+      // The loop case of the proofs of Prop. 3.2.1 and 3.3.1: where the
+      // links at the positions the rule changes inside <o> are loops on the
+      // matched darts, the rule reads as one with explicit loops there. If
+      // that reading keeps the orbit (Def. 3.4.2), the orbit comes out
+      // identical: a no-modification on exactly those matches.
+      std::set<std::size_t> loops;
+      for (NodeId v : x.nodes)
+        if (const NodeId w = rule.to_right(v); w != no_node)
+          for (std::size_t pos = 0; pos < r.parameter.size(); ++pos) {
+            const auto &a = r.left.labels[v][pos], &b = r.right.labels[w][pos];
+            if ((in_kind(kind, a) || in_kind(kind, b)) && a != b) loops.insert(pos);
+          }
+      const bool explicit_change = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return !c.implicit; });
+      const bool loop_case = kind.single_letters() && !explicit_change && !loops.empty() && preserved.size() == x.nodes.size() && ys.size() == 1 &&
+                             keeps_orbit(r, kind, x, k.right.orbits[static_cast<std::size_t>(*ys.begin())], loops);
+      std::vector<std::string> loop_names;
+      for (std::size_t pos : loops) loop_names.push_back(fmt::format("{} (letter {})", pos, r.parameter[pos]));
       // Modification (Sec. 3.4.3) is what remains when no split or merge
-      // happens: certain only when none was announced.
+      // happens: certain only when none was announced and no loop case
+      // keeps the orbit.
       const bool certain_other = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.certainty == Certainty::certain; });
       if (!certain_other) {
-        const Certainty c = !claims.empty() ? (x.complete ? Certainty::conditional : Certainty::potential) : explicit_certainty;
-        claims.push_back({Event::modification,
-                          c,
+        const Certainty c = !claims.empty() || loop_case ? implicit_certainty : explicit_certainty;
+        std::string why = claims.empty() ? fmt::format("{} changes its nodes, o-labels or o-arcs without a split or merge (Sec. 3.4.3)", xn)
+                                         : fmt::format("{} is modified where the announced split or merge does not happen", xn);
+        if (loop_case)
+          why += fmt::format(", unless the links at position{} {} stay the same (loops, or a fold)", loops.size() > 1 ? "s" : "",
+                             fmt::join(loop_names, ", "));
+        claims.push_back({Event::modification, c, li, false, -1, {}, why + incomplete});
+      }
+      if (loop_case)
+        claims.push_back({Event::non_modification,
+                          implicit_certainty,
                           li,
                           false,
                           -1,
                           {},
-                          claims.empty()
-                              ? fmt::format("{} changes its nodes, o-labels or o-arcs without a split or merge (Sec. 3.4.3){}", xn, incomplete)
-                              : fmt::format("{} is modified where the announced split or merge does not happen{}", xn, incomplete)});
-      }
+                          fmt::format("where the links at position{} {} of the matched darts are loops (or folded so that the relabeled "
+                                      "links coincide), {} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2 on the loop case of the "
+                                      "proofs of Prop. 3.2.1, 3.3.1){}",
+                                      loops.size() > 1 ? "s" : "", fmt::join(loop_names, ", "), xn, incomplete),
+                          {loops.begin(), loops.end()}});
     }
     k.claims.insert(k.claims.end(), claims.begin(), claims.end());
   }

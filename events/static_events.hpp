@@ -40,6 +40,10 @@ struct EventClaim {
   int position = -1;  // implicit split or merge: the label position k
   std::vector<int> others;
   std::string reason;  // one sentence: what in the rule says so
+  /// A no-modification that holds where the links at these label
+  /// positions are loops on the matched darts (the loop case of the proofs
+  /// of Prop. 3.2.1 and 3.3.1); empty for Def. 3.4.2's own.
+  std::vector<int> loop_positions = {};
 };
 
 struct KindEvents {

@@ -14,10 +14,10 @@ using Json = nlohmann::ordered_json;
 
 /// The version of dartcheck's JSON and JSONL formats: documents carry it
 /// as "format_version"; docs/schema/ holds one JSON Schema per document.
-inline constexpr int json_format_version = 2;
+inline constexpr int json_format_version = 3;
 
 /// An object that starts a document of `command` ("check", "fuzz", ...):
-/// {"format": "dartcheck-check", "format_version": 2}.
+/// {"format": "dartcheck-check", "format_version": 3}.
 Json json_document(std::string_view command);
 
 /// The document as text, on one line (indent < 0) or indented. Strings that

@@ -123,6 +123,13 @@ std::string fuzz_cell(const FuzzReport& f) {
   return "<td></td>";
 }
 
+// The event contradiction goes next to the verdict, never in its place.
+std::string fuzz_cells(const FuzzReport& f) {
+  std::string cell = fuzz_cell(f);
+  if (f.event_contradiction) cell.insert(cell.size() - 5, "; <span class=\"bug\">EVENT ANALYSIS CONTRADICTED</span>");
+  return cell;
+}
+
 std::string prove_cell(const proofs::RuleProof& p) {
   if (!p.out_of_scope.empty()) return "<td class=\"none\">out of scope</td>";
   using proofs::Agreement;
@@ -162,7 +169,7 @@ std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed,
     out += fmt::format(
         "<td>{}</td><td class=\"{}\">{}</td>", html_text(r.verdict_text()), r.matches_record() ? "ok" : "fails",
         html_text(r.matches_record() ? std::string("matches") : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
-    if (fuzzed) out += r.fuzz ? fuzz_cell(*r.fuzz) : "<td></td>";
+    if (fuzzed) out += r.fuzz ? fuzz_cells(*r.fuzz) : "<td></td>";
     if (proved) out += r.proof ? prove_cell(*r.proof) : "<td></td>";
     out += "</tr>\n";
   }
@@ -257,6 +264,16 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
     }
     if (f.counterexample)
       out += counterexample_html(r, *f.counterexample, "Fuzz counterexample", r.fuzz_replay, pictures, "counterexamples/" + stem + ".fuzz.svg");
+    if (f.event_contradiction) {
+      const auto& cx = *f.event_contradiction;
+      out += fmt::format(
+          "<h4 class=\"bug\">Event analysis contradicted (a defect of dartcheck's event analysis, not of the rule)</h4>\n"
+          "<p>At hook{} {} of a {}-dart map ({}):</p>\n<ul>\n",
+          cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), html_text(cx.origin));
+      for (const auto& c : cx.event_contradictions) out += fmt::format("<li>{}</li>\n", html_text(c));
+      out += "</ul>\n";
+      if (!r.events_replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(r.events_replay));
+    }
   }
   if (r.proof) {
     const auto& p = *r.proof;

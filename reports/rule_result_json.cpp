@@ -62,14 +62,14 @@ Json confirmation_json(const RuleResult& r) {
   } else if (r.scheme_search) {
     j["search"] = "small, catalog and random maps of the model";
     j["confirmed"] = r.scheme_search->counterexample.has_value();
-    j["fuzz"] = fuzz_json(*r.scheme_search, "");
+    j["fuzz"] = fuzz_json(*r.scheme_search, "", "");
   }
   return j;
 }
 
 }  // namespace
 
-Json fuzz_json(const FuzzReport& f, const std::string& replay) {
+Json fuzz_json(const FuzzReport& f, const std::string& replay, const std::string& events_replay) {
   Json refusals = Json::object();
   for (const auto& [why, n] : f.refusals) refusals[why] = n;
   Json j{{"class", fuzz_class_name(f.verdict)},
@@ -92,10 +92,19 @@ Json fuzz_json(const FuzzReport& f, const std::string& replay) {
                                {"origin", cx.origin},
                                {"unrepresentable", cx.unrepresentable},
                                {"embedding", cx.embedding_failures},
-                               {"events", cx.event_contradictions},
                                {"replay", replay}};
   } else {
     j["counterexample"] = nullptr;
+  }
+  if (f.event_contradiction) {
+    const auto& cx = *f.event_contradiction;
+    j["event_contradiction"] = Json{{"darts", cx.host.size()},
+                                    {"hooks", cx.hooks},
+                                    {"origin", cx.origin},
+                                    {"contradictions", cx.event_contradictions},
+                                    {"replay", events_replay}};
+  } else {
+    j["event_contradiction"] = nullptr;
   }
   return j;
 }
@@ -148,7 +157,7 @@ Json rule_result_json(const RuleResult& r) {
   j["mismatches"] = r.mismatches;
   j["unsound"] = r.unsound();
   j["confirmation"] = r.host_search || r.scheme_search ? confirmation_json(r) : Json(nullptr);
-  j["fuzz"] = r.fuzz ? fuzz_json(*r.fuzz, r.fuzz_replay) : Json(nullptr);
+  j["fuzz"] = r.fuzz ? fuzz_json(*r.fuzz, r.fuzz_replay, r.events_replay) : Json(nullptr);
   j["proof"] = r.proof ? proof_json(*r.proof, r.proof_replays) : Json(nullptr);
   return j;
 }
@@ -219,7 +228,8 @@ Json prove_document(const ProveRun& run, const std::vector<RuleResult>& results)
 }
 
 Json counts_json(const ResultCounts& c) {
-  return Json{{"rules", c.rules}, {"consistent", c.consistent}, {"failing", c.failing}, {"mismatches", c.mismatches}, {"unsound", c.unsound}};
+  return Json{{"rules", c.rules},           {"consistent", c.consistent}, {"failing", c.failing},
+              {"mismatches", c.mismatches}, {"unsound", c.unsound},       {"events_contradicted", c.events_contradicted}};
 }
 
 }  // namespace dartcheck::reports

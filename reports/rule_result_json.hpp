@@ -18,7 +18,7 @@ namespace dartcheck::reports {
 Json rule_result_json(const analysis::RuleResult& r);
 
 /// A fuzz stage's report (also inside rule_result_json).
-Json fuzz_json(const analysis::FuzzReport& f, const std::string& replay);
+Json fuzz_json(const analysis::FuzzReport& f, const std::string& replay, const std::string& events_replay);
 
 /// A solver stage's proof (also inside rule_result_json).
 Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays);

@@ -65,10 +65,13 @@ std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& resul
 
 std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results) {
   std::vector<std::string> lines;
-  for (const auto& r : results)
+  for (const auto& r : results) {
     for (const auto& m : r.mismatches)
       lines.push_back(
           printable(fmt::format("{}: error: {}: {}{}", r.entry->location.str(), r.name(), m.rfind("SOUNDNESS", 0) == 0 ? "" : "MISMATCH: ", m)));
+    if (r.events_contradicted())
+      lines.push_back(printable(fmt::format("{}: error: {}: {}", r.entry->location.str(), r.name(), event_outcome_text(*r.fuzz))));
+  }
   return lines;
 }
 
@@ -91,6 +94,15 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
   for (const auto& result : results) {
     const auto& r = *result.fuzz;
     out += fmt::format("{:<{}}  {:<18} {}\n", printable(result.name()), width, result.verdict_text(), outcome_text(r));
+    if (r.event_contradiction) {
+      const auto& ev = *r.event_contradiction;
+      out += fmt::format("{:<{}}  {} (found in {}; a defect of dartcheck's event analysis, not of the rule)\n", "", width,
+                         printable(event_outcome_text(r)), ev.origin);
+      for (std::size_t e = 1; e < ev.event_contradictions.size() && e < 4; ++e)
+        out += fmt::format("{:<{}}  and: {}\n", "", width, printable(ev.event_contradictions[e]));
+      if (ev.event_contradictions.size() > 4) out += fmt::format("{:<{}}  and {} more\n", "", width, ev.event_contradictions.size() - 4);
+      if (!result.events_replay.empty()) out += fmt::format("{:<{}}  replay: {}\n", "", width, printable(result.events_replay));
+    }
     if (!r.counterexample) continue;
     const auto& cx = *r.counterexample;
     out += fmt::format("{:<{}}  found in {}\n", "", width, cx.origin);
@@ -103,10 +115,12 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
     else if (!result.entry->terms)
       out += fmt::format("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
   }
-  const std::size_t bugs = classes[FuzzClass::soundness_bug];
-  out += fmt::format("\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}; {} applications in {:.1f} s ({:.0f}/s); seed {}\n",
-                     results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs,
-                     bugs == 1 ? "" : "s", applications, run.seconds, run.seconds > 0 ? double(applications) / run.seconds : 0.0, run.seed);
+  const std::size_t bugs = classes[FuzzClass::soundness_bug], contradicted = count_results(results).events_contradicted;
+  out += fmt::format(
+      "\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}, {} event analys{} contradicted; {} applications in {:.1f} s "
+      "({:.0f}/s); seed {}\n",
+      results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs, bugs == 1 ? "" : "s",
+      contradicted, contradicted == 1 ? "is" : "es", applications, run.seconds, run.seconds > 0 ? double(applications) / run.seconds : 0.0, run.seed);
   if (const auto line = mismatch_summary(results); !line.empty()) out += line + "\n";
   return out;
 }
