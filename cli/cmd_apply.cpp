@@ -13,6 +13,7 @@
 #include "generators/mesh_map.hpp"
 #include "generators/random_embedding.hpp"
 #include "cli/commands.hpp"
+#include "cli/options.hpp"
 #include "cli/report_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "io/catalog.hpp"
@@ -21,6 +22,7 @@
 #include "io/map_io.hpp"
 #include "io/jerboa_jba.hpp"
 #include "rewriting/application.hpp"
+#include "inference/kappa_file.hpp"
 
 namespace dartcheck::cli {
 
@@ -88,6 +90,25 @@ int apply_terms(const ApplyOptions& o, const CatalogRule& rule, Map map) {
   return report.valid() && consistent ? ok : violation;
 }
 
+// The preserved darts' correspondence G -> H: said when ids moved (the
+// compaction after a deletion), written with --kappa-out.
+void write_kappa(const ApplyOptions& o, const Renumbering& c, std::size_t g_size) {
+  std::vector<std::pair<Dart, Dart>> pairs;
+  std::size_t moved = 0;
+  for (Dart d = 0; d < g_size; ++d)
+    if (const Dart e = c.to_h(d); e != no_dart) {
+      pairs.emplace_back(d, e);
+      moved += e != d;
+    }
+  if (moved)
+    fmt::print("darts renumbered: {} of the {} preserved darts have another id in the result{}\n", moved, pairs.size(),
+               o.kappa_out.empty() ? " (--kappa-out FILE writes the correspondence for infer --kappa)" : "");
+  if (o.kappa_out.empty()) return;
+  write_file(o.kappa_out, inference::kappa_file_text(pairs, {"The dart correspondence of one application (dartcheck apply --kappa-out):",
+                                                             "before dart (host), after dart (result), for every preserved dart."}));
+  fmt::print("written: {} ({} preserved darts)\n", o.kappa_out, pairs.size());
+}
+
 // -o X.jba: the result as a Jerboa G-map, with the embeddings a .jba input
 // carried. A topological rule computes no values: preserved and unmatched
 // darts keep theirs (through the dart correspondence of the application,
@@ -119,6 +140,7 @@ int apply_to_jba(const ApplyOptions& o, const CatalogRule& rule, Map map) {
   }
   const auto report = check_map(map);
   print_validity(stdout, map, report, o.limit);
+  write_kappa(o, c, before.size());
   std::ostringstream text;  // refused (not an n-G-map) before a file exists
   write_jba(text, out, o.output);
   write_file(o.output, text.str());
@@ -136,6 +158,8 @@ int apply(const ApplyOptions& o) {
     throw InputError(
         "<command line>", 0, 0,
         fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or OFF/OBJ meshes (.off, .obj)", o.output));
+  for (const auto* out : {&o.output, &o.kappa_out})
+    if (!out->empty()) check_writable(*out);  // before the work, not after it
   const Catalog catalog = read_catalog(o.catalog);
   const CatalogRule* rule = catalog.find_rule(o.rule);
   if (!rule) throw InputError(o.catalog, 0, 0, fmt::format("no rule named '{}'", o.rule));
@@ -143,8 +167,10 @@ int apply(const ApplyOptions& o) {
   if (!(map.model() == rule->rule.model()))
     throw InputError("<command line>", 0, 0,
                      fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, map.model().name, o.rule, rule->rule.model().name));
+  check_hook_count(*rule, o.hooks);
   fmt::print("rule: {} ({})\nhost: {}\n", o.rule, rule->rule.model().name, describe_target(o.map, map));
   if (rule->terms) {
+    if (!o.kappa_out.empty()) throw InputError("<command line>", 0, 0, "--kappa-out: for topological rules (infer reads G-maps without values)");
     if (jba_out) throw InputError("<command line>", 0, 0, "-o: an embedded rule's result is written as YAML (its values are printed); use .yaml");
     return apply_terms(o, *rule, std::move(map));
   }
@@ -156,6 +182,7 @@ int apply(const ApplyOptions& o) {
                                  o.output, o.rule));
   // A DPO rule matched from the hooks, or a scheme instantiated on the
   // hooks' pattern graph (002 Sec. 6.3).
+  const std::size_t before_size = map.size();
   auto result = dartcheck::apply(*rule, map, o.hooks);
   if (!result.ok()) {
     fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
@@ -178,6 +205,7 @@ int apply(const ApplyOptions& o) {
     write_file(o.output, text.str());
     fmt::print("written: {}\n", o.output);
   }
+  write_kappa(o, a.renumbering(rule->rule, map.size()), before_size);
   return report.valid() ? ok : violation;
 }
 

@@ -8,7 +8,8 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "cli/report_text.hpp"
-#include "reports/json_document.hpp"
+#include "reports/events_report.hpp"
+#include "checkers/map_validity.hpp"
 #include "core/input_error.hpp"
 #include "events/cross_check.hpp"
 
@@ -32,95 +33,43 @@ std::vector<OrbitKind> requested_kinds(const std::vector<std::string>& texts, co
   return out;
 }
 
-struct AppliedMaps {
-  Map before, after;
-  dartcheck::Application trace;
-};
-
-struct KindResult {
-  KindEvents statics;
-  std::optional<EventLog> instantiated, dynamic;
-  std::optional<CrossCheck> check;
-};
-
-void print_text(const CatalogRule& rule, const EventRule& view, const std::vector<KindResult>& results, const std::string& where) {
-  fmt::print("rule {} ({}{})\n", rule.rule.name(), rule.rule.model().name,
-             view.is_scheme() ? fmt::format(", scheme on <{}>", fmt::join(view.parameter, ",")) : ", DPO rule");
-  for (const KindResult& r : results) {
-    const KindEvents& k = r.statics;
-    fmt::print("  {}\n", k.kind.str());
-    for (int side = 0; side < 2; ++side) {
-      const SideOrbits& so = side == 0 ? k.left : k.right;
-      for (int o = 0; o < static_cast<int>(so.orbits.size()); ++o) {
-        std::vector<std::string> events;
-        for (const EventClaim& c : k.claims)
-          if (c.orbit == o && (c.event == Event::creation) == (side == 1)) events.push_back(claim_summary(view, k, c));
-        if (side == 1 && events.empty()) continue;  // right orbits matter for creations only
-        const RuleOrbit& ro = so.orbits[static_cast<std::size_t>(o)];
-        fmt::print("    {:<22} {:<10} {}\n", rule_orbit_name(view, k, side == 0, o), ro.complete ? "complete" : "incomplete",
-                   events.empty() ? "-" : fmt::format("{}", fmt::join(events, "; ")));
-        if (!ro.complete) fmt::print("    {:<22} {:<10} ({})\n", "", "", fmt::join(ro.missing, "; "));
-      }
-    }
-    if (!r.instantiated) continue;
-    fmt::print("    event log at {}:\n", where);
-    for (const LoggedEvent& e : r.instantiated->events) fmt::print("      {}\n", event_line(k.kind, e));
-    if (r.instantiated->events.empty()) fmt::print("      (nothing matched changes)\n");
-    if (!r.check) continue;
-    fmt::print("    dynamic detection: {}\n", r.dynamic->events == r.instantiated->events ? "the same log" : "DIFFERS");
-    for (const auto& s : r.check->resolutions) fmt::print("      resolved: {}\n", s);
-    for (const auto& s : r.check->contradictions) fmt::print("      CONTRADICTION: {}\n", s);
+// G => H at the hooks, with H's validity; or why the rule did not apply.
+reports::EventsApplication apply_at(const EventsOptions& o, const CatalogRule& rule, const Catalog& catalog) {
+  check_hook_count(rule, o.hooks);
+  Map g = resolve_map(o.map, rule.rule.model(), &catalog);
+  if (!(g.model() == rule.rule.model()))
+    throw InputError("<command line>", 0, 0,
+                     fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule, rule.rule.model().name));
+  reports::EventsApplication a{describe_target(o.map, g), o.hooks, {}, {}, g, g, {}, {}};
+  auto traced = dartcheck::apply(rule, a.after, o.hooks);
+  if (!traced.ok()) {
+    a.refusal = refusal_name(traced.refusal);
+    a.why = traced.why;
+    return a;
   }
+  a.trace = std::move(*traced.value);
+  a.validity = check_map(a.after);
+  return a;
 }
 
-reports::Json json_log(const OrbitKind& kind, const EventLog& log) {
-  std::vector<std::string> lines;
-  for (const auto& e : log.events) lines.push_back(event_line(kind, e));
-  return lines;
-}
-
-reports::Json json_rule(const CatalogRule& rule, const EventRule& view, const std::vector<KindResult>& results) {
-  using reports::Json;
-  Json kinds = Json::array();
-  for (const KindResult& r : results) {
-    const KindEvents& k = r.statics;
-    auto orbits = [&](bool left) {
-      Json out = Json::array();
-      const SideOrbits& so = left ? k.left : k.right;
-      const TopoGraph& g = left ? rule.rule.left() : rule.rule.right();
-      for (const RuleOrbit& o : so.orbits) {
-        std::vector<std::string> names;
-        for (NodeId v : o.nodes) names.push_back(g.name(v));
-        out.push_back(Json{{"nodes", names}, {"complete", o.complete}, {"missing", o.missing}});
-      }
-      return out;
-    };
-    Json claims = Json::array();
-    for (const EventClaim& c : k.claims)
-      claims.push_back(Json{{"event", event_name(c.event)},
-                            {"certainty", certainty_name(c.certainty)},
-                            {"side", c.event == Event::creation ? "R" : "L"},
-                            {"orbit", c.orbit},
-                            {"implicit", c.implicit},
-                            {"position", c.position},
-                            {"others", c.others},
-                            {"reason", c.reason}});
-    Json kind{{"orbit_type", k.kind.str()}, {"left", orbits(true)}, {"right", orbits(false)}, {"events", std::move(claims)}};
-    if (r.instantiated) {
-      kind["log"] = json_log(k.kind, *r.instantiated);
-      if (r.check) {
-        kind["dynamic_log"] = json_log(k.kind, *r.dynamic);
-        kind["contradictions"] = r.check->contradictions;
-        kind["resolutions"] = r.check->resolutions;
+// The events of `rule` on `kinds`, and with an application its logs
+// (and with --dynamic the labeling's log and the cross-check).
+std::vector<reports::KindEventsResult> analyse(const EventRule& view, const CatalogRule& rule, const std::vector<OrbitKind>& kinds,
+                                               const std::optional<reports::EventsApplication>& app, bool dynamic) {
+  std::vector<reports::KindEventsResult> out;
+  for (const OrbitKind& kind : kinds) {
+    reports::KindEventsResult r{static_events(view, kind), {}, {}, {}, {}};
+    if (app && app->applied()) {
+      r.instantiated = instantiated_log(app->before, app->after, view, r.statics, *app->trace);
+      r.rule_orbits = event_rule_orbits(view, r.statics, app->before, app->after, *app->trace, *r.instantiated);
+      if (dynamic) {
+        r.dynamic = dynamic_log(app->before, app->after, rule.rule, *app->trace, kind);
+        r.check = cross_check(view, r.statics, app->before, app->after, *app->trace, *r.dynamic, *r.instantiated);
       }
     }
-    kinds.push_back(std::move(kind));
+    out.push_back(std::move(r));
   }
-  return Json{{"rule", rule.rule.name()},
-              {"model", rule.rule.model().name},
-              {"analysed", true},
-              {"parameter", view.parameter},
-              {"orbit_types", std::move(kinds)}};
+  return out;
 }
 
 }  // namespace
@@ -158,40 +107,17 @@ int events_command(const EventsOptions& o) {
       continue;
     }
     ++analysed;
-    std::optional<AppliedMaps> app;
-    std::string where;
-    if (!o.map.empty()) {
-      Map g = resolve_map(o.map, rule.rule.model(), &catalog);
-      if (!(g.model() == rule.rule.model()))
-        throw InputError("<command line>", 0, 0,
-                         fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule, rule.rule.model().name));
-      Map h = g;
-      auto traced = dartcheck::apply(rule, h, o.hooks);
-      if (!traced.ok()) {
-        fmt::print("rule {} does not apply at hook(s) {} of {} ({}): {}\n", rule.rule.name(), fmt::join(o.hooks, ","), describe_target(o.map, g),
-                   refusal_name(traced.refusal), traced.why);
-        return violation;
-      }
-      where = fmt::format("hook {} of {} -> {} darts", fmt::join(o.hooks, ","), describe_target(o.map, g), h.size());
-      app.emplace(AppliedMaps{std::move(g), std::move(h), std::move(*traced.value)});
-    }
-    std::vector<KindResult> results;
-    for (const OrbitKind& kind : kinds) {
-      KindResult r{static_events(*view.rule, kind), {}, {}, {}};
-      if (app) {
-        r.instantiated = instantiated_log(app->before, app->after, *view.rule, r.statics, app->trace);
-        if (o.dynamic) {
-          r.dynamic = dynamic_log(app->before, app->after, rule.rule, app->trace, kind);
-          r.check = cross_check(*view.rule, r.statics, app->before, app->after, app->trace, *r.dynamic, *r.instantiated);
-          if (!r.check->contradictions.empty()) status = soundness_bug;
-        }
-      }
-      results.push_back(std::move(r));
-    }
+    reports::RuleEvents r{&rule, &*view.rule, {}, {}};
+    if (!o.map.empty()) r.application = apply_at(o, rule, catalog);
+    r.kinds = analyse(*view.rule, rule, kinds, r.application, o.dynamic);
+    // A rule that does not apply, or an H that is no map of the model: exit 1, as apply.
+    if (r.application && (!r.application->applied() || !r.application->validity.valid())) status = std::max(status, int(violation));
+    for (const auto& k : r.kinds)
+      if (k.check && !k.check->contradictions.empty()) status = soundness_bug;
     if (json)
-      json_rules.push_back(json_rule(rule, *view.rule, results));
+      json_rules.push_back(reports::events_json(r));
     else
-      print_text(rule, *view.rule, results, where);
+      fmt::print("{}", reports::events_text(r));
   }
   if (analysed == 0 && first_orbit_error) throw InputError("<command line>", 0, 0, first_orbit_error->substr(first_orbit_error->find("--orbit")));
   if (json) {

@@ -1,7 +1,9 @@
 // dartcheck infer: one before/after example -> the Jerboa-style rule scheme
 // that performs it (000), checked by the static checker (Sec. 8.2) and
 // applied back to the example (App. A).
+#include <algorithm>
 #include <sstream>
+#include <unordered_map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -11,7 +13,9 @@
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
 #include "cli/report_text.hpp"
-#include "reports/json_document.hpp"
+#include "reports/infer_report.hpp"
+#include "checkers/map_validity.hpp"
+#include "io/jerboa_jba.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "inference/infer.hpp"
@@ -27,35 +31,6 @@ using namespace inference;
 namespace {
 
 InputError command_line(const std::string& what) { return InputError("<command line>", 0, 0, what); }
-
-std::string outcome(const Attempt& a) {
-  if (a.failure) return fmt::format("{}: {}", failure_name(a.failure->kind), a.failure->text);
-  if (!a.not_a_rule.empty()) return a.not_a_rule;
-  if (!a.ill_formed.empty()) return fmt::format("ill-formed, discarded (Sec. 8.2): {} fail", fmt::join(a.ill_formed, ", "));
-  if (a.duplicate_of >= 0) return "the same scheme as an earlier start";
-  if (a.verification && !a.verification->holds) return fmt::format("VERIFICATION FAILED (App. A): {}", a.verification->why);
-  return "inferred, well-formed, verified on the example (App. A)";
-}
-
-std::string side_text(const TopoGraph& g, const std::vector<ConjWord>& words, const std::vector<OrbitType>& labels) {
-  std::vector<std::string> nodes, arcs;
-  for (NodeId v = 0; v < g.node_count(); ++v) nodes.push_back(fmt::format("{} {}", g.name(v), orbit_type_str(labels[v])));
-  for (ArcId e = 0; e < g.arc_count(); ++e) {
-    const auto& a = g.arc(e);
-    if (!arc_word(words, e).empty() || a.source > a.target) continue;
-    arcs.push_back(fmt::format("{} -{}- {}", g.name(a.source), a.label, g.name(a.target)));
-  }
-  return fmt::format("{}{}", fmt::join(nodes, ", "), arcs.empty() ? "" : fmt::format("; arcs {}", fmt::join(arcs, ", ")));
-}
-
-std::string undecided_text(const GraphScheme& s, const InferredRule* rule) {
-  std::vector<std::string> out;
-  for (const auto& u : s.undecided)
-    out.push_back(fmt::format("{}{} position {} (dimension {}) -> {}", rule ? "" : "folding node ",
-                              rule ? rule->names[static_cast<std::size_t>(u.node)] : fmt::format("n{}", u.node), u.position, s.orbit[u.position],
-                              u.chosen ? std::to_string(*u.chosen) : std::string("_ with explicit loops")));
-  return fmt::format("{}", fmt::join(out, "; "));
-}
 
 void write_output(const InferCommand& o, const KappaGraph& graph, const std::vector<Attempt>& attempts) {
   std::vector<const Attempt*> found;
@@ -93,6 +68,31 @@ void write_output(const InferCommand& o, const KappaGraph& graph, const std::vec
   write_file(o.output, catalog_yaml(c, fmt::format("inferred by dartcheck infer: before {}, after {}, orbit {}", o.before, o.after, o.orbit)));
 }
 
+// κ from --kappa. "identity" pairs dart ids: for two Jerboa .jba
+// snapshots the files' own ids (Jerboa keeps them across an operation);
+// for dartcheck's dense maps, indices, which only correspond when no dart
+// was deleted (apply compacts ids then: its --kappa-out writes the pairs).
+std::pair<KappaSpec, std::string> kappa_spec(const InferCommand& o, const Map& before, const Map& after) {
+  if (o.kappa != "identity") return {read_kappa_file(o.kappa, before.model()), o.kappa};
+  KappaSpec spec;
+  if (o.before.ends_with(".jba") && o.after.ends_with(".jba")) {
+    const auto g = read_jba(o.before).ids, h = read_jba(o.after).ids;
+    std::unordered_map<std::string, Dart> index;
+    for (Dart d = 0; d < h.size(); ++d) index.emplace(h[d], d);
+    for (Dart d = 0; d < g.size(); ++d)
+      if (const auto it = index.find(g[d]); it != index.end()) spec.pairs.emplace_back(d, it->second);
+    return {spec, "identity by the .jba files' dart ids"};
+  }
+  if (after.size() < before.size())
+    throw command_line(fmt::format(
+        "--kappa identity: the after map has fewer darts ({}) than the before map ({}), so the operation deleted darts, and dartcheck's maps "
+        "number darts densely: ids moved, and identity would pair the wrong darts. Write the correspondence with `dartcheck apply ... "
+        "--kappa-out KAPPA.yaml` and pass --kappa KAPPA.yaml (or give Jerboa .jba snapshots, whose ids are kept)",
+        after.size(), before.size()));
+  spec.identity = true;
+  return {spec, "identity: same dart index"};
+}
+
 }  // namespace
 
 int infer(const InferCommand& o) {
@@ -126,11 +126,20 @@ int infer(const InferCommand& o) {
   } catch (const std::invalid_argument& e) {
     throw command_line(fmt::format("--orbit: {}", e.what()));
   }
-  KappaSpec spec;
-  if (o.kappa == "identity")
-    spec.identity = true;
-  else
-    spec = read_kappa_file(o.kappa, before.model());
+  // Both maps must be maps of the model: a folding of an invalid example
+  // "verifies" a rule whose catalog then fails `run`.
+  for (const auto& [what, map] : {std::pair<std::string, const Map*>{o.before, &before}, {o.after, &after}}) {
+    const auto report = check_map(*map);
+    if (report.valid()) continue;
+    std::vector<std::string> lines;
+    for (std::size_t k = 0; k < report.violations.size() && k < 5; ++k)
+      lines.push_back(describe(report.violations[k], fmt::format("dart {}", report.violations[k].element)));
+    throw InputError(
+        what, 0, 0,
+        fmt::format("not a valid {} ({} violation{}: {}{}): inference needs two maps of the model", map->model().name, report.violations.size(),
+                    report.violations.size() == 1 ? "" : "s", fmt::join(lines, "; "), report.violations.size() > 5 ? "; ..." : ""));
+  }
+  const auto [spec, kappa_text] = kappa_spec(o, before, after);
   const std::size_t g_size = before.size(), h_size = after.size();
   std::optional<KappaGraph> graph;
   try {
@@ -149,59 +158,22 @@ int infer(const InferCommand& o) {
   } catch (const std::invalid_argument& e) {
     throw command_line(fmt::format("--start: {}", e.what()));
   }
-  int inferred = 0, contradictions = 0;
-  for (const auto& a : attempts) {
-    inferred += a.inferred();
-    contradictions += a.verification && !a.verification->holds;
+  const reports::InferRun run{o.before,           o.after,   orbit_type_str(OrbitType(orbit.begin(), orbit.end())), g_size, h_size,
+                              graph->preserved(), kappa_text};
+  if (o.format == "json")
+    fmt::print("{}\n", reports::json_text(reports::infer_document(run, *graph, attempts)));
+  else
+    fmt::print("{}", reports::infer_text(run, attempts));
+  const auto inferred = std::count_if(attempts.begin(), attempts.end(), [](const Attempt& a) { return a.inferred(); });
+  const bool contradiction = std::any_of(attempts.begin(), attempts.end(), [](const Attempt& a) { return a.verification && !a.verification->holds; });
+  // Nothing is written when nothing was inferred: an empty catalog is not a result.
+  if (!o.output.empty() && inferred > 0) {
+    write_output(o, *graph, attempts);
+    fmt::print(o.format == "json" ? stderr : stdout, "written: {} ({} rule{})\n", o.output, inferred, inferred == 1 ? "" : "s");
+  } else if (!o.output.empty()) {
+    fmt::print(stderr, "not written: {} (no rule inferred)\n", o.output);
   }
-  if (o.format == "json") {
-    using reports::Json;
-    Json rows = Json::array();
-    for (const auto& a : attempts) {
-      Json row{{"start", a.start}, {"outcome", outcome(a)}, {"inferred", a.inferred()}, {"seconds", a.seconds}};
-      if (a.failure)
-        row["failure"] = Json{{"kind", failure_name(a.failure->kind)},
-                              {"node", fmt::format("n{}", a.failure->node)},
-                              {"dimension", a.failure->dim == kappa_arc ? std::string("kappa") : std::to_string(a.failure->dim)},
-                              {"dart", graph->name(a.failure->dart)}};
-      if (a.rule) {
-        const auto& op = a.rule->operation;
-        row["left_nodes"] = op.rule.left().node_count();
-        row["right_nodes"] = op.rule.right().node_count();
-        row["preserved"] = a.rule->preserved;
-        row["left"] = side_text(op.rule.left(), op.words.left, op.jerboa->left);
-        row["right"] = side_text(op.rule.right(), op.words.right, op.jerboa->right);
-      }
-      if (a.scheme && !a.scheme->undecided.empty()) row["undecided"] = undecided_text(*a.scheme, a.rule ? &*a.rule : nullptr);
-      rows.push_back(std::move(row));
-    }
-    Json doc = reports::json_document("infer");
-    doc["orbit"] = o.orbit;
-    doc["before_darts"] = g_size;
-    doc["after_darts"] = h_size;
-    doc["preserved_darts"] = graph->preserved();
-    doc["inferred"] = inferred;
-    doc["attempts"] = std::move(rows);
-    fmt::print("{}\n", reports::json_text(std::move(doc)));
-  } else {
-    fmt::print("infer {} from {} ({} darts) to {} ({} darts), {} preserved darts\n", orbit_type_str(OrbitType(orbit.begin(), orbit.end())), o.before,
-               g_size, o.after, h_size, graph->preserved());
-    for (const auto& a : attempts) {
-      fmt::print("  start {}: {} ({:.3f} ms)\n", a.start, outcome(a), a.seconds * 1e3);
-      if (!a.inferred()) continue;
-      const auto& op = a.rule->operation;
-      fmt::print("    rule {}: |L| = {}, |R| = {}, {} preserved\n", op.rule.name(), op.rule.left().node_count(), op.rule.right().node_count(),
-                 a.rule->preserved);
-      fmt::print("    L: {}\n    R: {}\n", side_text(op.rule.left(), op.words.left, op.jerboa->left),
-                 side_text(op.rule.right(), op.words.right, op.jerboa->right));
-      if (!a.scheme->undecided.empty())
-        fmt::print("    warning: positions the example does not decide (every link of that dimension in the hook orbit is a loop): {}\n",
-                   undecided_text(*a.scheme, &*a.rule));
-    }
-    fmt::print("{} rule(s) inferred from {} start(s)\n", inferred, attempts.size());
-  }
-  if (!o.output.empty()) write_output(o, *graph, attempts);
-  if (contradictions) return 3;
+  if (contradiction) return 3;
   return inferred ? 0 : 1;
 }
 

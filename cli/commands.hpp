@@ -54,7 +54,7 @@ struct DrawMapOptions {
 int draw_map(const DrawMapOptions& o);
 
 struct ApplyOptions {
-  std::string catalog, rule, map, output;
+  std::string catalog, rule, map, output, kappa_out;
   std::vector<Dart> hooks;
   std::size_t limit = 50;
 };

@@ -44,8 +44,10 @@ void add_apply(CLI::App& app, Commands& commands) {
   a->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   a->add_option("--rule", o->rule, "rule name")->required();
   a->add_option("--map", o->map, "catalog map name, map file, mesh or shape")->required();
-  a->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->required()->check(counts());
+  a->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->check(counts());
   a->add_option("-o,--output", o->output, "write the result map (YAML) here");
+  a->add_option("--kappa-out", o->kappa_out,
+                "write the dart correspondence G -> H of the preserved darts here (the κ file `infer --kappa` reads; ids move when darts are deleted)");
   a->add_option("--limit", o->limit, "violations to print (0 = all)")->capture_default_str()->check(counts());
   commands.push_back({a, [o] { return cli::apply(*o); }});
 }

@@ -5,6 +5,7 @@
 #include "reports/rule_result_text.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/input_error.hpp"
 
@@ -32,6 +33,17 @@ double parse_duration(const std::string& text, const std::string& option) {
   if (used == 0 || scale < 0 || !(v > 0))
     throw InputError("<command line>", 0, 0, fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, text));
   return v * scale;
+}
+
+void check_hook_count(const CatalogRule& rule, const std::vector<Dart>& hooks) {
+  const auto& want = rule.rule.hooks();
+  if (hooks.size() == want.size()) return;
+  std::vector<std::string> names;
+  for (NodeId h : want) names.push_back(rule.rule.left().name(h));
+  throw InputError("<command line>", 0, 0,
+                   want.empty() ? fmt::format("--hook: rule '{}' has no hook (L is empty or matched as a whole): give no --hook", rule.rule.name())
+                                : fmt::format("--hook: rule '{}' has {} hook{} ({}), {} given: one --hook dart each, in that order", rule.rule.name(),
+                                              want.size(), want.size() == 1 ? "" : "s", fmt::join(names, ", "), hooks.size()));
 }
 
 int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected) {

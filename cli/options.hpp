@@ -16,6 +16,10 @@ Catalog read_command_catalog(const std::string& file, const std::string& rule, c
 /// InputError naming `option` otherwise.
 double parse_duration(const std::string& text, const std::string& option);
 
+/// --hook gives one dart per hook of the rule (none for a rule without
+/// hooks); InputError naming the hooks otherwise.
+void check_hook_count(const CatalogRule& rule, const std::vector<Dart>& hooks);
+
 /// The end of a run of check, fuzz, prove or report: prints the baseline's
 /// disagreements and every mismatch line on stderr, says how many of
 /// `selected` rules finished if a signal stopped the run, and returns the

@@ -10,15 +10,6 @@
 namespace dartcheck::events {
 namespace {
 
-std::vector<Dart> representatives(const Map& m, const OrbitKind& kind) {
-  std::vector<Dart> rep(m.size(), no_dart);
-  OrbitWalker walker(m);
-  for (Dart d = 0; d < m.size(); ++d)
-    if (rep[d] == no_dart)
-      for (Dart e : walker.orbit(d, kind.generators)) rep[e] = d;
-  return rep;
-}
-
 bool involves(const LoggedEvent& e, bool before, Dart rep) {
   const auto& v = before ? e.before : e.after;
   return std::find(v.begin(), v.end(), rep) != v.end();
@@ -41,7 +32,7 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
   }
   const Rule& rule = *r.rule;
   const Renumbering c = t.renumbering(rule, h.size());
-  const std::vector<Dart> grep = representatives(g, k.kind), hrep = representatives(h, k.kind);
+  const std::vector<Dart> grep = orbit_representatives(g, k.kind), hrep = orbit_representatives(h, k.kind);
   // The G orbits each left rule orbit touches, and the H orbits of each right one.
   std::vector<std::set<Dart>> touched_g(k.left.orbits.size()), touched_h(k.right.orbits.size());
   std::set<Dart> matched_g;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <map>
+#include <set>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -261,6 +263,36 @@ std::string event_line(const OrbitKind& kind, const LoggedEvent& e) {
     default:
       return fmt::format("{} {} -> {}", event_name(e.event), names('G', e.before), names('H', e.after));
   }
+}
+
+std::vector<Dart> orbit_representatives(const Map& m, const OrbitKind& kind) {
+  std::vector<Dart> rep(m.size(), no_dart);
+  OrbitWalker walker(m);
+  for (Dart d = 0; d < m.size(); ++d)
+    if (rep[d] == no_dart)
+      for (Dart e : walker.orbit(d, kind.generators)) rep[e] = d;
+  return rep;
+}
+
+std::vector<std::vector<std::string>> event_rule_orbits(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t,
+                                                        const EventLog& log) {
+  const std::vector<Dart> grep = orbit_representatives(g, k.kind), hrep = orbit_representatives(h, k.kind);
+  std::map<Dart, std::set<int>> left, right;  // orbit representative -> rule orbits
+  for (NodeId v = 0; v < t.match.size(); ++v)
+    for (Dart d : t.match[v]) left[grep[d]].insert(k.left.orbit_of[v]);
+  for (NodeId w = 0; w < t.comatch.size(); ++w)
+    for (Dart d : t.comatch[w]) right[hrep[d]].insert(k.right.orbit_of[w]);
+  std::vector<std::vector<std::string>> out;
+  for (const LoggedEvent& e : log.events) {
+    std::set<int> orbits;
+    const bool creation = e.event == Event::creation;
+    for (Dart rep : creation ? e.after : e.before)
+      if (const auto& index = creation ? right : left; index.count(rep)) orbits.insert(index.at(rep).begin(), index.at(rep).end());
+    std::vector<std::string> names;
+    for (int o : orbits) names.push_back(rule_orbit_name(r, k, !creation, o));
+    out.push_back(std::move(names));
+  }
+  return out;
 }
 
 }  // namespace dartcheck::events

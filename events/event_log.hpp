@@ -47,6 +47,15 @@ EventLog dynamic_log(const Map& g, const Map& h, const Rule& rule, const Applica
 /// orbits of incomplete rule orbits are read.
 EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const KindEvents& k, const Application& t);
 
+/// Each dart's orbit, named by its smallest dart (004 Sec. 5).
+std::vector<Dart> orbit_representatives(const Map& m, const OrbitKind& kind);
+
+/// The rule orbits each event of `log` concerns, named as rule_orbit_name
+/// names them: the left orbits with a matched dart in its G orbits, and
+/// for a creation the right orbits with a comatched dart in its H orbit.
+std::vector<std::vector<std::string>> event_rule_orbits(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t,
+                                                        const EventLog& log);
+
 /// "split G<1>(4) -> {H<1>(4), H<1>(17)}" (Table 1's notation).
 std::string event_line(const OrbitKind& kind, const LoggedEvent& e);
 

@@ -42,6 +42,20 @@ Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart sta
       if (a.ill_formed.empty() && options.verify) a.verification = verify(graph, *a.scheme, *a.rule, start);
     }
   }
+  a.does_nothing = a.rule && does_nothing(a.rule->operation);
+  // Keeping undecided positions (the paper's relabeling) on an example
+  // whose i-links are all loops can give the identity: an isolated square
+  // "unsewn" along 2 is the same square. Freeing them gives the rule a
+  // Jerboa user means (its unsew: i -> _ with an explicit i-loop).
+  if (a.does_nothing && a.scheme && !a.scheme->undecided.empty() && options.fold.undecided == UndecidedPolicy::keep && !options.fold.strict) {
+    InferOptions freed = options;
+    freed.fold.undecided = UndecidedPolicy::free;
+    Attempt b = attempt(graph, orbit, start, freed, name, scratch);
+    if (b.inferred()) {
+      b.freed_undecided = true;
+      a = std::move(b);
+    }
+  }
   a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return a;
 }

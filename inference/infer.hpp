@@ -25,8 +25,14 @@ struct Attempt {
   std::vector<std::string> ill_formed;       // failing conditions (Sec. 8.2), empty if well-formed
   std::optional<Verification> verification;  // App. A, for well-formed rules
   int duplicate_of = -1;                     // index of an earlier attempt with the same scheme
+  /// The positions the example does not decide were freed (i -> _ with
+  /// explicit loops) because keeping them gave a rule that does nothing.
+  bool freed_undecided = false;
+  /// The rule rewrites every match into itself (L = R): the example does
+  /// not show the operation. Never counted as inferred.
+  bool does_nothing = false;
   double seconds = 0;
-  bool inferred() const { return rule && ill_formed.empty() && duplicate_of < 0 && verification && verification->holds; }
+  bool inferred() const { return rule && ill_formed.empty() && duplicate_of < 0 && verification && verification->holds && !does_nothing; }
 };
 
 struct InferOptions {

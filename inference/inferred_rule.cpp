@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <set>
+#include <tuple>
 #include <stdexcept>
 
 namespace dartcheck::inference {
@@ -118,6 +120,28 @@ std::string canonical_form(const GraphScheme& scheme) {
     s += fmt::format(";{}{}{}", m, scheme.nodes[m].after ? 'R' : 'L', orbit_type_str(scheme.nodes[m].label));
   for (const auto& a : scheme.arcs) s += fmt::format(";{}-{}-{}", a.a, a.d == kappa_arc ? std::string("k") : std::to_string(a.d), a.b);
   return s;
+}
+
+}  // namespace dartcheck::inference
+
+namespace dartcheck::inference {
+
+bool does_nothing(const Operation& op) {
+  if (!op.jerboa) return false;
+  const Rule& r = op.rule;
+  if (r.left().node_count() != r.right().node_count()) return false;
+  for (NodeId v = 0; v < r.left().node_count(); ++v) {
+    const NodeId w = r.to_right(v);
+    if (w == no_node || op.jerboa->left[v] != op.jerboa->right[w]) return false;
+  }
+  // Explicit arcs (those without a word), by node names.
+  auto arcs = [](const TopoGraph& g, const std::vector<ConjWord>& words) {
+    std::multiset<std::tuple<std::string, std::string, Dim>> out;
+    for (ArcId e = 0; e < g.arc_count(); ++e)
+      if (arc_word(words, e).empty()) out.emplace(g.name(g.arc(e).source), g.name(g.arc(e).target), g.arc(e).label);
+    return out;
+  };
+  return arcs(r.left(), op.words.left) == arcs(r.right(), op.words.right);
 }
 
 }  // namespace dartcheck::inference

@@ -41,6 +41,10 @@ RuleOrWhy to_rule(const GraphScheme& scheme, const Model& model, const std::stri
 /// and sides kept. Used to deduplicate multi-start results (000 Sec. 10.3).
 std::string canonical_form(const GraphScheme& scheme);
 
+/// True when the rule rewrites every match into itself: every node
+/// preserved with the same label, the same explicit arcs on both sides.
+bool does_nothing(const Operation& op);
+
 /// The same for any Jerboa-style rule with one hook, independent of node
 /// names and arc order: nodes numbered breadth-first from the hook (explicit
 /// arcs by ascending dimension, then the node of the same name on the other

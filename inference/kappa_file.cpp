@@ -58,4 +58,12 @@ KappaSpec read_kappa_file(const std::string& file, const Model& model) {
   return spec;
 }
 
+std::string kappa_file_text(const std::vector<std::pair<Dart, Dart>>& pairs, const std::vector<std::string>& comment) {
+  std::string out;
+  for (const auto& line : comment) out += fmt::format("# {}\n", line);
+  out += "pairs: [";
+  for (std::size_t k = 0; k < pairs.size(); ++k) out += fmt::format("{}[{}, {}]", k ? ", " : "", pairs[k].first, pairs[k].second);
+  return out + "]\n";
+}
+
 }  // namespace dartcheck::inference

@@ -16,4 +16,8 @@ namespace dartcheck::inference {
 
 KappaSpec read_kappa_file(const std::string& file, const Model& model);
 
+/// The text of a κ file of explicit pairs (before dart, after dart), which
+/// read_kappa_file reads back; `comment` goes first, one "# " line each.
+std::string kappa_file_text(const std::vector<std::pair<Dart, Dart>>& pairs, const std::vector<std::string>& comment);
+
 }  // namespace dartcheck::inference

@@ -59,9 +59,12 @@ std::string catalog_yaml(const Catalog& c, const std::string& description) {
   if (!c.modeler.empty()) y << YAML::Key << "modeler" << YAML::Value << c.modeler;
   y << YAML::Key << "description" << YAML::Value << (description.empty() ? fmt::format("converted by dartcheck from {}", c.file) : description);
   // Models that are not presets are declared, so the catalog reads back.
-  std::vector<const Model*> custom;
-  for (const auto& r : c.rules) {
-    const Model& m = r.rule.model();
+  std::vector<const Model*> models, custom;
+  for (const auto& r : c.rules) models.push_back(&r.rule.model());
+  for (const auto& m : c.maps)
+    if (m.map) models.push_back(&m.map->model());
+  for (const Model* model : models) {
+    const Model& m = *model;
     const auto preset = Model::by_name(m.name);
     if ((!preset || !(*preset == m)) && std::none_of(custom.begin(), custom.end(), [&](const Model* x) { return x->name == m.name; }))
       custom.push_back(&m);
@@ -90,7 +93,13 @@ std::string catalog_yaml(const Catalog& c, const std::string& description) {
   if (explicit_maps) {
     y << YAML::Key << "maps" << YAML::Value << YAML::BeginMap;
     for (const auto& m : c.maps)
-      if (m.map) y << YAML::Key << m.name << YAML::Value << YAML::Load(map_to_yaml(*m.map));
+      if (m.map) {
+        // A map file names a custom model in full; in a catalog the
+        // `models` section above declares it, and maps name it.
+        YAML::Node node = YAML::Load(map_to_yaml(*m.map));
+        node["model"] = m.map->model().name;
+        y << YAML::Key << m.name << YAML::Value << node;
+      }
     y << YAML::EndMap;
   }
   if (!c.embeddings.empty()) {

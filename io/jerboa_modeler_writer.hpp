@@ -1,4 +1,6 @@
-// Writes Jerboa-style rule schemes as a Jerboa modeler editor file (.jme),
+// Writes Jerboa-style rule schemes as a Jerboa modeler editor file (.jme)
+// with the elements and attributes Jerboa's editor writes (node positions,
+// paramstopo, modeler attributes),
 // the format io/jerboa_modeler.hpp reads: node labels positional with -1
 // for '_', the first hook of L marked HOOK, explicit arcs as <arc> (one
 // per non-oriented pair) and <arcloop>. Reading the file back gives the

@@ -136,9 +136,16 @@ check_json(["prove", "tests/data/wrong-verdict.yaml", "--format", "json"], 1, "h
 check_json(["events", "catalogs/event-operations.yaml", "--format", "json"], 0, "https://dartcheck.invalid/schema/events.schema.json")
 check_json(["events", "catalogs/event-operations.yaml", "--rule", "delete-edge", "--map", "cube", "--hook", "0", "--dynamic", "--format", "json"],
            0, "https://dartcheck.invalid/schema/events.schema.json")
+check_json(["events", "catalogs/event-operations.yaml", "--rule", "sew2", "--map", "cube", "--hook", "0", "--hook", "1", "--format", "json"], 1,
+           "https://dartcheck.invalid/schema/events.schema.json")
+check_json(["events", "catalogs/seed-operations.yaml", "--rule", "insert-vertex-sewn-edge-one-side", "--map", "cube", "--hook", "0", "--format", "json"], 1,
+           "https://dartcheck.invalid/schema/events.schema.json")
 check_json(["query", "tests/data/cube-5-tets.mesh", "--hex", "--format", "json"], 0, "https://dartcheck.invalid/schema/query.schema.json")
 check_json(["recombine", "tests/data/cube-5-tets.mesh", "--strategy", "greedy", "--format", "json"], 0, "https://dartcheck.invalid/schema/recombine.schema.json")
-check_json(["infer", "--before", "polygon:4", "--after", "polygon:4", "--orbit", "<0,1>", "--format", "json"], 0, "https://dartcheck.invalid/schema/infer.schema.json")
+check_json(["infer", "--before", "polygon:3", "--after", "polygon:6", "--orbit", "<0,1,2>", "--kappa", "tests/data/kappa-edge-split.yaml",
+            "--format", "json"], 0, "https://dartcheck.invalid/schema/infer.schema.json")
+# An example that changes nothing: no rule, exit 1, still a valid document.
+check_json(["infer", "--before", "polygon:4", "--after", "polygon:4", "--orbit", "<0,1>", "--format", "json"], 1, "https://dartcheck.invalid/schema/infer.schema.json")
 
 for f in failures:
     print("FAIL:", f)
