@@ -117,6 +117,55 @@ bool keeps_orbit(const EventRule& r, const OrbitKind& kind, const RuleOrbit& x, 
 
 }  // namespace
 
+// Incomplete orbits are 'potential' because the map's orbit reaches
+// beyond the match (004, end of Sec. 3.2). Two cases are definite anyway
+// (single-letter orbit types). A complete rule orbit matches whole orbits
+// made of its own darts, so the map orbit O of an incomplete X meets only
+// unmatched darts, whose links the rule keeps, and darts of incomplete
+// rule orbits. Hence:
+//  - if every incomplete orbit of <o> keeps its nodes, labels and arcs
+//    (Def. 3.4.2), no link of O changes: X's no-modification is certain;
+//  - if every incomplete orbit has neither split, merge nor deletion, O
+//    neither splits (the preserved nodes of each stay in one right orbit,
+//    so every path of O has a path in H) nor merges, and if X deletes a
+//    node or its right orbit gains a created one, O's darts change: X's
+//    modification is certain (a triangulated face's vertex, 004 Table 1).
+void sharpen_incomplete(const EventRule& r, KindEvents& k) {
+  if (!k.kind.single_letters()) return;
+  const Rule& rule = *r.rule;
+  bool all_keep = true, quiet = true;
+  for (const EventClaim& c : k.claims) {
+    if (c.event == Event::creation || k.left.orbits[static_cast<std::size_t>(c.orbit)].complete) continue;
+    if (c.event == Event::split || c.event == Event::merge || c.event == Event::deletion) quiet = false;
+    if (c.event != Event::non_modification || !c.loop_positions.empty()) all_keep = false;
+  }
+  all_keep = all_keep && quiet;
+  for (EventClaim& c : k.claims) {
+    if (c.event == Event::creation || c.certainty != Certainty::potential) continue;
+    const RuleOrbit& x = k.left.orbits[static_cast<std::size_t>(c.orbit)];
+    if (x.complete) continue;
+    if (c.event == Event::non_modification && c.loop_positions.empty() && all_keep) {
+      c.certainty = Certainty::certain;
+      c.reason +=
+          "; every incomplete orbit of this type keeps its links and complete ones match whole orbits of their own, so no link of the "
+          "map's orbit changes";
+      continue;
+    }
+    const bool only =
+        std::count_if(k.claims.begin(), k.claims.end(), [&](const EventClaim& o) { return o.event != Event::creation && o.orbit == c.orbit; }) == 1;
+    if (c.event != Event::modification || !only || !quiet) continue;
+    std::size_t preserved = 0, right_nodes = 0;
+    for (NodeId v : x.nodes)
+      if (const NodeId w = rule.to_right(v); w != no_node) {
+        ++preserved;
+        right_nodes = k.right.orbits[static_cast<std::size_t>(k.right.orbit_of[w])].nodes.size();
+      }
+    if (preserved == x.nodes.size() && right_nodes == preserved) continue;  // the same nodes: a change of links, maybe none
+    c.certainty = Certainty::certain;
+    c.reason += "; no incomplete orbit of this type splits, merges or is deleted, and this one loses or gains darts, so the map's orbit changes";
+  }
+}
+
 KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
   KindEvents k{kind, side_orbits(r, r.left, kind), side_orbits(r, r.right, kind), {}};
   const Rule& rule = *r.rule;
@@ -277,6 +326,7 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
     }
     k.claims.insert(k.claims.end(), claims.begin(), claims.end());
   }
+  sharpen_incomplete(r, k);
   return k;
 }
 
