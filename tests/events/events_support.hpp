@@ -2,6 +2,7 @@
 // static events, both logs and their cross-check, per orbit type.
 #pragma once
 
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -14,6 +15,13 @@
 #include "io/catalog.hpp"
 
 namespace dartcheck::events::test {
+
+/// How many random maps the event properties draw: DARTCHECK_EVENT_RUNS,
+/// 60 by default (CI); more for a longer search.
+inline int runs() {
+  const char* env = std::getenv("DARTCHECK_EVENT_RUNS");
+  return env ? std::atoi(env) : 60;
+}
 
 inline const Catalog& event_catalog() {
   static const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/event-operations.yaml");

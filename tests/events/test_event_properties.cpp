@@ -28,11 +28,6 @@
 namespace dartcheck::events::test {
 namespace {
 
-int runs() {
-  const char* env = std::getenv("DARTCHECK_EVENT_RUNS");
-  return env ? std::atoi(env) : 60;
-}
-
 struct Subject {
   const Operation* op;
   EventRule view;
