@@ -152,6 +152,7 @@ int infer(const InferCommand& o) {
   options.start = o.start;
   options.all = o.all;
   options.name = o.name;
+  options.generalize = o.generalize;
   std::vector<Attempt> attempts;
   try {
     attempts = infer(*graph, orbit, options);

@@ -90,7 +90,7 @@ int events_command(const EventsOptions& o);
 struct InferCommand {
   std::string before, after, orbit, kappa = "identity", model = "2-gmap", catalog, output, format = "text", undecided = "keep", name = "inferred";
   std::optional<Dart> start;
-  bool all = false, strict = false;
+  bool all = false, strict = false, generalize = false;
 };
 /// Operation inference by folding (000): 0 if a rule was inferred, 1 if
 /// none, 3 if an inferred rule does not give the after map back (App. A).

@@ -46,8 +46,9 @@ void add_apply(CLI::App& app, Commands& commands) {
   a->add_option("--map", o->map, "catalog map name, map file, mesh or shape")->required();
   a->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->check(counts());
   a->add_option("-o,--output", o->output, "write the result map (YAML) here");
-  a->add_option("--kappa-out", o->kappa_out,
-                "write the dart correspondence G -> H of the preserved darts here (the κ file `infer --kappa` reads; ids move when darts are deleted)");
+  a->add_option(
+      "--kappa-out", o->kappa_out,
+      "write the dart correspondence G -> H of the preserved darts here (the κ file `infer --kappa` reads; ids move when darts are deleted)");
   a->add_option("--limit", o->limit, "violations to print (0 = all)")->capture_default_str()->check(counts());
   commands.push_back({a, [o] { return cli::apply(*o); }});
 }
@@ -175,6 +176,9 @@ void add_infer(CLI::App& app, Commands& commands) {
   inf->add_option("--start", o->start, "fold from this dart of the before map only")->check(counts());
   inf->add_flag("--all", o->all, "try every start dart (one per hook orbit) and list every distinct rule");
   inf->add_flag("--strict", o->strict, "the paper's algorithm exactly: one relabeling candidate per position, no retry");
+  inf->add_flag("--generalize", o->generalize,
+                "drop the explicit loops a preserved node has on both sides (free links of the example are left as the host has them); "
+                "kept only if the rule stays consistent and gives the example back. The paper keeps the loops");
   inf->add_option("--undecided", o->undecided,
                   "positions whose links are all loops in the hook orbit: keep (relabel, warn), free (explicit loops) or fail")
       ->capture_default_str();

@@ -1,6 +1,9 @@
 #include "inference/infer.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 
 #include <chrono>
 #include <map>
@@ -20,6 +23,55 @@ std::vector<Dim> parse_inference_orbit(const std::string& text, const Model& mod
 }
 
 namespace {
+
+// The proof obligation of a generalisation is the static checker's (a
+// dropped loop on a deleted or created node would dangle or leave a link
+// undefined; only preserved nodes qualify, and the check decides) and the
+// example's (App. A verification).
+void generalize(const KappaGraph& graph, Attempt& a, const std::string& name) {
+  GraphScheme g = *a.scheme;
+  std::vector<int> partner(g.nodes.size(), -1);  // a preserved node's L and R copies
+  for (const SchemeArc& e : g.arcs)
+    if (e.d == kappa_arc) partner[static_cast<std::size_t>(e.a)] = e.b, partner[static_cast<std::size_t>(e.b)] = e.a;
+  auto has_loop = [&](int node, Dim d) {
+    return std::any_of(g.arcs.begin(), g.arcs.end(), [&](const SchemeArc& e) { return e.a == node && e.b == node && e.d == d; });
+  };
+  std::vector<SchemeArc> kept;
+  std::vector<std::string> dropped;
+  for (const SchemeArc& e : g.arcs) {
+    const int p = e.a >= 0 ? partner[static_cast<std::size_t>(e.a)] : -1;
+    if (e.a == e.b && e.d != kappa_arc && p >= 0 && has_loop(p, e.d)) {
+      if (!g.nodes[static_cast<std::size_t>(e.a)].after)
+        dropped.push_back(fmt::format("{} -{}- {}", a.rule->names[static_cast<std::size_t>(e.a)], e.d, a.rule->names[static_cast<std::size_t>(e.a)]));
+      continue;
+    }
+    kept.push_back(e);
+  }
+  if (dropped.empty()) return;
+  g.arcs = std::move(kept);
+  auto rule = to_rule(g, graph.model(), name);
+  if (!rule.rule) {
+    a.not_generalized = rule.why;
+    return;
+  }
+  const auto verdict = check_rule(rule.rule->operation.rule, rule.rule->operation.words);
+  std::vector<std::string> failing;
+  for (const auto& c : verdict.conditions)
+    if (!c.holds && c.skipped.empty()) failing.push_back(c.name());
+  if (!failing.empty()) {
+    a.not_generalized = fmt::format("without the loops the rule fails {}", fmt::join(failing, ", "));
+    return;
+  }
+  auto check = verify(graph, g, *rule.rule, a.start);
+  if (!check.holds) {
+    a.not_generalized = fmt::format("without the loops the rule does not give the example back: {}", check.why);
+    return;
+  }
+  a.scheme = std::move(g);
+  a.rule = std::move(rule.rule);
+  a.verification = std::move(check);
+  a.generalized = std::move(dropped);
+}
 
 Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const InferOptions& options, const std::string& name,
                 FoldScratch& scratch) {
@@ -56,6 +108,7 @@ Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart sta
       a = std::move(b);
     }
   }
+  if (options.generalize && a.inferred()) generalize(graph, a, name);
   a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return a;
 }

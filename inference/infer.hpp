@@ -31,6 +31,10 @@ struct Attempt {
   /// The rule rewrites every match into itself (L = R): the example does
   /// not show the operation. Never counted as inferred.
   bool does_nothing = false;
+  /// --generalize: the explicit loops dropped from preserved nodes
+  /// ("n1 -1- n1"), or why the generalised rule was refused.
+  std::vector<std::string> generalized;
+  std::string not_generalized;
   double seconds = 0;
   bool inferred() const { return rule && ill_formed.empty() && duplicate_of < 0 && verification && verification->holds && !does_nothing; }
 };
@@ -41,6 +45,12 @@ struct InferOptions {
   bool all = false;           // every dart not already in an attempt's hook orbit
   std::string name = "inferred";
   bool verify = true;
+  /// Drop an explicit i-loop that a preserved node has on both sides: the
+  /// example's free i-link becomes "whatever it is, kept" (Jerboa's rules
+  /// do not mention it), so the rule matches sewn hosts too. Kept only if
+  /// the static checker finds the result consistent and it still gives the
+  /// example back. Not the paper's behaviour (000 folds loops as arcs).
+  bool generalize = false;
 };
 
 /// The attempts, in order. Without `start` or `all`, darts of G are tried

@@ -66,6 +66,10 @@ std::string infer_text(const InferRun& run, const std::vector<Attempt>& attempts
     // Every position the example does not decide is said, whatever became of it.
     if (a.scheme && !a.scheme->undecided.empty())
       out += fmt::format("    undecided (every link of that dimension in the hook orbit is a loop): {}\n", undecided_text(a));
+    if (!a.generalized.empty())
+      out += fmt::format("    generalised: dropped {} (the example's free links are kept as the host has them; the paper keeps explicit loops)\n",
+                         fmt::join(a.generalized, ", "));
+    if (!a.not_generalized.empty()) out += fmt::format("    not generalised: {}\n", a.not_generalized);
     if (a.freed_undecided)
       out +=
           "    freed: keeping the undecided positions gives a rule that does nothing, so they are i -> _ with explicit loops "
@@ -85,6 +89,8 @@ Json infer_document(const InferRun& run, const KappaGraph& graph, const std::vec
              {"inferred", a.inferred()},
              {"does_nothing", a.does_nothing},
              {"freed_undecided", a.freed_undecided},
+             {"generalized", a.generalized},
+             {"not_generalized", a.not_generalized},
              {"seconds", a.seconds}};
     if (a.failure)
       row["failure"] = Json{{"kind", failure_name(a.failure->kind)},
