@@ -49,7 +49,7 @@ std::string counterexample_dot(const Rule& rule, const ArcWords& words, const st
       "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; labelloc=t;\n"
       "  label=<<table border=\"0\"><tr><td>{}</td></tr><tr><td>{}</td></tr></table>>;\n"
       "  node [shape=circle, fontname=\"Helvetica\", fontsize=10, width=0.3]; edge [fontname=\"Helvetica\", fontsize=9];\n{}}}\n",
-      quote(p.title), html_escape(p.title), dimension_legend(p.host->model()), body);
+      quote(p.title), html_text(p.title), dimension_legend(p.host->model()), body);
 }
 
 }  // namespace dartcheck::reports

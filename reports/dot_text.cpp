@@ -19,21 +19,6 @@ std::string quote(std::string_view s) {
   return out + '"';
 }
 
-std::string html_escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else
-      out += c;
-  }
-  return out;
-}
-
 std::string_view dimension_color(Dim d) {
   static constexpr std::array<std::string_view, 8> colors = {"black", "#d32f2f", "#1565c0", "#2e7d32", "#6a1b9a", "#ef6c00", "#00838f", "#795548"};
   return colors[static_cast<std::size_t>(d) % colors.size()];
@@ -43,7 +28,7 @@ std::string dimension_legend(const Model& model) {
   std::string cells;
   for (Dim d : model.dims)
     cells += fmt::format(R"(<td><font color="{}">&#9472;&#9472; {}{}</font></td>)", dimension_color(d), d, model.is_oriented(d) ? " (oriented)" : "");
-  return fmt::format(R"(<table border="0" cellspacing="6"><tr><td>{}</td>{}</tr></table>)", html_escape(model.name), cells);
+  return fmt::format(R"(<table border="0" cellspacing="6"><tr><td>{}</td>{}</tr></table>)", html_text(model.name), cells);
 }
 
 }  // namespace dartcheck::reports

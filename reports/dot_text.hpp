@@ -5,14 +5,12 @@
 #include <string_view>
 
 #include "core/model.hpp"
+#include "reports/html_page.hpp"  // html_text: also the text of Graphviz HTML-like labels
 
 namespace dartcheck::reports {
 
 /// A DOT double-quoted string; a newline becomes DOT's line break "\n".
 std::string quote(std::string_view s);
-
-/// Text for an HTML-like label: &, < and > escaped.
-std::string html_escape(std::string_view s);
 
 /// The papers' colors for links: 0 black, 1 red, 2 blue, 3 green; higher
 /// dimensions get further distinct colors.

@@ -43,12 +43,12 @@ std::string node_label(const std::string& name, const std::string& type, const T
     for (const NodeTerm& t : left ? terms.terms->left : terms.terms->right)
       if (t.node == name) lines.push_back(&t);
   if (lines.empty()) return fmt::format("label={}", quote(type.empty() ? name : name + "\n" + type));
-  std::string html = html_escape(name);
-  if (!type.empty()) html += fmt::format("<br/><font point-size=\"9\">{}</font>", html_escape(type));
+  std::string html = html_text(name);
+  if (!type.empty()) html += fmt::format("<br/><font point-size=\"9\">{}</font>", html_text(type));
   for (const NodeTerm* t : lines) {
     const bool hot = lit && contains(terms.failing, t->embedding);
     html += fmt::format("<br/><font point-size=\"9\" color=\"{}\">{}{}: {}{}</font>", hot ? highlight_line : term_color, hot ? "<b>" : "",
-                        html_escape(t->embedding), html_escape(t->term.str()), hot ? "</b>" : "");
+                        html_text(t->embedding), html_text(t->term.str()), hot ? "</b>" : "");
   }
   return fmt::format("label=<{}>, shape=box, style=\"rounded{}\"", html, lit ? ",filled" : "");
 }

@@ -126,7 +126,7 @@ TEST(RuleDot, EmbeddedRulesShowTermsAndHighlightFailingOnes) {
         Agnode_t* n = agnode(g.get(), const_cast<char*>(id.c_str()), 0);
         ASSERT_TRUE(n) << e.rule.name() << ": " << id;
         const std::string label = agget(n, const_cast<char*>("label"));
-        const std::string line = reports::html_escape(t.embedding + ": " + t.term.str());
+        const std::string line = reports::html_text(t.embedding + ": " + t.term.str());
         EXPECT_NE(label.find(line), std::string::npos) << e.rule.name() << ": " << id << " label " << label << " lacks " << line;
         const bool bold = label.find("<b>" + line + "</b>") != std::string::npos;
         const bool hot = lit.contains(id) && std::find(lines.failing.begin(), lines.failing.end(), t.embedding) != lines.failing.end();
