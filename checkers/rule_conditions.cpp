@@ -1,6 +1,8 @@
 #include "checkers/rule_conditions.hpp"
 
 #include <algorithm>
+#include <map>
+#include <set>
 #include <array>
 
 #include <fmt/format.h>
@@ -37,7 +39,7 @@ namespace {
 
 std::size_t count_arcs(const TopoGraph& g, NodeId v, Dim i, bool out) {
   std::size_t n = 0;
-  for (const auto& a : g.arcs()) n += a.label == i && (out ? a.source : a.target) == v;
+  for (ArcId e : out ? g.out_arcs(v) : g.in_arcs(v)) n += g.arc(e).label == i;
   return n;
 }
 
@@ -136,9 +138,9 @@ ConditionVerdict check_non_orientation(const Rule& rule, Dim i, const ArcWords& 
       // word is its own conjugate is its own reverse.
       const ConjWord back = rw.conjugate(arc_word(ws, e));
       std::vector<ArcId> reverse;
-      for (ArcId f = 0; f < g.arc_count(); ++f) {
+      for (ArcId f : g.out_arcs(a.target)) {
         const auto& b = g.arc(f);
-        if (b.label == i && b.source == a.target && b.target == a.source && arc_word(ws, f) == back) reverse.push_back(f);
+        if (b.label == i && b.target == a.source && arc_word(ws, f) == back) reverse.push_back(f);
       }
       const char* what = side == 'L' ? "deleted" : "added";
       if (reverse.size() != 1) {
@@ -178,8 +180,17 @@ struct CycleSide {
   char name;
   const TopoGraph* graph;
   std::vector<CycleArc> arcs;
-  std::vector<std::array<int, 4>> cycles;  // ijij-walks that close
-  std::vector<std::vector<int>> optimal;   // (i,j)-optimal paths
+  std::vector<std::vector<int>> from, into;  // arcs by source (target) node, in index order
+  std::vector<std::array<int, 4>> cycles;    // ijij-walks that close
+  std::vector<std::vector<int>> optimal;     // (i,j)-optimal paths
+
+  CycleSide(char n, const TopoGraph& g) : name(n), graph(&g), from(g.node_count()), into(g.node_count()) {}
+  void add(CycleArc a) {
+    from[a.source].push_back(static_cast<int>(arcs.size()));
+    into[a.target].push_back(static_cast<int>(arcs.size()));
+    arcs.push_back(std::move(a));
+  }
+  const CycleArc& at(int e) const { return arcs[static_cast<std::size_t>(e)]; }
 };
 
 std::string path_text(const CycleSide& s, const std::vector<int>& p) {
@@ -203,37 +214,51 @@ std::vector<Dim> path_labels(const CycleSide& s, const std::vector<int>& p) {
   return l;
 }
 
+// Walks a -b- c -d- back to a's source, labels alternating; found through
+// the arcs out of each node, in the order of a full scan of the arcs.
 void find_cycles(CycleSide& s) {
-  const int n = static_cast<int>(s.arcs.size());
-  auto at = [&](int e) -> const CycleArc& { return s.arcs[static_cast<std::size_t>(e)]; };
-  for (int a = 0; a < n; ++a)
-    for (int b = 0; b < n; ++b) {
-      if (at(b).source != at(a).target || at(b).label == at(a).label) continue;
-      for (int c = 0; c < n; ++c) {
-        if (at(c).source != at(b).target || at(c).label != at(a).label) continue;
-        for (int d = 0; d < n; ++d)
-          if (at(d).source == at(c).target && at(d).label == at(b).label && at(d).target == at(a).source) s.cycles.push_back({a, b, c, d});
+  for (int a = 0; a < static_cast<int>(s.arcs.size()); ++a)
+    for (int b : s.from[s.at(a).target]) {
+      if (s.at(b).label == s.at(a).label) continue;
+      for (int c : s.from[s.at(b).target]) {
+        if (s.at(c).label != s.at(a).label) continue;
+        for (int d : s.from[s.at(c).target])
+          if (s.at(d).label == s.at(b).label && s.at(d).target == s.at(a).source) s.cycles.push_back({a, b, c, d});
       }
     }
 }
 
-bool in_some_cycle(const CycleSide& s, const std::vector<int>& p) {
-  for (const auto& c : s.cycles)
-    if (std::all_of(p.begin(), p.end(), [&](int e) { return std::find(c.begin(), c.end(), e) != c.end(); })) return true;
-  return false;
-}
-
 // Def. 14: alternating, all arcs changed, no arc twice, maximal, not in a
-// cycle of the side.
+// cycle of the side. A path is part of a longer one exactly when a changed
+// arc not on it extends it at one end with the other label, so maximality
+// is a test at both ends, not a search among all paths.
 void find_optimal_paths(CycleSide& s) {
-  std::vector<std::vector<int>> paths;
+  std::vector<std::vector<int>> cycles_of(s.arcs.size());
+  for (std::size_t c = 0; c < s.cycles.size(); ++c)
+    for (int e : s.cycles[c]) cycles_of[static_cast<std::size_t>(e)].push_back(static_cast<int>(c));
+  auto in_some_cycle = [&](const std::vector<int>& p) {
+    for (int c : cycles_of[static_cast<std::size_t>(p.front())]) {
+      const auto& cycle = s.cycles[static_cast<std::size_t>(c)];
+      if (std::all_of(p.begin(), p.end(), [&](int e) { return std::find(cycle.begin(), cycle.end(), e) != cycle.end(); })) return true;
+    }
+    return false;
+  };
+  auto extends = [&](const std::vector<int>& p, int e, Dim next_to) {
+    return s.at(e).changed && s.at(e).label != next_to && std::find(p.begin(), p.end(), e) == p.end();
+  };
+  auto maximal = [&](const std::vector<int>& p) {
+    for (int e : s.from[s.at(p.back()).target])
+      if (extends(p, e, s.at(p.back()).label)) return false;
+    for (int e : s.into[s.at(p.front()).source])
+      if (extends(p, e, s.at(p.front()).label)) return false;
+    return true;
+  };
   std::vector<int> cur;
   auto extend = [&](auto&& self) -> void {
-    paths.push_back(cur);
-    const auto& last = s.arcs[static_cast<std::size_t>(cur.back())];
-    for (int e = 0; e < static_cast<int>(s.arcs.size()); ++e) {
-      const auto& a = s.arcs[static_cast<std::size_t>(e)];
-      if (!a.changed || a.source != last.target || a.label == last.label) continue;
+    if (maximal(cur) && !in_some_cycle(cur)) s.optimal.push_back(cur);
+    const CycleArc& last = s.at(cur.back());
+    for (int e : s.from[last.target]) {
+      if (!s.at(e).changed || s.at(e).label == last.label) continue;
       if (std::find(cur.begin(), cur.end(), e) != cur.end()) continue;
       cur.push_back(e);
       self(self);
@@ -241,17 +266,9 @@ void find_optimal_paths(CycleSide& s) {
     }
   };
   for (int e = 0; e < static_cast<int>(s.arcs.size()); ++e) {
-    if (!s.arcs[static_cast<std::size_t>(e)].changed) continue;
+    if (!s.at(e).changed) continue;
     cur = {e};
     extend(extend);
-  }
-  auto contained = [](const std::vector<int>& p, const std::vector<int>& q) {
-    return q.size() > p.size() && std::search(q.begin(), q.end(), p.begin(), p.end()) != q.end();
-  };
-  for (const auto& p : paths) {
-    if (std::any_of(paths.begin(), paths.end(), [&](const std::vector<int>& q) { return contained(p, q); })) continue;
-    if (in_some_cycle(s, p)) continue;
-    s.optimal.push_back(p);
   }
 }
 
@@ -266,38 +283,39 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
     }
   ConjugateRewriting rw(rule.model());
   const TopoGraph &L = rule.left(), &R = rule.right();
-  CycleSide left{'L', &L, {}, {}, {}}, right{'R', &R, {}, {}, {}};
+  CycleSide left('L', L), right('R', R);
   for (ArcId e = 0; e < L.arc_count(); ++e)
     if (L.arc(e).label == i || L.arc(e).label == j)
-      left.arcs.push_back({L.arc(e).source, L.arc(e).target, L.arc(e).label, !rule.preserved_left_arc(e), arc_word(words.left, e), ""});
+      left.add({L.arc(e).source, L.arc(e).target, L.arc(e).label, !rule.preserved_left_arc(e), arc_word(words.left, e), ""});
   for (ArcId e = 0; e < R.arc_count(); ++e)
     if (R.arc(e).label == i || R.arc(e).label == j)
-      right.arcs.push_back({R.arc(e).source, R.arc(e).target, R.arc(e).label, !rule.preserved_right_arc(e), arc_word(words.right, e), ""});
+      right.add({R.arc(e).source, R.arc(e).target, R.arc(e).label, !rule.preserved_right_arc(e), arc_word(words.right, e), ""});
 
   // ij-completion (Sec. 5.2.1): an iji-path s ~> t of L closes with a
   // j-arc t -> s in every host satisfying C(i,j); add it to L, and to the
   // interface when both ends are preserved. Its word closes the cycle: the
   // conjugate of the path's word. Completing R would restrict the matches,
-  // so only L is completed.
+  // so only L is completed. The first open path in arc order is closed,
+  // then the search starts again.
   for (bool grew = complete; grew;) {
     grew = false;
-    const std::size_t n = left.arcs.size();
-    for (std::size_t a = 0; a < n && !grew; ++a)
-      for (std::size_t b = 0; b < n && !grew; ++b) {
-        if (left.arcs[b].source != left.arcs[a].target || left.arcs[b].label == left.arcs[a].label) continue;
-        for (std::size_t c = 0; c < n && !grew; ++c) {
-          if (left.arcs[c].source != left.arcs[b].target || left.arcs[c].label != left.arcs[a].label) continue;
-          const NodeId s = left.arcs[a].source, t = left.arcs[c].target;
-          const Dim y = left.arcs[b].label;
-          const bool closed =
-              std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& x) { return x.source == t && x.target == s && x.label == y; });
-          if (closed) continue;
-          const ConjWord w = rw.conjugate(left.arcs[a].word + left.arcs[b].word + left.arcs[c].word);
+    for (int a = 0; a < static_cast<int>(left.arcs.size()) && !grew; ++a)
+      for (int b : left.from[left.at(a).target]) {
+        if (left.at(b).label == left.at(a).label) continue;
+        for (int c : left.from[left.at(b).target]) {
+          if (left.at(c).label != left.at(a).label) continue;
+          const NodeId s = left.at(a).source, t = left.at(c).target;
+          const Dim y = left.at(b).label;
+          const auto& out_of_t = left.from[t];
+          if (std::any_of(out_of_t.begin(), out_of_t.end(), [&](int x) { return left.at(x).target == s && left.at(x).label == y; })) continue;
+          const ConjWord w = rw.conjugate(left.at(a).word + left.at(b).word + left.at(c).word);
           const bool interface = rule.to_right(s) != no_node && rule.to_right(t) != no_node;
-          left.arcs.push_back({t, s, y, !interface, w, "completion"});
-          if (interface) right.arcs.push_back({rule.to_right(t), rule.to_right(s), y, false, w, "completion"});
+          left.add({t, s, y, !interface, w, "completion"});
+          if (interface) right.add({rule.to_right(t), rule.to_right(s), y, false, w, "completion"});
           grew = true;
+          break;
         }
+        if (grew) break;
       }
   }
   for (CycleSide* s : {&left, &right}) {
@@ -310,14 +328,15 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
   for (const CycleSide* s : {&left, &right}) {
     const CycleSide* o = s == &left ? &right : &left;
     auto across = [&](NodeId x) { return s == &left ? rule.to_right(x) : rule.to_left(x); };
+    std::map<std::pair<NodeId, NodeId>, std::vector<const std::vector<int>*>> by_ends;  // o's optimal paths, in order
+    for (const auto& q : o->optimal) by_ends[{o->at(q.front()).source, o->at(q.back()).target}].push_back(&q);
     for (const auto& p : s->optimal) {
-      const NodeId src = across(s->arcs[static_cast<std::size_t>(p.front())].source);
-      const NodeId tgt = across(s->arcs[static_cast<std::size_t>(p.back())].target);
+      const NodeId src = across(s->at(p.front()).source);
+      const NodeId tgt = across(s->at(p.back()).target);
       std::vector<const std::vector<int>*> coherent;
-      for (const auto& q : o->optimal)
-        if (src != no_node && tgt != no_node && o->arcs[static_cast<std::size_t>(q.front())].source == src &&
-            o->arcs[static_cast<std::size_t>(q.back())].target == tgt && path_labels(*s, p) == path_labels(*o, q))
-          coherent.push_back(&q);
+      if (const auto it = by_ends.find({src, tgt}); src != no_node && tgt != no_node && it != by_ends.end())
+        for (const auto* q : it->second)
+          if (path_labels(*s, p) == path_labels(*o, *q)) coherent.push_back(q);
       if (coherent.size() != 1) {
         std::vector<std::string> shown{path_text(*s, p)};
         for (auto* q : coherent) shown.push_back(path_text(*o, *q));
@@ -342,11 +361,11 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
 
   // Def. 27: the W-label of every ijij-cycle reduces to ε.
   for (const CycleSide* s : {&left, &right}) {
-    std::vector<std::array<int, 4>> reported;  // a cycle once, not once per rotation
+    std::set<std::array<int, 4>> reported;  // a cycle once, not once per rotation
     for (const auto& c : s->cycles) {
       std::array<int, 4> key = c;
       std::sort(key.begin(), key.end());
-      if (std::find(reported.begin(), reported.end(), key) != reported.end()) continue;
+      if (!reported.insert(key).second) continue;
       const std::vector<int> p(c.begin(), c.end());
       const ConjWord w = path_word(*s, p);
       if (!rw.reduces_to_empty(w))
@@ -356,32 +375,26 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
                  {path_text(*s, p)},
                  {w.str()},
                  fmt::format("({},{})-cycle {} in {} has W-label {}, which does not reduce to ε", i, j, path_text(*s, p), s->name, w.str())});
-      reported.push_back(key);
     }
   }
 
   // Sub-conditions 2 and 3: a preserved node losing an i-arc, and an added
   // node, must be the source of an i-arc in R on a cycle or optimal path.
-  auto on_cycle_or_path = [&](int e) {
-    for (const auto& c : right.cycles)
-      if (std::find(c.begin(), c.end(), e) != c.end()) return true;
-    for (const auto& p : right.optimal)
-      if (std::find(p.begin(), p.end(), e) != p.end()) return true;
-    return false;
-  };
+  std::vector<bool> on_cycle_or_path(right.arcs.size(), false);
+  for (const auto& c : right.cycles)
+    for (int e : c) on_cycle_or_path[static_cast<std::size_t>(e)] = true;
+  for (const auto& p : right.optimal)
+    for (int e : p) on_cycle_or_path[static_cast<std::size_t>(e)] = true;
   for (NodeId y = 0; y < R.node_count(); ++y) {
     const NodeId x = rule.to_left(y);
     for (Dim d : {i, j}) {
       if (x != no_node) {
-        const bool loses =
-            std::any_of(left.arcs.begin(), left.arcs.end(), [&](const CycleArc& a) { return a.source == x && a.label == d && a.changed; });
-        if (!loses) continue;
+        const auto& out_of_x = left.from[x];
+        if (std::none_of(out_of_x.begin(), out_of_x.end(), [&](int e) { return left.at(e).label == d && left.at(e).changed; })) continue;
       }
-      bool ok = false;
-      for (int e = 0; e < static_cast<int>(right.arcs.size()); ++e) {
-        const auto& a = right.arcs[static_cast<std::size_t>(e)];
-        if (a.source == y && a.label == d && on_cycle_or_path(e)) ok = true;
-      }
+      const auto& out_of_y = right.from[y];
+      const bool ok = std::any_of(out_of_y.begin(), out_of_y.end(),
+                                  [&](int e) { return right.at(e).label == d && on_cycle_or_path[static_cast<std::size_t>(e)]; });
       if (!ok)
         fail(v, {x != no_node ? 2 : 3,
                  'R',

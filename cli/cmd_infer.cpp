@@ -151,6 +151,7 @@ int infer(const InferCommand& o) {
   options.fold = {o.strict, policy};
   options.start = o.start;
   options.all = o.all;
+  options.keep_rejected = !o.all;
   options.name = o.name;
   options.generalize = o.generalize;
   std::vector<Attempt> attempts;

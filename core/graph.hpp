@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace dartcheck {
@@ -24,18 +25,26 @@ struct Arc {
 };
 
 /// A Σ-labeled multigraph with named nodes. Node and arc ids are dense
-/// indices in insertion order; lookups by name are linear, which is right
-/// for graphs of a few dozen nodes.
+/// indices in insertion order. Names and incident arcs are indexed as the
+/// graph is built, so lookups cost what they return: inferred rules have
+/// thousands of nodes (000 Sec. 8.3 wants the whole inference linear).
 template <class Label>
 class LabeledGraph {
  public:
   NodeId add_node(std::string name) {
+    const auto v = static_cast<NodeId>(names_.size());
+    by_name_.emplace(name, v);  // the first node of a name, as find() says
     names_.push_back(std::move(name));
-    return static_cast<NodeId>(names_.size() - 1);
+    out_.emplace_back();
+    in_.emplace_back();
+    return v;
   }
   ArcId add_arc(NodeId s, NodeId t, Label l) {
+    const auto e = static_cast<ArcId>(arcs_.size());
     arcs_.push_back({s, t, std::move(l)});
-    return static_cast<ArcId>(arcs_.size() - 1);
+    out_[s].push_back(e);
+    in_[t].push_back(e);
+    return e;
   }
 
   std::size_t node_count() const { return names_.size(); }
@@ -45,28 +54,35 @@ class LabeledGraph {
   const Arc<Label>& arc(ArcId e) const { return arcs_[e]; }
   const std::vector<Arc<Label>>& arcs() const { return arcs_; }
 
+  /// The first node named `name`.
   std::optional<NodeId> find(std::string_view name) const {
-    for (NodeId v = 0; v < names_.size(); ++v)
-      if (names_[v] == name) return v;
-    return std::nullopt;
+    const auto it = by_name_.find(std::string(name));
+    if (it == by_name_.end()) return std::nullopt;
+    return it->second;
   }
 
-  /// Arcs with the given source (resp. target) and label.
-  std::vector<ArcId> out_arcs(NodeId v, const Label& l) const { return select(v, l, true); }
-  std::vector<ArcId> in_arcs(NodeId v, const Label& l) const { return select(v, l, false); }
+  /// Arcs with the given source (resp. target), in id order.
+  const std::vector<ArcId>& out_arcs(NodeId v) const { return out_[v]; }
+  const std::vector<ArcId>& in_arcs(NodeId v) const { return in_[v]; }
+  /// Arcs with the given source (resp. target) and label, in id order.
+  std::vector<ArcId> out_arcs(NodeId v, const Label& l) const { return select(out_[v], l); }
+  std::vector<ArcId> in_arcs(NodeId v, const Label& l) const { return select(in_[v], l); }
 
-  friend bool operator==(const LabeledGraph&, const LabeledGraph&) = default;
+  // The indexes follow from names and arcs in insertion order.
+  friend bool operator==(const LabeledGraph& a, const LabeledGraph& b) { return a.names_ == b.names_ && a.arcs_ == b.arcs_; }
 
  private:
-  std::vector<ArcId> select(NodeId v, const Label& l, bool out) const {
+  std::vector<ArcId> select(const std::vector<ArcId>& arcs, const Label& l) const {
     std::vector<ArcId> r;
-    for (ArcId e = 0; e < arcs_.size(); ++e)
-      if ((out ? arcs_[e].source : arcs_[e].target) == v && arcs_[e].label == l) r.push_back(e);
+    for (ArcId e : arcs)
+      if (arcs_[e].label == l) r.push_back(e);
     return r;
   }
 
   std::vector<std::string> names_;
   std::vector<Arc<Label>> arcs_;
+  std::unordered_map<std::string, NodeId> by_name_;
+  std::vector<std::vector<ArcId>> out_, in_;
 };
 
 /// A D-topological graph: arcs labeled by dimensions (002 Def. 6).

@@ -19,6 +19,8 @@ const char* failure_name(FailureKind k) {
       return "undecided position";
     case FailureKind::unreached:
       return "unreached dart";
+    case FailureKind::shared:
+      return "shared failure";
   }
   return "?";
 }
@@ -62,6 +64,7 @@ class Folder {
     hook.label.assign(orbit_.begin(), orbit_.end());
     hook.darts = darts;
     add_node(std::move(hook));
+    note_hook_like(0);
     // The orbit's links as positions: neighbour_[q * r + p] is the position
     // of the o_p-neighbour of b_q.
     const std::size_t r = orbit_.size();
@@ -71,7 +74,7 @@ class Folder {
     explicit_.assign(static_cast<std::size_t>(n_ + 2), -1);
     // Step 2: breadth-first over the nodes of S.
     for (std::size_t m = 0; m < scheme_.nodes.size(); ++m)
-      if (!build_arcs(static_cast<int>(m))) return {std::nullopt, failure_};
+      if (!build_arcs(static_cast<int>(m))) return failed();
     // Every dart of κ(G, H) must be reached; the scan runs only when not.
     for (Dart u = 0; owned_.size() < g_.size() && u < g_.size(); ++u)
       if (owner_[u] < 0) {
@@ -79,9 +82,9 @@ class Folder {
              fmt::format("dart {} is not reached from the hook: κ(G, H) is not connected (the example must be one connected piece, "
                          "before and after joined by preserved darts)",
                          g_.name(u)));
-        return {std::nullopt, failure_};
+        return failed();
       }
-    return {std::move(scheme_), std::nullopt};
+    return {std::move(scheme_), std::nullopt, std::move(hook_like_)};
   }
 
  private:
@@ -97,6 +100,23 @@ class Folder {
     }
     scheme_.nodes.push_back(std::move(node));
     explicit_.resize(scheme_.nodes.size() * static_cast<std::size_t>(n_ + 2), -1);
+  }
+
+  FoldResult failed() { return {std::nullopt, std::move(failure_), std::move(hook_like_)}; }
+
+  // A node of L labelled as the hook (o_p -> o_p at every position): its
+  // darts are a <o>-orbit of G whose folding is this one re-rooted. If an
+  // earlier folding failed through it, this one fails too.
+  bool note_hook_like(int m) {
+    const SchemeNode& node = scheme_.nodes[static_cast<std::size_t>(m)];
+    if (options_.strict || node.after || !std::equal(orbit_.begin(), orbit_.end(), node.label.begin(), node.label.end())) return true;
+    hook_like_.insert(hook_like_.end(), node.darts.begin(), node.darts.end());
+    const auto& failed = scratch_.failed_from;
+    if (m == 0 || failed.empty() || failed[node.darts[0]] == no_dart) return true;
+    return fail(FailureKind::shared, m, 0, node.darts[0],
+                fmt::format("node n{} is the {}-orbit of {}, which the folding from start {} built with the same label and then failed: "
+                            "hooked at n{} this folding is that one, so it fails too (000 Sec. 10.3)",
+                            m, orbit_type_str(OrbitType(orbit_.begin(), orbit_.end())), g_.name(node.darts[0]), failed[node.darts[0]], m));
   }
 
   bool fail(FailureKind kind, int node, Dim d, Dart u, std::string text) {
@@ -175,7 +195,7 @@ class Folder {
     arc_slot(m, d) = id;
     arc_slot(id, d) = m;
     scheme_.arcs.push_back({m, id, d});
-    return build_label(id);
+    return build_label(id) && note_hook_like(id);
   }
 
   // The first dart of node v where relabeling position p to j fails, or
@@ -258,6 +278,7 @@ class Folder {
   std::vector<int> explicit_;
   GraphScheme scheme_;
   std::optional<FoldFailure> failure_;
+  std::vector<Dart> hook_like_;
 };
 
 }  // namespace

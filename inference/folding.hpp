@@ -67,6 +67,7 @@ enum class FailureKind {
   relabeling,     // no relabeling of position i holds for every dart of m (Step 2.2)
   undecided,      // a position the example does not decide, refused by the caller's policy
   unreached,      // κ(G, H) is not connected: a dart no node owns (Sec. 7)
+  shared,         // a node built here was a <o>-node of an earlier failed folding (Sec. 10.3)
 };
 const char* failure_name(FailureKind k);
 
@@ -98,6 +99,15 @@ struct FoldOptions {
 struct FoldResult {
   std::optional<GraphScheme> scheme;
   std::optional<FoldFailure> failure;
+  /// The darts of the L nodes built with the hook's own label (position p
+  /// relabeled o_p -> o_p, nothing deleted), the hook included, on success
+  /// and up to a failure; empty in strict mode. Each such node is a
+  /// <o>-orbit of G, and a non-strict folding from any of its darts is
+  /// this folding hooked at that node: it gives the same scheme re-rooted,
+  /// or fails as this one did (docs/inference.md, "Starts that need no
+  /// folding"). This is the paper's marking of darts that "would yield an
+  /// already found rule or fail to result in a rule" (000 Sec. 10.3).
+  std::vector<Dart> hook_like;
 };
 
 /// The per-dart tables of the folding, kept across the foldings of one κ
@@ -110,6 +120,12 @@ class FoldScratch {
   OrbitWalker walker;                   // over G
   std::vector<int> owner;               // node of each dart of κ(G, H), -1 if none
   std::vector<std::uint32_t> position;  // its position q in that node
+  /// For each dart of G, a start whose non-strict folding failed after
+  /// building the dart's <o>-orbit as a node with the hook's label, or
+  /// no_dart. A folding that builds such a node fails there (kind
+  /// `shared`): hooked at that node it is the failed folding. Set by the
+  /// caller (infer) for one orbit type and one policy; empty: no check.
+  std::vector<Dart> failed_from;
 };
 
 /// Folds κ(G, H) from dart `start` of G along <o>. `orbit` lists distinct

@@ -73,12 +73,27 @@ void generalize(const KappaGraph& graph, Attempt& a, const std::string& name) {
   a.generalized = std::move(dropped);
 }
 
+// The darts of `a` that are also in `b` (both hook-like sets of one κ graph).
+std::vector<Dart> common(const std::vector<Dart>& a, const std::vector<Dart>& b, std::size_t darts) {
+  std::vector<bool> in(darts, false);
+  for (Dart x : b) in[x] = true;
+  std::vector<Dart> out;
+  for (Dart x : a)
+    if (in[x]) out.push_back(x);
+  return out;
+}
+
+// `covers` receives the darts from which the attempt is the same (every
+// folding it made labelled their node as the hook), and whether its own
+// folding failed.
 Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart start, const InferOptions& options, const std::string& name,
-                FoldScratch& scratch) {
+                FoldScratch& scratch, std::vector<Dart>& covers, bool& fold_failed) {
   const auto t0 = std::chrono::steady_clock::now();
   Attempt a;
   a.start = start;
   auto folded = fold(graph, orbit, start, options.fold, scratch);
+  covers = std::move(folded.hook_like);
+  fold_failed = folded.failure.has_value();
   if (folded.failure) {
     a.failure = std::move(folded.failure);
   } else {
@@ -102,7 +117,14 @@ Attempt attempt(const KappaGraph& graph, const std::vector<Dim>& orbit, Dart sta
   if (a.does_nothing && a.scheme && !a.scheme->undecided.empty() && options.fold.undecided == UndecidedPolicy::keep && !options.fold.strict) {
     InferOptions freed = options;
     freed.fold.undecided = UndecidedPolicy::free;
-    Attempt b = attempt(graph, orbit, start, freed, name, scratch);
+    // The marks of failed foldings hold for the caller's policy only.
+    std::vector<Dart> marks;
+    std::swap(marks, scratch.failed_from);
+    std::vector<Dart> freed_covers;
+    bool freed_failed = false;
+    Attempt b = attempt(graph, orbit, start, freed, name, scratch, freed_covers, freed_failed);
+    std::swap(marks, scratch.failed_from);
+    covers = common(covers, freed_covers, graph.before().size());
     if (b.inferred()) {
       b.freed_undecided = true;
       a = std::move(b);
@@ -121,24 +143,54 @@ std::vector<Attempt> infer(const KappaGraph& graph, const std::vector<Dim>& orbi
     if (*options.start >= graph.before().size())
       throw std::invalid_argument(fmt::format("start dart {} is not a dart of the before map ({} darts)", *options.start, graph.before().size()));
     FoldScratch scratch(graph);
-    out.push_back(attempt(graph, orbit, *options.start, options, options.name, scratch));
+    std::vector<Dart> covers;
+    bool failed = false;
+    out.push_back(attempt(graph, orbit, *options.start, options, options.name, scratch, covers, failed));
     return out;
   }
-  // One start per orbit of G (000 Sec. 10.3); the tables are shared.
+  // One start per orbit of G (000 Sec. 10.3); the tables are shared. A
+  // start is skipped when an earlier folding built its orbit as a node
+  // labelled as the hook (the same folding re-rooted), and a folding that
+  // builds such a node of a failed folding stops there.
+  const std::size_t darts = graph.before().size();
   FoldScratch scratch(graph);
+  if (!options.fold.strict) scratch.failed_from.assign(darts, no_dart);
   OrbitWalker walker(graph.before());
-  std::vector<bool> marked(graph.before().size(), false);
+  std::vector<bool> marked(darts, false);
   std::map<std::string, int> seen;
   int rules = 0;
-  for (Dart a = 0; a < graph.before().size(); ++a) {
+  for (Dart a = 0; a < darts; ++a) {
     if (marked[a]) continue;
-    for (Dart b : orbit_darts(walker, orbit, a)) marked[b] = true;
-    Attempt t = attempt(graph, orbit, a, options, rules ? fmt::format("{}-{}", options.name, rules) : options.name, scratch);
+    const auto& own = orbit_darts(walker, orbit, a);
+    const std::size_t k = own.size();
+    for (Dart b : own) marked[b] = true;
+    std::vector<Dart> covers;
+    bool failed = false;
+    Attempt t = attempt(graph, orbit, a, options, rules ? fmt::format("{}-{}", options.name, rules) : options.name, scratch, covers, failed);
+    // Hook-like nodes are <o>-orbits of k darts, listed node by node.
+    for (std::size_t i = 0; i < covers.size(); i += k)
+      if (!marked[covers[i]]) {
+        t.same_starts.push_back(covers[i]);
+        for (std::size_t j = i; j < i + k; ++j) marked[covers[j]] = true;
+      }
+    if (failed)
+      for (Dart b : covers) scratch.failed_from[b] = a;
     if (t.scheme) {
-      const auto [it, fresh] = seen.emplace(canonical_form(*t.scheme), static_cast<int>(out.size()));
-      if (!fresh) t.duplicate_of = it->second;
+      // Without keep_rejected only rules are remembered: a scheme equal to
+      // a rejected one is rejected for the same reason, said again.
+      std::string form = canonical_form(*t.scheme);
+      if (const auto it = seen.find(form); it != seen.end())
+        t.duplicate_of = it->second;
+      else if (options.keep_rejected || t.inferred())
+        seen.emplace(std::move(form), static_cast<int>(out.size()));
     }
     const bool found = t.inferred();
+    if (!found && !options.keep_rejected && (t.scheme || t.rule)) {
+      t.scheme.reset();
+      t.rule.reset();
+      t.verification.reset();
+      t.details_dropped = true;
+    }
     rules += found;
     out.push_back(std::move(t));
     if (found && !options.all) break;

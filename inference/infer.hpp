@@ -35,6 +35,15 @@ struct Attempt {
   /// ("n1 -1- n1"), or why the generalised rule was refused.
   std::vector<std::string> generalized;
   std::string not_generalized;
+  /// Other <o>-orbits of G whose starts were not folded because this
+  /// attempt's folding built them as nodes labelled as the hook: from them
+  /// it is the same folding re-rooted (the same rule hooked elsewhere, or
+  /// the same failure). One dart of each; found by infer, not by a lone
+  /// --start.
+  std::vector<Dart> same_starts;
+  /// The scheme and rule of this start were dropped (InferOptions::
+  /// keep_rejected false): the outcome says why it gives no rule.
+  bool details_dropped = false;
   double seconds = 0;
   bool inferred() const { return rule && ill_formed.empty() && duplicate_of < 0 && verification && verification->holds && !does_nothing; }
 };
@@ -51,12 +60,20 @@ struct InferOptions {
   /// the static checker finds the result consistent and it still gives the
   /// example back. Not the paper's behaviour (000 folds loops as arcs).
   bool generalize = false;
+  /// Keep the scheme and rule of starts that give no rule. `infer --all`
+  /// on a large example drops them: each can be as large as the example.
+  bool keep_rejected = true;
 };
 
 /// The attempts, in order. Without `start` or `all`, darts of G are tried
 /// in increasing order, skipping those in the hook orbit of an earlier
-/// attempt (the paper's pool of unseen darts), until one gives a
-/// well-formed rule. Rule k (k > 0) is named `name`-k.
+/// attempt (the paper's pool of unseen darts) and, outside strict mode,
+/// those in a node that an earlier folding labelled as the hook (see
+/// FoldResult::hook_like), until one gives a well-formed rule. Each
+/// folding costs what it builds, and a folding stops at a node an earlier
+/// failed one built, so `all` is linear in |G| + |H| when foldings fail
+/// early or cover G with hook-labelled nodes. Rule k (k > 0) is named
+/// `name`-k.
 std::vector<Attempt> infer(const KappaGraph& graph, const std::vector<Dim>& orbit, const InferOptions& options);
 
 /// Parses "<0,1,2>" as an inference orbit type: distinct dimensions of the

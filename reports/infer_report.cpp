@@ -56,6 +56,12 @@ std::string infer_text(const InferRun& run, const std::vector<Attempt>& attempts
   std::size_t inferred = 0;
   for (const auto& a : attempts) {
     out += fmt::format("  start {}: {} ({:.3f} ms)\n", a.start, attempt_outcome(a), a.seconds * 1e3);
+    if (a.details_dropped) out += fmt::format("    (its rule is not kept with --all; --start {} shows it)\n", a.start);
+    if (!a.same_starts.empty())
+      out += fmt::format(
+          "    and {} other start(s) with the same outcome, not folded: their {}-orbits are nodes of this folding labelled as the hook, "
+          "so from them it is this folding re-rooted (Sec. 10.3)\n",
+          a.same_starts.size(), run.orbit);
     if (a.rule && (a.inferred() || a.does_nothing)) {
       const auto& op = a.rule->operation;
       out += fmt::format("    rule {}: |L| = {}, |R| = {}, {} preserved\n", op.rule.name(), op.rule.left().node_count(), op.rule.right().node_count(),
@@ -76,7 +82,10 @@ std::string infer_text(const InferRun& run, const std::vector<Attempt>& attempts
           "(Jerboa's unsew; --undecided keep|free|fail decides instead)\n";
     inferred += a.inferred();
   }
-  out += fmt::format("{} rule(s) inferred from {} start(s)\n", inferred, attempts.size());
+  std::size_t starts = attempts.size();
+  for (const auto& a : attempts) starts += a.same_starts.size();
+  out += fmt::format("{} rule(s) inferred from {} start(s){}\n", inferred, attempts.size(),
+                     starts > attempts.size() ? fmt::format(" ({} start(s) in all)", starts) : std::string());
   return out;
 }
 
@@ -91,6 +100,7 @@ Json infer_document(const InferRun& run, const KappaGraph& graph, const std::vec
              {"freed_undecided", a.freed_undecided},
              {"generalized", a.generalized},
              {"not_generalized", a.not_generalized},
+             {"same_starts", a.same_starts},
              {"seconds", a.seconds}};
     if (a.failure)
       row["failure"] = Json{{"kind", failure_name(a.failure->kind)},

@@ -9,8 +9,7 @@ namespace {
 
 void check_side(const TopoGraph& g, const Model& model, const char* side) {
   for (NodeId v = 0; v < g.node_count(); ++v)
-    for (NodeId w = v + 1; w < g.node_count(); ++w)
-      if (g.name(v) == g.name(w)) throw std::invalid_argument(fmt::format("{} declares node '{}' twice", side, g.name(v)));
+    if (g.find(g.name(v)) != v) throw std::invalid_argument(fmt::format("{} declares node '{}' twice", side, g.name(v)));
   for (const auto& a : g.arcs())
     if (!model.contains(a.label))
       throw std::invalid_argument(fmt::format("{} has an arc {} -{}-> {} whose label is not a dimension of {}", side, g.name(a.source), a.label,
@@ -19,14 +18,19 @@ void check_side(const TopoGraph& g, const Model& model, const char* side) {
 
 // Marks which arcs of `a` have a partner in `b` with the same endpoints (by
 // name), label and word, pairing occurrences one to one.
+// Each arc of `a` takes the first unused partner of `b` in id order, as
+// the pairing by scanning did; the candidates are b's arcs out of the node
+// of the same name.
 std::vector<bool> kept_arcs(const TopoGraph& a, const TopoGraph& b, const std::vector<ConjWord>& wa, const std::vector<ConjWord>& wb) {
   std::vector<bool> kept(a.arc_count(), false), used(b.arc_count(), false);
   for (ArcId e = 0; e < a.arc_count(); ++e) {
     const auto& x = a.arc(e);
-    for (ArcId f = 0; f < b.arc_count(); ++f) {
+    const auto source = b.find(a.name(x.source));
+    if (!source) continue;
+    for (ArcId f : b.out_arcs(*source)) {
       const auto& y = b.arc(f);
       const bool same_word = (wa.empty() ? ConjWord{} : wa[e]) == (wb.empty() ? ConjWord{} : wb[f]);
-      if (!used[f] && y.label == x.label && same_word && b.name(y.source) == a.name(x.source) && b.name(y.target) == a.name(x.target)) {
+      if (!used[f] && y.label == x.label && same_word && b.name(y.target) == a.name(x.target)) {
         used[f] = kept[e] = true;
         break;
       }

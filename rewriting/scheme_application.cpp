@@ -1,6 +1,7 @@
 #include "rewriting/scheme_application.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -197,29 +198,34 @@ SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(
     left_bwd.push_back(generator_index(gens, rw.conjugate(arc_word(words.left, e))));
   }
   for (ArcId e = 0; e < R.arc_count(); ++e) right_fwd.push_back(generator_index(gens, arc_word(words.right, e)));
+  // Each node's arcs in id order, a loop once (forward); by the graph's
+  // incidence lists, so building the state is linear in the rule.
   steps.resize(L.node_count());
-  for (NodeId x = 0; x < L.node_count(); ++x)
-    for (ArcId e = 0; e < L.arc_count(); ++e) {
+  for (NodeId x = 0; x < L.node_count(); ++x) {
+    std::vector<ArcId> incident;
+    std::merge(L.out_arcs(x).begin(), L.out_arcs(x).end(), L.in_arcs(x).begin(), L.in_arcs(x).end(), std::back_inserter(incident));
+    incident.erase(std::unique(incident.begin(), incident.end()), incident.end());
+    for (ArcId e : incident) {
       const auto& a = L.arc(e);
       if (a.source == x)
         steps[x].push_back({e, a.label, true, left_fwd[e], a.target});
-      else if (a.target == x)
+      else
         steps[x].push_back({e, a.label, false, left_bwd[e], a.source});
     }
+  }
   for (ArcId e = 0; e < L.arc_count() && two_arcs_in_l.empty(); ++e)
-    for (ArcId f = e + 1; f < L.arc_count(); ++f)
-      if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label) {
+    for (ArcId f : L.out_arcs(L.arc(e).source))
+      if (f > e && L.arc(e).label == L.arc(f).label) {
         two_arcs_in_l = fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source));
         break;
       }
+  auto has_label = [](const TopoGraph& g, const std::vector<ArcId>& arcs, Dim i) {
+    return std::any_of(arcs.begin(), arcs.end(), [&](ArcId f) { return g.arc(f).label == i; });
+  };
   for (NodeId x = 0; x < L.node_count(); ++x) {
     if (core.to_right(x) != no_node) continue;
     for (Dim i : core.model().dims) {
-      bool out = false, in = false;
-      for (const auto& a : L.arcs()) {
-        out |= a.source == x && a.label == i;
-        in |= a.target == x && a.label == i;
-      }
+      const bool out = has_label(L, L.out_arcs(x), i), in = has_label(L, L.in_arcs(x), i);
       if (!out || !in) dangling.push_back({x, i, out, in});
     }
   }
@@ -228,13 +234,15 @@ SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(
     const auto& a = R.arc(e);
     Added x;
     x.label = a.label;
-    for (ArcId f = e + 1; f < R.arc_count() && x.always.empty(); ++f)
-      if (!core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label)
+    for (ArcId f : R.out_arcs(a.source))
+      if (f > e && !core.preserved_right_arc(f) && R.arc(f).label == a.label) {
         x.always = fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source));
+        break;
+      }
     x.x = core.to_left(a.source);
     if (x.x != no_node) {
-      for (ArcId f = 0; f < L.arc_count(); ++f) x.freed |= !core.preserved_left_arc(f) && L.arc(f).source == x.x && L.arc(f).label == a.label;
-      for (ArcId f = 0; f < R.arc_count(); ++f) x.kept |= core.preserved_right_arc(f) && R.arc(f).source == a.source && R.arc(f).label == a.label;
+      for (ArcId f : L.out_arcs(x.x)) x.freed |= !core.preserved_left_arc(f) && L.arc(f).label == a.label;
+      for (ArcId f : R.out_arcs(a.source)) x.kept |= core.preserved_right_arc(f) && R.arc(f).label == a.label;
     }
     added.push_back(std::move(x));
   }
