@@ -6,6 +6,7 @@
 #include <set>
 
 #include "querymodify/modify.hpp"
+#include "querymodify/orientation.hpp"
 #include "querymodify/overlap.hpp"
 
 namespace dartcheck::querymodify {
@@ -47,7 +48,20 @@ double scaled_jacobian(const std::array<std::array<double, 3>, 8>& p) {
     lo = std::min(lo, j);
     hi = std::max(hi, j);
   }
-  return sum >= 0 ? lo : -hi;
+  const double quality = sum >= 0 ? lo : -hi;
+  if (!(quality > 0)) return quality;
+  // Positive in floating point: every corner must also be oriented the
+  // hex's way exactly, or the hex is numerically flat or inverted there.
+  const int handedness = sum >= 0 ? 1 : -1;
+  for (int v = 0; v < 8; ++v) {
+    int sign = handedness;
+    for (int axis = 0; axis < 3; ++axis) sign *= (v >> axis) & 1 ? -1 : 1;
+    const auto& x = p[static_cast<std::size_t>(v ^ 1)];
+    const auto& y = p[static_cast<std::size_t>(v ^ 2)];
+    const auto& z = p[static_cast<std::size_t>(v ^ 4)];
+    if (orientation_sign(x, y, z, p[static_cast<std::size_t>(v)]) != sign) return 0.0;
+  }
+  return quality;
 }
 
 namespace {

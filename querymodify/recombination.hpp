@@ -30,7 +30,10 @@ std::array<std::uint32_t, 8> match_corners(const HexQuery& q, const std::vector<
 /// high side) over the product of their lengths; the quality is the
 /// minimum over the corners, signed so that a hex of either handedness
 /// scores positive when every corner agrees (1 for a cube, <= 0 for an
-/// inverted or folded one).
+/// inverted or folded one). The value is floating point, its sign is
+/// exact: a quality computed positive is 0 when some corner's determinant
+/// is not of the hex's sign in exact arithmetic (orientation.hpp), so no
+/// hex accepted at a threshold >= 0 has a flat or inverted corner.
 double scaled_jacobian(const std::array<std::array<double, 3>, 8>& corner);
 
 struct Recombination {

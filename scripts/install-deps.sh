@@ -15,6 +15,9 @@ packages=(
   # reads the screenshot.
   chromium libpng-dev
   libbenchmark-dev
+  # Exact rationals for the orientation predicate of the recombination
+  # (querymodify/orientation.cpp), when its floating-point filter is unsure.
+  libgmp-dev
   # The libFuzzer harnesses (fuzz/, scripts/fuzz.sh): clang and its runtime.
   clang libclang-rt-14-dev
   # Oracles, peers and real data for tests and benchmarks only.
