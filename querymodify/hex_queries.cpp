@@ -84,7 +84,7 @@ static std::vector<std::array<std::uint8_t, 8>> readings(std::uint64_t s) {
         if (it == candidate_tets().end() || *it != image(t)) return;
         mapped |= std::uint64_t{1} << (it - candidate_tets().begin());
       }
-      if (std::binary_search(enumerate_hex_subdivisions().begin(), enumerate_hex_subdivisions().end(), mapped)) out.push_back(p);
+      if (std::binary_search(labeled_hex_subdivisions().begin(), labeled_hex_subdivisions().end(), mapped)) out.push_back(p);
       return;
     }
     const unsigned upto = (2u << v) - 1;  // vertices 0..v assigned
@@ -104,7 +104,7 @@ static std::vector<std::array<std::uint8_t, 8>> readings(std::uint64_t s) {
 const std::vector<HexQuery>& hex_queries() {
   static const std::vector<HexQuery> all = [] {
     std::set<std::uint64_t> classes;
-    for (auto s : enumerate_hex_subdivisions()) classes.insert(canonical_subdivision(s));
+    for (auto s : labeled_hex_subdivisions()) classes.insert(canonical_subdivision(s));
     std::vector<HexQuery> out;
     std::set<std::vector<std::uint32_t>> seen;
     for (std::uint64_t s : classes)

@@ -16,6 +16,10 @@ namespace dartcheck::querymodify {
 /// quadruples of the cube's corners.
 std::vector<std::array<std::uint32_t, 4>> subdivision_tets(std::uint64_t subdivision);
 
+/// enumerate_hex_subdivisions() as computed at build time (a generated
+/// table, sorted): what the queries are built from.
+const std::vector<std::uint64_t>& labeled_hex_subdivisions();
+
 /// For each face of the hex (hex_faces() order), bit f set if the
 /// subdivision splits it by the diagonal b-d of its cycle (a, b, c, d).
 int subdivision_diagonals(std::uint64_t subdivision);

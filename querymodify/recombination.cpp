@@ -28,7 +28,12 @@ std::array<std::uint32_t, 8> match_corners(const HexQuery& q, const std::vector<
   return out;
 }
 
-double scaled_jacobian(const std::array<std::array<double, 3>, 8>& p) {
+namespace {
+
+using Corners = std::array<std::array<double, 3>, 8>;
+
+// The floating-point value, and the hex's handedness (+1: corners positive).
+std::pair<double, int> float_jacobian(const Corners& p) {
   double sum = 0, lo = 1e300, hi = -1e300;
   for (int v = 0; v < 8; ++v) {
     double e[3][3];
@@ -48,19 +53,29 @@ double scaled_jacobian(const std::array<std::array<double, 3>, 8>& p) {
     lo = std::min(lo, j);
     hi = std::max(hi, j);
   }
-  const double quality = sum >= 0 ? lo : -hi;
-  if (!(quality > 0)) return quality;
-  // Positive in floating point: every corner must also be oriented the
-  // hex's way exactly, or the hex is numerically flat or inverted there.
-  const int handedness = sum >= 0 ? 1 : -1;
+  return sum >= 0 ? std::pair{lo, 1} : std::pair{-hi, -1};
+}
+
+// Every corner's determinant has the hex's sign, exactly.
+bool corners_exact(const Corners& p, int handedness) {
   for (int v = 0; v < 8; ++v) {
     int sign = handedness;
     for (int axis = 0; axis < 3; ++axis) sign *= (v >> axis) & 1 ? -1 : 1;
     const auto& x = p[static_cast<std::size_t>(v ^ 1)];
     const auto& y = p[static_cast<std::size_t>(v ^ 2)];
     const auto& z = p[static_cast<std::size_t>(v ^ 4)];
-    if (orientation_sign(x, y, z, p[static_cast<std::size_t>(v)]) != sign) return 0.0;
+    if (orientation_sign(x, y, z, p[static_cast<std::size_t>(v)]) != sign) return false;
   }
+  return true;
+}
+
+}  // namespace
+
+double scaled_jacobian(const Corners& p) {
+  const auto [quality, handedness] = float_jacobian(p);
+  // Positive in floating point: every corner must also be oriented the
+  // hex's way exactly, or the hex is numerically flat or inverted there.
+  if (quality > 0 && !corners_exact(p, handedness)) return 0.0;
   return quality;
 }
 
@@ -76,14 +91,30 @@ std::pair<std::array<std::uint32_t, 8>, double> best_reading(const HexQuery& q, 
                                                              const std::vector<std::array<double, 3>>* points) {
   std::array<std::uint32_t, 8> best_corners{};
   double best = -2;
-  for (const auto& reading : q.readings) {
+  // The best reading by the floating-point value, then its sign made exact;
+  // only if that fails (numerically flat) is every reading judged exactly.
+  auto choose = [&](bool exact) {
+    best = -2;
+    for (const auto& reading : q.readings) {
+      std::array<std::uint32_t, 8> corners{};
+      for (int v = 0; v < 8; ++v) corners[reading[static_cast<std::size_t>(v)]] = c[static_cast<std::size_t>(v)];
+      Corners p{};
+      for (int v = 0; v < 8; ++v) p[static_cast<std::size_t>(v)] = (*points)[corners[static_cast<std::size_t>(v)]];
+      const double j = exact ? scaled_jacobian(p) : float_jacobian(p).first;
+      if (j > best) best = j, best_corners = corners;
+    }
+  };
+  if (!points) {
+    if (q.readings.empty()) return {best_corners, best};
     std::array<std::uint32_t, 8> corners{};
-    for (int v = 0; v < 8; ++v) corners[reading[static_cast<std::size_t>(v)]] = c[static_cast<std::size_t>(v)];
-    if (!points) return {corners, std::nan("")};
-    std::array<std::array<double, 3>, 8> p{};
-    for (int v = 0; v < 8; ++v) p[static_cast<std::size_t>(v)] = (*points)[corners[static_cast<std::size_t>(v)]];
-    const double j = scaled_jacobian(p);
-    if (j > best) best = j, best_corners = corners;
+    for (int v = 0; v < 8; ++v) corners[q.readings.front()[static_cast<std::size_t>(v)]] = c[static_cast<std::size_t>(v)];
+    return {corners, std::nan("")};
+  }
+  choose(false);
+  if (best > 0) {
+    Corners p{};
+    for (int v = 0; v < 8; ++v) p[static_cast<std::size_t>(v)] = (*points)[best_corners[static_cast<std::size_t>(v)]];
+    if (scaled_jacobian(p) != best) choose(true);
   }
   // Right-handed (x, y, z at corner 0 a positive frame), as mesh formats
   // want it: otherwise mirror x.

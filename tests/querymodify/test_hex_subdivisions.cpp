@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "querymodify/hex_queries.hpp"
 #include "querymodify/hex_subdivisions.hpp"
 
 namespace dartcheck::querymodify {
@@ -30,6 +31,10 @@ TEST(HexSubdivisions, CandidatesAndSymmetries) {
       EXPECT_TRUE(is_face);
     }
 }
+
+// The table compiled at build time (what the queries are built from) is
+// the enumeration, entry for entry.
+TEST(HexSubdivisions, BuildTimeTableIsTheEnumeration) { EXPECT_EQ(labeled_hex_subdivisions(), enumerate_hex_subdivisions()); }
 
 TEST(HexSubdivisions, PublishedCounts) {
   const auto all = enumerate_hex_subdivisions();
