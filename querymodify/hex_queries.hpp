@@ -43,8 +43,8 @@ struct HexQuery {
 
 /// One query per distinct oriented tetrahedral map among the 174 classes
 /// and their mirror images (duplicates, the achiral classes, removed by
-/// canonical word). 001 Sec. 7.1's queries, both hands. Built once (a few
-/// seconds, mostly the enumeration) and kept.
+/// canonical word). 001 Sec. 7.1's queries, both hands. Built once from
+/// the build-time table (about 0.2 s) and kept.
 const std::vector<HexQuery>& hex_queries();
 
 }  // namespace dartcheck::querymodify
