@@ -4,15 +4,13 @@
 // boundary condition on their free links; every match, or a selection
 // without overlap (greedy or global).
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <chrono>
 #include <optional>
 
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
-#include "cli/report_text.hpp"
-#include "reports/json_document.hpp"
+#include "reports/querymodify_report.hpp"
 #include "cli/tet_input.hpp"
 #include "core/input_error.hpp"
 #include "io/catalog.hpp"
@@ -90,44 +88,26 @@ int query(const QueryOptions& o) {
   else
     shown = global_matches(all, input.size(), [](const QueryMatch& m) { return static_cast<double>(m.darts.size()); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::vector<std::size_t> per_query(queries.size(), 0);
-  for (const auto& m : all.distinct) ++per_query[static_cast<std::size_t>(m.query)];
-  const std::size_t listed = std::min(o.limit, shown.size());
-  if (o.format == "json") {
-    using reports::Json;
-    Json qs = Json::array(), ms = Json::array();
-    for (std::size_t k = 0; k < queries.size(); ++k)
-      qs.push_back(Json{{"name", queries[k].name}, {"darts", queries[k].word.darts}, {"distinct_matches", per_query[k]}});
-    for (std::size_t k = 0; k < listed; ++k)
-      ms.push_back(Json{{"query", queries[static_cast<std::size_t>(shown[k].query)].name}, {"darts", shown[k].darts}});
-    Json doc = reports::json_document("query");
-    doc["map"] = o.map;
-    doc["model"] = input.model().name;
-    doc["darts"] = input.size();
-    doc["free"] = o.free;
-    doc["strategy"] = o.strategy;
-    doc["raw_matches"] = all.raw;
-    doc["distinct_matches"] = all.distinct.size();
-    doc["selected"] = shown.size();
-    doc["seconds"] = seconds;
-    doc["queries"] = std::move(qs);
-    doc["matches"] = std::move(ms);
-    fmt::print("{}\n", reports::json_text(std::move(doc)));
-  } else {
-    fmt::print("map       {}: {} darts ({})\n", o.map, input.size(), input.model().name);
-    fmt::print("queries   {} ({}prefix tree of {} nodes)\n", queries.size(),
-               o.queries.empty() ? "" : fmt::format("free links of the --query maps {}; ", constraint_symbol(free_links)), trie.nodes());
-    for (std::size_t k = 0; k < queries.size(); ++k)
-      if (!o.hex || k < o.queries.size() || per_query[k] > 0)
-        fmt::print("  {:<24} {:>4} darts  {} distinct matches\n", queries[k].name, queries[k].word.darts, per_query[k]);
-    fmt::print("matches   {} raw (found from every start dart), {} distinct ({:.3f} s)\n", all.raw, all.distinct.size(), seconds);
-    if (o.strategy != "all")
-      fmt::print("selected  {} without overlap ({})\n", shown.size(),
-                 o.strategy == "greedy" ? "greedy: from each dart in order" : "global: largest first");
-    for (std::size_t k = 0; k < listed; ++k)
-      fmt::print("  {}: darts {}\n", queries[static_cast<std::size_t>(shown[k].query)].name, fmt::join(shown[k].darts, " "));
-    if (listed < shown.size()) fmt::print("  ... {} more (--limit)\n", shown.size() - listed);
-  }
+  reports::QueryRun run{o.map,
+                        input.model().name,
+                        o.free,
+                        o.strategy,
+                        o.queries.empty() ? "" : constraint_symbol(free_links),
+                        input.size(),
+                        trie.nodes(),
+                        o.queries.size(),
+                        o.hex,
+                        {},
+                        {},
+                        &all,
+                        &shown,
+                        o.limit,
+                        seconds};
+  for (const auto& q : queries) run.names.push_back(q.name), run.query_darts.push_back(q.word.darts);
+  if (o.format == "json")
+    fmt::print("{}\n", reports::json_text(reports::query_document(run)));
+  else
+    fmt::print("{}", reports::query_text(run));
   return all.distinct.empty() ? violation : ok;
 }
 

@@ -9,7 +9,7 @@ set(layers
   "checkers:core,rewriting,checkers"
   "generators:core,rewriting,io,generators"
   "proofs:core,rewriting,checkers,proofs"
-  "reports:core,rewriting,io,checkers,generators,proofs,events,inference,analysis,reports"
+  "reports:core,rewriting,io,checkers,generators,proofs,events,inference,querymodify,analysis,reports"
   "events:core,rewriting,checkers,events"
   "inference:core,rewriting,io,checkers,inference"
   "querymodify:core,rewriting,io,checkers,querymodify"

@@ -1,0 +1,138 @@
+#include "reports/querymodify_report.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dartcheck::reports {
+
+namespace {
+
+struct Quality {
+  double min = NAN, median = NAN;
+};
+Quality quality_of(const querymodify::Recombination& r) {
+  std::vector<double> q = r.quality;
+  std::sort(q.begin(), q.end());
+  if (q.empty()) return {};
+  return {q.front(), q[q.size() / 2]};
+}
+
+double tets_per_second(const RecombineRun& run) { return run.total_seconds > 0 ? static_cast<double>(run.tets) / run.total_seconds : 0; }
+
+Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+}  // namespace
+
+std::string recombine_text(const RecombineRun& run) {
+  const auto& r = *run.result;
+  const Quality q = quality_of(r);
+  std::string out;
+  out += fmt::format("mesh        {}: {} points, {} tetrahedra ({:.3f} s)\n", run.mesh, run.points, run.tets, run.read_seconds);
+  out += fmt::format("input map   {} darts (12 per tetrahedron), a valid open 3-O-map ({:.3f} s)\n", run.input_darts, run.input_check_seconds);
+  out += fmt::format("queries     {} hex patterns, both hands of the 174 classes ({:.3f} s)\n", run.queries, run.query_seconds);
+  out += fmt::format("matches     {} raw, {} distinct, {} with 8 distinct corners and scaled Jacobian above {} ({:.3f} s)\n", r.raw_matches,
+                     r.distinct_matches, r.acceptable, run.min_quality, r.match_seconds);
+  out += fmt::format("selection   {} hexes, {} ({:.3f} s)\n", r.hexes,
+                     run.strategy == "greedy" ? "greedy: the first match from each dart in order" : "global: by scaled Jacobian, best first",
+                     r.select_seconds);
+  if (!r.quality.empty()) out += fmt::format("quality     scaled Jacobian of the hexes: min {:.3f}, median {:.3f}\n", q.min, q.median);
+  out += fmt::format("merge       {:.3f} s\n", r.merge_seconds);
+  out += fmt::format("result      {} hexes, {} tetrahedra; {} darts ({} expected: 36 per hex + 12 per tetrahedron), {} ({:.3f} s)\n", r.hexes, r.tets,
+                     run.darts, run.expected_darts, run.valid ? "valid" : "INVALID", run.output_check_seconds);
+  out += fmt::format("time        {:.3f} s, {:.0f} tetrahedra per second; peak memory {:.1f} MiB\n", run.total_seconds, tets_per_second(run),
+                     run.peak_mib);
+  if (!run.output.empty()) out += fmt::format("written     {}\n", run.output);
+  return out;
+}
+
+Json recombine_document(const RecombineRun& run) {
+  const auto& r = *run.result;
+  const Quality q = quality_of(r);
+  Json doc = json_document("recombine");
+  doc["mesh"] = run.mesh;
+  doc["points"] = run.points;
+  doc["tetrahedra"] = run.tets;
+  doc["input_darts"] = run.input_darts;
+  doc["strategy"] = run.strategy;
+  doc["queries"] = run.queries;
+  doc["raw_matches"] = r.raw_matches;
+  doc["distinct_matches"] = r.distinct_matches;
+  doc["acceptable_matches"] = r.acceptable;
+  doc["min_quality"] = number_or_null(run.min_quality);
+  doc["hexes"] = r.hexes;
+  doc["remaining_tetrahedra"] = r.tets;
+  doc["darts"] = run.darts;
+  doc["expected_darts"] = run.expected_darts;
+  doc["valid"] = run.valid;
+  doc["quality_min"] = number_or_null(q.min);
+  doc["quality_median"] = number_or_null(q.median);
+  doc["seconds"] = Json{{"read", run.read_seconds},
+                        {"check_input", run.input_check_seconds},
+                        {"queries", run.query_seconds},
+                        {"match", r.match_seconds},
+                        {"select", r.select_seconds},
+                        {"merge", r.merge_seconds},
+                        {"check_output", run.output_check_seconds},
+                        {"total", run.total_seconds}};
+  doc["tets_per_second"] = tets_per_second(run);
+  doc["peak_mib"] = run.peak_mib;
+  return doc;
+}
+
+namespace {
+
+std::vector<std::size_t> per_query(const QueryRun& run) {
+  std::vector<std::size_t> n(run.names.size(), 0);
+  for (const auto& m : run.all->distinct) ++n[static_cast<std::size_t>(m.query)];
+  return n;
+}
+
+}  // namespace
+
+std::string query_text(const QueryRun& run) {
+  const auto counts = per_query(run);
+  const auto& shown = *run.shown;
+  std::string out = fmt::format("map       {}: {} darts ({})\n", run.map, run.darts, run.model);
+  out += fmt::format("queries   {} ({}prefix tree of {} nodes)\n", run.names.size(),
+                     run.named_queries ? fmt::format("free links of the --query maps {}; ", run.free_symbol) : "", run.trie_nodes);
+  for (std::size_t k = 0; k < run.names.size(); ++k)
+    if (!run.hex || k < run.named_queries || counts[k] > 0)
+      out += fmt::format("  {:<24} {:>4} darts  {} distinct matches\n", run.names[k], run.query_darts[k], counts[k]);
+  out += fmt::format("matches   {} raw (found from every start dart), {} distinct ({:.3f} s)\n", run.all->raw, run.all->distinct.size(), run.seconds);
+  if (run.strategy != "all")
+    out += fmt::format("selected  {} without overlap ({})\n", shown.size(),
+                       run.strategy == "greedy" ? "greedy: from each dart in order" : "global: largest first");
+  const std::size_t listed = std::min(run.limit, shown.size());
+  for (std::size_t k = 0; k < listed; ++k)
+    out += fmt::format("  {}: darts {}\n", run.names[static_cast<std::size_t>(shown[k].query)], fmt::join(shown[k].darts, " "));
+  if (listed < shown.size()) out += fmt::format("  ... {} more (--limit)\n", shown.size() - listed);
+  return out;
+}
+
+Json query_document(const QueryRun& run) {
+  const auto counts = per_query(run);
+  const auto& shown = *run.shown;
+  Json qs = Json::array(), ms = Json::array();
+  for (std::size_t k = 0; k < run.names.size(); ++k)
+    qs.push_back(Json{{"name", run.names[k]}, {"darts", run.query_darts[k]}, {"distinct_matches", counts[k]}});
+  for (std::size_t k = 0; k < std::min(run.limit, shown.size()); ++k)
+    ms.push_back(Json{{"query", run.names[static_cast<std::size_t>(shown[k].query)]}, {"darts", shown[k].darts}});
+  Json doc = json_document("query");
+  doc["map"] = run.map;
+  doc["model"] = run.model;
+  doc["darts"] = run.darts;
+  doc["free"] = run.free;
+  doc["strategy"] = run.strategy;
+  doc["raw_matches"] = run.all->raw;
+  doc["distinct_matches"] = run.all->distinct.size();
+  doc["selected"] = shown.size();
+  doc["seconds"] = run.seconds;
+  doc["queries"] = std::move(qs);
+  doc["matches"] = std::move(ms);
+  return doc;
+}
+
+}  // namespace dartcheck::reports
