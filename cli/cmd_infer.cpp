@@ -93,22 +93,49 @@ std::pair<KappaSpec, std::string> kappa_spec(const InferCommand& o, const Map& b
   return {spec, "identity: same dart index"};
 }
 
+// The library's options from the command's, with the combinations that
+// make no sense refused as usage errors.
+InferOptions infer_options(const InferCommand& o) {
+  InferOptions options;
+  if (o.undecided == "keep")
+    options.fold.undecided = UndecidedPolicy::keep;
+  else if (o.undecided == "free")
+    options.fold.undecided = UndecidedPolicy::free;
+  else if (o.undecided == "fail")
+    options.fold.undecided = UndecidedPolicy::fail;
+  else
+    throw command_line(fmt::format("--undecided: expected keep, free or fail, got '{}'", o.undecided));
+  if (o.strict && options.fold.undecided != UndecidedPolicy::keep)
+    throw command_line("--strict is the paper's algorithm, which relabels undecided positions: it takes no --undecided");
+  if (o.start && o.all) throw command_line("--start and --all exclude each other");
+  options.fold.strict = o.strict;
+  options.start = o.start;
+  options.all = o.all;
+  options.keep_rejected = !o.all;  // --all on a large example: only rules are kept in full
+  options.name = o.name;
+  options.generalize = o.generalize;
+  return options;
+}
+
+// Both maps must be maps of the model: a folding of an invalid example
+// "verifies" a rule whose catalog then fails `run`.
+void require_valid(const std::string& what, const Map& map) {
+  const auto report = check_map(map);
+  if (report.valid()) return;
+  std::vector<std::string> lines;
+  for (std::size_t k = 0; k < report.violations.size() && k < 5; ++k)
+    lines.push_back(describe(report.violations[k], fmt::format("dart {}", report.violations[k].element)));
+  throw InputError(
+      what, 0, 0,
+      fmt::format("not a valid {} ({} violation{}: {}{}): inference needs two maps of the model", map.model().name, report.violations.size(),
+                  report.violations.size() == 1 ? "" : "s", fmt::join(lines, "; "), report.violations.size() > 5 ? "; ..." : ""));
+}
+
 }  // namespace
 
 int infer(const InferCommand& o) {
   if (o.format != "text" && o.format != "json") throw command_line(fmt::format("--format: expected text or json, got '{}'", o.format));
-  UndecidedPolicy policy;
-  if (o.undecided == "keep")
-    policy = UndecidedPolicy::keep;
-  else if (o.undecided == "free")
-    policy = UndecidedPolicy::free;
-  else if (o.undecided == "fail")
-    policy = UndecidedPolicy::fail;
-  else
-    throw command_line(fmt::format("--undecided: expected keep, free or fail, got '{}'", o.undecided));
-  if (o.strict && policy != UndecidedPolicy::keep)
-    throw command_line("--strict is the paper's algorithm, which relabels undecided positions: it takes no --undecided");
-  if (o.start && o.all) throw command_line("--start and --all exclude each other");
+  const InferOptions options = infer_options(o);
   if (!o.output.empty()) {
     const auto ext = std::filesystem::path(o.output).extension().string();
     if (ext != ".yaml" && ext != ".yml" && ext != ".jme") throw command_line(fmt::format("-o: expected a .yaml or .jme file, got '{}'", o.output));
@@ -126,19 +153,8 @@ int infer(const InferCommand& o) {
   } catch (const std::invalid_argument& e) {
     throw command_line(fmt::format("--orbit: {}", e.what()));
   }
-  // Both maps must be maps of the model: a folding of an invalid example
-  // "verifies" a rule whose catalog then fails `run`.
-  for (const auto& [what, map] : {std::pair<std::string, const Map*>{o.before, &before}, {o.after, &after}}) {
-    const auto report = check_map(*map);
-    if (report.valid()) continue;
-    std::vector<std::string> lines;
-    for (std::size_t k = 0; k < report.violations.size() && k < 5; ++k)
-      lines.push_back(describe(report.violations[k], fmt::format("dart {}", report.violations[k].element)));
-    throw InputError(
-        what, 0, 0,
-        fmt::format("not a valid {} ({} violation{}: {}{}): inference needs two maps of the model", map->model().name, report.violations.size(),
-                    report.violations.size() == 1 ? "" : "s", fmt::join(lines, "; "), report.violations.size() > 5 ? "; ..." : ""));
-  }
+  require_valid(o.before, before);
+  require_valid(o.after, after);
   const auto [spec, kappa_text] = kappa_spec(o, before, after);
   const std::size_t g_size = before.size(), h_size = after.size();
   std::optional<KappaGraph> graph;
@@ -147,13 +163,6 @@ int infer(const InferCommand& o) {
   } catch (const std::invalid_argument& e) {
     throw InputError(o.kappa == "identity" ? "<command line>" : o.kappa, 0, 0, e.what());
   }
-  InferOptions options;
-  options.fold = {o.strict, policy};
-  options.start = o.start;
-  options.all = o.all;
-  options.keep_rejected = !o.all;
-  options.name = o.name;
-  options.generalize = o.generalize;
   std::vector<Attempt> attempts;
   try {
     attempts = infer(*graph, orbit, options);
