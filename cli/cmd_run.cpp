@@ -16,6 +16,44 @@ namespace dartcheck::cli {
 
 using namespace analysis;  // the engines the commands call
 
+namespace {
+
+struct Outcome {
+  std::string got, detail;
+};
+
+const Map& built_map(const Catalog& catalog, const std::vector<Map>& built, const std::string& name) {
+  std::size_t index = 0;
+  while (catalog.maps[index].name != name) ++index;  // the catalog reader checked the name
+  return built[index];
+}
+
+// One worked example: the rule applied at its hooks (a scheme instantiated
+// there, 002 Sec. 6.3, a DPO rule matched from it), then the result's
+// validity, cell counts and isomorphism as the example asks.
+Outcome run_example(const Catalog& catalog, const std::vector<Map>& built, const CatalogRule& r, const Example& e) {
+  Map host = built_map(catalog, built, e.map);
+  const auto result = dartcheck::apply(r, host, e.hooks);
+  if (result.refusal != Refusal::none) return {std::string(refusal_name(result.refusal)), result.why};
+  const auto report = check_map(host);
+  if (!report.valid())
+    return {"invalid", fmt::format("{} violations, first: dart {} {}", report.violations.size(), report.violations[0].element,
+                                   constraint_name(report.violations[0]))};
+  Outcome out{"valid", fmt::format("{} darts", host.size())};
+  if (e.cells) {
+    const auto cells = count_cells(host).cells;
+    if (cells != *e.cells) return {"wrong cells", fmt::format("cells {} expected {}", fmt::join(cells, ","), fmt::join(*e.cells, ","))};
+  }
+  if (!e.isomorphic_to.empty()) {
+    const Map& target = built_map(catalog, built, e.isomorphic_to);
+    if (!isomorphic(host, target)) return {"not isomorphic", fmt::format("H is not isomorphic to map {} ({} darts)", e.isomorphic_to, target.size())};
+    out.detail += fmt::format(", isomorphic to {}", e.isomorphic_to);
+  }
+  return out;
+}
+
+}  // namespace
+
 int run(const RunOptions& o) {
   const Catalog catalog = read_catalog(o.catalog);
   fmt::print("catalog {}: {} maps, {} rules\n\nmaps\n", o.catalog, catalog.maps.size(), catalog.rules.size());
@@ -33,45 +71,10 @@ int run(const RunOptions& o) {
                r.rule.left().arc_count(), r.rule.right().node_count(), r.rule.right().arc_count());
     for (const auto& e : r.examples) {
       ++examples;
-      std::size_t index = 0;
-      while (catalog.maps[index].name != e.map) ++index;
-      Map host = built[index];
-      // A scheme is instantiated at the hook (002 Sec. 6.3), a DPO rule
-      // matched from it.
-      const auto result = dartcheck::apply(r, host, e.hooks);
-      const Refusal refusal = result.refusal;
-      const std::string& why = result.why;
-      std::string got, detail;
-      if (refusal != Refusal::none) {
-        got = std::string(refusal_name(refusal));
-        detail = why;
-      } else {
-        const auto report = check_map(host);
-        got = report.valid() ? "valid" : "invalid";
-        detail = report.valid() ? fmt::format("{} darts", host.size())
-                                : fmt::format("{} violations, first: dart {} {}", report.violations.size(), report.violations[0].element,
-                                              constraint_name(report.violations[0]));
-        if (e.cells && report.valid()) {
-          const auto cells = count_cells(host).cells;
-          if (cells != *e.cells) {
-            got = "wrong cells";
-            detail = fmt::format("cells {} expected {}", fmt::join(cells, ","), fmt::join(*e.cells, ","));
-          }
-        }
-        if (!e.isomorphic_to.empty() && got == "valid") {
-          std::size_t target = 0;
-          while (catalog.maps[target].name != e.isomorphic_to) ++target;
-          if (!isomorphic(host, built[target])) {
-            got = "not isomorphic";
-            detail = fmt::format("H is not isomorphic to map {} ({} darts)", e.isomorphic_to, built[target].size());
-          } else {
-            detail += fmt::format(", isomorphic to {}", e.isomorphic_to);
-          }
-        }
-      }
-      const bool pass = got == e.expect;
+      const Outcome got = run_example(catalog, built, r, e);
+      const bool pass = got.got == e.expect;
       failures += !pass;
-      fmt::print("    {} {} at {}: {} -> {}  ({}){}\n", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got, detail,
+      fmt::print("    {} {} at {}: {} -> {}  ({}){}\n", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got.got, got.detail,
                  pass ? "" : "  at " + e.location.str());
     }
   }
