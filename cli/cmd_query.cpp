@@ -43,23 +43,12 @@ struct NamedQuery {
   QueryWord word;
 };
 
-}  // namespace
-
-int query(const QueryOptions& o) {
-  if (o.format != "text" && o.format != "json") throw command_line(fmt::format("--format: expected text or json, got '{}'", o.format));
-  if (o.strategy != "all" && o.strategy != "greedy" && o.strategy != "global")
-    throw command_line(fmt::format("--strategy: expected all, greedy or global, got '{}'", o.strategy));
-  const querymodify::Constraint free_links = parse_free(o.free);
-  if (o.queries.empty() && !o.hex) throw command_line("no query: give --query (repeatable) or --hex");
-  const auto model = Model::by_name(o.model);
-  if (!model) throw command_line(fmt::format("--model: unknown model '{}' (expected {})", o.model, Model::known_names()));
-  std::optional<Catalog> catalog;
-  if (!o.catalog.empty()) catalog = read_catalog(o.catalog);
-  const Catalog* cat = catalog ? &*catalog : nullptr;
-  const Map input = load(o.map, *model, cat);
+// The --query maps read as words from --start, then the hex patterns.
+std::vector<NamedQuery> named_queries(const QueryOptions& o, const Map& input, const Model& model, const Catalog* cat,
+                                      querymodify::Constraint free_links) {
   std::vector<NamedQuery> queries;
   for (const auto& target : o.queries) {
-    const Map q = load(target, *model, cat);
+    const Map q = load(target, model, cat);
     if (!(q.model() == input.model()))
       throw command_line(
           fmt::format("--query {}: a {} query on a {} map (a query's letters are the map's dimensions)", target, q.model().name, input.model().name));
@@ -76,6 +65,24 @@ int query(const QueryOptions& o) {
     const auto& hex = hex_queries();
     for (std::size_t k = 0; k < hex.size(); ++k) queries.push_back({fmt::format("hex-{}", k), hex[k].word});
   }
+  return queries;
+}
+
+}  // namespace
+
+int query(const QueryOptions& o) {
+  if (o.format != "text" && o.format != "json") throw command_line(fmt::format("--format: expected text or json, got '{}'", o.format));
+  if (o.strategy != "all" && o.strategy != "greedy" && o.strategy != "global")
+    throw command_line(fmt::format("--strategy: expected all, greedy or global, got '{}'", o.strategy));
+  const querymodify::Constraint free_links = parse_free(o.free);
+  if (o.queries.empty() && !o.hex) throw command_line("no query: give --query (repeatable) or --hex");
+  const auto model = Model::by_name(o.model);
+  if (!model) throw command_line(fmt::format("--model: unknown model '{}' (expected {})", o.model, Model::known_names()));
+  std::optional<Catalog> catalog;
+  if (!o.catalog.empty()) catalog = read_catalog(o.catalog);
+  const Catalog* cat = catalog ? &*catalog : nullptr;
+  const Map input = load(o.map, *model, cat);
+  const std::vector<NamedQuery> queries = named_queries(o, input, *model, cat, free_links);
   QueryTrie trie;
   for (std::size_t k = 0; k < queries.size(); ++k) trie.add(queries[k].word, static_cast<int>(k));
   const auto t0 = std::chrono::steady_clock::now();

@@ -39,19 +39,30 @@ double peak_mib() {
 // top quad above it. Corner v = x + 2y + 4z.
 std::array<std::uint32_t, 8> medit_order(const std::array<std::uint32_t, 8>& c) { return {c[0], c[1], c[3], c[2], c[4], c[5], c[7], c[6]}; }
 
+Strategy parse_strategy(const std::string& s) {
+  if (s == "greedy") return Strategy::greedy;
+  if (s == "global") return Strategy::global;
+  throw InputError("<command line>", 0, 0, fmt::format("--strategy: expected greedy or global, got '{}'", s));
+}
+
+// The hexes (medit order) and the tetrahedra left, on the input's points.
+void write_hexes(const std::string& file, const TetMesh& input, const Recombination& r) {
+  TetMesh out;
+  out.points = input.points;
+  for (std::size_t k : r.remaining_tets) out.tets.push_back(input.tets[k]);
+  for (const auto& c : r.hex_corners) out.hexes.push_back(medit_order(c));
+  std::ostringstream text;
+  write_medit(text, out);
+  write_file(file, text.str());
+}
+
 }  // namespace
 
 int recombine(const RecombineOptions& o) {
   if (o.format != "text" && o.format != "json")
     throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", o.format));
   if (!o.output.empty()) check_writable(o.output);  // before the work, not after it
-  Strategy strategy;
-  if (o.strategy == "greedy")
-    strategy = Strategy::greedy;
-  else if (o.strategy == "global")
-    strategy = Strategy::global;
-  else
-    throw InputError("<command line>", 0, 0, fmt::format("--strategy: expected greedy or global, got '{}'", o.strategy));
+  const Strategy strategy = parse_strategy(o.strategy);
   if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".mesh")
     throw InputError("<command line>", 0, 0, fmt::format("-o: expected a medit .mesh file, got '{}'", o.output));
   const auto start = Clock::now();
@@ -76,15 +87,7 @@ int recombine(const RecombineOptions& o) {
   const double output_check_seconds = since(t);
   const std::size_t expected_darts = 36 * r.hexes + 12 * r.tets;
   const bool darts_ok = in.map.map.size() == expected_darts;
-  if (!o.output.empty()) {
-    TetMesh out;
-    out.points = in.mesh.points;
-    for (std::size_t k : r.remaining_tets) out.tets.push_back(in.mesh.tets[k]);
-    for (const auto& c : r.hex_corners) out.hexes.push_back(medit_order(c));
-    std::ostringstream text;
-    write_medit(text, out);
-    write_file(o.output, text.str());
-  }
+  if (!o.output.empty()) write_hexes(o.output, in.mesh, r);
   const reports::RecombineRun run{o.mesh,
                                   o.strategy,
                                   o.output,
