@@ -1,5 +1,6 @@
 #include "io/mesh_io.hpp"
 
+#include <cmath>
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -75,6 +76,10 @@ Mesh read_off(const std::string& file) {
     std::array<double, 3> p{};
     for (int c = 0; c < coords; ++c) {
       const double x = number<double>(r, *l, static_cast<std::size_t>(c), "a vertex coordinate");
+      // NaN and infinities would end in positions, outputs and JSON.
+      if (!std::isfinite(x))
+        r.fail(l->number, l->tokens[static_cast<std::size_t>(c)].second,
+               fmt::format("a vertex coordinate is not a finite number ({})", l->tokens[static_cast<std::size_t>(c)].first));
       if (c < 3) p[static_cast<std::size_t>(c)] = x;
     }
     mesh.positions.push_back(p);

@@ -1,6 +1,7 @@
 #include "io/tet_mesh_io.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "io/line_reader.hpp"
@@ -20,12 +21,30 @@ Line need_line(LineReader& r, const std::string& what) {
   return *l;
 }
 
-void check_tet(const LineReader& r, const Line& l, const std::array<std::uint32_t, 4>& t, std::size_t points, int first_column) {
-  for (std::size_t k = 0; k < 4; ++k) {
-    if (t[k] >= points) r.fail(l.number, first_column, fmt::format("vertex index out of range ({} points)", points));
+// Vertices are named in messages as the file numbers them (from `base`).
+void check_tet(const LineReader& r, const Line& l, const std::array<std::uint32_t, 4>& t, long base, int first_column) {
+  for (std::size_t k = 0; k < 4; ++k)
     for (std::size_t j = 0; j < k; ++j)
-      if (t[j] == t[k]) r.fail(l.number, first_column, fmt::format("a tetrahedron repeats vertex {}", t[k]));
-  }
+      if (t[j] == t[k]) r.fail(l.number, first_column, fmt::format("a tetrahedron repeats vertex {}", static_cast<long>(t[k]) + base));
+}
+
+// A vertex index of the file (numbered from `base`) as a 0-based point,
+// refused out of range before any narrowing (2^32 + 5 is not 5).
+std::uint32_t vertex_index(const LineReader& r, const Line& l, std::size_t k, long base, std::size_t points) {
+  const auto v = number<long long>(r, l, k, "a vertex index");
+  if (v < base || v - base >= static_cast<long long>(points))
+    r.fail(l.number, l.tokens[k].second,
+           points ? fmt::format("vertex index {} out of range {}..{}", v, base, base + static_cast<long long>(points) - 1)
+                  : fmt::format("vertex index {}: there are no points", v));
+  return static_cast<std::uint32_t>(v - base);
+}
+
+// A coordinate: finite (NaN and infinities would end in the output mesh and
+// in JSON).
+double coordinate(const LineReader& r, const Line& l, std::size_t k, const char* name) {
+  const double x = number<double>(r, l, k, name);
+  if (!std::isfinite(x)) r.fail(l.number, l.tokens[k].second, fmt::format("{} is not a finite number ({})", name, l.tokens[k].first));
+  return x;
 }
 
 }  // namespace
@@ -52,11 +71,12 @@ TetMesh read_tetgen(const std::string& file) {
       const Line l = need_line(r, fmt::format("point {} of {}", k + 1, count));
       const auto index = number<long>(r, l, 0, "a point index");
       if (k == 0) first_index = index;
+      if (k == 0 && index != 0 && index != 1)
+        r.fail(l.number, l.tokens[0].second, fmt::format("point index {}: point indices start at 0 or 1", index));
       if (index != first_index + k)
         r.fail(l.number, l.tokens[0].second, fmt::format("point index {} out of sequence (expected {})", index, first_index + k));
-      m.points.push_back({number<double>(r, l, 1, "x"), number<double>(r, l, 2, "y"), number<double>(r, l, 3, "z")});
+      m.points.push_back({coordinate(r, l, 1, "x"), coordinate(r, l, 2, "y"), coordinate(r, l, 3, "z")});
     }
-    if (first_index != 0 && first_index != 1) r.fail(1, 0, "point indices start at 0 or 1");
   }
   LineReader r(ele);
   const Line h = need_line(r, "the .ele header");
@@ -67,12 +87,8 @@ TetMesh read_tetgen(const std::string& file) {
   for (long k = 0; k < count; ++k) {
     const Line l = need_line(r, fmt::format("tetrahedron {} of {}", k + 1, count));
     std::array<std::uint32_t, 4> t{};
-    for (std::size_t j = 0; j < 4; ++j) {
-      const auto v = number<long>(r, l, j + 1, "a vertex index") - first_index;
-      if (v < 0) r.fail(l.number, l.tokens[j + 1].second, "vertex index below the first point's");
-      t[j] = static_cast<std::uint32_t>(v);
-    }
-    check_tet(r, l, t, m.points.size(), l.tokens[1].second);
+    for (std::size_t j = 0; j < 4; ++j) t[j] = vertex_index(r, l, j + 1, first_index, m.points.size());
+    check_tet(r, l, t, first_index, l.tokens[1].second);
     m.tets.push_back(t);
     m.tet_lines.push_back(l.number);
   }
@@ -102,27 +118,18 @@ TetMesh read_medit(const std::string& file) {
     for (long k = 0; k < count; ++k) {
       const Line e = need_line(r, fmt::format("entry {} of {} in {}", k + 1, count, key));
       if (key == "Vertices") {
-        m.points.push_back({number<double>(r, e, 0, "x"), number<double>(r, e, 1, "y"), number<double>(r, e, 2, "z")});
+        m.points.push_back({coordinate(r, e, 0, "x"), coordinate(r, e, 1, "y"), coordinate(r, e, 2, "z")});
       } else if (key == "Tetrahedra") {
         if (!vertices) r.fail(e.number, 1, "Tetrahedra before Vertices");
         std::array<std::uint32_t, 4> t{};
-        for (std::size_t j = 0; j < 4; ++j) {
-          const auto v = number<long>(r, e, j, "a vertex index");
-          if (v < 1) r.fail(e.number, e.tokens[j].second, "medit vertex indices start at 1");
-          t[j] = static_cast<std::uint32_t>(v - 1);
-        }
-        check_tet(r, e, t, m.points.size(), e.tokens[0].second);
+        for (std::size_t j = 0; j < 4; ++j) t[j] = vertex_index(r, e, j, 1, m.points.size());
+        check_tet(r, e, t, 1, e.tokens[0].second);
         m.tets.push_back(t);
         m.tet_lines.push_back(e.number);
       } else if (key == "Hexahedra") {
         if (!vertices) r.fail(e.number, 1, "Hexahedra before Vertices");
         std::array<std::uint32_t, 8> h{};
-        for (std::size_t j = 0; j < 8; ++j) {
-          const auto v = number<long>(r, e, j, "a vertex index");
-          if (v < 1 || static_cast<std::size_t>(v) > m.points.size())
-            r.fail(e.number, e.tokens[j].second, fmt::format("vertex index {} out of range 1..{}", v, m.points.size()));
-          h[j] = static_cast<std::uint32_t>(v - 1);
-        }
+        for (std::size_t j = 0; j < 8; ++j) h[j] = vertex_index(r, e, j, 1, m.points.size());
         m.hexes.push_back(h);
       }
     }

@@ -50,6 +50,9 @@ int orientation_sign(const Point3& a, const Point3& b, const Point3& c, const Po
   // exact when the products under- or overflow the bound's assumptions.
   constexpr double eps = std::numeric_limits<double>::epsilon() / 2;
   constexpr double bound = (7.0 + 56.0 * eps) * eps;
+  // GMP traps on infinities and NaN: a non-finite point orients nothing.
+  for (const Point3* p : {&a, &b, &c, &d})
+    if (!std::isfinite((*p)[0]) || !std::isfinite((*p)[1]) || !std::isfinite((*p)[2])) return 0;
   const Terms t = orient3d(a, b, c, d);
   const double err = bound * t.permanent;
   if (std::isfinite(t.det) && std::isfinite(err) && t.permanent >= std::numeric_limits<double>::min() / eps) {

@@ -14,7 +14,8 @@ using Point3 = std::array<double, 3>;
 
 /// The sign (-1, 0 or 1) of det[a - d, b - d, c - d], exactly: positive
 /// when d lies on the side of the plane abc from which a, b, c turn
-/// clockwise (Shewchuk's orient3d convention). Coordinates must be finite.
+/// clockwise (Shewchuk's orient3d convention). 0 if a coordinate is not
+/// finite (the mesh readers refuse those).
 int orientation_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
 
 /// The same determinant in floating point, as the filter computes it.
