@@ -289,7 +289,8 @@ int run_command(const Commands& commands) {
 int main(int argc, char** argv) {
   CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("dartcheck ") + DARTCHECK_VERSION);
+  app.set_version_flag("-V,--version", std::string("dartcheck ") + DARTCHECK_VERSION);
+  app.fallthrough();  // the global options (limits) also after the command's name
   add_limits(app);
 
   Commands commands;
@@ -309,12 +310,11 @@ int main(int argc, char** argv) {
   add_report(app, commands);
   add_draw_map(app, commands);
 
+  if (const auto status = cli::help_request(app, argc, argv)) return *status;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    if (code != 0) cli::suggest_subcommand(app, argc, argv);
-    return code == 0 ? 0 : cli::bad_input;
+    return cli::report_parse_error(app, e, argc, argv);
   }
   return run_command(commands);
 }

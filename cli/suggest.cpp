@@ -25,22 +25,86 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+// The closest name within edit distance 2 (or a name `typed` is a prefix
+// of), or empty.
+std::string closest(std::string_view typed, const std::vector<std::string>& names) {
+  std::string best;
+  std::size_t best_distance = 3;
+  for (const auto& name : names) {
+    const std::size_t d = name.starts_with(typed) && typed.size() > 2 ? 1 : edit_distance(typed, name);
+    if (d < best_distance) best = name, best_distance = d;
+  }
+  return best;
+}
+
+std::vector<std::string> command_names(const CLI::App& app) {
+  std::vector<std::string> out;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) out.push_back(sub->get_name());
+  return out;
+}
+
+const CLI::App* command_named(const CLI::App& app, std::string_view name) {
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (sub->get_name() == name) return sub;
+  return nullptr;
+}
+
+// The long option names a command accepts: its own and the global ones.
+std::vector<std::string> option_names(const CLI::App& app, const CLI::App* command) {
+  std::vector<std::string> out;
+  for (const CLI::App* a : {&app, command}) {
+    if (!a) continue;
+    for (const CLI::Option* o : a->get_options())
+      for (const auto& n : o->get_lnames()) out.push_back("--" + n);
+  }
+  return out;
+}
+
 }  // namespace
 
-void suggest_subcommand(const CLI::App& app, int argc, char** argv) {
-  if (argc < 2 || argv[1][0] == '-') return;
-  const std::string_view typed = argv[1];
-  std::string best;
-  std::size_t best_distance = 3;  // farther than this is no suggestion
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
-    if (sub->get_name() == typed) return;
-    const std::size_t d = edit_distance(typed, sub->get_name());
-    if (d < best_distance || (d == best_distance && best.empty())) {
-      best = sub->get_name();
-      best_distance = d;
-    }
+std::optional<int> help_request(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || std::string_view(argv[1]) != "help") return std::nullopt;
+  if (argc == 2) {
+    fmt::print("{}", app.help());
+    return 0;
   }
-  if (!best.empty()) fmt::print(stderr, "'{}' is not a dartcheck command; did you mean '{}'?\n", printable(typed), best);
+  if (const CLI::App* sub = command_named(app, argv[2])) {
+    fmt::print("{}", sub->help());
+    return 0;
+  }
+  const std::string best = closest(argv[2], command_names(app));
+  fmt::print(stderr, "error: 'help {}': no such command{}\n", printable(argv[2]), best.empty() ? "" : fmt::format("; did you mean '{}'?", best));
+  return 2;
+}
+
+int report_parse_error(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
+  if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+  const CLI::App* command = argc > 1 ? command_named(app, argv[1]) : nullptr;
+  // A mistyped command: the suggestion is the whole message.
+  if (argc > 1 && argv[1][0] != '-' && !command) {
+    const std::string best = closest(argv[1], command_names(app));
+    fmt::print(stderr, "error: '{}' is not a dartcheck command{} (dartcheck --help lists them)\n", printable(argv[1]),
+               best.empty() ? "" : fmt::format("; did you mean '{}'?", best));
+    return 2;
+  }
+  if (argc < 2) {
+    fmt::print(stderr, "error: no command given (dartcheck --help lists them)\n");
+    return 2;
+  }
+  // A mistyped option: name the closest the command accepts.
+  for (int k = 2; k < argc; ++k) {
+    const std::string_view arg = argv[k];
+    if (!arg.starts_with("--") || std::string(e.what()).find(std::string(arg.substr(0, arg.find('=')))) == std::string::npos) continue;
+    const std::string typed(arg.substr(0, arg.find('=')));
+    const auto names = option_names(app, command);
+    if (std::find(names.begin(), names.end(), typed) != names.end()) continue;
+    const std::string best = closest(typed, names);
+    fmt::print(stderr, "error: {}: unknown option {}{} (dartcheck help {} lists them)\n", command ? command->get_name() : "dartcheck",
+               printable(typed), best.empty() ? "" : fmt::format("; did you mean {}?", best), command ? command->get_name() : "");
+    return 2;
+  }
+  fmt::print(stderr, "error: {}{}\n", command ? command->get_name() + ": " : "", printable(e.what()));
+  return 2;
 }
 
 }  // namespace dartcheck::cli
