@@ -10,6 +10,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/suggest.hpp"
+#include "reports/versions.hpp"
+#include "revision.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "core/limits.hpp"
@@ -289,7 +291,12 @@ int run_command(const Commands& commands) {
 int main(int argc, char** argv) {
   CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps"};
   app.require_subcommand(1);
-  app.set_version_flag("-V,--version", std::string("dartcheck ") + DARTCHECK_VERSION);
+  app.set_version_flag("-V,--version", [] {
+    std::string text = fmt::format("dartcheck {} ({})\nbuilt with", DARTCHECK_VERSION, DARTCHECK_REVISION);
+    for (const auto& [library, version] : reports::library_versions()) text += fmt::format(" {} {},", library, version);
+    text.pop_back();  // the last comma
+    return text;
+  });
   app.fallthrough();  // the global options (limits) also after the command's name
   add_limits(app);
 

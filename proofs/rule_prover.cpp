@@ -464,4 +464,10 @@ RuleProof prove_rule(const Operation& entry, const ProveOptions& o) {
   return p;
 }
 
+std::string solver_version() {
+  unsigned major = 0, minor = 0, build = 0, revision = 0;
+  Z3_get_version(&major, &minor, &build, &revision);
+  return fmt::format("{}.{}.{}", major, minor, build);
+}
+
 }  // namespace dartcheck::proofs

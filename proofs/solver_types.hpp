@@ -3,6 +3,8 @@
 // stays in proofs' .cpp files and its encodings' own headers.
 #pragma once
 
+#include <string>
+
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -24,5 +26,8 @@ enum class Answer { sat, unsat, unknown };
 /// Deliberate faults, for the tests that check that a wrong encoding is
 /// caught (a planted bug must produce disagreements).
 enum class EncodingFault { none, drop_dangling };
+
+/// The version of the Z3 library in use ("4.8.12").
+std::string solver_version();
 
 }  // namespace dartcheck::proofs

@@ -42,6 +42,8 @@ int exact_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& 
 
 }  // namespace
 
+const char* exact_arithmetic_version() { return ::gmp_version; }
+
 double orientation_estimate(const Point3& a, const Point3& b, const Point3& c, const Point3& d) { return orient3d(a, b, c, d).det; }
 
 int orientation_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {

@@ -18,6 +18,9 @@ using Point3 = std::array<double, 3>;
 /// finite (the mesh readers refuse those).
 int orientation_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
 
+/// The version of the GMP library in use (the exact fallback).
+const char* exact_arithmetic_version();
+
 /// The same determinant in floating point, as the filter computes it.
 double orientation_estimate(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
 
