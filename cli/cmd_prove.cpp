@@ -35,6 +35,7 @@ int prove(const ProveCommand& c) {
   o.scheme_darts = c.scheme_darts;
   o.rlimit = c.rlimit;
   o.timeout_ms = static_cast<unsigned>(c.timeout * 1000);
+  o.stop = [] { return interrupted(); };  // Ctrl-C interrupts the running Z3 query too
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<RuleResult> results;
@@ -46,6 +47,9 @@ int prove(const ProveCommand& c) {
     results.push_back(analyse_static(catalog, e, 0, {}, source));
     run_proof(results.back(), o, c.out, c.catalog);
   }
+  if (!results.empty() && results.back().proof && results.back().proof->interrupted)
+    fmt::print(stderr, "interrupted during the solver queries of {}: the queries it did not finish say 'interrupted'\n",
+               results.back().entry->rule.name());
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const int status = finish_run(results, baseline_mismatches, selected);
   const reports::ProveRun run{c.catalog, o.max_darts, o.rlimit, total, c.explain, baseline_mismatches};

@@ -38,6 +38,10 @@ HostEncoding::HostEncoding(z3::context& ctx, const Model& model, const HostClass
   z3::params p(ctx_);
   p.set("rlimit", rlimit);
   if (timeout_ms > 0) p.set("timeout", timeout_ms);
+  // Z3 would take SIGINT itself during a check (and answer "unknown", which
+  // read as "rlimit reached"); dartcheck's handler decides, and interrupts
+  // the context (rule_prover's SolverWatch).
+  p.set("ctrl_c", false);
   solver_.set(p);
   link_.assign(max_dimension + 1, {});
   encode_host();

@@ -1,7 +1,9 @@
 #include "proofs/rule_prover.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <memory>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -227,6 +229,30 @@ std::string scheme_never_applies(const Rule& core) {
   return {};
 }
 
+// Interrupts the context's solver when the caller asks to stop: a thread
+// polls `stop` while the rule is proved (Z3's interrupt is the one call
+// that is safe from another thread).
+class SolverWatch {
+ public:
+  SolverWatch(z3::context& ctx, const std::function<bool()>& stop) {
+    if (!stop) return;
+    thread_ = std::jthread([&ctx, stop, this](std::stop_token token) {
+      while (!token.stop_requested()) {
+        if (stop()) {
+          fired_ = true;
+          ctx.interrupt();
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+    });
+  }
+  bool fired() const { return fired_; }
+
+ private:
+  std::atomic<bool> fired_ = false;
+  std::jthread thread_;  // last: joined before fired_ goes
+};
+
 class ClassRun {
  public:
   ClassRun(z3::context& ctx, const Operation& entry, HostClass cls, const ProveOptions& o)
@@ -446,20 +472,27 @@ RuleProof prove_rule(const Operation& entry, const ProveOptions& o) {
     if (!c.holds) p.static_failures.push_back(c.name());
   const bool comb = combinatorial(verdict);
   z3::context ctx;
+  const SolverWatch watch(ctx, o.stop);
   ClassRun maps(ctx, entry, model_class(rule.model()), o);
   for (const HConstraint& c : model_constraints(rule.model())) {
+    if (watch.fired()) break;  // the rule's remaining constraints are not asked
     ConstraintProof cp;
     cp.constraint = c;
     if (const auto* sc = static_condition(verdict, c)) cp.static_holds = sc->holds;
     cp.model = maps.ask(c);
-    if (p.scheme) {
-      judge_scheme(cp, verdict);
-    } else {
+    if (!p.scheme)
       if (auto cls = theorem_class(c)) cp.theorem = ClassRun(ctx, entry, *cls, o).ask(c);
+    // An interrupted query ends "unknown" like one out of resources: say which.
+    if (watch.fired())
+      for (ClassAnswer* a : {&cp.model, cp.theorem ? &*cp.theorem : nullptr})
+        if (a && a->status == Status::unknown) a->why = "interrupted (SIGINT or SIGTERM)";
+    if (p.scheme)
+      judge_scheme(cp, verdict);
+    else
       judge(cp, comb, verdict.consistent());
-    }
     p.constraints.push_back(std::move(cp));
   }
+  p.interrupted = watch.fired();
   p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return p;
 }

@@ -7,6 +7,8 @@
 // believed.
 #pragma once
 
+#include <functional>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +32,11 @@ struct ProveOptions {
   unsigned timeout_ms = 0;
   bool minimize = true;
   EncodingFault fault = EncodingFault::none;
+  /// Polled every 20 ms while the solver runs: when it returns true, Z3 is
+  /// interrupted (its context's interrupt), the running query and the
+  /// rule's remaining ones end "unknown" with why "interrupted" (Ctrl-C
+  /// must not wait for a query that may run for minutes).
+  std::function<bool()> stop;
 };
 
 enum class Status {
@@ -82,6 +89,7 @@ struct RuleProof {
   std::string out_of_scope;  // why the solver does not encode this rule
   std::vector<std::string> static_failures;
   std::vector<ConstraintProof> constraints;
+  bool interrupted = false;  // ProveOptions::stop fired: constraints may be missing, answers "interrupted"
   double seconds = 0;
   std::size_t count(Agreement a) const;
 };
