@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "core/wording.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "analysis/map_sources.hpp"
@@ -20,7 +21,8 @@ int convert(const ConvertOptions& o) {
     throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a file name ending in .yaml or .yml", o.output));
   const std::string text = catalog_yaml(catalog);
   write_file(o.output, text);
-  fmt::print("wrote {}: {} rules, {} skipped, {} embeddings\n", o.output, catalog.rules.size(), catalog.skipped.size(), catalog.embeddings.size());
+  fmt::print("wrote {}: {}, {} skipped, {}\n", o.output, counted(catalog.rules.size(), "rule"), catalog.skipped.size(),
+             counted(catalog.embeddings.size(), "embedding"));
   return ok;
 }
 

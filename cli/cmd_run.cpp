@@ -2,6 +2,7 @@
 // worked examples and compares each outcome with the recorded expectation.
 #include <fmt/format.h>
 
+#include "core/wording.hpp"
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
 #include "rewriting/application.hpp"
@@ -56,7 +57,7 @@ Outcome run_example(const Catalog& catalog, const std::vector<Map>& built, const
 
 int run(const RunOptions& o) {
   const Catalog catalog = read_catalog(o.catalog);
-  fmt::print("catalog {}: {} maps, {} rules\n\nmaps\n", o.catalog, catalog.maps.size(), catalog.rules.size());
+  fmt::print("catalog {}: {}, {}\n\nmaps\n", o.catalog, counted(catalog.maps.size(), "map"), counted(catalog.rules.size(), "rule"));
   std::vector<Map> built;
   for (const auto& s : catalog.maps) {
     built.push_back(build_source(s));
@@ -78,7 +79,7 @@ int run(const RunOptions& o) {
                  pass ? "" : "  at " + e.location.str());
     }
   }
-  fmt::print("\n{} examples, {} passed, {} failed\n", examples, examples - failures, failures);
+  fmt::print("\n{}, {} passed, {} failed\n", counted(static_cast<std::size_t>(examples), "example"), examples - failures, failures);
   return failures ? violation : ok;
 }
 

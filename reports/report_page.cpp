@@ -1,3 +1,4 @@
+#include "core/wording.hpp"
 #include "reports/report_page.hpp"
 
 #include <algorithm>
@@ -112,7 +113,7 @@ std::string kind_of(const CatalogRule& e) {
 std::string fuzz_cell(const FuzzReport& f) {
   switch (f.verdict) {
     case FuzzClass::consistent:
-      return fmt::format("<td class=\"ok\">consistent ({} applications)</td>", f.applications);
+      return fmt::format("<td class=\"ok\">consistent ({})</td>", counted(f.applications, "application"));
     case FuzzClass::confirmed:
       return fmt::format("<td class=\"fails\">confirmed ({} darts)</td>", f.counterexample->host.size());
     case FuzzClass::unconfirmed:

@@ -1,3 +1,4 @@
+#include "core/wording.hpp"
 #include "reports/rule_result_text.hpp"
 
 #include <algorithm>
@@ -56,9 +57,10 @@ std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& resul
     }
   }
   out += fmt::format(
-      "\n{} rules ({} in the solver's scope); {} constraints agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
+      "\n{} ({} in the solver's scope); {} agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
       "{:.1f} s\n",
-      results.size(), scoped, counts[0], counts[1], counts[2], counts[3], run.max_darts, run.rlimit, run.seconds);
+      counted(results.size(), "rule"), scoped, counted(counts[0], "constraint"), counts[1], counts[2], counts[3], run.max_darts, run.rlimit,
+      run.seconds);
   if (const auto line = mismatch_summary(results); !line.empty()) out += line + "\n";
   return out;
 }
@@ -117,10 +119,11 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
   }
   const std::size_t bugs = classes[FuzzClass::soundness_bug], contradicted = count_results(results).events_contradicted;
   out += fmt::format(
-      "\n{} rules: {} consistent, {} confirmed, {} unconfirmed, {} soundness bug{}, {} event analys{} contradicted; {} applications in {:.1f} s "
+      "\n{}: {} consistent, {} confirmed, {} unconfirmed, {}, {} contradicted; {} in {:.1f} s "
       "({:.0f}/s); seed {}\n",
-      results.size(), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed], bugs, bugs == 1 ? "" : "s",
-      contradicted, contradicted == 1 ? "is" : "es", applications, run.seconds, run.seconds > 0 ? double(applications) / run.seconds : 0.0, run.seed);
+      counted(results.size(), "rule"), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed],
+      counted(bugs, "soundness bug"), counted(contradicted, "event analysis", "event analyses"), counted(applications, "application"), run.seconds,
+      run.seconds > 0 ? double(applications) / run.seconds : 0.0, run.seed);
   if (const auto line = mismatch_summary(results); !line.empty()) out += line + "\n";
   return out;
 }
