@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/interrupt.hpp"
 #include "analysis/map_sources.hpp"
 #include "analysis/rule_result.hpp"
 #include "analysis/verdict_record.hpp"
@@ -54,12 +55,21 @@ int check(const CheckOptions& o) {
   const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.words.scheme; });
   const std::vector<Map> maps = o.confirm_darts > 0 && schemes ? catalog_maps(catalog) : std::vector<Map>{};
 
+  // Ctrl-C stops at the next rule: the finished ones are reported, exit 130.
+  catch_interrupts();
   std::vector<RuleResult> results;
-  for (const auto& entry : catalog.rules)
-    if (o.rule.empty() || entry.rule.name() == o.rule) results.push_back(analyse_static(catalog, entry, o.confirm_darts, maps, source));
+  std::size_t selected = 0;
+  for (const auto& entry : catalog.rules) {
+    if (!o.rule.empty() && entry.rule.name() != o.rule) continue;
+    ++selected;
+    if (!interrupted()) results.push_back(analyse_static(catalog, entry, o.confirm_darts, maps, source));
+  }
 
-  const int status = finish_run(results, baseline_mismatches, results.size());
-  if (!o.write_baseline.empty()) write_baseline_file(o.write_baseline, o.catalog, catalog, results);
+  const int status = finish_run(results, baseline_mismatches, selected);
+  if (!o.write_baseline.empty() && interrupted())
+    fmt::print(stderr, "not written: {} (interrupted: a baseline records every rule)\n", o.write_baseline);
+  else if (!o.write_baseline.empty())
+    write_baseline_file(o.write_baseline, o.catalog, catalog, results);
   if (o.format == "sarif") {
     fmt::print("{}\n", reports::sarif_document(o.catalog, results, DARTCHECK_VERSION));
   } else if (o.format == "junit") {
@@ -71,7 +81,7 @@ int check(const CheckOptions& o) {
     fmt::print("{}", reports::check_table(catalog, results, baseline_mismatches.size(), {o.explain, o.catalog}));
   }
   // Writing a baseline records the present verdicts: not a failure.
-  return o.write_baseline.empty() ? status : ok;
+  return o.write_baseline.empty() || interrupted() ? status : ok;
 }
 
 }  // namespace dartcheck::cli

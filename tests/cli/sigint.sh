@@ -1,0 +1,28 @@
+#!/bin/sh
+# Ctrl-C during a long command (issue 38): SIGINT after DELAY seconds must
+# end the command within 20 s with exit status 130 and an output matching
+# REGEX (grep -E): what it finished, and that it was interrupted.
+#   sigint.sh DELAY REGEX DARTCHECK ARGS...   (run from the source directory)
+delay=$1
+regex=$2
+shift 2
+out=$(mktemp)
+"$@" >"$out" 2>&1 &
+pid=$!
+sleep "$delay"
+kill -INT "$pid"
+n=0
+while kill -0 "$pid" 2>/dev/null && [ "$n" -lt 200 ]; do sleep 0.1; n=$((n + 1)); done
+if kill -0 "$pid" 2>/dev/null; then
+  kill -KILL "$pid"
+  echo "still running 20 s after SIGINT"
+  exit 1
+fi
+wait "$pid"
+rc=$?
+cat "$out"
+found=0
+grep -Eq "$regex" "$out" && found=1
+rm -f "$out"
+[ "$found" -eq 1 ] || { echo "no line matching '$regex'"; exit 1; }
+[ "$rc" -eq 130 ] || { echo "exit status $rc, expected 130"; exit 1; }
