@@ -75,7 +75,8 @@ std::vector<reports::KindEventsResult> analyse(const EventRule& view, const Cata
 }  // namespace
 
 int events_command(const EventsOptions& o) {
-  const Catalog catalog = read_command_catalog(o.catalog, o.rule, o.format);
+  Catalog catalog = read_command_catalog(o.catalog, o.rule, o.format);
+  campaign::keep_shard(catalog, command_shard(o.shard));
   if (!o.map.empty() && o.rule.empty()) throw InputError("<command line>", 0, 0, "--map needs --rule: an event log is for one rule");
   if (o.map.empty() && (!o.hooks.empty() || o.dynamic))
     throw InputError("<command line>", 0, 0, "--hook and --dynamic need --map: they concern one application");

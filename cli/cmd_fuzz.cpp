@@ -17,7 +17,10 @@
 #include "cli/commands.hpp"
 #include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
+#include "campaign/shard_stream.hpp"
+#include "cli/jobs.hpp"
 #include "cli/options.hpp"
+#include "cli/run_output.hpp"
 #include "analysis/embedded_fuzz.hpp"
 #include "analysis/counterexample_files.hpp"
 #include "analysis/fuzz.hpp"
@@ -68,15 +71,6 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
   return out;
 }
 
-// One line of --format jsonl, flushed: a run killed later keeps it.
-void print_jsonl(const char* type, reports::Json payload) {
-  reports::Json line = reports::json_document("fuzz-jsonl");
-  line["type"] = type;
-  line[type] = std::move(payload);
-  fmt::print("{}\n", reports::json_text(std::move(line)));
-  std::fflush(stdout);
-}
-
 // The rules to fuzz and the hosts they start from: the catalog's maps of
 // their models and the user's --maps.
 struct Targets {
@@ -114,10 +108,17 @@ FuzzOptions fuzz_options(const FuzzCommand& c, std::optional<double> seconds) {
 }  // namespace
 
 int fuzz(const FuzzCommand& c) {
+  if (c.jobs > 1) {
+    if (c.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
+    // Every shard fuzzes with the same seed: drawn here unless given.
+    return run_jobs({c.jobs, c.shard, {.format = c.format}, c.seed ? std::nullopt : std::optional<std::uint64_t>(std::random_device{}())});
+  }
   // jsonl: one JSON object per rule on stdout as it finishes, then a summary.
   const bool jsonl = c.format == "jsonl";
   Catalog catalog = read_command_catalog(c.catalog, c.rule, jsonl ? "json" : c.format);
+  const campaign::Shard shard = command_shard(c.shard);
   const auto baseline_mismatches = c.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, c.baseline);
+  campaign::keep_shard(catalog, shard);
   const RecordSource source = c.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
   if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
   catch_interrupts();
@@ -135,6 +136,17 @@ int fuzz(const FuzzCommand& c) {
   fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {} rule{}, {}\n", o.seed, o.seed, rules.size(), rules.size() == 1 ? "" : "s",
              seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
                      : fmt::format("{} applications per rule", o.runs));
+  // The options that change results go in the header: shards merge only
+  // when they agree (a --time run merges, but is not deterministic).
+  std::optional<campaign::ShardWriter> lines;
+  if (jsonl)
+    lines.emplace(campaign::make_header("fuzz", c.catalog, c.baseline, c.rule, shard,
+                                        reports::Json{{"seed", o.seed},
+                                                      {"runs", c.runs ? reports::Json(*c.runs) : reports::Json(nullptr)},
+                                                      {"time", c.time},
+                                                      {"max_darts", o.max_darts},
+                                                      {"event_checks", o.event_checks},
+                                                      {"maps", c.maps}}));
   const auto start = std::chrono::steady_clock::now();
   // Each rule's result (its counterexample files and, with jsonl, its line)
   // is written as soon as the rule finishes: a run killed later keeps them.
@@ -142,26 +154,17 @@ int fuzz(const FuzzCommand& c) {
   auto finished = [&](std::size_t k, const FuzzReport& r) {
     results.push_back(analyse_static(catalog, *entries[k], 0, {}, source));
     add_fuzz(results.back(), r, o.seed, c.out, c.catalog);
-    if (jsonl) print_jsonl("rule", reports::rule_result_json(results.back()));
+    if (lines) lines->rule(results.back());
   };
   fuzz_rules(rules, seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);
-  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total = seconds_since(start);
 
   const int status = finish_run(results, baseline_mismatches, rules.size());
   const reports::FuzzRun run{c.catalog, o.seed, total, rules.size(), interrupted(), baseline_mismatches};
-  if (jsonl) {
-    // The rules' lines are out already; the last line sums the run up.
-    print_jsonl("summary", reports::fuzz_summary_json(run, results));
-  } else if (c.format == "json") {
-    reports::Json doc = reports::json_document("fuzz");
-    reports::Json rows = reports::Json::array();
-    for (const auto& r : results) rows.push_back(reports::rule_result_json(r));
-    doc["rules"] = std::move(rows);
-    doc["summary"] = reports::fuzz_summary_json(run, results);
-    fmt::print("{}\n", reports::json_text(std::move(doc)));
-  } else {
-    fmt::print("{}", reports::fuzz_table(run, results));
-  }
+  if (lines)
+    lines->summary(reports::fuzz_summary_json(run, results));  // the rules' lines are out already
+  else
+    print_fuzz(c.format, run, results);
   return status;
 }
 

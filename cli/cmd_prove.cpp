@@ -10,7 +10,10 @@
 #include "cli/commands.hpp"
 #include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
+#include "campaign/shard_stream.hpp"
+#include "cli/jobs.hpp"
 #include "cli/options.hpp"
+#include "cli/run_output.hpp"
 #include "analysis/rule_result.hpp"
 #include "reports/rule_result_json.hpp"
 #include "reports/rule_result_text.hpp"
@@ -23,8 +26,14 @@ namespace dartcheck::cli {
 using namespace analysis;  // the engines the commands call
 
 int prove(const ProveCommand& c) {
-  Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format);
+  if (c.jobs > 1) {
+    if (c.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
+    return run_jobs({c.jobs, c.shard, {.format = c.format, .explain = c.explain}, std::nullopt});
+  }
+  Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format == "json" ? "json" : "text");
+  const campaign::Shard shard = command_shard(c.shard);
   const auto baseline_mismatches = c.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, c.baseline);
+  campaign::keep_shard(catalog, shard);
   const RecordSource source = c.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
   if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
   catch_interrupts();
@@ -37,6 +46,11 @@ int prove(const ProveCommand& c) {
   o.timeout_ms = static_cast<unsigned>(c.timeout * 1000);
   o.stop = [] { return interrupted(); };  // Ctrl-C interrupts the running Z3 query too
 
+  std::optional<campaign::ShardWriter> lines;
+  if (c.format == "jsonl")
+    lines.emplace(campaign::make_header(
+        "prove", c.catalog, c.baseline, c.rule, shard,
+        reports::Json{{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}}));
   const auto start = std::chrono::steady_clock::now();
   std::vector<RuleResult> results;
   std::size_t selected = 0;
@@ -46,17 +60,18 @@ int prove(const ProveCommand& c) {
     if (interrupted()) continue;  // a rule's queries finish; the next ones do not start
     results.push_back(analyse_static(catalog, e, 0, {}, source));
     run_proof(results.back(), o, c.out, c.catalog);
+    if (lines) lines->rule(results.back());
   }
   if (!results.empty() && results.back().proof && results.back().proof->interrupted)
     fmt::print(stderr, "interrupted during the solver queries of {}: the queries it did not finish say 'interrupted'\n",
                results.back().entry->rule.name());
-  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double total = seconds_since(start);
   const int status = finish_run(results, baseline_mismatches, selected);
   const reports::ProveRun run{c.catalog, o.max_darts, o.rlimit, total, c.explain, baseline_mismatches};
-  if (c.format == "json")
-    fmt::print("{}\n", reports::json_text(reports::prove_document(run, results)));
+  if (lines)
+    lines->summary(campaign::run_summary(results, selected, interrupted(), total, baseline_mismatches));
   else
-    fmt::print("{}", reports::prove_text(run, results));
+    print_prove(c.format, run, results);
   return status;
 }
 

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <random>
 
@@ -18,103 +19,98 @@
 #include "analysis/rule_result.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/commands.hpp"
+#include "campaign/shard_stream.hpp"
+#include "cli/jobs.hpp"
 #include "cli/options.hpp"
+#include "cli/run_output.hpp"
+#include "core/wording.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
-#include "reports/html_page.hpp"
-#include "reports/report_page.hpp"
-#include "reports/rule_result_json.hpp"
-#include "reports/rule_result_text.hpp"
 
 namespace dartcheck::cli {
 
 using namespace analysis;  // the engines the commands call
 namespace fs = std::filesystem;
-using reports::html_text;
 
 namespace {
 
-// Fuzzes every rule within `seconds` (shared) and adds each outcome; the
-// page's sentence about it.
-std::string fuzz_stage(std::vector<RuleResult>& rows, const Catalog& catalog, const ReportOptions& o, double seconds, const std::string& cx_dir) {
+// Fuzzes every rule within `seconds` (shared) and adds each outcome.
+void fuzz_stage(std::vector<RuleResult>& rows, const Catalog& catalog, const ReportOptions& o, double seconds, std::uint64_t seed,
+                const std::string& cx_dir) {
   FuzzOptions fo;
-  fo.seed = o.seed ? *o.seed : std::random_device{}();
+  fo.seed = seed;
   fo.runs = SIZE_MAX;
   std::vector<Map> seeds;
   for (const auto& s : catalog.maps) seeds.push_back(build_source(s));
   std::vector<const Operation*> rules;
   for (const auto& r : rows) rules.push_back(r.entry);
-  fmt::print(stderr, "dartcheck report: fuzzing {} rule{} for {} s, seed {}\n", rules.size(), rules.size() == 1 ? "" : "s", seconds, fo.seed);
+  fmt::print(stderr, "dartcheck report: fuzzing {} for {} s, seed {}\n", counted(rules.size(), "rule"), seconds, fo.seed);
   auto found = fuzz_rules(rules, seeds, fo, seconds, isatty(fileno(stderr)) != 0);
-  std::size_t applications = 0;
-  for (std::size_t k = 0; k < found.size(); ++k) {  // fewer than rows if interrupted
-    applications += found[k].applications;
+  for (std::size_t k = 0; k < found.size(); ++k)  // fewer than rows if interrupted
     add_fuzz(rows[k], std::move(found[k]), fo.seed, cx_dir, o.catalog, ".fuzz");
-  }
-  return fmt::format("<p>Fuzz: {} s, seed {} (<code>--seed {}</code> replays it), {} application{}.</p>\n", seconds, fo.seed, fo.seed, applications,
-                     applications == 1 ? "" : "s");
 }
 
-// Asks Z3 about every rule (until a signal) and adds each proof; the
-// page's sentence about it.
-std::string prove_stage(std::vector<RuleResult>& rows, const ReportOptions& o, const std::string& cx_dir) {
+// Asks Z3 about every rule (until a signal) and adds each proof.
+void prove_stage(std::vector<RuleResult>& rows, const ReportOptions& o, const ReportStages& stages, const std::string& cx_dir) {
   proofs::ProveOptions po;
-  po.max_darts = o.prove_darts;
-  po.scheme_darts = std::min<std::size_t>(po.scheme_darts, o.prove_darts);
-  fmt::print(stderr, "dartcheck report: proving {} rule{} up to {} darts (schemes {})\n", rows.size(), rows.size() == 1 ? "" : "s", po.max_darts,
-             po.scheme_darts);
+  po.max_darts = stages.prove_darts;
+  po.scheme_darts = stages.scheme_darts;
+  fmt::print(stderr, "dartcheck report: proving {} up to {} darts (schemes {})\n", counted(rows.size(), "rule"), po.max_darts, po.scheme_darts);
   for (auto& r : rows) {
     if (interrupted()) break;
     run_proof(r, po, cx_dir, o.catalog, ".prove");
   }
-  return fmt::format("<p>Prove: Z3 on hosts of up to {} darts (rule schemes {}).</p>\n", po.max_darts, po.scheme_darts);
 }
 
 }  // namespace
 
 int report(const ReportOptions& o) {
+  if (o.jobs > 1) {
+    if (o.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
+    const bool seed = !o.fuzz.empty() && !o.seed;  // every shard fuzzes with the same seed
+    return run_jobs({o.jobs,
+                     o.shard,
+                     {.format = "html", .output = o.output, .engine = o.engine},
+                     seed ? std::optional<std::uint64_t>(std::random_device{}()) : std::nullopt});
+  }
   Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  const campaign::Shard shard = command_shard(o.shard);
   const auto baseline_mismatches = o.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, o.baseline);
-  const RecordSource source = o.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
+  campaign::keep_shard(catalog, shard);
   catch_interrupts();
-  std::optional<double> seconds;
-  if (!o.fuzz.empty()) seconds = parse_duration(o.fuzz, "--fuzz");
+  ReportStages stages;
+  stages.baseline = !o.baseline.empty();
+  if (!o.fuzz.empty()) stages.fuzz_seconds = parse_duration(o.fuzz, "--fuzz");
   if (o.prove_darts > 256) throw InputError("<command line>", 0, 0, "--prove: expected 0 (no proof) to 256 darts");
+  stages.seed = o.seed ? *o.seed : std::random_device{}();
+  stages.prove_darts = o.prove_darts;
+  stages.scheme_darts = std::min<std::size_t>(proofs::ProveOptions{}.scheme_darts, o.prove_darts);
   ensure_directory(o.output);  // before the work, not after it
-  const fs::path dir(o.output);
-  const std::string cx_dir = (dir / "counterexamples").string();
+  const std::string cx_dir = (fs::path(o.output) / "counterexamples").string();
 
+  const auto start = std::chrono::steady_clock::now();
   std::vector<RuleResult> rows;
   for (const auto& e : catalog.rules)
-    if (o.rule.empty() || e.rule.name() == o.rule) rows.push_back(analyse_static(catalog, e, 0, {}, source));
-  const auto static_counts = count_results(rows);
-  std::string summary = fmt::format("<p>{} rule{}: {} consistent, {} with failing conditions; {} static verdicts differ from the {}.</p>\n",
-                                    rows.size(), rows.size() == 1 ? "" : "s", static_counts.consistent, static_counts.failing,
-                                    static_counts.mismatches, o.baseline.empty() ? "catalog" : "baseline");
-  if (seconds) summary += fuzz_stage(rows, catalog, o, *seconds, cx_dir);
-  if (o.prove_darts > 0) summary += prove_stage(rows, o, cx_dir);
-  for (const auto& sk : catalog.skipped)
-    summary += fmt::format("<p class=\"mismatch\">Skipped {} ({}): {}</p>\n", html_text(sk.name), html_text(sk.location.str()), html_text(sk.why));
-  const auto counts = count_results(rows);
-  if (counts.unsound)
-    summary +=
-        fmt::format("<p class=\"mismatch\">{} rule{} with a SOUNDNESS BUG or a disagreement.</p>\n", counts.unsound, counts.unsound == 1 ? "" : "s");
+    if (o.rule.empty() || e.rule.name() == o.rule)
+      rows.push_back(analyse_static(catalog, e, 0, {}, stages.baseline ? RecordSource::baseline : RecordSource::catalog));
+  const std::size_t selected = rows.size();
+  if (stages.fuzz_seconds) fuzz_stage(rows, catalog, o, *stages.fuzz_seconds, stages.seed, cx_dir);
+  if (stages.prove_darts > 0) prove_stage(rows, o, stages, cx_dir);
 
-  reports::Pictures pictures(dir.string(), o.engine);
-  std::string body = fmt::format("<h1>dartcheck report: {}</h1>\n", html_text(o.catalog)) + summary;
-  body +=
-      "<p class=\"note\">Pictures: L and R side by side; preserved black, deleted red, added green; hooks with a double border; "
-      "filled nodes and doubled arcs are the witnesses of a failed condition. Links: 0 black, 1 red, 2 blue, 3 green.</p>\n";
-  body += reports::verdict_table_html(rows, seconds.has_value(), o.prove_darts > 0);
-  for (const auto& r : rows) body += reports::rule_section_html(r, pictures);
-  const std::string index = (dir / "index.html").string(), data = (dir / "results.json").string();
-  const std::string page = reports::html_document("dartcheck report: " + o.catalog, body);
-  write_file(index, page);
-  // The same results as data, in check's JSON form, beside the page.
-  write_file(data, reports::json_text(reports::results_document("report", o.catalog, catalog, rows, baseline_mismatches)) + "\n");
-  fmt::print("wrote {} ({} rule{}, {} pictures, {} bytes) and {}\n", index, rows.size(), rows.size() == 1 ? "" : "s", pictures.count(), page.size(),
-             data);
-  return finish_run(rows, baseline_mismatches, rows.size());
+  if (o.format == "jsonl") {
+    // A shard: the lines merge reads, after every stage (the fuzz budget is shared by the rules).
+    campaign::ShardWriter lines(campaign::make_header(
+        "report", o.catalog, o.baseline, o.rule, shard,
+        reports::Json{{"fuzz", o.fuzz},
+                      {"seed", stages.fuzz_seconds ? reports::Json(stages.seed) : reports::Json(nullptr)},  // drawn only to fuzz
+                      {"prove_darts", stages.prove_darts},
+                      {"scheme_darts", stages.scheme_darts}}));
+    for (const auto& r : rows) lines.rule(r);
+    lines.summary(campaign::run_summary(rows, selected, interrupted(), seconds_since(start), baseline_mismatches));
+  } else {
+    write_report(o.output, o.engine, o.catalog, catalog, rows, baseline_mismatches, stages);
+  }
+  return finish_run(rows, baseline_mismatches, selected);
 }
 
 }  // namespace dartcheck::cli

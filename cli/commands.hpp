@@ -36,6 +36,9 @@ int convert(const ConvertOptions& o);
 
 struct ReportOptions {
   std::string catalog, rule, output, engine = "dot";
+  std::string format = "html";  // html (the page in `output`), or jsonl (a shard's lines on stdout)
+  std::string shard;            // "K/N": only the rules of shard K (campaign/shard.hpp)
+  std::size_t jobs = 1;         // processes, each a shard, merged (cli/jobs.hpp)
   std::string baseline;         // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::string fuzz;             // a duration: fuzz every rule within it (empty: no fuzzing)
   std::size_t prove_darts = 0;  // ask Z3 for counterexamples of up to this many darts (0: no)
@@ -67,6 +70,8 @@ int run(const RunOptions& o);
 
 struct CheckOptions {
   std::string catalog, rule, format = "text";
+  std::string shard;           // "K/N": only the rules of shard K (campaign/shard.hpp)
+  std::size_t jobs = 1;        // processes, each a shard, merged (cli/jobs.hpp)
   std::string baseline;        // recorded verdicts from a YAML side file (io/baseline.hpp), for .jme modelers
   std::string write_baseline;  // write this run's verdicts as a baseline
   bool explain = false;
@@ -78,6 +83,7 @@ int check(const CheckOptions& o);
 
 struct EventsOptions {
   std::string catalog, rule, map, format = "text";
+  std::string shard;                // "K/N": only the rules of shard K (campaign/shard.hpp)
   std::vector<std::string> orbits;  // "<0,1>" ...; empty or "all": every orbit type
   std::vector<Dart> hooks;
   bool dynamic = false;
@@ -126,6 +132,8 @@ int words(const WordsOptions& o);
 
 struct FuzzCommand {
   std::string catalog, rule, time, out, format = "text";
+  std::string shard;     // "K/N": only the rules of shard K (campaign/shard.hpp)
+  std::size_t jobs = 1;  // processes, each a shard, merged (cli/jobs.hpp)
   std::string baseline;  // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::optional<std::size_t> runs;
   std::optional<std::uint64_t> seed;
@@ -140,6 +148,8 @@ int fuzz(const FuzzCommand& c);
 
 struct ProveCommand {
   std::string catalog, rule, out, format = "text";
+  std::string shard;     // "K/N": only the rules of shard K (campaign/shard.hpp)
+  std::size_t jobs = 1;  // processes, each a shard, merged (cli/jobs.hpp)
   std::string baseline;  // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::size_t max_darts = 10;
   std::size_t scheme_darts = 6;
@@ -151,5 +161,16 @@ struct ProveCommand {
 /// theorem says they must agree (or a counterexample does not replay), 0
 /// otherwise.
 int prove(const ProveCommand& c);
+
+struct MergeOptions {
+  std::vector<std::string> shards = {};  // files written by --format jsonl
+  std::string format = "text", output = {}, catalog = {}, engine = "dot";
+  bool explain = false;
+};
+/// The shards of one run of check, fuzz, prove or report, rendered as the
+/// unsharded run renders them (text, json, sarif, junit, or html into
+/// `output`); the run's exit status. 2 when a shard is missing, given
+/// twice, unfinished, or from another run.
+int merge(const MergeOptions& o);
 
 }  // namespace dartcheck::cli

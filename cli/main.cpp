@@ -9,6 +9,7 @@
 #include <yaml-cpp/exceptions.h>
 
 #include "cli/commands.hpp"
+#include "cli/jobs.hpp"
 #include "cli/suggest.hpp"
 #include "reports/versions.hpp"
 #include "revision.hpp"
@@ -62,14 +63,30 @@ void add_run(CLI::App& app, Commands& commands) {
   commands.push_back({r, [o] { return cli::run(*o); }});
 }
 
+// --shard K/N, as check, fuzz, prove, report and events take it.
+void add_shard(CLI::App* command, std::string& shard) {
+  command->add_option("--shard", shard,
+                      "run only shard K of N (0 <= K < N): the rules whose name hashes to K; merge the shards' --format jsonl with `merge`");
+}
+
+// --shard and --jobs (check, fuzz, prove and report).
+void add_campaign(CLI::App* command, std::string& shard, std::size_t& jobs) {
+  add_shard(command, shard);
+  command->add_option("--jobs", jobs, "run as this many shard processes at once and merge them (the output of one job)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t{1}, std::size_t{256}));
+}
+
 void add_check(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<cli::CheckOptions>();
   auto* c = app.add_subcommand("check", "Static consistency conditions of every rule (002 Def. 11-16), against the catalog's verdicts");
   c->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   c->add_option("--rule", o->rule, "check only this rule");
-  c->add_option("--format", o->format, "text, json, sarif (SARIF 2.1.0, for code scanning) or junit (JUnit XML, for CI test reports)")
+  c->add_option("--format", o->format,
+                "text, json, sarif (SARIF 2.1.0, for code scanning), junit (JUnit XML, for CI test reports) or jsonl (a shard's lines, for merge)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
+      ->check(CLI::IsMember({"text", "json", "sarif", "junit", "jsonl"}));
+  add_campaign(c, o->shard, o->jobs);
   c->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (for a .jme modeler, which records none)");
   c->add_option("--write-baseline", o->write_baseline, "write this run's verdicts (and the rules not checked) as a baseline file");
   c->add_flag("--explain", o->explain, "print the witnesses of every failing condition and the counterexample map");
@@ -89,6 +106,7 @@ void add_events(CLI::App& app, Commands& commands) {
   ev->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->check(counts());
   ev->add_flag("--dynamic", o->dynamic, "also label every dart of both maps and set that log against the static one (exit 3 on a contradiction)");
   ev->add_option("--format", o->format, "text or json")->capture_default_str();
+  add_shard(ev, o->shard);
   commands.push_back({ev, [o] { return cli::events_command(*o); }});
 }
 
@@ -123,6 +141,7 @@ void add_fuzz(CLI::App& app, Commands& commands) {
   f->add_option("--format", o->format, "text, json, or jsonl (a JSON line per rule as it finishes, then a summary line)")
       ->capture_default_str()
       ->check(CLI::IsMember({"text", "json", "jsonl"}));
+  add_campaign(f, o->shard, o->jobs);
   commands.push_back({f, [o] { return cli::fuzz(*o); }});
 }
 
@@ -141,7 +160,10 @@ void add_prove(CLI::App& app, Commands& commands) {
   p->add_option("--rlimit", o->rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str()->check(counts());
   p->add_option("--timeout", o->timeout, "also stop a query after this many seconds (answers then depend on the machine)")->check(counts());
   p->add_option("-o,--output,--out", o->out, "directory: write each counterexample on a map of the model here, with a replay command");
-  p->add_option("--format", o->format, "text or json")->capture_default_str();
+  p->add_option("--format", o->format, "text, json or jsonl (a shard's lines, for merge)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"text", "json", "jsonl"}));
+  add_campaign(p, o->shard, o->jobs);
   p->add_flag("--explain", o->explain, "print the hosts and derived graphs of theorem-class counterexamples");
   commands.push_back({p, [o] { return cli::prove(*o); }});
 }
@@ -232,7 +254,25 @@ void add_report(CLI::App& app, Commands& commands) {
   rp->add_option("--prove", o->prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->check(counts());
   rp->add_option("--seed", o->seed, "random seed of --fuzz (default: drawn and printed)")->check(counts());
   rp->add_option("--engine", o->engine, "Graphviz layout engine")->capture_default_str();
+  rp->add_option("--format", o->format, "html (the page in -o DIR) or jsonl (a shard's lines on stdout, for merge)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"html", "jsonl"}));
+  add_campaign(rp, o->shard, o->jobs);
   commands.push_back({rp, [o] { return cli::report(*o); }});
+}
+
+void add_merge(CLI::App& app, Commands& commands) {
+  auto o = std::make_shared<cli::MergeOptions>();
+  auto* m = app.add_subcommand("merge", "Merge the shards of one run (--shard K/N --format jsonl) into one result, in any output format");
+  m->add_option("shards", o->shards, "the shard files, one per shard, in any order")->required();
+  m->add_option("--format", o->format, "text, json, sarif, junit, or html (the report page, in -o DIR)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"text", "json", "sarif", "junit", "html"}));
+  m->add_option("-o,--output", o->output, "directory of the html page");
+  m->add_option("--catalog", o->catalog, "the catalog, where it is now (default: the path the shards name; it must be unchanged)");
+  m->add_flag("--explain", o->explain, "as check --explain and prove --explain");
+  m->add_option("--engine", o->engine, "Graphviz layout engine of the html page")->capture_default_str();
+  commands.push_back({m, [o] { return cli::merge(*o); }});
 }
 
 void add_draw_map(CLI::App& app, Commands& commands) {
@@ -289,6 +329,7 @@ int run_command(const Commands& commands) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cli::set_command_line(argc, argv);  // --jobs runs it again as shards
   CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps"};
   app.require_subcommand(1);
   app.set_version_flag("-V,--version", [] {
@@ -315,6 +356,7 @@ int main(int argc, char** argv) {
   add_recombine(app, commands);
   add_query(app, commands);
   add_report(app, commands);
+  add_merge(app, commands);
   add_draw_map(app, commands);
 
   if (const auto status = cli::help_request(app, argc, argv)) return *status;

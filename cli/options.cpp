@@ -20,6 +20,8 @@ Catalog read_command_catalog(const std::string& file, const std::string& rule, c
   return catalog;
 }
 
+campaign::Shard command_shard(const std::string& text) { return text.empty() ? campaign::Shard{} : campaign::parse_shard(text); }
+
 double parse_duration(const std::string& text, const std::string& option) {
   std::size_t used = 0;
   double v = 0;

@@ -1,9 +1,11 @@
 // Checks of command-line options that several commands share.
 #pragma once
 
+#include <chrono>
 #include <string>
 
 #include "analysis/rule_result.hpp"
+#include "campaign/shard.hpp"
 #include "io/catalog.hpp"
 
 namespace dartcheck::cli {
@@ -11,6 +13,14 @@ namespace dartcheck::cli {
 /// Reads the catalog a command works on, after checking --format (text or
 /// json) and that --rule, if given, names one of its rules.
 Catalog read_command_catalog(const std::string& file, const std::string& rule, const std::string& format);
+
+/// --shard K/N (the whole run when `text` is empty).
+campaign::Shard command_shard(const std::string& text);
+
+/// Wall-clock seconds since `start`.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// Seconds in "30s", "500ms", "2m", "1h" or a bare number of seconds;
 /// InputError naming `option` otherwise.

@@ -14,14 +14,15 @@ set(layers
   "inference:core,rewriting,io,checkers,inference"
   "querymodify:core,rewriting,io,checkers,querymodify"
   "analysis:core,rewriting,io,checkers,generators,proofs,events,analysis"
+  "campaign:core,rewriting,io,checkers,generators,proofs,events,inference,querymodify,analysis,reports,campaign"
   "fuzz:core,rewriting,io,checkers,generators,fuzz"
   # The command, the benchmarks and the tests sit on top: they may use every
   # library, but the command nothing test- or benchmark-only, and the
   # benchmarks and tests not the command's own files.
-  "cli:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,cli"
+  "cli:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,campaign,cli"
   "bench:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,bench"
-  "tests:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,cli,tests")
-set(known core rewriting io checkers generators proofs reports events inference querymodify analysis cli fuzz bench tests)
+  "tests:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,campaign,cli,tests")
+set(known core rewriting io checkers generators proofs reports events inference querymodify analysis campaign cli fuzz bench tests)
 set(errors 0)
 set(checked 0)
 foreach(entry IN LISTS layers)

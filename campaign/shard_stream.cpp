@@ -1,0 +1,174 @@
+#include "campaign/shard_stream.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "campaign/result_record.hpp"
+#include "core/input_error.hpp"
+#include "reports/rule_result_json.hpp"
+
+namespace dartcheck::campaign {
+
+using reports::Json;
+
+namespace {
+
+Json header_json(const RunHeader& h) {
+  return Json{{"command", h.command},
+              {"catalog", h.catalog},
+              {"catalog_digest", h.catalog_digest},
+              {"baseline", h.baseline},
+              {"baseline_digest", h.baseline_digest},
+              {"rule", h.rule},
+              {"shard", h.shard.text()},
+              {"parameters", h.parameters}};
+}
+
+std::string string_at(const Json& j, const char* key, const std::string& file, int line) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_string())
+    throw InputError(file, line, 1, fmt::format("expected a string \"{}\" in this line", key));
+  return j[key].get<std::string>();
+}
+
+RunHeader read_header(const Json& j, const std::string& file, int line) {
+  RunHeader h;
+  h.command = string_at(j, "command", file, line);
+  h.catalog = string_at(j, "catalog", file, line);
+  h.catalog_digest = string_at(j, "catalog_digest", file, line);
+  h.baseline = string_at(j, "baseline", file, line);
+  h.baseline_digest = string_at(j, "baseline_digest", file, line);
+  h.rule = string_at(j, "rule", file, line);
+  try {
+    h.shard = parse_shard(string_at(j, "shard", file, line), "shard");
+  } catch (const InputError& e) {
+    throw InputError(file, line, 1, e.what());
+  }
+  if (!j.contains("parameters") || !j["parameters"].is_object()) throw InputError(file, line, 1, "expected an object \"parameters\" in the header");
+  h.parameters = j["parameters"];
+  return h;
+}
+
+// The first difference between two runs' headers, or "".
+std::string difference(const RunHeader& a, const RunHeader& b) {
+  const auto field = [](const char* name, const std::string& x, const std::string& y) {
+    return x == y ? std::string() : fmt::format("{} '{}' against '{}'", name, printable(x), printable(y));
+  };
+  for (auto d :
+       {field("command", a.command, b.command), field("catalog", a.catalog, b.catalog), field("catalog digest", a.catalog_digest, b.catalog_digest),
+        field("baseline", a.baseline, b.baseline), field("baseline digest", a.baseline_digest, b.baseline_digest), field("--rule", a.rule, b.rule)})
+    if (!d.empty()) return d;
+  if (a.shard.count != b.shard.count) return fmt::format("shard count {} against {}", a.shard.count, b.shard.count);
+  if (a.parameters != b.parameters) return fmt::format("options {} against {}", a.parameters.dump(), b.parameters.dump());
+  return {};
+}
+
+}  // namespace
+
+RunHeader make_header(std::string command, const std::string& catalog, const std::string& baseline, const std::string& rule, Shard shard,
+                      Json parameters) {
+  RunHeader h;
+  h.command = std::move(command);
+  h.catalog = catalog;
+  h.catalog_digest = file_digest(catalog);
+  h.baseline = baseline;
+  h.baseline_digest = baseline.empty() ? std::string() : file_digest(baseline);
+  h.rule = rule;
+  h.shard = shard;
+  h.parameters = std::move(parameters);
+  return h;
+}
+
+Json run_summary(const std::vector<analysis::RuleResult>& results, std::size_t selected, bool interrupted, double seconds,
+                 const std::vector<std::string>& baseline_mismatches) {
+  return Json{{"rules", selected},
+              {"finished", results.size()},
+              {"interrupted", interrupted},
+              {"seconds", seconds},
+              {"counts", reports::counts_json(analysis::count_results(results))},
+              {"baseline_mismatches", baseline_mismatches}};
+}
+
+ShardWriter::ShardWriter(const RunHeader& header) : command_(header.command) { line("header", header_json(header)); }
+
+void ShardWriter::rule(const analysis::RuleResult& r) { line("rule", reports::rule_result_json(r), result_record(r)); }
+
+void ShardWriter::summary(Json summary) { line("summary", std::move(summary)); }
+
+void ShardWriter::line(const char* type, Json payload, std::optional<Json> record) {
+  Json j = reports::json_document(command_ + "-jsonl");
+  j["type"] = type;
+  j[type] = std::move(payload);
+  if (record) j["record"] = std::move(*record);
+  fmt::print("{}\n", reports::json_text(std::move(j)));
+  std::fflush(stdout);  // a shard killed later keeps this line
+}
+
+ShardFile read_shard_file(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, 0, 0, "cannot read the shard file");
+  ShardFile out;
+  out.file = file;
+  std::string text;
+  bool header = false;
+  int line = 0;
+  while (std::getline(in, text)) {
+    ++line;
+    if (text.empty()) continue;
+    Json j;
+    try {
+      j = Json::parse(text);
+    } catch (const Json::parse_error& e) {
+      throw InputError(file, line, static_cast<int>(std::min<std::size_t>(e.byte, text.size() + 1)),
+                       fmt::format("not a JSON line of --format jsonl: {}", e.what()));
+    }
+    const std::string type = string_at(j, "type", file, line);
+    const std::string format = string_at(j, "format", file, line);
+    if (!header && type != "header")
+      throw InputError(file, line, 1, "the first line is not a header: shards are the output of --format jsonl with this version of dartcheck");
+    if (!out.summary.is_null()) throw InputError(file, line, 1, "a line after the summary");
+    if (type == "header") {
+      if (header) throw InputError(file, line, 1, "a second header: one shard per file");
+      out.header = read_header(j.value("header", Json()), file, line);
+      if (format != "dartcheck-" + out.header.command + "-jsonl")
+        throw InputError(file, line, 1, fmt::format("format '{}' for command '{}'", printable(format), printable(out.header.command)));
+      header = true;
+    } else if (type == "rule") {
+      if (!j.contains("rule") || !j.contains("record")) throw InputError(file, line, 1, "a rule line without \"rule\" and \"record\"");
+      out.rules.push_back({string_at(j["rule"], "name", file, line), j["record"], line});
+    } else if (type == "summary") {
+      if (!j.contains("summary") || !j["summary"].is_object()) throw InputError(file, line, 1, "a summary line without a \"summary\" object");
+      out.summary = j["summary"];
+      if (out.summary.value("interrupted", false))
+        throw InputError(file, line, 1, "this shard was interrupted: run it again (its rules are not all there)");
+    } else {
+      throw InputError(file, line, 1, fmt::format("unknown line type '{}'", printable(type)));
+    }
+  }
+  if (!header) throw InputError(file, 0, 0, "empty: no header line (did the shard start?)");
+  if (out.summary.is_null())
+    throw InputError(file, line, 0, fmt::format("no summary line: shard {} did not finish (killed, or out of time?)", out.header.shard.text()));
+  return out;
+}
+
+std::vector<ShardFile> check_complete(std::vector<ShardFile> files) {
+  if (files.empty()) throw InputError("<command line>", 0, 0, "merge: no shard files given");
+  const RunHeader& first = files.front().header;
+  std::map<std::size_t, const ShardFile*> by_index;
+  for (const auto& f : files) {
+    if (const auto d = difference(first, f.header); !d.empty())
+      throw InputError(f.file, 1, 1, fmt::format("not a shard of the same run as {}: {}", files.front().file, d));
+    const auto [it, fresh] = by_index.emplace(f.header.shard.index, &f);
+    if (!fresh) throw InputError(f.file, 1, 1, fmt::format("shard {} is also {}: give each shard once", f.header.shard.text(), it->second->file));
+  }
+  for (std::size_t k = 0; k < first.shard.count; ++k)
+    if (!by_index.contains(k))
+      throw InputError("<command line>", 0, 0,
+                       fmt::format("merge: shard {}/{} is missing ({} of {} given)", k, first.shard.count, files.size(), first.shard.count));
+  std::sort(files.begin(), files.end(), [](const ShardFile& a, const ShardFile& b) { return a.header.shard.index < b.header.shard.index; });
+  return files;
+}
+
+}  // namespace dartcheck::campaign

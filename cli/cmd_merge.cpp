@@ -1,0 +1,145 @@
+// `dartcheck merge`: the shards of one run (check, fuzz, prove or report
+// with --shard K/N --format jsonl) back into one result, rendered by the
+// command's own renderers (cli/run_output.hpp). The static stage is
+// recomputed from the catalog, whose digest must be the shards'; the
+// costly stages come from the records (campaign/result_record.hpp).
+#include <map>
+
+#include <fmt/format.h>
+
+#include "analysis/verdict_record.hpp"
+#include "campaign/result_record.hpp"
+#include "campaign/shard_stream.hpp"
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "cli/run_output.hpp"
+#include "core/input_error.hpp"
+#include "core/output_file.hpp"
+#include "reports/rule_result_json.hpp"
+
+namespace dartcheck::cli {
+
+using namespace analysis;
+using campaign::ShardFile;
+using reports::Json;
+
+namespace {
+
+// A number of the header's parameters, as the command wrote it.
+template <class T>
+T parameter(const campaign::RunHeader& h, const char* key) {
+  const auto it = h.parameters.find(key);
+  if (it == h.parameters.end() || !it->is_number())
+    throw InputError("<shards>", 0, 0, fmt::format("the header has no number \"{}\" for {}", key, h.command));
+  return it->get<T>();
+}
+
+// The catalog the shards ran on, unchanged since (its digest), with the
+// baseline they read.
+Catalog merged_catalog(const campaign::RunHeader& h, const std::string& override_path, std::vector<std::string>& baseline_mismatches) {
+  const std::string path = override_path.empty() ? h.catalog : override_path;
+  if (campaign::file_digest(path) != h.catalog_digest)
+    throw InputError(path, 0, 0,
+                     fmt::format("not the catalog the shards ran on (its digest is {}, theirs {})", campaign::file_digest(path), h.catalog_digest));
+  Catalog catalog = read_catalog(path);
+  if (!h.baseline.empty()) {
+    if (campaign::file_digest(h.baseline) != h.baseline_digest)
+      throw InputError(h.baseline, 0, 0, "not the baseline the shards ran with (its digest changed)");
+    baseline_mismatches = apply_baseline(catalog, h.baseline);
+  }
+  return catalog;
+}
+
+// Every selected rule of the catalog from the shard its name belongs to,
+// in catalog order; an error for a rule that is missing or left over.
+Results merged_results(const Catalog& catalog, const std::vector<ShardFile>& shards) {
+  const auto& h = shards.front().header;
+  const RecordSource source = h.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
+  std::vector<std::map<std::string, const campaign::ShardRule*>> by_name(shards.size());
+  for (std::size_t k = 0; k < shards.size(); ++k)
+    for (const auto& r : shards[k].rules)
+      if (!by_name[k].emplace(r.name, &r).second) throw InputError(shards[k].file, r.line, 1, fmt::format("rule '{}' twice", printable(r.name)));
+  Results results;
+  for (const auto& e : catalog.rules) {
+    if (!h.rule.empty() && e.rule.name() != h.rule) continue;
+    const std::size_t k = campaign::stable_hash(e.rule.name()) % h.shard.count;
+    const auto it = by_name[k].find(reports::replace_invalid_utf8(e.rule.name()));
+    if (it == by_name[k].end())
+      throw InputError(shards[k].file, 0, 0,
+                       fmt::format("rule '{}' ({}) belongs to shard {}/{}, which has no line for it", printable(e.rule.name()), e.location.str(), k,
+                                   h.shard.count));
+    results.push_back(analyse_static(catalog, e, 0, {}, source));
+    try {
+      campaign::restore_record(results.back(), it->second->record);
+    } catch (const campaign::RecordError& err) {
+      throw InputError(shards[k].file, it->second->line, 1, err.what());
+    }
+    by_name[k].erase(it);
+  }
+  for (std::size_t k = 0; k < shards.size(); ++k)
+    if (!by_name[k].empty()) {
+      const auto* left = by_name[k].begin()->second;
+      throw InputError(shards[k].file, left->line, 1,
+                       fmt::format("rule '{}' is not a rule of shard {} of {} in the catalog", printable(left->name), k, h.catalog));
+    }
+  return results;
+}
+
+}  // namespace
+
+int merge(const MergeOptions& o) {
+  std::vector<ShardFile> files;
+  for (const auto& f : o.shards) files.push_back(campaign::read_shard_file(f));
+  files = campaign::check_complete(std::move(files));
+  const campaign::RunHeader& h = files.front().header;
+  if (o.format == "html" && o.output.empty()) throw InputError("<command line>", 0, 0, "--format html: give -o DIR for the page");
+  if (o.format == "html") ensure_directory(o.output);
+
+  std::vector<std::string> baseline_mismatches;
+  const Catalog catalog = merged_catalog(h, o.catalog, baseline_mismatches);
+  const Results results = merged_results(catalog, files);
+  // The run's figures: every shard's rules and seconds (the work done, not the wall clock).
+  std::size_t selected = 0;
+  double seconds = 0;
+  for (const auto& f : files) {
+    selected += f.summary.value("rules", std::size_t{0});
+    seconds += f.summary.value("seconds", 0.0);
+  }
+  fmt::print(stderr, "dartcheck merge: {} shards of {} {}, {} rules\n", files.size(), h.command, h.catalog, results.size());
+
+  if (o.format == "sarif" || o.format == "junit") {
+    print_ci_format(o.format, h.command, h.catalog, results, baseline_mismatches);
+  } else if (o.format == "html") {
+    ReportStages stages;
+    stages.baseline = !h.baseline.empty();
+    if (h.command == "report" || h.command == "fuzz") {
+      const std::string budget = h.parameters.value(h.command == "report" ? "fuzz" : "time", std::string());
+      if (h.command == "fuzz" || !budget.empty()) {
+        stages.fuzz_seconds = budget.empty() ? seconds : parse_duration(budget, "fuzz");
+        stages.seed = parameter<std::uint64_t>(h, "seed");
+      }
+    }
+    if (h.command == "report" || h.command == "prove") {
+      stages.prove_darts = parameter<std::size_t>(h, h.command == "report" ? "prove_darts" : "max_darts");
+      stages.scheme_darts = parameter<std::size_t>(h, "scheme_darts");
+    }
+    write_report(o.output, o.engine, h.catalog, catalog, results, baseline_mismatches, stages);
+  } else if (h.command == "check") {
+    print_check(o.format, h.catalog, catalog, results, baseline_mismatches, o.explain);
+  } else if (h.command == "fuzz") {
+    print_fuzz(o.format, {h.catalog, parameter<std::uint64_t>(h, "seed"), seconds, selected, false, baseline_mismatches}, results);
+  } else if (h.command == "prove") {
+    print_prove(o.format,
+                {h.catalog, parameter<std::size_t>(h, "max_darts"), parameter<unsigned>(h, "rlimit"), seconds, o.explain, baseline_mismatches},
+                results);
+  } else if (h.command == "report") {
+    const auto doc = reports::results_document("report", h.catalog, catalog, results, baseline_mismatches);
+    if (o.format != "json") throw InputError("<command line>", 0, 0, "--format: a report merges as html, json, sarif or junit");
+    fmt::print("{}\n", reports::json_text(doc));
+  } else {
+    throw InputError(files.front().file, 1, 1, fmt::format("shards of '{}': merge reads check, fuzz, prove and report", printable(h.command)));
+  }
+  return finish_run(results, baseline_mismatches, selected);
+}
+
+}  // namespace dartcheck::cli

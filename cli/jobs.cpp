@@ -1,0 +1,120 @@
+#include "cli/jobs.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "analysis/interrupt.hpp"
+#include "core/input_error.hpp"
+
+extern char** environ;
+
+namespace dartcheck::cli {
+
+namespace {
+
+std::vector<std::string>& command_line() {
+  static std::vector<std::string> args;
+  return args;
+}
+
+// The arguments of shard k: the command line without --jobs and --format
+// (both spellings), with the shard, its lines and the shared seed.
+std::vector<std::string> shard_arguments(std::size_t k, const JobsRun& run) {
+  std::vector<std::string> out;
+  const auto& args = command_line();
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--jobs" || a == "--format") {
+      ++i;  // and its value
+      continue;
+    }
+    if (a.starts_with("--jobs=") || a.starts_with("--format=")) continue;
+    out.push_back(a);
+  }
+  for (std::string a : {std::string("--shard"), fmt::format("{}/{}", k, run.jobs), std::string("--format"), std::string("jsonl")}) out.push_back(a);
+  if (run.seed) {
+    out.push_back("--seed");
+    out.push_back(std::to_string(*run.seed));
+  }
+  return out;
+}
+
+pid_t spawn(const std::vector<std::string>& args, const std::string& out, const std::string& err) {
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&files, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, "/proc/self/exe", &files, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  if (rc != 0) throw std::runtime_error(fmt::format("--jobs: cannot start a shard process: {}", std::strerror(rc)));
+  return pid;
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+void set_command_line(int argc, char** argv) { command_line().assign(argv, argv + argc); }
+
+int run_jobs(const JobsRun& run) {
+  if (!run.shard.empty()) throw InputError("<command line>", 0, 0, "--jobs with --shard: run a shard on one job, or the whole run on several");
+  if (command_line().empty()) throw std::logic_error("run_jobs: the command line was not saved");
+  analysis::catch_interrupts();  // Ctrl-C reaches the shards too (one process group); they stop and say so
+  char dir_template[] = "/tmp/dartcheck-jobs-XXXXXX";
+  const char* dir = mkdtemp(dir_template);
+  if (!dir) throw std::runtime_error(fmt::format("--jobs: cannot create a directory in /tmp: {}", std::strerror(errno)));
+  struct Cleanup {
+    std::string dir;
+    ~Cleanup() {
+      std::error_code ec;
+      std::filesystem::remove_all(dir, ec);
+    }
+  } cleanup{dir};
+
+  fmt::print(stderr, "dartcheck: {} shard processes{}\n", run.jobs,
+             run.seed ? fmt::format(", seed {} (replay with --seed {})", *run.seed, *run.seed) : "");
+  std::vector<pid_t> pids;
+  MergeOptions merge = run.merge;
+  for (std::size_t k = 0; k < run.jobs; ++k) {
+    merge.shards.push_back(fmt::format("{}/{}.jsonl", dir, k));
+    pids.push_back(spawn(shard_arguments(k, run), merge.shards.back(), fmt::format("{}/{}.err", dir, k)));
+  }
+  // Every shard's status; a shard's own errors are shown as it wrote them.
+  int failed = 0;
+  for (std::size_t k = 0; k < run.jobs; ++k) {
+    int status = 0;
+    while (waitpid(pids[k], &status, 0) < 0 && errno == EINTR) {
+    }
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    const std::string err = file_text(fmt::format("{}/{}.err", dir, k));
+    // 0, 1 and 3 are verdicts, reported by the merge; anything else stops it.
+    if (code != ok && code != violation && code != soundness_bug) {
+      fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, run.jobs, code, err);
+      if (!failed) failed = code;
+    }
+  }
+  if (failed) return failed;
+  return cli::merge(merge);
+}
+
+}  // namespace dartcheck::cli

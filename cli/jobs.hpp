@@ -1,0 +1,34 @@
+// --jobs J: one machine's cores for check, fuzz, prove and report. The
+// command runs itself J times as shards (--shard k/J --format jsonl, one
+// process each: no engine state is shared between rules, and processes
+// could not race on it if some ever were) and merges them (`merge`), so
+// the output is the one-job output by construction for a fixed --runs.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "cli/commands.hpp"
+
+namespace dartcheck::cli {
+
+/// The process's arguments, for running it again as shards (set by main).
+void set_command_line(int argc, char** argv);
+
+struct JobsRun {
+  std::size_t jobs = 1;
+  std::string shard;  // the command's --shard: refused with --jobs
+  /// How to render the merge (the command's --format; a report's page in `merge.output`).
+  MergeOptions merge;
+  /// fuzz and report: the seed every shard must share (drawn here when not given).
+  std::optional<std::uint64_t> seed;
+};
+
+/// Runs the saved command line as `jobs` shard processes and merges them.
+/// Returns the merged run's exit status, or the first failing shard's
+/// (with its error output).
+int run_jobs(const JobsRun& run);
+
+}  // namespace dartcheck::cli

@@ -1,0 +1,106 @@
+#include "cli/run_output.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "analysis/verdict_record.hpp"
+#include "core/output_file.hpp"
+#include "core/wording.hpp"
+#include "reports/ci_formats.hpp"
+#include "reports/html_page.hpp"
+#include "reports/report_page.hpp"
+#include "reports/rule_result_json.hpp"
+
+namespace dartcheck::cli {
+
+using namespace analysis;
+using reports::html_text;
+
+void print_check(const std::string& format, const std::string& catalog_file, const Catalog& catalog, const Results& results,
+                 const std::vector<std::string>& baseline_mismatches, bool explain) {
+  if (format == "sarif" || format == "junit") {
+    print_ci_format(format, "check", catalog_file, results, baseline_mismatches);
+  } else if (format == "json") {
+    const auto doc = reports::results_document("check", catalog_file, catalog, results, baseline_mismatches);
+    fmt::print("{}\n", reports::json_text(doc));
+  } else {
+    fmt::print("{}", reports::check_table(catalog, results, baseline_mismatches.size(), {explain, catalog_file}));
+  }
+}
+
+void print_ci_format(const std::string& format, const std::string& command, const std::string& catalog_file, const Results& results,
+                     const std::vector<std::string>& baseline_mismatches) {
+  if (format == "sarif")
+    fmt::print("{}\n", reports::sarif_document(catalog_file, results, DARTCHECK_VERSION));
+  else
+    fmt::print("{}", reports::junit_document(command, catalog_file, results, baseline_mismatches));
+}
+
+void print_fuzz(const std::string& format, const reports::FuzzRun& run, const Results& results) {
+  if (format == "json") {
+    reports::Json doc = reports::json_document("fuzz");
+    reports::Json rows = reports::Json::array();
+    for (const auto& r : results) rows.push_back(reports::rule_result_json(r));
+    doc["rules"] = std::move(rows);
+    doc["summary"] = reports::fuzz_summary_json(run, results);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
+  } else {
+    fmt::print("{}", reports::fuzz_table(run, results));
+  }
+}
+
+void print_prove(const std::string& format, const reports::ProveRun& run, const Results& results) {
+  if (format == "json")
+    fmt::print("{}\n", reports::json_text(reports::prove_document(run, results)));
+  else
+    fmt::print("{}", reports::prove_text(run, results));
+}
+
+namespace {
+
+// The page's sentences about the run: counts, then each stage that ran.
+std::string summary_html(const Results& rows, const Catalog& catalog, const ReportStages& stages) {
+  std::size_t consistent = 0, static_mismatches = 0, applications = 0;
+  for (const auto& r : rows) {
+    consistent += r.consistent();
+    static_mismatches += !matches_record(*r.entry, r.verdict, r.embedding);
+    if (r.fuzz) applications += r.fuzz->applications;
+  }
+  std::string s =
+      fmt::format("<p>{}: {} consistent, {} with failing conditions; {} static verdicts differ from the {}.</p>\n", counted(rows.size(), "rule"),
+                  consistent, rows.size() - consistent, static_mismatches, stages.baseline ? "baseline" : "catalog");
+  if (stages.fuzz_seconds)
+    s += fmt::format("<p>Fuzz: {} s, seed {} (<code>--seed {}</code> replays it), {}.</p>\n", *stages.fuzz_seconds, stages.seed, stages.seed,
+                     counted(applications, "application"));
+  if (stages.prove_darts > 0)
+    s += fmt::format("<p>Prove: Z3 on hosts of up to {} darts (rule schemes {}).</p>\n", stages.prove_darts, stages.scheme_darts);
+  for (const auto& sk : catalog.skipped)
+    s += fmt::format("<p class=\"mismatch\">Skipped {} ({}): {}</p>\n", html_text(sk.name), html_text(sk.location.str()), html_text(sk.why));
+  if (const auto unsound = count_results(rows).unsound)
+    s += fmt::format("<p class=\"mismatch\">{} with a SOUNDNESS BUG or a disagreement.</p>\n", counted(unsound, "rule"));
+  return s;
+}
+
+}  // namespace
+
+void write_report(const std::string& dir_name, const std::string& engine, const std::string& catalog_file, const Catalog& catalog,
+                  const Results& rows, const std::vector<std::string>& baseline_mismatches, const ReportStages& stages) {
+  namespace fs = std::filesystem;
+  const fs::path dir(dir_name);
+  reports::Pictures pictures(dir.string(), engine);
+  std::string body = fmt::format("<h1>dartcheck report: {}</h1>\n", html_text(catalog_file)) + summary_html(rows, catalog, stages);
+  body +=
+      "<p class=\"note\">Pictures: L and R side by side; preserved black, deleted red, added green; hooks with a double border; "
+      "filled nodes and doubled arcs are the witnesses of a failed condition. Links: 0 black, 1 red, 2 blue, 3 green.</p>\n";
+  body += reports::verdict_table_html(rows, stages.fuzz_seconds.has_value(), stages.prove_darts > 0);
+  for (const auto& r : rows) body += reports::rule_section_html(r, pictures);
+  const std::string index = (dir / "index.html").string(), data = (dir / "results.json").string();
+  const std::string page = reports::html_document("dartcheck report: " + catalog_file, body);
+  write_file(index, page);
+  // The same results as data, in check's JSON form, beside the page.
+  write_file(data, reports::json_text(reports::results_document("report", catalog_file, catalog, rows, baseline_mismatches)) + "\n");
+  fmt::print("wrote {} ({}, {} pictures, {} bytes) and {}\n", index, counted(rows.size(), "rule"), pictures.count(), page.size(), data);
+}
+
+}  // namespace dartcheck::cli

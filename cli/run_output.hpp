@@ -1,0 +1,44 @@
+// The outputs of check, fuzz, prove and report, shared by each command and
+// by `merge`, which renders the results of a sharded run through the same
+// functions: a merged run prints what the unsharded run prints.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/rule_result.hpp"
+#include "io/catalog.hpp"
+#include "reports/rule_result_text.hpp"
+
+namespace dartcheck::cli {
+
+using Results = std::vector<analysis::RuleResult>;
+
+/// check's output in `format`: text (the table), json, sarif or junit.
+void print_check(const std::string& format, const std::string& catalog_file, const Catalog& catalog, const Results& results,
+                 const std::vector<std::string>& baseline_mismatches, bool explain);
+
+/// SARIF or JUnit of any command's results.
+void print_ci_format(const std::string& format, const std::string& command, const std::string& catalog_file, const Results& results,
+                     const std::vector<std::string>& baseline_mismatches);
+
+/// fuzz's output: text or json.
+void print_fuzz(const std::string& format, const reports::FuzzRun& run, const Results& results);
+
+/// prove's output: text or json.
+void print_prove(const std::string& format, const reports::ProveRun& run, const Results& results);
+
+/// What report's page says about the stages that ran.
+struct ReportStages {
+  std::optional<double> fuzz_seconds;  // --fuzz
+  std::uint64_t seed = 0;
+  std::size_t prove_darts = 0, scheme_darts = 0;  // --prove (0: none)
+  bool baseline = false;                          // verdicts recorded by a baseline, not the catalog
+};
+
+/// report's page: DIR/index.html with its SVG pictures and DIR/results.json.
+void write_report(const std::string& dir, const std::string& engine, const std::string& catalog_file, const Catalog& catalog, const Results& rows,
+                  const std::vector<std::string>& baseline_mismatches, const ReportStages& stages);
+
+}  // namespace dartcheck::cli
