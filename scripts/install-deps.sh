@@ -24,6 +24,9 @@ packages=(
   libcgal-dev libcgal-demo geomview assimp-testmodels libopenmesh-dev
   # Tetrahedral meshes of CGAL's surfaces for the tet -> hex recombination.
   tetgen
+  # Campaigns (docs/scale.md): GNU parallel runs shards in the tests; Slurm
+  # (with munge) runs the job-array script on a one-node cluster.
+  parallel slurm-wlm munge
 )
 
 missing=()

@@ -99,8 +99,20 @@ if root is not None:
     expect_equal("junit: test case names", [c.get("name") for c in root.iter("testcase")],
                  ['r"1\\\n\t\ufffd\ufffd[31m\ufffd', HOSTILE_RULE_2])
 check_json(["fuzz", HOSTILE, "--runs", "50", "--seed", "1", "--format", "json"], 0, "https://dartcheck.invalid/schema/fuzz.schema.json")
-lines = check_json(["fuzz", HOSTILE, "--runs", "50", "--seed", "1", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/fuzz.schema.json", jsonl=True)
-expect_equal("fuzz jsonl: line types", [l.get("type") for l in lines], ["rule", "rule", "summary"])
+lines = check_json(["fuzz", HOSTILE, "--runs", "50", "--seed", "1", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
+expect_equal("fuzz jsonl: line types", [l.get("type") for l in lines], ["header", "rule", "rule", "summary"])
+# Shards of the hostile catalog (2 of them, whatever their sizes) merge back
+# into the unsharded run's document, names and all.
+for command, extra, schema in [("check", [], "check"), ("fuzz", ["--runs", "50", "--seed", "1"], "fuzz"), ("prove", ["--max-darts", "3"], "prove")]:
+    shard_files = []
+    for k in range(2):
+        lines = check_json([command, HOSTILE, *extra, "--shard", f"{k}/2", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
+        shard_files.append(os.path.join(WORK, f"hostile-{command}-{k}.jsonl"))
+        with open(shard_files[-1], "w", encoding="utf-8") as f:
+            f.write("".join(json.dumps(l) + "\n" for l in lines))
+    [merged] = check_json(["merge", *shard_files, "--format", "json"], 0, f"https://dartcheck.invalid/schema/{schema}.schema.json") or [None]
+    if merged:
+        expect_equal(f"{command} merged: rule names", [r["name"] for r in merged["rules"]], [HOSTILE_RULE, HOSTILE_RULE_2])
 check_json(["prove", HOSTILE, "--max-darts", "3", "--format", "json"], 0, "https://dartcheck.invalid/schema/prove.schema.json")
 check_json(["events", HOSTILE, "--format", "json"], 0, "https://dartcheck.invalid/schema/events.schema.json")
 report_dir = os.path.join(WORK, "hostile-report")
@@ -129,8 +141,13 @@ check_json(["check", "catalogs/seed-operations.yaml", "--format", "json"], 0, "h
 check_json(["check", "catalogs/embedding-operations.yaml", "--format", "json"], 0, "https://dartcheck.invalid/schema/check.schema.json")
 check_json(["check", "catalogs/seed-operations.yaml", "--format", "sarif"], 0, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
 check_json(["check", "tests/data/wrong-verdict.yaml", "--format", "sarif"], 1, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
-check_json(["fuzz", "catalogs/event-operations.yaml", "--runs", "100", "--seed", "1", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/fuzz.schema.json",
+check_json(["fuzz", "catalogs/event-operations.yaml", "--runs", "100", "--seed", "1", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json",
            jsonl=True)
+check_json(["check", "catalogs/seed-operations.yaml", "--shard", "1/3", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
+check_json(["prove", "catalogs/seed-operations.yaml", "--shard", "2/3", "--max-darts", "3", "--format", "jsonl"], 0,
+           "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
+check_json(["report", "catalogs/seed-operations.yaml", "-o", os.path.join(WORK, "shard-report"), "--prove", "3", "--shard", "0/3", "--format", "jsonl"], 0,
+           "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
 check_json(["prove", "catalogs/seed-operations.yaml", "--rule", "fig17-exchange", "--format", "json"], 0, "https://dartcheck.invalid/schema/prove.schema.json")
 check_json(["prove", "tests/data/wrong-verdict.yaml", "--format", "json"], 1, "https://dartcheck.invalid/schema/prove.schema.json")
 check_json(["events", "catalogs/event-operations.yaml", "--format", "json"], 0, "https://dartcheck.invalid/schema/events.schema.json")

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Theorem (docs/scale.md): for deterministic settings (--runs, a seed, a
+# resource limit rather than a time), the N shards of a run, merged, give
+# the unsharded run's output. Checked here on the seed catalog for check,
+# fuzz and prove, with 4 shards run by GNU parallel (scripts/campaign/
+# parallel.sh) and with --jobs 2: the JSON documents are equal once the
+# wall-clock fields ("seconds", "static_ms") are dropped, and SARIF equal
+# byte for byte. Then merge's refusals: a missing, duplicated, unfinished
+# or foreign shard, and a catalog changed since the shards ran.
+# Usage: parallel_equal.sh DARTCHECK SOURCE_DIR WORK_DIR
+set -euo pipefail
+D=$1 SRC=$2 WORK=$3
+rm -rf "$WORK" && mkdir -p "$WORK" && cd "$SRC"
+C=catalogs/seed-operations.yaml
+fail=0
+
+same_json() {  # label a b
+  if ! python3 - "$2" "$3" <<'PY'
+import json, sys
+def norm(o):
+    if isinstance(o, dict): return {k: norm(v) for k, v in o.items() if k not in ("seconds", "static_ms")}
+    if isinstance(o, list): return [norm(x) for x in o]
+    return o
+a, b = (norm(json.load(open(p))) for p in sys.argv[1:3])
+if a != b:
+    for k in a:
+        if a.get(k) != b.get(k): print("differs at", k)
+    sys.exit(1)
+PY
+  then echo "FAIL: $1: merged JSON differs from the single run" >&2; fail=1; fi
+}
+
+expect_error() {  # label pattern command...
+  local label=$1 pattern=$2; shift 2
+  local rc=0
+  "$@" > "$WORK/out.txt" 2> "$WORK/err.txt" || rc=$?
+  if [ "$rc" -ne 2 ] || ! grep -q -- "$pattern" "$WORK/err.txt"; then
+    echo "FAIL: $label: exit $rc, expected 2 and '$pattern' in:" >&2; cat "$WORK/err.txt" >&2; fail=1
+  fi
+}
+
+for run in "check" "fuzz --runs 300 --seed 7" "prove --max-darts 3"; do
+  read -r -a args <<< "$run"
+  name=${args[0]}
+  "$D" "${args[0]}" $C "${args[@]:1}" --format json > "$WORK/$name.single.json" 2> /dev/null || true
+  scripts/campaign/parallel.sh -n 4 -b "$D" -d "$WORK/$name-shards" -f json -- "${args[0]}" $C "${args[@]:1}" \
+    > "$WORK/$name.merged.json" 2> "$WORK/$name.parallel.err" || { echo "FAIL: $name: parallel.sh exited $?" >&2; tail "$WORK/$name.parallel.err" >&2; fail=1; }
+  same_json "$name, 4 shards by GNU parallel" "$WORK/$name.single.json" "$WORK/$name.merged.json"
+  "$D" "${args[0]}" $C "${args[@]:1}" --format json --jobs 2 > "$WORK/$name.jobs.json" 2> /dev/null || true
+  same_json "$name --jobs 2" "$WORK/$name.single.json" "$WORK/$name.jobs.json"
+done
+"$D" check $C --format sarif > "$WORK/single.sarif"
+"$D" merge "$WORK"/check-shards/shard-*.jsonl --format sarif > "$WORK/merged.sarif" 2> /dev/null
+cmp "$WORK/single.sarif" "$WORK/merged.sarif" || { echo "FAIL: check: merged SARIF differs" >&2; fail=1; }
+
+S=$WORK/fuzz-shards
+expect_error "a missing shard" "shard 2/4 is missing" "$D" merge "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$S/shard-3.jsonl"
+expect_error "a shard given twice" "shard 1/4 is also" "$D" merge "$S"/shard-*.jsonl "$S/shard-1.jsonl"
+head -n 3 "$S/shard-2.jsonl" > "$WORK/cut.jsonl"
+expect_error "an unfinished shard" "no summary line: shard 2/4 did not finish" "$D" merge "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$WORK/cut.jsonl" "$S/shard-3.jsonl"
+"$D" fuzz $C --runs 300 --seed 8 --shard 2/4 --format jsonl > "$WORK/seed8.jsonl" 2> /dev/null || true
+expect_error "a shard of another seed" "not a shard of the same run" "$D" merge "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$WORK/seed8.jsonl" "$S/shard-3.jsonl"
+expect_error "a shard of another command" "not a shard of the same run" "$D" merge "$S/shard-0.jsonl" "$WORK/check-shards/shard-1.jsonl"
+sed 's/"applications":[0-9]*,"hosts"/"applications":-1,"hosts"/g' "$S/shard-1.jsonl" > "$WORK/damaged.jsonl"
+expect_error "a damaged record" "damaged.jsonl:[0-9]*:1: record.fuzz.applications" "$D" merge "$S/shard-0.jsonl" "$WORK/damaged.jsonl" "$S/shard-2.jsonl" "$S/shard-3.jsonl"
+cp tests/data/wrong-verdict.yaml "$WORK/catalog.yaml" && "$D" check "$WORK/catalog.yaml" --shard 0/1 --format jsonl > "$WORK/moved.jsonl" 2> /dev/null || true
+echo "# changed" >> "$WORK/catalog.yaml"
+expect_error "a changed catalog" "not the catalog the shards ran on" "$D" merge "$WORK/moved.jsonl"
+exit $fail
