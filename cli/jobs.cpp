@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -30,7 +31,7 @@ std::vector<std::string>& command_line() {
 
 // The arguments of shard k: the command line without --jobs and --format
 // (both spellings), with the shard, its lines and the shared seed.
-std::vector<std::string> shard_arguments(std::size_t k, const JobsRun& run) {
+std::vector<std::string> shard_arguments(std::size_t k, std::size_t shards, const JobsRun& run) {
   std::vector<std::string> out;
   const auto& args = command_line();
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -42,7 +43,7 @@ std::vector<std::string> shard_arguments(std::size_t k, const JobsRun& run) {
     if (a.starts_with("--jobs=") || a.starts_with("--format=")) continue;
     out.push_back(a);
   }
-  for (std::string a : {std::string("--shard"), fmt::format("{}/{}", k, run.jobs), std::string("--format"), std::string("jsonl")}) out.push_back(a);
+  for (std::string a : {std::string("--shard"), fmt::format("{}/{}", k, shards), std::string("--format"), std::string("jsonl")}) out.push_back(a);
   if (run.seed) {
     out.push_back("--seed");
     out.push_back(std::to_string(*run.seed));
@@ -91,25 +92,35 @@ int run_jobs(const JobsRun& run) {
     }
   } cleanup{dir};
 
-  fmt::print(stderr, "dartcheck: {} shard processes{}\n", run.jobs,
+  // Four shards per job, started as jobs finish: a rule hashes to a shard
+  // whatever its cost, so finer shards even out the processes' loads.
+  const std::size_t shards = run.jobs * 4;
+  fmt::print(stderr, "dartcheck: {} shards on {} processes{}\n", shards, run.jobs,
              run.seed ? fmt::format(", seed {} (replay with --seed {})", *run.seed, *run.seed) : "");
-  std::vector<pid_t> pids;
   MergeOptions merge = run.merge;
-  for (std::size_t k = 0; k < run.jobs; ++k) {
-    merge.shards.push_back(fmt::format("{}/{}.jsonl", dir, k));
-    pids.push_back(spawn(shard_arguments(k, run), merge.shards.back(), fmt::format("{}/{}.err", dir, k)));
-  }
-  // Every shard's status; a shard's own errors are shown as it wrote them.
+  std::map<pid_t, std::size_t> running;
   int failed = 0;
-  for (std::size_t k = 0; k < run.jobs; ++k) {
-    int status = 0;
-    while (waitpid(pids[k], &status, 0) < 0 && errno == EINTR) {
+  for (std::size_t next = 0; next < shards || !running.empty();) {
+    if (next < shards && running.size() < run.jobs) {
+      merge.shards.push_back(fmt::format("{}/{}.jsonl", dir, next));
+      running[spawn(shard_arguments(next, shards, run), merge.shards.back(), fmt::format("{}/{}.err", dir, next))] = next;
+      ++next;
+      continue;
     }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(fmt::format("--jobs: waiting for the shards: {}", std::strerror(errno)));
+    }
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const std::size_t k = it->second;
+    running.erase(it);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    const std::string err = file_text(fmt::format("{}/{}.err", dir, k));
-    // 0, 1 and 3 are verdicts, reported by the merge; anything else stops it.
+    // 0, 1 and 3 are verdicts, which the merge reports; anything else stops it.
     if (code != ok && code != violation && code != soundness_bug) {
-      fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, run.jobs, code, err);
+      fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, shards, code, file_text(fmt::format("{}/{}.err", dir, k)));
       if (!failed) failed = code;
     }
   }

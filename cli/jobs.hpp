@@ -1,6 +1,6 @@
 // --jobs J: one machine's cores for check, fuzz, prove and report. The
-// command runs itself J times as shards (--shard k/J --format jsonl, one
-// process each: no engine state is shared between rules, and processes
+// command runs itself as 4J shards, J processes at a time (--shard k/4J
+// --format jsonl, one process each: no engine state is shared between rules, and processes
 // could not race on it if some ever were) and merges them (`merge`), so
 // the output is the one-job output by construction for a fixed --runs.
 #pragma once
