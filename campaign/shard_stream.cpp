@@ -1,6 +1,8 @@
 #include "campaign/shard_stream.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -72,7 +74,8 @@ RunHeader make_header(std::string command, const std::string& catalog, const std
   RunHeader h;
   h.command = std::move(command);
   h.catalog = catalog;
-  h.catalog_digest = file_digest(catalog);
+  // A per-input command may read a mesh by its stem (x for x.node and x.ele).
+  h.catalog_digest = std::filesystem::is_regular_file(catalog) ? file_digest(catalog) : std::string();
   h.baseline = baseline;
   h.baseline_digest = baseline.empty() ? std::string() : file_digest(baseline);
   h.rule = rule;
@@ -91,9 +94,13 @@ Json run_summary(const std::vector<analysis::RuleResult>& results, std::size_t s
               {"baseline_mismatches", baseline_mismatches}};
 }
 
+bool per_input_command(std::string_view command) { return command == "recombine" || command == "query"; }
+
 ShardWriter::ShardWriter(const RunHeader& header) : command_(header.command) { line("header", header_json(header)); }
 
 void ShardWriter::rule(const analysis::RuleResult& r) { line("rule", reports::rule_result_json(r), result_record(r)); }
+
+void ShardWriter::input(Json document, const std::string& text) { line("input", Json{{"document", std::move(document)}, {"text", text}}); }
 
 void ShardWriter::summary(Json summary) { line("summary", std::move(summary)); }
 
@@ -138,6 +145,11 @@ ShardFile read_shard_file(const std::string& file) {
     } else if (type == "rule") {
       if (!j.contains("rule") || !j.contains("record")) throw InputError(file, line, 1, "a rule line without \"rule\" and \"record\"");
       out.rules.push_back({string_at(j["rule"], "name", file, line), j["record"], line});
+    } else if (type == "input") {
+      if (!j.contains("input") || !j["input"].is_object() || !j["input"].contains("document") || !j["input"].contains("text") ||
+          !j["input"]["text"].is_string() || !out.input.is_null())
+        throw InputError(file, line, 1, "an input line without \"document\" and \"text\", or a second one");
+      out.input = j["input"];
     } else if (type == "summary") {
       if (!j.contains("summary") || !j["summary"].is_object()) throw InputError(file, line, 1, "a summary line without a \"summary\" object");
       out.summary = j["summary"];
@@ -156,6 +168,21 @@ ShardFile read_shard_file(const std::string& file) {
 std::vector<ShardFile> check_complete(std::vector<ShardFile> files) {
   if (files.empty()) throw InputError("<command line>", 0, 0, "merge: no shard files given");
   const RunHeader& first = files.front().header;
+  if (per_input_command(first.command)) {
+    std::map<std::string, const ShardFile*> by_input;
+    for (const auto& f : files) {
+      if (f.header.command != first.command || f.header.parameters != first.parameters)
+        throw InputError(f.file, 1, 1,
+                         fmt::format("not a run of the same campaign as {}: {} {} against {} {}", files.front().file, f.header.command,
+                                     f.header.parameters.dump(), first.command, first.parameters.dump()));
+      if (f.input.is_null()) throw InputError(f.file, 0, 0, "no input line: the run did not finish");
+      const auto [it, fresh] = by_input.emplace(f.header.catalog, &f);
+      if (!fresh)
+        throw InputError(f.file, 1, 1, fmt::format("{} is also the input of {}: give each run once", printable(f.header.catalog), it->second->file));
+    }
+    std::sort(files.begin(), files.end(), [](const ShardFile& a, const ShardFile& b) { return a.header.catalog < b.header.catalog; });
+    return files;
+  }
   std::map<std::size_t, const ShardFile*> by_index;
   for (const auto& f : files) {
     if (const auto d = difference(first, f.header); !d.empty())

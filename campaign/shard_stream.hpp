@@ -34,11 +34,18 @@ struct RunHeader {
 RunHeader make_header(std::string command, const std::string& catalog, const std::string& baseline, const std::string& rule, Shard shard,
                       reports::Json parameters);
 
+/// Commands whose run reads one input (recombine, query): a campaign runs
+/// one job per input; the header's `catalog` is the input, and merge
+/// gathers the runs in the order of their inputs' paths.
+bool per_input_command(std::string_view command);
+
 /// Writes the lines on stdout, each flushed.
 class ShardWriter {
  public:
   explicit ShardWriter(const RunHeader& header);
   void rule(const analysis::RuleResult& r);
+  /// A per-input command's result: its JSON document and its text.
+  void input(reports::Json document, const std::string& text);
   void summary(reports::Json summary);
 
  private:
@@ -64,6 +71,7 @@ struct ShardFile {
   std::string file;
   RunHeader header;
   std::vector<ShardRule> rules;
+  reports::Json input;  // a per-input command's {"document", "text"}
   reports::Json summary;
 };
 
@@ -74,7 +82,9 @@ ShardFile read_shard_file(const std::string& file);
 
 /// Checks that `files` are the N shards of one run, each exactly once;
 /// InputError naming the missing shard, the duplicated one (with both
-/// files) or the option that differs. Returns them ordered by shard.
+/// files) or the option that differs. Returns them ordered by shard. For
+/// a per-input command: runs with the same options, each input once,
+/// ordered by the input's path.
 std::vector<ShardFile> check_complete(std::vector<ShardFile> files);
 
 }  // namespace dartcheck::campaign

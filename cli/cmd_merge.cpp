@@ -85,6 +85,33 @@ Results merged_results(const Catalog& catalog, const std::vector<ShardFile>& sha
   return results;
 }
 
+// recombine and query on many inputs, one run each: their documents in
+// one JSON document, or their texts one after the other, in the order of
+// the inputs' paths; the worst exit status (3, then 1, then 0).
+int merge_inputs(const std::vector<ShardFile>& files, const std::string& format) {
+  const std::string& command = files.front().header.command;
+  if (format != "text" && format != "json") throw InputError("<command line>", 0, 0, fmt::format("--format: {} runs merge as text or json", command));
+  int status = ok;
+  Json runs = Json::array();
+  std::string text;
+  for (const auto& f : files) {
+    const int s = f.summary.value("status", 0);
+    if (s == soundness_bug || (s == violation && status == ok)) status = s;
+    runs.push_back(f.input["document"]);
+    text += f.input["text"].get<std::string>();
+  }
+  fmt::print(stderr, "dartcheck merge: {} runs of {}\n", files.size(), command);
+  if (format == "json") {
+    Json doc = reports::json_document(command + "-campaign");
+    doc["inputs"] = files.size();
+    doc["runs"] = std::move(runs);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
+  } else {
+    fmt::print("{}", text);
+  }
+  return status;
+}
+
 }  // namespace
 
 int merge(const MergeOptions& o) {
@@ -92,6 +119,7 @@ int merge(const MergeOptions& o) {
   for (const auto& f : o.shards) files.push_back(campaign::read_shard_file(f));
   files = campaign::check_complete(std::move(files));
   const campaign::RunHeader& h = files.front().header;
+  if (campaign::per_input_command(h.command)) return merge_inputs(files, o.format);
   if (o.format == "html" && o.output.empty()) throw InputError("<command line>", 0, 0, "--format html: give -o DIR for the page");
   if (o.format == "html") ensure_directory(o.output);
 

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "analysis/map_sources.hpp"
+#include "campaign/shard_stream.hpp"
 #include "cli/commands.hpp"
 #include "reports/querymodify_report.hpp"
 #include "cli/tet_input.hpp"
@@ -71,7 +72,8 @@ std::vector<NamedQuery> named_queries(const QueryOptions& o, const Map& input, c
 }  // namespace
 
 int query(const QueryOptions& o) {
-  if (o.format != "text" && o.format != "json") throw command_line(fmt::format("--format: expected text or json, got '{}'", o.format));
+  if (o.format != "text" && o.format != "json" && o.format != "jsonl")
+    throw command_line(fmt::format("--format: expected text, json or jsonl, got '{}'", o.format));
   if (o.strategy != "all" && o.strategy != "greedy" && o.strategy != "global")
     throw command_line(fmt::format("--strategy: expected all, greedy or global, got '{}'", o.strategy));
   const querymodify::Constraint free_links = parse_free(o.free);
@@ -111,11 +113,26 @@ int query(const QueryOptions& o) {
                         o.limit,
                         seconds};
   for (const auto& q : queries) run.names.push_back(q.name), run.query_darts.push_back(q.word.darts);
-  if (o.format == "json")
+  const int status = all.distinct.empty() ? violation : ok;
+  if (o.format == "jsonl") {
+    // One run of a campaign over many maps (docs/scale.md): merge gathers them.
+    campaign::ShardWriter lines(campaign::make_header("query", o.map, "", "", {},
+                                                      reports::Json{{"queries", o.queries},
+                                                                    {"hex", o.hex},
+                                                                    {"model", o.model},
+                                                                    {"catalog", o.catalog},
+                                                                    {"free", o.free},
+                                                                    {"strategy", o.strategy},
+                                                                    {"start", o.start},
+                                                                    {"limit", o.limit}}));
+    lines.input(reports::query_document(run), reports::query_text(run));
+    lines.summary(reports::Json{{"status", status}});
+  } else if (o.format == "json") {
     fmt::print("{}\n", reports::json_text(reports::query_document(run)));
-  else
+  } else {
     fmt::print("{}", reports::query_text(run));
-  return all.distinct.empty() ? violation : ok;
+  }
+  return status;
 }
 
 }  // namespace dartcheck::cli

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "campaign/shard_stream.hpp"
 #include "cli/commands.hpp"
 #include "reports/querymodify_report.hpp"
 #include "cli/tet_input.hpp"
@@ -59,8 +60,8 @@ void write_hexes(const std::string& file, const TetMesh& input, const Recombinat
 }  // namespace
 
 int recombine(const RecombineOptions& o) {
-  if (o.format != "text" && o.format != "json")
-    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", o.format));
+  if (o.format != "text" && o.format != "json" && o.format != "jsonl")
+    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text, json or jsonl, got '{}'", o.format));
   if (!o.output.empty()) check_writable(o.output);  // before the work, not after it
   const Strategy strategy = parse_strategy(o.strategy);
   if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".mesh")
@@ -106,16 +107,23 @@ int recombine(const RecombineOptions& o) {
                                   output_check_seconds,
                                   since(start),
                                   peak_mib()};
-  if (o.format == "json")
+  const int status = output_check.valid() && darts_ok ? ok : soundness_bug;
+  if (o.format == "jsonl") {
+    // One run of a campaign over many meshes (docs/scale.md): merge gathers them.
+    campaign::ShardWriter lines(
+        campaign::make_header("recombine", o.mesh, "", "", {}, reports::Json{{"strategy", o.strategy}, {"min_quality", o.min_quality}}));
+    lines.input(reports::recombine_document(run), reports::recombine_text(run));
+    lines.summary(reports::Json{{"status", status}});
+  } else if (o.format == "json") {
     fmt::print("{}\n", reports::json_text(reports::recombine_document(run)));
-  else
+  } else {
     fmt::print("{}", reports::recombine_text(run));
-  if (!output_check.valid() || !darts_ok) {
+  }
+  if (status != ok) {
     fmt::print(stderr, "BUG: the recombined map is {} ({} darts, {} expected)\n", output_check.valid() ? "valid" : "invalid", in.map.map.size(),
                expected_darts);
-    return soundness_bug;
   }
-  return ok;
+  return status;
 }
 
 }  // namespace dartcheck::cli

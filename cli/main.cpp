@@ -221,7 +221,7 @@ void add_recombine(CLI::App& app, Commands& commands) {
       ->capture_default_str()
       ->check(CLI::Range(-1.0, 1.0));
   rc->add_option("-o,--output", o->output, "write the hexes and the remaining tetrahedra as a medit .mesh");
-  rc->add_option("--format", o->format, "text or json")->capture_default_str();
+  rc->add_option("--format", o->format, "text, json or jsonl (one run of a campaign over many meshes, for merge)")->capture_default_str();
   commands.push_back({rc, [o] { return cli::recombine(*o); }});
 }
 
@@ -239,7 +239,7 @@ void add_query(CLI::App& app, Commands& commands) {
   qy->add_option("--catalog", o->catalog, "catalog whose maps the map and queries may name");
   qy->add_option("--model", o->model, "model for meshes and shapes")->capture_default_str();
   qy->add_option("--limit", o->limit, "matches printed")->capture_default_str()->check(counts());
-  qy->add_option("--format", o->format, "text or json")->capture_default_str();
+  qy->add_option("--format", o->format, "text, json or jsonl (one run of a campaign over many maps, for merge)")->capture_default_str();
   commands.push_back({qy, [o] { return cli::query(*o); }});
 }
 

@@ -66,4 +66,25 @@ expect_error "a damaged record" "damaged.jsonl:[0-9]*:1: record.fuzz.application
 cp tests/data/wrong-verdict.yaml "$WORK/catalog.yaml" && "$D" check "$WORK/catalog.yaml" --shard 0/1 --format jsonl > "$WORK/moved.jsonl" 2> /dev/null || true
 echo "# changed" >> "$WORK/catalog.yaml"
 expect_error "a changed catalog" "not the catalog the shards ran on" "$D" merge "$WORK/moved.jsonl"
+
+# recombine and query on many inputs, one GNU parallel job each: the merged
+# document holds each input's own document, in the order of their paths.
+meshes=(tests/data/two-tets.mesh tests/data/cube-5-tets.mesh)
+parallel --will-cite "$D recombine {} --format jsonl > $WORK/recombine-{#}.jsonl" ::: "${meshes[@]}"
+"$D" merge "$WORK"/recombine-*.jsonl --format json > "$WORK/recombine.merged.json" 2> /dev/null
+for k in 0 1; do "$D" recombine "${meshes[$k]}" --format json > "$WORK/recombine-single-$k.json"; done
+if ! python3 - "$WORK/recombine.merged.json" "$WORK/recombine-single-1.json" "$WORK/recombine-single-0.json" <<'PY'
+import json, sys
+def norm(o):
+    if isinstance(o, dict): return {k: norm(v) for k, v in o.items() if k not in ("seconds", "tets_per_second", "peak_mib")}
+    if isinstance(o, list): return [norm(x) for x in o]
+    return o
+merged = json.load(open(sys.argv[1]))
+singles = [norm(json.load(open(p))) for p in sys.argv[2:]]
+sys.exit(not (merged["inputs"] == 2 and [norm(r) for r in merged["runs"]] == singles))
+PY
+then echo "FAIL: recombine: the merged runs differ from the single runs (in path order)" >&2; fail=1; fi
+expect_error "an input given twice" "is also the input of" "$D" merge "$WORK/recombine-1.jsonl" "$WORK/recombine-1.jsonl"
+"$D" recombine tests/data/folded-tets.mesh --format jsonl > "$WORK/recombine-folded.jsonl" 2> /dev/null || true
+expect_error "a run that failed" "recombine-folded.jsonl: empty: no header line" "$D" merge "$WORK"/recombine-*.jsonl
 exit $fail
