@@ -102,6 +102,10 @@ void ShardWriter::rule(const analysis::RuleResult& r) { line("rule", reports::ru
 
 void ShardWriter::input(Json document, const std::string& text) { line("input", Json{{"document", std::move(document)}, {"text", text}}); }
 
+void ShardWriter::fragment(const std::string& rule, Json json, const std::string& text) {
+  line("fragment", Json{{"rule", rule}, {"json", std::move(json)}, {"text", text}});
+}
+
 void ShardWriter::summary(Json summary) { line("summary", std::move(summary)); }
 
 void ShardWriter::line(const char* type, Json payload, std::optional<Json> record) {
@@ -145,6 +149,12 @@ ShardFile read_shard_file(const std::string& file) {
     } else if (type == "rule") {
       if (!j.contains("rule") || !j.contains("record")) throw InputError(file, line, 1, "a rule line without \"rule\" and \"record\"");
       out.rules.push_back({string_at(j["rule"], "name", file, line), j["record"], line});
+    } else if (type == "fragment") {
+      const Json& f = j.value("fragment", Json());
+      if (!f.is_object() || !f.contains("json") || !f.contains("text") || !f["text"].is_string())
+        throw InputError(file, line, 1, "a fragment line without \"rule\", \"json\" and \"text\"");
+      string_at(f, "rule", file, line);
+      out.fragments.push_back(f);
     } else if (type == "input") {
       if (!j.contains("input") || !j["input"].is_object() || !j["input"].contains("document") || !j["input"].contains("text") ||
           !j["input"]["text"].is_string() || !out.input.is_null())

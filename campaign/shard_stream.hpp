@@ -46,6 +46,9 @@ class ShardWriter {
   void rule(const analysis::RuleResult& r);
   /// A per-input command's result: its JSON document and its text.
   void input(reports::Json document, const std::string& text);
+  /// One rule's part of an output that is not a RuleResult (events): its
+  /// JSON object (null when the JSON output has none) and its text.
+  void fragment(const std::string& rule, reports::Json json, const std::string& text);
   void summary(reports::Json summary);
 
  private:
@@ -71,7 +74,8 @@ struct ShardFile {
   std::string file;
   RunHeader header;
   std::vector<ShardRule> rules;
-  reports::Json input;  // a per-input command's {"document", "text"}
+  reports::Json input;                   // a per-input command's {"document", "text"}
+  std::vector<reports::Json> fragments;  // events: {"rule", "json", "text"} per rule
   reports::Json summary;
 };
 

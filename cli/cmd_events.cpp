@@ -6,6 +6,7 @@
 
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
+#include "campaign/shard_stream.hpp"
 #include "cli/options.hpp"
 #include "cli/report_text.hpp"
 #include "reports/events_report.hpp"
@@ -75,24 +76,40 @@ std::vector<reports::KindEventsResult> analyse(const EventRule& view, const Cata
 }  // namespace
 
 int events_command(const EventsOptions& o) {
-  Catalog catalog = read_command_catalog(o.catalog, o.rule, o.format);
-  campaign::keep_shard(catalog, command_shard(o.shard));
+  const bool json = o.format == "json", jsonl = o.format == "jsonl";
+  Catalog catalog = read_command_catalog(o.catalog, o.rule, json ? "json" : "text");
+  const campaign::Shard shard = command_shard(o.shard);
+  campaign::keep_shard(catalog, shard);
   if (!o.map.empty() && o.rule.empty()) throw InputError("<command line>", 0, 0, "--map needs --rule: an event log is for one rule");
   if (o.map.empty() && (!o.hooks.empty() || o.dynamic))
     throw InputError("<command line>", 0, 0, "--hook and --dynamic need --map: they concern one application");
-  const bool json = o.format == "json";
+  std::optional<campaign::ShardWriter> lines;
+  if (jsonl) {
+    std::vector<std::string> hooks;
+    for (Dart h : o.hooks) hooks.push_back(std::to_string(h));
+    lines.emplace(campaign::make_header("events", o.catalog, "", o.rule, shard,
+                                        reports::Json{{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}}));
+  }
   int status = ok;
   reports::Json json_rules = reports::Json::array();
+  // Each rule's part of the output: its JSON object (none for a rule
+  // skipped by --orbit) and its text; a shard writes both, for merge.
+  const auto emit = [&](const CatalogRule& rule, std::optional<reports::Json> j, const std::string& text) {
+    if (lines)
+      lines->fragment(rule.rule.name(), j ? *j : reports::Json(nullptr), text);
+    else if (json && j)
+      json_rules.push_back(std::move(*j));
+    else if (!json)
+      fmt::print("{}", text);
+  };
   std::optional<std::string> first_orbit_error;
   std::size_t analysed = 0;
   for (const CatalogRule& rule : catalog.rules) {
     if (!o.rule.empty() && rule.rule.name() != o.rule) continue;
     const EventRuleOutcome view = event_rule(rule);
     if (!view.rule) {
-      if (json)
-        json_rules.push_back(reports::Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", view.why}});
-      else
-        fmt::print("rule {} ({}): not analysed: {}\n", rule.rule.name(), rule.rule.model().name, view.why);
+      emit(rule, reports::Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", view.why}},
+           fmt::format("rule {} ({}): not analysed: {}\n", rule.rule.name(), rule.rule.model().name, view.why));
       if (!o.rule.empty()) status = violation;
       continue;
     }
@@ -104,7 +121,7 @@ int events_command(const EventsOptions& o) {
     } catch (const InputError& e) {
       if (!o.rule.empty()) throw;
       if (!first_orbit_error) first_orbit_error = e.what();
-      if (!json) fmt::print("rule {} ({}): skipped: {}\n", rule.rule.name(), rule.rule.model().name, e.what());
+      emit(rule, std::nullopt, fmt::format("rule {} ({}): skipped: {}\n", rule.rule.name(), rule.rule.model().name, e.what()));
       continue;
     }
     ++analysed;
@@ -115,13 +132,14 @@ int events_command(const EventsOptions& o) {
     if (r.application && (!r.application->applied() || !r.application->validity.valid())) status = std::max(status, int(violation));
     for (const auto& k : r.kinds)
       if (k.check && !k.check->contradictions.empty()) status = soundness_bug;
-    if (json)
-      json_rules.push_back(reports::events_json(r));
-    else
-      fmt::print("{}", reports::events_text(r));
+    emit(rule, reports::events_json(r), reports::events_text(r));
   }
-  if (analysed == 0 && first_orbit_error) throw InputError("<command line>", 0, 0, first_orbit_error->substr(first_orbit_error->find("--orbit")));
-  if (json) {
+  // A shard may hold only rules that --orbit does not fit: not an error there.
+  if (analysed == 0 && first_orbit_error && shard.whole())
+    throw InputError("<command line>", 0, 0, first_orbit_error->substr(first_orbit_error->find("--orbit")));
+  if (lines) {
+    lines->summary(reports::Json{{"status", status}, {"analysed", analysed}});
+  } else if (json) {
     reports::Json doc = reports::json_document("events");
     doc["catalog"] = o.catalog;
     doc["rules"] = std::move(json_rules);

@@ -112,6 +112,41 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
   return status;
 }
 
+// events: every shard's rule fragments in catalog order, each from the
+// shard its name belongs to; the worst exit status.
+int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, const std::string& format) {
+  if (format != "text" && format != "json") throw InputError("<command line>", 0, 0, "--format: events shards merge as text or json");
+  const auto& h = shards.front().header;
+  std::map<std::string, std::size_t> order;
+  for (std::size_t k = 0; k < catalog.rules.size(); ++k) order.emplace(reports::replace_invalid_utf8(catalog.rules[k].rule.name()), k);
+  std::map<std::size_t, const Json*> fragments;
+  int status = ok;
+  for (std::size_t k = 0; k < shards.size(); ++k) {
+    const int s = shards[k].summary.value("status", 0);
+    if (s == soundness_bug || (s == violation && status == ok)) status = s;
+    for (const Json& f : shards[k].fragments) {
+      const std::string name = f["rule"].get<std::string>();
+      const auto at = order.find(name);
+      if (at == order.end() || campaign::stable_hash(catalog.rules[at->second].rule.name()) % h.shard.count != k)
+        throw InputError(shards[k].file, 0, 0,
+                         fmt::format("rule '{}' is not a rule of shard {} of {} in the catalog", printable(name), k, h.catalog));
+      if (!fragments.emplace(at->second, &f).second) throw InputError(shards[k].file, 0, 0, fmt::format("rule '{}' twice", printable(name)));
+    }
+  }
+  fmt::print(stderr, "dartcheck merge: {} shards of events {}, {} rules\n", shards.size(), h.catalog, fragments.size());
+  if (format == "json") {
+    Json doc = reports::json_document("events");
+    doc["catalog"] = h.catalog;
+    doc["rules"] = Json::array();
+    for (const auto& [k, f] : fragments)
+      if (!(*f)["json"].is_null()) doc["rules"].push_back((*f)["json"]);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
+  } else {
+    for (const auto& [k, f] : fragments) fmt::print("{}", (*f)["text"].get<std::string>());
+  }
+  return status;
+}
+
 }  // namespace
 
 int merge(const MergeOptions& o) {
@@ -125,6 +160,7 @@ int merge(const MergeOptions& o) {
 
   std::vector<std::string> baseline_mismatches;
   const Catalog catalog = merged_catalog(h, o.catalog, baseline_mismatches);
+  if (h.command == "events") return merge_events(catalog, files, o.format);
   const Results results = merged_results(catalog, files);
   // The run's figures: every shard's rules and seconds (the work done, not the wall clock).
   std::size_t selected = 0;

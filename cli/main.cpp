@@ -105,7 +105,9 @@ void add_events(CLI::App& app, Commands& commands) {
   ev->add_option("--map", o->map, "apply the rule to this map (catalog map name, map file, mesh or shape) and print the event log");
   ev->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->check(counts());
   ev->add_flag("--dynamic", o->dynamic, "also label every dart of both maps and set that log against the static one (exit 3 on a contradiction)");
-  ev->add_option("--format", o->format, "text or json")->capture_default_str();
+  ev->add_option("--format", o->format, "text, json or jsonl (a shard's lines, for merge)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"text", "json", "jsonl"}));
   add_shard(ev, o->shard);
   commands.push_back({ev, [o] { return cli::events_command(*o); }});
 }

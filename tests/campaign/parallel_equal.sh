@@ -5,7 +5,8 @@
 # fuzz and prove, with 4 shards run by GNU parallel (scripts/campaign/
 # parallel.sh) and with --jobs 2: the JSON documents are equal once the
 # wall-clock fields ("seconds", "static_ms") are dropped, and SARIF equal
-# byte for byte. Then merge's refusals: a missing, duplicated, unfinished
+# byte for byte; events (3 shards) equal byte for byte as text and JSON;
+# recombine on two meshes, one job each, gathered. Then merge's refusals: a missing, duplicated, unfinished
 # or foreign shard, and a catalog changed since the shards ran.
 # Usage: parallel_equal.sh DARTCHECK SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -48,6 +49,12 @@ for run in "check" "fuzz --runs 300 --seed 7" "prove --max-darts 3"; do
   same_json "$name, 4 shards by GNU parallel" "$WORK/$name.single.json" "$WORK/$name.merged.json"
   "$D" "${args[0]}" $C "${args[@]:1}" --format json --jobs 2 > "$WORK/$name.jobs.json" 2> /dev/null || true
   same_json "$name --jobs 2" "$WORK/$name.single.json" "$WORK/$name.jobs.json"
+done
+# events: no wall-clock fields, so text and JSON are equal byte for byte.
+for format in text json; do
+  "$D" events $C --format $format > "$WORK/events.single.$format"
+  scripts/campaign/parallel.sh -n 3 -b "$D" -d "$WORK/events-shards" -f $format -- events $C > "$WORK/events.merged.$format" 2> /dev/null
+  cmp "$WORK/events.single.$format" "$WORK/events.merged.$format" || { echo "FAIL: events: merged $format differs" >&2; fail=1; }
 done
 "$D" check $C --format sarif > "$WORK/single.sarif"
 "$D" merge "$WORK"/check-shards/shard-*.jsonl --format sarif > "$WORK/merged.sarif" 2> /dev/null

@@ -144,6 +144,7 @@ check_json(["check", "tests/data/wrong-verdict.yaml", "--format", "sarif"], 1, "
 check_json(["fuzz", "catalogs/event-operations.yaml", "--runs", "100", "--seed", "1", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json",
            jsonl=True)
 check_json(["check", "catalogs/seed-operations.yaml", "--shard", "1/3", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
+check_json(["events", "catalogs/event-operations.yaml", "--shard", "1/2", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
 check_json(["recombine", "tests/data/cube-5-tets.mesh", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
 check_json(["query", "tests/data/cube-5-tets.mesh", "--hex", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
 check_json(["prove", "catalogs/seed-operations.yaml", "--shard", "2/3", "--max-darts", "3", "--format", "jsonl"], 0,
