@@ -163,6 +163,16 @@ ShardFile read_shard_file(const std::string& file) {
     } else if (type == "summary") {
       if (!j.contains("summary") || !j["summary"].is_object()) throw InputError(file, line, 1, "a summary line without a \"summary\" object");
       out.summary = j["summary"];
+      // The fields merge reads, of the types it reads them as.
+      const Json& sum = out.summary;
+      const auto bad = [&](const char* key, const char* what) {
+        throw InputError(file, line, 1, fmt::format("summary \"{}\": expected {}", key, what));
+      };
+      for (const char* key : {"rules", "finished"})
+        if (sum.contains(key) && !sum[key].is_number_unsigned()) bad(key, "a count");
+      if (sum.contains("seconds") && !sum["seconds"].is_number()) bad("seconds", "a number");
+      if (sum.contains("interrupted") && !sum["interrupted"].is_boolean()) bad("interrupted", "true or false");
+      if (sum.contains("status") && !(sum["status"] == 0 || sum["status"] == 1 || sum["status"] == 3)) bad("status", "0, 1 or 3");
       if (out.summary.value("interrupted", false))
         throw InputError(file, line, 1, "this shard was interrupted: run it again (its rules are not all there)");
     } else {

@@ -3,6 +3,7 @@
 // command's own renderers (cli/run_output.hpp). The static stage is
 // recomputed from the catalog, whose digest must be the shards'; the
 // costly stages come from the records (campaign/result_record.hpp).
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
@@ -29,9 +30,17 @@ namespace {
 template <class T>
 T parameter(const campaign::RunHeader& h, const char* key) {
   const auto it = h.parameters.find(key);
-  if (it == h.parameters.end() || !it->is_number())
-    throw InputError("<shards>", 0, 0, fmt::format("the header has no number \"{}\" for {}", key, h.command));
+  if (it == h.parameters.end() || !it->is_number_unsigned() || it->get<std::uint64_t>() > std::numeric_limits<T>::max())
+    throw InputError("<shards>", 0, 0, fmt::format("the header has no count \"{}\" for {}", key, h.command));
   return it->get<T>();
+}
+
+// A string of the header's parameters ("" when absent).
+std::string text_parameter(const campaign::RunHeader& h, const char* key) {
+  const auto it = h.parameters.find(key);
+  if (it == h.parameters.end()) return {};
+  if (!it->is_string()) throw InputError("<shards>", 0, 0, fmt::format("the header's \"{}\" is not a string", key));
+  return it->get<std::string>();
 }
 
 // The catalog the shards ran on, unchanged since (its digest), with the
@@ -85,6 +94,9 @@ Results merged_results(const Catalog& catalog, const std::vector<ShardFile>& sha
   return results;
 }
 
+// The worse of two runs' exit statuses: a soundness bug, then a violation.
+int worse(int a, int b) { return a == soundness_bug || b == soundness_bug ? soundness_bug : a == violation || b == violation ? violation : ok; }
+
 // recombine and query on many inputs, one run each: their documents in
 // one JSON document, or their texts one after the other, in the order of
 // the inputs' paths; the worst exit status (3, then 1, then 0).
@@ -95,8 +107,7 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
   Json runs = Json::array();
   std::string text;
   for (const auto& f : files) {
-    const int s = f.summary.value("status", 0);
-    if (s == soundness_bug || (s == violation && status == ok)) status = s;
+    status = worse(status, f.summary.value("status", 0));
     runs.push_back(f.input["document"]);
     text += f.input["text"].get<std::string>();
   }
@@ -122,8 +133,7 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
   std::map<std::size_t, const Json*> fragments;
   int status = ok;
   for (std::size_t k = 0; k < shards.size(); ++k) {
-    const int s = shards[k].summary.value("status", 0);
-    if (s == soundness_bug || (s == violation && status == ok)) status = s;
+    status = worse(status, shards[k].summary.value("status", 0));
     for (const Json& f : shards[k].fragments) {
       const std::string name = f["rule"].get<std::string>();
       const auto at = order.find(name);
@@ -177,7 +187,7 @@ int merge(const MergeOptions& o) {
     ReportStages stages;
     stages.baseline = !h.baseline.empty();
     if (h.command == "report" || h.command == "fuzz") {
-      const std::string budget = h.parameters.value(h.command == "report" ? "fuzz" : "time", std::string());
+      const std::string budget = text_parameter(h, h.command == "report" ? "fuzz" : "time");
       if (h.command == "fuzz" || !budget.empty()) {
         stages.fuzz_seconds = budget.empty() ? seconds : parse_duration(budget, "fuzz");
         stages.seed = parameter<std::uint64_t>(h, "seed");

@@ -30,6 +30,7 @@ seeds fuzz_jba "$jerboa"/*.jba
 seeds fuzz_jme "$jerboa"/*.jme tests/data/*.jme
 seeds fuzz_term fuzz/seeds/term/*
 seeds fuzz_word fuzz/seeds/word/*
+seeds fuzz_shard fuzz/seeds/shard/*
 # The mesh harness reads a model byte first.
 mkdir -p "$build/corpus/fuzz_mesh"
 for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.off; do
@@ -37,10 +38,10 @@ for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.o
 done
 
 # The smoke's executions per target: what 20 s gave on a busy 2-core VM.
-declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_word]=300000)
-declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_word]=term)
+declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_word]=300000 [fuzz_shard]=15000)
+declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_word]=term [fuzz_shard]=jsonl)
 status=0
-for t in fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word; do
+for t in fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard; do
   mkdir -p "$build/findings/$t"
   log="$root/$build/findings/$t.log"
   if [ "$mode" = smoke ]; then budget=(-seed=1 -runs="${smoke_runs[$t]}"); else budget=(-max_total_time="$mode"); fi
