@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/jobs.hpp"
+#include "cli/number_options.hpp"
 #include "cli/suggest.hpp"
 #include "reports/versions.hpp"
 #include "revision.hpp"
@@ -25,19 +26,19 @@ namespace {
 // A subcommand and what runs it: its options live as long as the function.
 using Commands = std::vector<std::pair<CLI::App*, std::function<int()>>>;
 
-// Counts and seeds: CLI11 would read "-5" into an unsigned option as 2^64 - 5.
-const CLI::Validator& counts() {
-  static const CLI::Validator v([](std::string& text) { return text.starts_with('-') ? "expected a number >= 0, got " + text : std::string(); },
-                                "NUMBER >= 0");
-  return v;
-}
+// Counts, darts and seeds (cli/number_options.hpp): CLI11 alone would read
+// "-5" into an unsigned option as 2^64 - 5 and "010" as 8.
+CLI::Validator counts() { return cli::count_option(); }
+CLI::Validator darts() { return cli::count_option(0, no_dart - 1); }
+// Bounds past which a search only runs out of time: as prove's --max-darts.
+CLI::Validator host_darts() { return cli::count_option(0, 256); }
 
 void add_validate(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<cli::ValidateOptions>();
   auto* v = app.add_subcommand("validate-map", "Check a map against its model: cells and every violation");
   v->add_option("map", o->target, fmt::format("a map file (.yaml, .jba, .off, .obj) or a shape ({})", shape_usage()))->required();
   v->add_option("--model", o->model, "model for meshes and shapes (2-gmap, 3-gmap, 2-omap, ...)")->capture_default_str();
-  v->add_option("--limit", o->limit, "violations to print (0 = all)")->capture_default_str()->check(counts());
+  v->add_option("--limit", o->limit, "violations to print (0 = all)")->capture_default_str()->transform(counts());
   commands.push_back({v, [o] { return cli::validate_map(*o); }});
 }
 
@@ -47,12 +48,12 @@ void add_apply(CLI::App& app, Commands& commands) {
   a->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   a->add_option("--rule", o->rule, "rule name")->required();
   a->add_option("--map", o->map, "catalog map name, map file, mesh or shape")->required();
-  a->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->check(counts());
+  a->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->transform(darts());
   a->add_option("-o,--output", o->output, "write the result map (YAML) here");
   a->add_option(
       "--kappa-out", o->kappa_out,
       "write the dart correspondence G -> H of the preserved darts here (the κ file `infer --kappa` reads; ids move when darts are deleted)");
-  a->add_option("--limit", o->limit, "violations to print (0 = all)")->capture_default_str()->check(counts());
+  a->add_option("--limit", o->limit, "violations to print (0 = all)")->capture_default_str()->transform(counts());
   commands.push_back({a, [o] { return cli::apply(*o); }});
 }
 
@@ -74,7 +75,7 @@ void add_campaign(CLI::App* command, std::string& shard, std::size_t& jobs) {
   add_shard(command, shard);
   command->add_option("--jobs", jobs, "run as this many shard processes at once and merge them (the output of one job)")
       ->capture_default_str()
-      ->check(CLI::Range(std::size_t{1}, std::size_t{256}));
+      ->transform(cli::count_option(1, 256));
 }
 
 void add_check(CLI::App& app, Commands& commands) {
@@ -92,7 +93,7 @@ void add_check(CLI::App& app, Commands& commands) {
   c->add_flag("--explain", o->explain, "print the witnesses of every failing condition and the counterexample map");
   c->add_option("--confirm-darts", o->confirm_darts, "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
       ->capture_default_str()
-      ->check(counts());
+      ->transform(host_darts());
   commands.push_back({c, [o] { return cli::check(*o); }});
 }
 
@@ -103,7 +104,7 @@ void add_events(CLI::App& app, Commands& commands) {
   ev->add_option("--rule", o->rule, "only this rule (needed with --map)");
   ev->add_option("--orbit", o->orbits, "orbit type such as \"<0,1>\" (repeat), or all (default)");
   ev->add_option("--map", o->map, "apply the rule to this map (catalog map name, map file, mesh or shape) and print the event log");
-  ev->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->check(counts());
+  ev->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->transform(darts());
   ev->add_flag("--dynamic", o->dynamic, "also label every dart of both maps and set that log against the static one (exit 3 on a contradiction)");
   ev->add_option("--format", o->format, "text, json or jsonl (a shard's lines, for merge)")
       ->capture_default_str()
@@ -118,7 +119,8 @@ void add_words(CLI::App& app, Commands& commands) {
   w->add_option("model", o->model, "model giving N and E (2-gmap, 3-omap, ...)")->required();
   w->add_option("word", o->word, "a word: digits are dimensions, ~d is the conjugate of d, ε the empty word")->required();
   w->add_option("word2", o->other, "a second word: test w <->* w2 instead");
-  w->add_option("--prove", o->prove_darts, "with WORD2: ask Z3 for a map of up to this many darts on which the two paths differ")->check(counts());
+  w->add_option("--prove", o->prove_darts, "with WORD2: ask Z3 for a map of up to this many darts on which the two paths differ")
+      ->transform(host_darts());
   commands.push_back({w, [o] { return cli::words(*o); }});
 }
 
@@ -129,14 +131,14 @@ void add_fuzz(CLI::App& app, Commands& commands) {
   f->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   f->add_option("--rule", o->rule, "fuzz only this rule");
   f->add_option("--time", o->time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
-  f->add_option("--runs", o->runs, "applications per rule (default 10000 without --time)")->check(counts());
+  f->add_option("--runs", o->runs, "applications per rule (default 10000 without --time)")->transform(cli::count_option(1));
   f->add_option("--event-checks", o->event_checks,
                 "applications per consistent rule whose event logs are set against its static events (004; 0: none)")
       ->capture_default_str()
-      ->check(counts());
+      ->transform(counts());
   f->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (as check --baseline)");
-  f->add_option("--seed", o->seed, "random seed (default: drawn and printed)")->check(counts());
-  f->add_option("--max-darts", o->max_darts, "largest random host")->capture_default_str()->check(counts());
+  f->add_option("--seed", o->seed, "random seed (default: drawn and printed)")->transform(counts());
+  f->add_option("--max-darts", o->max_darts, "largest random host")->capture_default_str()->transform(cli::count_option(2, no_dart - 1));
   f->add_option("--maps", o->maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
   // -o/--output as every other command; --out, the old spelling, stays.
   f->add_option("-o,--output,--out", o->out, "directory: write each counterexample here (host, match, result and a replay command)");
@@ -154,13 +156,17 @@ void add_prove(CLI::App& app, Commands& commands) {
   p->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   p->add_option("--rule", o->rule, "prove only this rule");
   p->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (as check --baseline)");
-  p->add_option("--max-darts", o->max_darts, "search hosts of up to this many darts")->capture_default_str()->check(counts());
+  p->add_option("--max-darts", o->max_darts, "search hosts of up to this many darts")->capture_default_str()->transform(cli::count_option(1, 256));
   p->add_option("--scheme-darts", o->scheme_darts,
                 "for rule schemes, hosts of up to this many darts (at most --max-darts): H has that many darts per node of R")
       ->capture_default_str()
-      ->check(counts());
-  p->add_option("--rlimit", o->rlimit, "Z3 resource limit per query (deterministic)")->capture_default_str()->check(counts());
-  p->add_option("--timeout", o->timeout, "also stop a query after this many seconds (answers then depend on the machine)")->check(counts());
+      ->transform(cli::count_option(1, 256));
+  p->add_option("--rlimit", o->rlimit, "Z3 resource limit per query (deterministic)")
+      ->capture_default_str()
+      ->transform(cli::count_option(1, std::numeric_limits<unsigned>::max()));
+  // Z3 takes milliseconds in an unsigned: at most 4,294,967 s; 0 is none.
+  p->add_option("--timeout", o->timeout, "also stop a query after this many seconds (answers then depend on the machine)")
+      ->check(cli::real_option(0, 4'000'000));
   p->add_option("-o,--output,--out", o->out, "directory: write each counterexample on a map of the model here, with a replay command");
   p->add_option("--format", o->format, "text, json or jsonl (a shard's lines, for merge)")
       ->capture_default_str()
@@ -199,7 +205,7 @@ void add_infer(CLI::App& app, Commands& commands) {
       ->capture_default_str();
   inf->add_option("--catalog", o->catalog, "catalog whose maps --before and --after may name");
   inf->add_option("--model", o->model, "model for meshes and shapes")->capture_default_str();
-  inf->add_option("--start", o->start, "fold from this dart of the before map only")->check(counts());
+  inf->add_option("--start", o->start, "fold from this dart of the before map only")->transform(darts());
   inf->add_flag("--all", o->all, "try every start dart (one per hook orbit) and list every distinct rule");
   inf->add_flag("--strict", o->strict, "the paper's algorithm exactly: one relabeling candidate per position, no retry");
   inf->add_flag("--generalize", o->generalize,
@@ -221,7 +227,7 @@ void add_recombine(CLI::App& app, Commands& commands) {
   rc->add_option("--strategy", o->strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")->capture_default_str();
   rc->add_option("--min-quality", o->min_quality, "smallest scaled Jacobian a hex must exceed (-1 keeps inverted ones)")
       ->capture_default_str()
-      ->check(CLI::Range(-1.0, 1.0));
+      ->check(cli::real_option(-1, 1));
   rc->add_option("-o,--output", o->output, "write the hexes and the remaining tetrahedra as a medit .mesh");
   rc->add_option("--format", o->format, "text, json or jsonl (one run of a campaign over many meshes, for merge)")->capture_default_str();
   commands.push_back({rc, [o] { return cli::recombine(*o); }});
@@ -234,13 +240,13 @@ void add_query(CLI::App& app, Commands& commands) {
       ->required();
   qy->add_option("--query", o->queries, "a query map, same forms (repeat); connected");
   qy->add_flag("--hex", o->hex, "add the 322 hex patterns of the tet -> hex recombination (open 3-O-maps)");
-  qy->add_option("--start", o->start, "the query dart labeled 1")->capture_default_str()->check(counts());
+  qy->add_option("--start", o->start, "the query dart labeled 1")->capture_default_str()->transform(darts());
   qy->add_option("--free", o->free, "condition on the queries' free links: any (*), boundary (ε), interior (ε̄) or no-link (↔)")
       ->capture_default_str();
   qy->add_option("--strategy", o->strategy, "all (every distinct match), greedy or global (largest first), without overlap")->capture_default_str();
   qy->add_option("--catalog", o->catalog, "catalog whose maps the map and queries may name");
   qy->add_option("--model", o->model, "model for meshes and shapes")->capture_default_str();
-  qy->add_option("--limit", o->limit, "matches printed")->capture_default_str()->check(counts());
+  qy->add_option("--limit", o->limit, "matches printed")->capture_default_str()->transform(counts());
   qy->add_option("--format", o->format, "text, json or jsonl (one run of a campaign over many maps, for merge)")->capture_default_str();
   commands.push_back({qy, [o] { return cli::query(*o); }});
 }
@@ -253,8 +259,8 @@ void add_report(CLI::App& app, Commands& commands) {
   rp->add_option("--rule", o->rule, "only this rule");
   rp->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   rp->add_option("--fuzz", o->fuzz, "fuzz every rule within this total time (30s, 2m, ...) and draw the counterexamples");
-  rp->add_option("--prove", o->prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->check(counts());
-  rp->add_option("--seed", o->seed, "random seed of --fuzz (default: drawn and printed)")->check(counts());
+  rp->add_option("--prove", o->prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->transform(host_darts());
+  rp->add_option("--seed", o->seed, "random seed of --fuzz (default: drawn and printed)")->transform(counts());
   rp->add_option("--engine", o->engine, "Graphviz layout engine")->capture_default_str();
   rp->add_option("--format", o->format, "html (the page in -o DIR) or jsonl (a shard's lines on stdout, for merge)")
       ->capture_default_str()
@@ -291,14 +297,20 @@ void add_draw_map(CLI::App& app, Commands& commands) {
 // set before any input is read.
 void add_limits(CLI::App& app) {
   auto& lim = limits();
-  app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")
+      ->capture_default_str()
+      ->transform(cli::count_option(1, no_dart - 1));
+  app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")
+      ->capture_default_str()
+      ->transform(cli::count_option(1));
   // At most 10,000: a 25,000-deep sum overflowed the checker's recursion on an 8 MiB stack.
   app.add_option("--limit-term-depth", lim.term_depth, "deepest nesting of a term (at most 10000)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 10000));
-  app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->check(CLI::PositiveNumber);
+      ->transform(cli::count_option(1, 10000));
+  app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")
+      ->capture_default_str()
+      ->transform(cli::count_option(1));
+  app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->transform(cli::count_option(1));
 }
 
 // Runs the parsed command; the one place where each kind of error becomes

@@ -2,6 +2,7 @@
 
 #include "analysis/interrupt.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_options.hpp"
 #include "reports/rule_result_text.hpp"
 
 #include <fmt/format.h>
@@ -23,18 +24,19 @@ Catalog read_command_catalog(const std::string& file, const std::string& rule, c
 campaign::Shard command_shard(const std::string& text) { return text.empty() ? campaign::Shard{} : campaign::parse_shard(text); }
 
 double parse_duration(const std::string& text, const std::string& option) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  const std::string unit = text.substr(used);
-  double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : -1;
-  if (used == 0 || scale < 0 || !(v > 0))
-    throw InputError("<command line>", 0, 0, fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, text));
-  return v * scale;
+  // The number, then a unit: "30s", "500ms", "2m", "1h", or bare seconds.
+  const std::size_t split = text.find_first_not_of("0123456789.eE+-");
+  const std::string unit = split == std::string::npos ? "" : text.substr(split);
+  const auto v = read_real(std::string_view(text).substr(0, split == std::string::npos ? text.size() : split));
+  const double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : -1;
+  if (!v || scale < 0 || !(*v > 0))
+    throw InputError("<command line>", 0, 0,
+                     fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, printable(text)));
+  // A deadline is a clock reading plus the duration: keep it far from
+  // overflow (steady_clock counts nanoseconds in 64 bits, about 292 years).
+  if (*v * scale > max_duration_seconds)
+    throw InputError("<command line>", 0, 0, fmt::format("{}: at most {} s (31 days), got '{}'", option, max_duration_seconds, printable(text)));
+  return *v * scale;
 }
 
 void check_hook_count(const CatalogRule& rule, const std::vector<Dart>& hooks) {

@@ -22,8 +22,12 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Seconds in "30s", "500ms", "2m", "1h" or a bare number of seconds;
-/// InputError naming `option` otherwise.
+/// The longest duration an option takes: 31 days.
+inline constexpr double max_duration_seconds = 31 * 24 * 3600;
+
+/// Seconds in "30s", "500ms", "2m", "1h" or a bare number of seconds, at
+/// most max_duration_seconds; InputError naming `option` otherwise (nan,
+/// inf, zero, negative, an unknown unit).
 double parse_duration(const std::string& text, const std::string& option);
 
 /// --hook gives one dart per hook of the rule (none for a rule without
