@@ -310,6 +310,9 @@ void add_limits(CLI::App& app) {
   app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")
       ->capture_default_str()
       ->transform(cli::count_option(1));
+  app.add_option("--limit-rewrite-words", lim.rewrite_words, "most words met while rewriting one word in a non-confluent R_{N,E}")
+      ->capture_default_str()
+      ->transform(cli::count_option(1));
   app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->transform(cli::count_option(1));
 }
 

@@ -1,11 +1,11 @@
 #include "core/conjugate_words.hpp"
 
-#include "core/limits.hpp"
-
 #include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "core/limits.hpp"
 
 namespace dartcheck {
 
@@ -72,6 +72,7 @@ Dart follow(const Map& map, Dart d, const ConjWord& w) {
 ConjugateRewriting::ConjugateRewriting(const Model& model) : model_(model) {
   for (auto [i, j] : model.exchangeable) {
     exchangeable_[std::min(i, j)] |= dim_bit(std::max(i, j));
+    confluent_ = confluent_ && !(model.is_oriented(i) && model.is_oriented(j));
   }
 }
 
@@ -130,12 +131,59 @@ bool ConjugateRewriting::irreducible(const ConjWord& w) const {
   return true;
 }
 
+// Every state below is the word r · c · (pending, last first), reached from
+// w by rewrite steps: c enters at the end of the irreducible r and moves
+// left while it swaps (each swap conjugates c and the letter it passes:
+// y x -> x̄ ȳ); where it cancels, the letters it passed are taken off r
+// again, since the letter now before them may rewrite with them. r stays
+// irreducible (a swapped pair x̄ ȳ has increasing dimensions; conjugating
+// two letters keeps a pair irreducible), so the last r is a normal form,
+// and, the system being confluent, the normal form. Each cancellation
+// removes two letters, so at most |w| + |w|²/2 letters enter, each moving
+// at most |w| places.
+std::string ConjugateRewriting::unique_normal_form(const std::string& w) const {
+  std::string r;
+  std::string pending(w.rbegin(), w.rend());  // the next letter last
+  while (!pending.empty()) {
+    r.push_back(pending.back());
+    pending.pop_back();
+    for (std::size_t k = r.size() - 1; k > 0; --k) {
+      if (cancels(r[k - 1], r[k])) {
+        pending.append(r.rbegin(), r.rend() - static_cast<std::ptrdiff_t>(k + 1));
+        r.resize(k - 1);
+        break;
+      }
+      if (!swappable(r[k - 1], r[k])) break;
+      const char y = r[k - 1], x = r[k];
+      r[k - 1] = conj_letter(model_, x);
+      r[k] = conj_letter(model_, y);
+    }
+  }
+  return r;
+}
+
+void ConjugateRewriting::check_budget(const std::string& w) const {
+  if (nf_memo_.size() + empty_memo_.size() > limits().rewrite_words)
+    throw RewriteLimit(
+        fmt::format("the word {} rewrites into more than {} words in R_{{N,E}} of {}, which is not confluent (two oriented "
+                    "dimensions are exchangeable): raise --limit-rewrite-words",
+                    ConjWord::from_code(w).str(), limits().rewrite_words, model_.name));
+}
+
 // Normal forms of every word reachable from w, memoized per word: the
 // rewriting graph of a word is a DAG (R_{N,E} terminates), so the normal
 // forms of w are the union of those of its one-step rewrites.
 const std::vector<std::uint32_t>& ConjugateRewriting::nf_ids(const std::string& w) {
   if (auto it = nf_memo_.find(w); it != nf_memo_.end()) return it->second;
   std::vector<std::uint32_t> ids;
+  if (confluent_) {
+    const std::string nf = unique_normal_form(w);
+    auto [it, fresh] = intern_.try_emplace(nf, static_cast<std::uint32_t>(interned_.size()));
+    if (fresh) interned_.push_back(ConjWord::from_code(nf));
+    ids.push_back(it->second);
+    return nf_memo_.emplace(w, std::move(ids)).first->second;
+  }
+  check_budget(w);
   bool reducible = false;
   std::string child;
   for (std::size_t k = 0; k + 1 < w.size(); ++k) {
@@ -172,6 +220,8 @@ bool ConjugateRewriting::reaches_empty(const std::string& w) {
   for (char c : w) odd ^= dim_bit(static_cast<unsigned char>(c) >> 1);
   if (odd) return false;
   if (auto it = empty_memo_.find(w); it != empty_memo_.end()) return it->second;
+  if (confluent_) return empty_memo_.emplace(w, unique_normal_form(w).empty()).first->second;
+  check_budget(w);
   bool found = false;
   std::string child;
   for (std::size_t k = 0; k + 1 < w.size() && !found; ++k) {

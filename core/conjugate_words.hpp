@@ -16,10 +16,17 @@
 // A swap sorts two exchangeable letters by increasing dimension, so the
 // system terminates. It is not confluent once two oriented dimensions are
 // exchangeable ("321" with O = {1,2,3} has the normal forms 2̄3̄1 and 31̄2̄),
-// hence normal_forms() returns all of them.
+// hence normal_forms() returns all of them. Without such a pair (every
+// G-map and n-O-map model: at most dimension 1 is oriented) it is
+// confluent, and the one normal form is computed by pushing the letters one
+// by one onto an irreducible word, in polynomial time; the general case
+// walks every rewriting of the word, which grows exponentially with its
+// length ((13)^12 on 3-omap: 2.7 million words), within
+// limits().rewrite_words.
 #pragma once
 
 #include <compare>
+#include <stdexcept>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -79,6 +86,13 @@ ConjWord parse_conj_word(std::string_view text, const Model& model);
 /// conjugate letter; no_dart if an arc is missing.
 Dart follow(const Map& map, Dart d, const ConjWord& w);
 
+/// A word whose rewritings in a non-confluent R_{N,E} are more than
+/// limits().rewrite_words (--limit-rewrite-words).
+class RewriteLimit : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// R_{N,E} for one model, with memoized normal forms.
 class ConjugateRewriting {
  public:
@@ -120,8 +134,14 @@ class ConjugateRewriting {
   const std::vector<std::uint32_t>& nf_ids(const std::string& w);
   bool reaches_empty(const std::string& w);
 
+  /// The normal form when the system is confluent (`confluent_`).
+  std::string unique_normal_form(const std::string& w) const;
+  /// Throws RewriteLimit when the memoized words pass limits().rewrite_words.
+  void check_budget(const std::string& w) const;
+
   Model model_;
   DimSet exchangeable_[max_dimension + 1] = {};
+  bool confluent_ = true;           // no exchangeable pair of oriented dimensions
   std::vector<ConjWord> interned_;  // distinct normal forms, by id
   std::unordered_map<std::string, std::uint32_t> intern_;
   std::unordered_map<std::string, std::vector<std::uint32_t>> nf_memo_;

@@ -22,6 +22,9 @@ struct Limits {
   std::size_t word_length = 4096;
   /// Nodes of one side of a rule or scheme.
   std::size_t rule_nodes = 4096;
+  /// Words met while rewriting one word in a non-confluent R_{N,E} (models
+  /// with two exchangeable oriented dimensions), memoized: about 100 MB.
+  std::size_t rewrite_words = 1'000'000;
 };
 
 /// The process-wide limits (set once by the command line, before input is
