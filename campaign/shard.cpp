@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
+#include "io/input_file.hpp"
 
 namespace dartcheck::campaign {
 
@@ -44,11 +43,6 @@ void keep_shard(Catalog& catalog, const Shard& shard) {
   std::erase_if(catalog.rules, [&](const CatalogRule& e) { return !in_shard(e.rule.name(), shard); });
 }
 
-std::string file_digest(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, "cannot read the file");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return fmt::format("fnv1a64:{:016x}", stable_hash(bytes));
-}
+std::string file_digest(const std::string& path) { return fmt::format("fnv1a64:{:016x}", stable_hash(read_input(path))); }
 
 }  // namespace dartcheck::campaign

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 
 #include <fmt/format.h>
 
 #include "campaign/result_record.hpp"
 #include "core/input_error.hpp"
+#include "io/input_file.hpp"
 #include "reports/rule_result_json.hpp"
 
 namespace dartcheck::campaign {
@@ -118,15 +118,14 @@ void ShardWriter::line(const char* type, Json payload, std::optional<Json> recor
 }
 
 ShardFile read_shard_file(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, 0, 0, "cannot read the shard file");
+  TextLines lines(read_input(file));
   ShardFile out;
   out.file = file;
-  std::string text;
   bool header = false;
   int line = 0;
-  while (std::getline(in, text)) {
-    ++line;
+  while (const auto next = lines.next()) {
+    line = lines.number();
+    const std::string_view text = *next;
     if (text.empty()) continue;
     Json j;
     try {

@@ -300,6 +300,7 @@ void add_limits(CLI::App& app) {
   app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")
       ->capture_default_str()
       ->transform(cli::count_option(1, no_dart - 1));
+  app.add_option("--limit-file-bytes", lim.file_bytes, "largest input file read, in bytes")->capture_default_str()->transform(cli::count_option(1));
   app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")
       ->capture_default_str()
       ->transform(cli::count_option(1));

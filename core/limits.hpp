@@ -14,6 +14,8 @@ namespace dartcheck {
 struct Limits {
   /// Darts of one map read from a file or built from a mesh or shape.
   std::size_t darts = std::size_t{1} << 25;  // 33,554,432
+  /// Bytes of one input file (maps, meshes, catalogs, modelers, shards).
+  std::size_t file_bytes = std::size_t{1} << 31;  // 2 GiB
   /// Characters of one embedding term.
   std::size_t term_length = std::size_t{1} << 16;
   /// Nesting of one term: parentheses, calls, unary signs, operators.

@@ -19,23 +19,20 @@ namespace {
 // Lines of the file with their numbers; every error names file:line.
 class Lines {
  public:
-  explicit Lines(const std::string& file) : file_(file), in_(open_input(file)) {}
+  explicit Lines(const std::string& file) : file_(file), lines_(read_input(file)) {}
   // The next line (without '\r'); `what` names what was expected at the end.
   std::string next(std::string_view what) {
-    std::string line;
-    if (!std::getline(in_, line)) throw InputError(file_, number_ + 1, 1, fmt::format("the file ends where {} was expected", what));
-    ++number_;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    return line;
+    const auto line = lines_.next();
+    if (!line) throw InputError(file_, lines_.number() + 1, 1, fmt::format("the file ends where {} was expected", what));
+    return std::string(*line);
   }
-  bool done() { return in_.peek() == std::char_traits<char>::eof(); }
-  [[noreturn]] void fail(const std::string& message) const { throw InputError(file_, number_, 1, message); }
-  int number() const { return number_; }
+  bool done() const { return lines_.done(); }
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(file_, lines_.number(), 1, message); }
+  int number() const { return lines_.number(); }
 
  private:
   std::string file_;
-  std::ifstream in_;
-  int number_ = 0;
+  TextLines lines_;
 };
 
 std::vector<std::string> words(const std::string& line) {

@@ -266,10 +266,7 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
 }  // namespace
 
 Catalog read_jme(const std::string& file) {
-  std::ifstream in = open_input(file, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+  const std::string text = read_input(file);
   const Positions p(file, text);
   pugi::xml_document doc;
   const auto parsed = doc.load_buffer(text.data(), text.size());

@@ -27,15 +27,15 @@ struct Line {
 
 class LineReader {
  public:
-  explicit LineReader(const std::string& file) : file_(file), in_(open_input(file, std::ios::binary)) {}
+  explicit LineReader(const std::string& file) : file_(file), lines_(read_input(file)) {}
   // Next line with at least one token, or nullopt at the end of the file.
   std::optional<Line> next() {
-    while (std::getline(in_, text_)) {
-      ++number_;
-      if (text_.find('\0') != std::string::npos)
-        throw InputError(file_, number_, static_cast<int>(text_.find('\0')) + 1, "binary data (a NUL byte) in a text mesh file");
+    while (const auto text = lines_.next()) {
+      number_ = lines_.number();
+      if (text->find('\0') != std::string_view::npos)
+        throw InputError(file_, number_, static_cast<int>(text->find('\0')) + 1, "binary data (a NUL byte) in a text mesh file");
       Line l{number_, {}};
-      std::string_view s(text_);
+      std::string_view s(*text);
       if (auto hash = s.find('#'); hash != std::string_view::npos) s = s.substr(0, hash);
       std::size_t k = 0;
       while (k < s.size()) {
@@ -53,8 +53,7 @@ class LineReader {
 
  private:
   std::string file_;
-  std::ifstream in_;
-  std::string text_;
+  TextLines lines_;  // the file's text: tokens are views into it
   int number_ = 0;
 };
 

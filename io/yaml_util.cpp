@@ -14,9 +14,9 @@ void fail_at(const std::string& file, const YAML::Node& node, const std::string&
 }
 
 YAML::Node load_yaml_file(const std::string& file) {
-  std::ifstream in = open_input(file);
+  const std::string text = read_input(file);
   try {
-    return YAML::Load(in);
+    return YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(file, e.mark.line + 1, e.mark.column + 1, "malformed YAML: " + e.msg);
   }

@@ -15,7 +15,8 @@ set(layers
   "querymodify:core,rewriting,io,checkers,querymodify"
   "analysis:core,rewriting,io,checkers,generators,proofs,events,analysis"
   "campaign:core,rewriting,io,checkers,generators,proofs,events,inference,querymodify,analysis,reports,campaign"
-  "fuzz:core,rewriting,io,checkers,generators,fuzz"
+  # fuzz/ harnesses sit on top like the tests (fuzz_shard reads what campaign/ writes).
+  "fuzz:core,rewriting,io,checkers,generators,proofs,events,inference,querymodify,analysis,reports,campaign,fuzz"
   # The command, the benchmarks and the tests sit on top: they may use every
   # library, but the command nothing test- or benchmark-only, and the
   # benchmarks and tests not the command's own files.
