@@ -11,6 +11,13 @@ inline constexpr int interrupted_exit = 130;  // 128 + SIGINT, as shells report 
 /// Installs the handlers (once per process; later calls do nothing).
 void catch_interrupts();
 
+/// For the commands that have nothing finished to print when a signal
+/// comes (one map, one mesh, one word): print "interrupted" and exit with
+/// `interrupted_exit` at once. Installed by main for every command, even
+/// where the signal was inherited as ignored (a background job of a
+/// script); catch_interrupts() replaces it.
+void exit_on_interrupt();
+
 /// Whether SIGINT or SIGTERM arrived since catch_interrupts().
 bool interrupted();
 

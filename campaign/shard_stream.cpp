@@ -171,7 +171,8 @@ ShardFile read_shard_file(const std::string& file) {
         if (sum.contains(key) && !sum[key].is_number_unsigned()) bad(key, "a count");
       if (sum.contains("seconds") && !sum["seconds"].is_number()) bad("seconds", "a number");
       if (sum.contains("interrupted") && !sum["interrupted"].is_boolean()) bad("interrupted", "true or false");
-      if (sum.contains("status") && !(sum["status"] == 0 || sum["status"] == 1 || sum["status"] == 3)) bad("status", "0, 1 or 3");
+      if (sum.contains("status") && !(sum["status"] == 0 || sum["status"] == 1 || sum["status"] == 3 || sum["status"] == 130))
+        bad("status", "0, 1, 3 or 130");
       if (out.summary.value("interrupted", false))
         throw InputError(file, line, 1, "this shard was interrupted: run it again (its rules are not all there)");
     } else {

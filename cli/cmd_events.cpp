@@ -6,8 +6,10 @@
 
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
+#include "analysis/interrupt.hpp"
 #include "campaign/shard_stream.hpp"
 #include "cli/options.hpp"
+#include "core/wording.hpp"
 #include "cli/report_text.hpp"
 #include "reports/events_report.hpp"
 #include "checkers/map_validity.hpp"
@@ -104,7 +106,9 @@ int events_command(const EventsOptions& o) {
   };
   std::optional<std::string> first_orbit_error;
   std::size_t analysed = 0;
+  analysis::catch_interrupts();  // Ctrl-C: the rules analysed so far are printed, exit 130
   for (const CatalogRule& rule : catalog.rules) {
+    if (analysis::interrupted()) break;
     if (!o.rule.empty() && rule.rule.name() != o.rule) continue;
     const EventRuleOutcome view = event_rule(rule);
     if (!view.rule) {
@@ -137,8 +141,12 @@ int events_command(const EventsOptions& o) {
   // A shard may hold only rules that --orbit does not fit: not an error there.
   if (analysed == 0 && first_orbit_error && shard.whole())
     throw InputError("<command line>", 0, 0, first_orbit_error->substr(first_orbit_error->find("--orbit")));
+  if (analysis::interrupted()) {
+    fmt::print(stderr, "interrupted: {} analysed; the output holds them\n", counted(analysed, "rule"));
+    status = analysis::interrupted_exit;
+  }
   if (lines) {
-    lines->summary(reports::Json{{"status", status}, {"analysed", analysed}});
+    lines->summary(reports::Json{{"status", status}, {"analysed", analysed}, {"interrupted", analysis::interrupted()}});
   } else if (json) {
     reports::Json doc = reports::json_document("events");
     doc["catalog"] = o.catalog;

@@ -4,6 +4,7 @@
 
 #include "core/wording.hpp"
 #include "checkers/map_validity.hpp"
+#include "analysis/interrupt.hpp"
 #include "cli/commands.hpp"
 #include "rewriting/application.hpp"
 #include "analysis/map_sources.hpp"
@@ -67,7 +68,9 @@ int run(const RunOptions& o) {
   }
   int failures = 0, examples = 0;
   fmt::print("\nrules (example: expected -> got)\n");
+  analysis::catch_interrupts();  // Ctrl-C: the examples run so far, their summary, exit 130
   for (const auto& r : catalog.rules) {
+    if (analysis::interrupted()) break;
     fmt::print("  {} ({}): L {} nodes / {} arcs, R {} nodes / {} arcs\n", r.rule.name(), r.rule.model().name, r.rule.left().node_count(),
                r.rule.left().arc_count(), r.rule.right().node_count(), r.rule.right().arc_count());
     for (const auto& e : r.examples) {
@@ -80,6 +83,10 @@ int run(const RunOptions& o) {
     }
   }
   fmt::print("\n{}, {} passed, {} failed\n", counted(static_cast<std::size_t>(examples), "example"), examples - failures, failures);
+  if (analysis::interrupted()) {
+    fmt::print(stderr, "interrupted: the examples above are those that ran\n");
+    return analysis::interrupted_exit;
+  }
   return failures ? violation : ok;
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/exceptions.h>
 
+#include "analysis/interrupt.hpp"
 #include "cli/commands.hpp"
 #include "cli/jobs.hpp"
 #include "cli/number_options.hpp"
@@ -377,6 +378,10 @@ int main(int argc, char** argv) {
   add_merge(app, commands);
   add_draw_map(app, commands);
 
+  // SIGINT and SIGTERM end every command within a second, exit 130; the
+  // long runs (check, fuzz, prove, report) install their own handler,
+  // which stops at the next rule and prints the finished ones.
+  analysis::exit_on_interrupt();
   if (const auto status = cli::help_request(app, argc, argv)) return *status;
   try {
     app.parse(argc, argv);
