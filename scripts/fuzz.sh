@@ -31,6 +31,14 @@ seeds fuzz_jme "$jerboa"/*.jme tests/data/*.jme
 seeds fuzz_term fuzz/seeds/term/*
 seeds fuzz_word fuzz/seeds/word/*
 seeds fuzz_shard fuzz/seeds/shard/*
+seeds fuzz_tet_mesh tests/data/*.mesh
+for n in tests/data/*.node; do
+  [ -f "${n%.node}.ele" ] && { cat "$n"; printf '\n%%%%\n'; cat "${n%.node}.ele"; } > "$build/corpus/fuzz_tet_mesh/$(basename "$n").pair" || true
+done
+# The side-file harness reads a selector byte first: 0 baseline, 1 kappa.
+mkdir -p "$build/corpus/fuzz_side_files"
+for f in tests/data/*baseline*.yaml; do { printf '0'; cat "$f"; } > "$build/corpus/fuzz_side_files/$(basename "$f")"; done
+for f in tests/data/*kappa*.yaml; do { printf '1'; cat "$f"; } > "$build/corpus/fuzz_side_files/$(basename "$f")"; done
 # The mesh harness reads a model byte first.
 mkdir -p "$build/corpus/fuzz_mesh"
 for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.off; do
@@ -38,10 +46,10 @@ for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.o
 done
 
 # The smoke's executions per target: what 20 s gave on a busy 2-core VM.
-declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_word]=300000 [fuzz_shard]=15000)
-declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_word]=term [fuzz_shard]=jsonl)
+declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_word]=300000 [fuzz_shard]=15000 [fuzz_tet_mesh]=50000 [fuzz_side_files]=20000)
+declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_word]=term [fuzz_shard]=jsonl [fuzz_tet_mesh]=tet [fuzz_side_files]=yaml)
 status=0
-for t in fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard; do
+for t in fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard fuzz_tet_mesh fuzz_side_files; do
   mkdir -p "$build/findings/$t"
   log="$root/$build/findings/$t.log"
   if [ "$mode" = smoke ]; then budget=(-seed=1 -runs="${smoke_runs[$t]}"); else budget=(-max_total_time="$mode"); fi
