@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -38,6 +39,11 @@ std::string string_at(const Json& j, const char* key, const std::string& file, i
 RunHeader read_header(const Json& j, const std::string& file, int line) {
   RunHeader h;
   h.command = string_at(j, "command", file, line);
+  static const std::set<std::string> commands{"check", "fuzz", "prove", "report", "events", "recombine", "query"};
+  if (!commands.contains(h.command))
+    throw InputError(
+        file, line, 1,
+        fmt::format("a header of command '{}': merge reads check, fuzz, prove, report, events, recombine and query", printable(h.command)));
   h.catalog = string_at(j, "catalog", file, line);
   h.catalog_digest = string_at(j, "catalog_digest", file, line);
   h.baseline = string_at(j, "baseline", file, line);
