@@ -125,8 +125,10 @@ TEST(CgalOracle, MeshCellCountsMatchCgal) {
   for (const char* name : {"cube_quad.off", "torus_quad.off", "3torus.off", "elephant.off"}) {
     SCOPED_TRACE(name);
     LCC lcc;
+    // A 2-map has no beta3: sew3_same_facets(), called here before, failed
+    // CGAL's assertion i <= dimension in the Debug (sanitizer) build; the
+    // Release build skips the assertion, so the call went unnoticed.
     ASSERT_TRUE(CGAL::load_off(lcc, (dir + name).c_str()));
-    lcc.sew3_same_facets();
     const std::vector<std::size_t> cgal{lcc.one_dart_per_cell<0>().size(), lcc.one_dart_per_cell<1>().size(), lcc.one_dart_per_cell<2>().size()};
     for (const Model& model : {Model::gmap(2), Model::omap(2)}) {
       const Map m = load_mesh(model, dir + name);
