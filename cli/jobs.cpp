@@ -8,15 +8,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "analysis/interrupt.hpp"
 #include "core/input_error.hpp"
+#include "io/input_file.hpp"
 
 extern char** environ;
 
@@ -66,13 +65,6 @@ pid_t spawn(const std::vector<std::string>& args, const std::string& out, const 
   return pid;
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 void set_command_line(int argc, char** argv) { command_line().assign(argv, argv + argc); }
@@ -120,7 +112,7 @@ int run_jobs(const JobsRun& run) {
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     // 0, 1 and 3 are verdicts, which the merge reports; anything else stops it.
     if (code != ok && code != violation && code != soundness_bug) {
-      fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, shards, code, file_text(fmt::format("{}/{}.err", dir, k)));
+      fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, shards, code, read_input(fmt::format("{}/{}.err", dir, k)));
       if (!failed) failed = code;
     }
   }
