@@ -1,5 +1,6 @@
 #include "analysis/interrupt.hpp"
 
+#include <time.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -8,31 +9,56 @@ namespace dartcheck::analysis {
 namespace {
 
 volatile std::sig_atomic_t flag = 0;
+volatile std::sig_atomic_t first_second = 0;  // CLOCK_MONOTONIC seconds of the first signal
 
-extern "C" void on_signal(int sig) {
-  flag = 1;
-  std::signal(sig, SIG_DFL);  // the next one is not caught
+long monotonic_seconds() {
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe (POSIX)
+  return static_cast<long>(now.tv_sec);
 }
 
-// Commands with nothing to keep: say so and end now (write and _exit are
-// async-signal-safe; no destructor or buffered output runs).
-extern "C" void on_signal_exit(int) {
+// write and _exit are async-signal-safe; no destructor or buffered output runs.
+[[noreturn]] void exit_now() {
   constexpr char message[] = "interrupted (SIGINT or SIGTERM)\n";
   [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
   ::_exit(interrupted_exit);
 }
 
+// timeout(1) sends its signal to the command and then again to its process
+// group, so one request can arrive twice within microseconds: a repeat ends
+// the process only when it comes a full second or more after the first.
+extern "C" void on_signal(int) {
+  const long now = monotonic_seconds();
+  if (flag == 0) {
+    first_second = static_cast<std::sig_atomic_t>(now);
+    flag = 1;
+    return;
+  }
+  if (now - first_second >= 2) exit_now();  // whole seconds: 2 means at least 1 s
+}
+
+extern "C" void on_signal_exit(int) { exit_now(); }
+
+// sigaction rather than std::signal: the handler stays installed and both
+// signals are blocked while it runs, so SIGTERM cannot interleave with SIGINT.
+void install(void (*handler)(int)) {
+  struct sigaction action {};
+  action.sa_handler = handler;
+  sigemptyset(&action.sa_mask);
+  sigaddset(&action.sa_mask, SIGINT);
+  sigaddset(&action.sa_mask, SIGTERM);
+  action.sa_flags = SA_RESTART;
+  ::sigaction(SIGINT, &action, nullptr);
+  ::sigaction(SIGTERM, &action, nullptr);
+}
+
 }  // namespace
 
-void exit_on_interrupt() {
-  std::signal(SIGINT, on_signal_exit);
-  std::signal(SIGTERM, on_signal_exit);
-}
+void exit_on_interrupt() { install(on_signal_exit); }
 
 void catch_interrupts() {
   static const bool installed = [] {
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
+    install(on_signal);
     return true;
   }();
   (void)installed;

@@ -1,7 +1,8 @@
 // Ctrl-C and CI time-outs: SIGINT and SIGTERM set a flag instead of ending
 // the process, so that long runs (fuzz, prove, report) stop at their next
 // check, keep the results of the rules they finished, write them, and exit
-// with `interrupted_exit`. A second signal ends the process at once.
+// with `interrupted_exit`. A second signal, a second or more after the first,
+// ends the process at once (timeout(1) delivers one request twice).
 #pragma once
 
 namespace dartcheck::analysis {
