@@ -34,6 +34,14 @@ struct ConvertOptions {
 /// Writes the catalog (e.g. a Jerboa .jme modeler) as a YAML catalog.
 int convert(const ConvertOptions& o);
 
+struct CompileOptions {
+  std::string catalog, rule, output;
+  std::string ns;  // the generated code's namespace (default: compiled_ and the catalog's stem)
+};
+/// The consistent rules as C++ (compiler/rule_compiler.hpp); 1 if the
+/// --rule named is not consistent, 2 if it cannot be compiled.
+int compile(const CompileOptions& o);
+
 struct ReportOptions {
   std::string catalog, rule, output, engine = "dot";
   std::string format = "html";  // html (the page in `output`), or jsonl (a shard's lines on stdout)

@@ -195,6 +195,16 @@ void add_convert(CLI::App& app, Commands& commands) {
   commands.push_back({cv, [o] { return cli::convert(*o); }});
 }
 
+void add_compile(CLI::App& app, Commands& commands) {
+  auto o = std::make_shared<cli::CompileOptions>();
+  auto* cc = app.add_subcommand("compile", "Generate C++ that applies the catalog's consistent rules on dartcheck's Map, as the interpreter does");
+  cc->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
+  cc->add_option("--rule", o->rule, "compile this rule only (refused, naming its failing conditions, if it is not consistent)");
+  cc->add_option("-o,--output", o->output, "the C++ header to write (default: standard output)");
+  cc->add_option("--namespace", o->ns, "namespace of the generated functions (default: compiled_ and the catalog's file stem)");
+  commands.push_back({cc, [o] { return cli::compile(*o); }});
+}
+
 void add_infer(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<cli::InferCommand>();
   auto* inf = app.add_subcommand("infer", "Infer the rule scheme of one before/after example by folding (000), check it and apply it back");
@@ -371,6 +381,7 @@ int main(int argc, char** argv) {
   add_prove(app, commands);
   add_draw(app, commands);
   add_convert(app, commands);
+  add_compile(app, commands);
   add_infer(app, commands);
   add_recombine(app, commands);
   add_query(app, commands);

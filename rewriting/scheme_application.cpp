@@ -14,9 +14,9 @@ Outcome<T> refuse(Refusal r, std::string why) {
   return {std::nullopt, r, std::move(why)};
 }
 
-// W: the words of the scheme, each with its conjugate (P_v takes the darts
-// reachable to and from v).
-std::vector<ConjWord> generators_of(const Model& model, const ArcWords& words) {
+}  // namespace
+
+std::vector<ConjWord> scheme_generators(const Model& model, const ArcWords& words) {
   const ConjugateRewriting rw(model);
   std::vector<ConjWord> gens;
   for (const auto* ws : {&words.left, &words.right})
@@ -25,6 +25,8 @@ std::vector<ConjWord> generators_of(const Model& model, const ArcWords& words) {
         if (!x.empty() && std::find(gens.begin(), gens.end(), x) == gens.end()) gens.push_back(x);
   return gens;
 }
+
+namespace {
 
 int generator_index(const std::vector<ConjWord>& gens, const ConjWord& w) {
   return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
@@ -108,7 +110,7 @@ bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, const std::ve
 
 Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts) {
   PatternGraphs out;
-  out.gens = generators_of(model, words);
+  out.gens = scheme_generators(model, words);
   std::vector<std::uint32_t> position;
   std::vector<Dart> queue;
   Refusal refusal = Refusal::none;
@@ -181,7 +183,7 @@ struct SchemeRewriter::State {
   SchemeDerivation rewrite(Map& g, const SchemeMatch& match);
 };
 
-SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(w), gens(generators_of(r.model(), w)), letter(letters_of(gens)) {
+SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(w), gens(scheme_generators(r.model(), w)), letter(letters_of(gens)) {
   const ConjugateRewriting rw(core.model());
   const TopoGraph &L = core.left(), &R = core.right();
   identity_match = L.node_count() == 1 && core.hooks().size() == 1;

@@ -34,6 +34,11 @@ struct PatternGraphs {
   }
 };
 
+/// W's generators: the words of the scheme's arcs, each with its
+/// conjugate (P_v takes the darts reachable to and from v), without ε or
+/// repeats, in the order the walk of P_v follows them.
+std::vector<ConjWord> scheme_generators(const Model& model, const ArcWords& words);
+
 /// Refuses when a word has no path from a pattern dart
 /// (not-combinatorial) or when two hooks' pattern graphs differ (no-match).
 Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);

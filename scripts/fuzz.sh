@@ -8,6 +8,7 @@
 #                                     executions per target (about 20 s
 #                                     each), whatever the machine's speed
 #   scripts/fuzz.sh SECONDS [BUILD]   a campaign: e.g. 600 s per target
+# FUZZ_TARGETS="fuzz_shard fuzz_tet_mesh" limits a run to those targets.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-smoke}
@@ -49,7 +50,9 @@ done
 declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_word]=300000 [fuzz_shard]=15000 [fuzz_tet_mesh]=50000 [fuzz_side_files]=20000)
 declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_word]=term [fuzz_shard]=jsonl [fuzz_tet_mesh]=tet [fuzz_side_files]=yaml)
 status=0
-for t in fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard fuzz_tet_mesh fuzz_side_files; do
+all_targets="fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard fuzz_tet_mesh fuzz_side_files"
+for t in ${FUZZ_TARGETS:-$all_targets}; do
+  [ -n "${smoke_runs[$t]:-}" ] || { echo "fuzz.sh: no target $t (targets: $all_targets)" >&2; exit 2; }
   mkdir -p "$build/findings/$t"
   log="$root/$build/findings/$t.log"
   if [ "$mode" = smoke ]; then budget=(-seed=1 -runs="${smoke_runs[$t]}"); else budget=(-max_total_time="$mode"); fi

@@ -14,16 +14,17 @@ set(layers
   "inference:core,rewriting,io,checkers,inference"
   "querymodify:core,rewriting,io,checkers,querymodify"
   "analysis:core,rewriting,io,checkers,generators,proofs,events,analysis"
+  "compiler:core,rewriting,checkers,compiler"
   "campaign:core,rewriting,io,checkers,generators,proofs,events,inference,querymodify,analysis,reports,campaign"
   # fuzz/ harnesses sit on top like the tests (fuzz_shard reads what campaign/ writes).
   "fuzz:core,rewriting,io,checkers,generators,proofs,events,inference,querymodify,analysis,reports,campaign,fuzz"
   # The command, the benchmarks and the tests sit on top: they may use every
   # library, but the command nothing test- or benchmark-only, and the
   # benchmarks and tests not the command's own files.
-  "cli:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,campaign,cli"
+  "cli:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,campaign,compiler,cli"
   "bench:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,bench"
-  "tests:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,campaign,cli,tests")
-set(known core rewriting io checkers generators proofs reports events inference querymodify analysis campaign cli fuzz bench tests)
+  "tests:core,rewriting,io,checkers,generators,proofs,reports,events,inference,querymodify,analysis,campaign,compiler,cli,tests")
+set(known core rewriting io checkers generators proofs reports events inference querymodify analysis campaign compiler cli fuzz bench tests)
 set(errors 0)
 set(checked 0)
 foreach(entry IN LISTS layers)

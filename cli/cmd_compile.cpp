@@ -1,0 +1,84 @@
+// `dartcheck compile` (issue 41): the consistent rules of a catalog as C++
+// functions on dartcheck's Map (compiler/rule_compiler.hpp). A rule the
+// static checker does not call consistent is refused with its failing
+// conditions: the generated code is only as consistent as the rule.
+
+#include <filesystem>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "checkers/rule_conditions.hpp"
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "compiler/rule_compiler.hpp"
+#include "core/input_error.hpp"
+#include "core/output_file.hpp"
+#include "core/wording.hpp"
+
+namespace dartcheck::cli {
+namespace {
+
+std::string failing(const RuleVerdict& v) {
+  std::string out;
+  for (const auto& c : v.conditions)
+    if (!c.holds) fmt::format_to(std::back_inserter(out), "{}{}", out.empty() ? "" : " ", c.name());
+  return out;
+}
+
+// The default namespace: compiled_ and the catalog's file stem.
+std::string default_namespace(const std::string& catalog) {
+  return "compiled_" + compiler::function_name(std::filesystem::path(catalog).stem().string(), {});
+}
+
+}  // namespace
+
+int compile(const CompileOptions& o) {
+  const std::string ns = o.ns.empty() ? default_namespace(o.catalog) : o.ns;
+  if (!std::regex_match(ns, std::regex("[A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*")))
+    throw InputError("<command line>", 0, 0, fmt::format("--namespace: '{}' is not a C++ namespace name (identifiers joined by ::)", ns));
+  if (!o.output.empty()) {
+    if (!o.output.ends_with(".hpp") && !o.output.ends_with(".h") && !o.output.ends_with(".hh"))
+      throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a header name ending in .hpp, .hh or .h", o.output));
+    check_writable(o.output);
+  }
+  const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  std::vector<compiler::CompileUnit> units;
+  std::size_t inconsistent = 0, unsupported = 0;
+  for (const CatalogRule& r : catalog.rules) {
+    if (!o.rule.empty() && r.rule.name() != o.rule) continue;
+    const RuleVerdict verdict = check_rule(r.rule, r.words);
+    if (!verdict.consistent()) {
+      ++inconsistent;
+      if (!o.rule.empty()) {
+        fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled\n", r.rule.name(),
+                   r.location.str(), failing(verdict));
+        return violation;
+      }
+      fmt::print(stderr, "skipped {} ({}): fails {}\n", r.rule.name(), r.location.str(), failing(verdict));
+      continue;
+    }
+    if (const auto why = compiler::not_compilable(r)) {
+      ++unsupported;
+      if (!o.rule.empty()) {
+        fmt::print(stderr, "error: compile: rule '{}' ({}) is not compiled: {}\n", r.rule.name(), r.location.str(), *why);
+        return bad_input;
+      }
+      fmt::print(stderr, "skipped {} ({}): {}\n", r.rule.name(), r.location.str(), *why);
+      continue;
+    }
+    units.push_back({&r, r.location.str()});
+  }
+  const std::string header = compiler::compile_header(units, ns, catalog.file);
+  if (o.output.empty()) {
+    fmt::print("{}", header);
+  } else {
+    write_file(o.output, header);
+    fmt::print("written: {} ({} in namespace {})\n", o.output, counted(units.size(), "compiled rule"), ns);
+  }
+  fmt::print(stderr, "{} compiled; {} skipped as inconsistent, {} with what the compiler does not handle\n", counted(units.size(), "rule"),
+             inconsistent, unsupported);
+  return ok;
+}
+
+}  // namespace dartcheck::cli

@@ -1,0 +1,480 @@
+#include "compiler/rule_compiler.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "rewriting/scheme_application.hpp"
+
+namespace dartcheck::compiler {
+namespace {
+
+// A C++ string literal holding exactly the bytes of s (names come from
+// files: quotes, backslashes and control bytes are escaped, other bytes
+// as octal, so a name can neither end the literal nor a comment line).
+std::string cpp_literal(std::string_view s) {
+  std::string out = "\"";
+  for (const unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      out += fmt::format("\\{:03o}", c);
+    }
+  }
+  return out + "\"";
+}
+
+int generator_index(const std::vector<ConjWord>& gens, const ConjWord& w) {
+  return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
+}
+
+// The position of p·w as an expression in `p` (ε stays at p).
+std::string shifted(int generator, std::string_view p) { return generator < 0 ? std::string(p) : fmt::format("ws.shift[{}][{}]", generator, p); }
+
+// The statements of `follow` for one generator: its letters as links.
+std::string follow_case(const ConjWord& w) {
+  std::string out;
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    const std::string link = fmt::format("g.{}({}, d)", w.bar(k) ? "inverse_link" : "link", w.dim(k));
+    if (k + 1 == w.size())
+      out += fmt::format("return {};", link);
+    else
+      out += fmt::format("d = {}; if (d == no_dart) return d; ", link);
+  }
+  return out;
+}
+
+std::string arc_text(const TopoGraph& g, ArcId e, const std::vector<ConjWord>& words) {
+  const auto& a = g.arc(e);
+  const ConjWord& w = arc_word(words, e);
+  const std::string label = w.empty() ? fmt::format("{}", a.label) : fmt::format("({},{})", w.str(), a.label);
+  return fmt::format("{} -{}-> {}", cpp_literal(g.name(a.source)), label, cpp_literal(g.name(a.target)));
+}
+
+std::string side_text(const TopoGraph& g, const std::vector<ConjWord>& words) {
+  std::string out = "nodes";
+  for (NodeId v = 0; v < g.node_count(); ++v) fmt::format_to(std::back_inserter(out), " {}", cpp_literal(g.name(v)));
+  out += g.arc_count() == 0 ? "; no arcs" : "; arcs";
+  for (ArcId e = 0; e < g.arc_count(); ++e) fmt::format_to(std::back_inserter(out), "{}{}", e == 0 ? " " : ", ", arc_text(g, e, words));
+  return out;
+}
+
+// The rule-only facts the interpreter's SchemeRewriter::State derives, in
+// the order its match checks them.
+struct RuleFacts {
+  std::vector<ConjWord> gens;
+  bool identity_match = false;
+  std::string two_arcs_in_l;
+  struct Dangling {
+    NodeId x;
+    Dim i;
+    bool out, in;
+  };
+  std::vector<Dangling> dangling;
+  struct Added {
+    ArcId arc;
+    std::string always;
+    NodeId x = no_node;
+    bool freed = false, kept = false;
+  };
+  std::vector<Added> added;
+};
+
+RuleFacts facts_of(const Operation& op) {
+  const Rule& core = op.rule;
+  const TopoGraph &L = core.left(), &R = core.right();
+  RuleFacts f;
+  f.gens = scheme_generators(core.model(), op.words);
+  f.identity_match = L.node_count() == 1 && core.hooks().size() == 1;
+  std::vector<int> loops;
+  for (ArcId e = 0; e < L.arc_count() && f.identity_match; ++e) {
+    const ConjWord& word = arc_word(op.words.left, e);
+    const Dim i = L.arc(e).label;
+    f.identity_match = word.size() == 1 && !word.bar(0) && word.dim(0) == i && !core.model().is_oriented(i);
+    loops.push_back(i);
+  }
+  for (const ConjWord& w : f.gens)
+    f.identity_match = f.identity_match && w.size() == 1 && !w.bar(0) && std::find(loops.begin(), loops.end(), w.dim(0)) != loops.end();
+  for (ArcId e = 0; e < L.arc_count() && f.two_arcs_in_l.empty(); ++e)
+    for (ArcId g : L.out_arcs(L.arc(e).source))
+      if (g > e && L.arc(e).label == L.arc(g).label) {
+        f.two_arcs_in_l = fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source));
+        break;
+      }
+  auto has_label = [](const TopoGraph& g, const std::vector<ArcId>& arcs, Dim i) {
+    return std::any_of(arcs.begin(), arcs.end(), [&](ArcId e) { return g.arc(e).label == i; });
+  };
+  for (NodeId x = 0; x < L.node_count(); ++x) {
+    if (core.to_right(x) != no_node) continue;
+    for (Dim i : core.model().dims) {
+      const bool out = has_label(L, L.out_arcs(x), i), in = has_label(L, L.in_arcs(x), i);
+      if (!out || !in) f.dangling.push_back({x, i, out, in});
+    }
+  }
+  for (ArcId e = 0; e < R.arc_count(); ++e) {
+    if (core.preserved_right_arc(e)) continue;
+    const auto& a = R.arc(e);
+    RuleFacts::Added x{e, {}, core.to_left(a.source), false, false};
+    for (ArcId g : R.out_arcs(a.source))
+      if (g > e && !core.preserved_right_arc(g) && R.arc(g).label == a.label) {
+        x.always = fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source));
+        break;
+      }
+    if (x.x != no_node) {
+      for (ArcId g : L.out_arcs(x.x)) x.freed |= !core.preserved_left_arc(g) && L.arc(g).label == a.label;
+      for (ArcId g : R.out_arcs(a.source)) x.kept |= core.preserved_right_arc(g) && R.arc(g).label == a.label;
+    }
+    f.added.push_back(std::move(x));
+  }
+  return f;
+}
+
+using Out = std::back_insert_iterator<std::string>;
+
+// The match: (p, hook) is the hook dart, propagated along the instantiated
+// arcs of L, one switch case per node with its arcs spelt out.
+void emit_propagation(Out out, const Operation& op, const RuleFacts& f) {
+  const Rule& core = op.rule;
+  const TopoGraph& L = core.left();
+  const ConjugateRewriting rw(core.model());
+  if (L.node_count() == 0) return;  // a rule that creates: nothing to match
+  fmt::format_to(out, "  ws.work.clear();\n");
+  for (std::size_t h = 0; h < core.hooks().size(); ++h)
+    fmt::format_to(out, "  ws.match[{0} * np] = hooks[{1}];  // hook {2}\n  ws.work.emplace_back(0, {0});\n", core.hooks()[h], h,
+                   cpp_literal(L.name(core.hooks()[h])));
+  if (L.arc_count() > 0) {
+    fmt::format_to(out,
+                   "  for (std::size_t k = 0; k < ws.work.size(); ++k) {{\n    const auto [p, x] = ws.work[k];\n"
+                   "    const Dart here = ws.match[x * np + p];\n    switch (x) {{\n");
+    for (NodeId x = 0; x < L.node_count(); ++x) {
+      std::vector<ArcId> incident;
+      std::merge(L.out_arcs(x).begin(), L.out_arcs(x).end(), L.in_arcs(x).begin(), L.in_arcs(x).end(), std::back_inserter(incident));
+      incident.erase(std::unique(incident.begin(), incident.end()), incident.end());
+      fmt::format_to(out, "      case {}: {{  // {}\n", x, cpp_literal(L.name(x)));
+      for (ArcId e : incident) {
+        const auto& a = L.arc(e);
+        const bool forward = a.source == x;
+        const ConjWord& word = arc_word(op.words.left, e);
+        const int k = generator_index(f.gens, forward ? word : rw.conjugate(word));
+        const NodeId other = forward ? a.target : a.source;
+        fmt::format_to(
+            out,
+            "        {{  // {} {}\n"
+            "          const Dart there = g.{}({}, here);\n"
+            "          if (there == no_dart)\n"
+            "            return ws.refuse(Refusal::no_match, \"arc \" {} \" of L at pattern dart \" + std::to_string(ws.pattern[p]) + "
+            "\": dart \" + std::to_string(here) + \" has no {}-arc\");\n"
+            "          const std::uint32_t q = {};\n"
+            "          if (!propagate(ws, q, {}, there))\n"
+            "            return ws.refuse(Refusal::no_match, \"node (\" + std::to_string(ws.pattern[q]) + \", \" {} \") of the instantiated L "
+            "would be both dart \" + std::to_string(ws.match[{} * np + q]) + \" and dart \" + std::to_string(there));\n"
+            "        }}\n",
+            forward ? "out along" : "in along", arc_text(L, e, op.words.left), forward ? "link" : "inverse_link", a.label,
+            cpp_literal(fmt::format("{} -{}-> {}", L.name(a.source), a.label, L.name(a.target))), a.label, shifted(k, "p"), other,
+            cpp_literal(L.name(other)), other);
+      }
+      fmt::format_to(out, "        break;\n      }}\n");
+    }
+    fmt::format_to(out, "      default:\n        break;\n    }}\n  }}\n");
+  }
+  fmt::format_to(out, "  static const char* const left_names[] = {{");
+  for (NodeId x = 0; x < L.node_count(); ++x) fmt::format_to(out, "{}{}", x == 0 ? "" : ", ", cpp_literal(L.name(x)));
+  fmt::format_to(out, "}};\n  if (const Refusal r = check_match(ws, {}, left_names); r != Refusal::none) return r;\n", L.node_count());
+}
+
+// A DPO rule's match, as rewriting/match.cpp builds it: from the hooks,
+// each node taken from the queue must sit on a combinatorial part of the
+// host, and L's arcs in their order fix the nodes not yet matched. The
+// order depends on L alone, so it is unrolled here; then every arc must
+// land on its arc and the nodes on distinct darts.
+void emit_dpo_match(Out out, const Operation& op) {
+  const Rule& core = op.rule;
+  const TopoGraph& L = core.left();
+  fmt::format_to(out, "  ws.prepare_dpo(g.size(), {});\n  const std::size_t np = 1;\n", L.node_count());
+  if (L.node_count() == 0) return;
+  std::vector<bool> set(L.node_count(), false);
+  std::vector<NodeId> queue;
+  for (std::size_t h = 0; h < core.hooks().size(); ++h) {
+    fmt::format_to(out, "  ws.match[{}] = hooks[{}];  // hook {}\n", core.hooks()[h], h, cpp_literal(L.name(core.hooks()[h])));
+    set[core.hooks()[h]] = true;
+    queue.push_back(core.hooks()[h]);
+  }
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    const NodeId v = queue[q];
+    fmt::format_to(out,
+                   "  if (!combinatorial_at(g, ws.match[{0}]))\n"
+                   "    return ws.refuse(Refusal::not_combinatorial, \"the host is not combinatorial at dart \" + std::to_string(ws.match[{0}]) + \" "
+                   "(matched to node \" {1} \"); DPO application needs a combinatorial host\");\n",
+                   v, cpp_literal(L.name(v)));
+    for (ArcId e = 0; e < L.arc_count(); ++e) {
+      const auto& a = L.arc(e);
+      NodeId other = no_node;
+      bool forward = true;
+      if (a.source == v && !set[a.target]) {
+        other = a.target;
+      } else if (a.target == v && !set[a.source]) {
+        other = a.source;
+        forward = false;
+      } else {
+        continue;
+      }
+      fmt::format_to(out,
+                     "  ws.match[{0}] = g.{1}({2}, ws.match[{3}]);  // {4}\n"
+                     "  if (ws.match[{0}] == no_dart)\n"
+                     "    return ws.refuse(Refusal::no_match, \"L has \" {5} \" but dart \" + std::to_string(ws.match[{3}]) + \" has no {2}-arc that "
+                     "way\");\n",
+                     other, forward ? "link" : "inverse_link", a.label, v, arc_text(L, e, {}),
+                     cpp_literal(fmt::format("{} -{}-> {}", L.name(a.source), a.label, L.name(a.target))));
+      set[other] = true;
+      queue.push_back(other);
+    }
+  }
+  for (ArcId e = 0; e < L.arc_count(); ++e) {
+    const auto& a = L.arc(e);
+    fmt::format_to(out,
+                   "  if (g.link({0}, ws.match[{1}]) != ws.match[{2}])\n"
+                   "    return ws.refuse(Refusal::no_match, \"L has \" {3} \" but the {0}-arc of dart \" + std::to_string(ws.match[{1}]) + \" goes "
+                   "elsewhere\");\n",
+                   a.label, a.source, a.target, cpp_literal(fmt::format("{} -{}-> {}", L.name(a.source), a.label, L.name(a.target))));
+  }
+  fmt::format_to(out, "  static const char* const left_names[] = {{");
+  for (NodeId x = 0; x < L.node_count(); ++x) fmt::format_to(out, "{}{}", x == 0 ? "" : ", ", cpp_literal(L.name(x)));
+  fmt::format_to(out, "}};\n  if (const Refusal r = check_match(ws, {}, left_names); r != Refusal::none) return r;\n", L.node_count());
+}
+
+// The refusals that do not depend on the match's darts beyond a link:
+// dangling (002 Sec. 2.2) and representability. Returns false when one
+// refuses every match (the rest of the function would be unreachable).
+bool emit_conditions(Out out, const Operation& op, const RuleFacts& f) {
+  const Rule& core = op.rule;
+  const TopoGraph &L = core.left(), &R = core.right();
+  if (!f.two_arcs_in_l.empty()) {
+    fmt::format_to(out, "  return ws.refuse(Refusal::not_injective, {});\n", cpp_literal(f.two_arcs_in_l));
+    return false;
+  }
+  for (const auto& c : f.dangling) {
+    std::string test;
+    if (!c.out) test = fmt::format("g.link({}, d) != no_dart", c.i);
+    if (!c.in) test += fmt::format("{}g.inverse_link({}, d) != no_dart", test.empty() ? "" : " || ", c.i);
+    fmt::format_to(out,
+                   "  for (std::size_t p = 0; p < np; ++p)  // deleted {} carries no {}-arc outside L\n"
+                   "    if (const Dart d = ws.match[{} * np + p]; {})\n"
+                   "      return ws.refuse(Refusal::dangling, \"deleted dart \" + std::to_string(d) + \" (node \" {} \") keeps a {}-arc outside the "
+                   "match\");\n",
+                   cpp_literal(L.name(c.x)), c.i, c.x, test, cpp_literal(L.name(c.x)), c.i);
+  }
+  for (const auto& a : f.added) {
+    const auto& arc = R.arc(a.arc);
+    if (!a.always.empty() || (a.x != no_node && !a.freed && a.kept)) {
+      const std::string why = !a.always.empty()
+                                  ? a.always
+                                  : fmt::format("R adds a {}-arc out of {} whose dart keeps its {}-arc", arc.label, R.name(arc.source), arc.label);
+      fmt::format_to(out, "  return ws.refuse(Refusal::not_representable, {});\n", cpp_literal(why));
+      return false;
+    }
+    if (a.x == no_node || a.freed) continue;
+    fmt::format_to(
+        out,
+        "  for (std::size_t p = 0; p < np; ++p)  // R adds {}: its source's {}-arc must be free\n"
+        "    if (const Dart d = ws.match[{} * np + p]; g.link({}, d) != no_dart)\n"
+        "      return ws.refuse(Refusal::not_representable, \"R adds a {}-arc out of \" {} \" whose dart \" + std::to_string(d) + \" keeps "
+        "its {}-arc\");\n",
+        arc_text(R, a.arc, op.words.right), arc.label, a.x, arc.label, arc.label, cpp_literal(R.name(arc.source)), arc.label);
+  }
+  return true;
+}
+
+// The rewrite (002 Def. 4, Sec. 6.3): delete the instances of L \ K, place
+// R's nodes (preserved ones on their darts, added ones in the deleted
+// darts, then new ones), add the instances of R \ K, fill the holes. One
+// loop over the pattern per step, every rule node and arc in its body, and
+// the tables read through pointers taken once (links and tables are both
+// 32-bit, so the compiler could not keep them in registers across writes).
+// The order of the writes within a step does not matter: a representable
+// rule writes each (dart, dimension) slot once.
+void emit_rewrite(Out out, const Operation& op) {
+  const Rule& core = op.rule;
+  const TopoGraph &L = core.left(), &R = core.right();
+  const auto gens = scheme_generators(core.model(), op.words);
+  std::size_t deleted = 0, added = 0;
+  for (NodeId x = 0; x < L.node_count(); ++x) deleted += core.to_right(x) == no_node;
+  for (NodeId y = 0; y < R.node_count(); ++y) added += core.to_left(y) == no_node;
+  fmt::format_to(out, "  [[maybe_unused]] const Dart* const match = ws.match.data();\n");
+  std::vector<bool> used(gens.size(), false);
+  for (ArcId e = 0; e < R.arc_count(); ++e)
+    if (!core.preserved_right_arc(e))
+      if (const int k = generator_index(gens, arc_word(op.words.right, e)); k >= 0) used[static_cast<std::size_t>(k)] = true;
+  for (std::size_t k = 0; k < gens.size(); ++k)
+    if (used[k]) fmt::format_to(out, "  const std::uint32_t* const shift{0} = ws.shift[{0}].data();  // p·{1}\n", k, gens[k].str());
+  bool any = false;
+  for (ArcId e = 0; e < L.arc_count(); ++e) {
+    if (core.preserved_left_arc(e)) continue;
+    if (!any) fmt::format_to(out, "  for (std::size_t p = 0; p < np; ++p) {{  // deletes L \\ K\n");
+    any = true;
+    fmt::format_to(out, "    g.remove_link({}, match[{} * np + p]);  // {}\n", L.arc(e).label, L.arc(e).source, arc_text(L, e, op.words.left));
+  }
+  if (any) fmt::format_to(out, "  }}\n");
+  if (deleted > 0) {
+    fmt::format_to(out, "  ws.holes.clear();\n");
+    for (NodeId x = 0; x < L.node_count(); ++x)
+      if (core.to_right(x) == no_node)
+        fmt::format_to(out, "  ws.holes.insert(ws.holes.end(), match + {0} * np, match + {1} * np);  // {2} is deleted\n", x, x + 1,
+                       cpp_literal(L.name(x)));
+    // A DPO rule reuses the smallest deleted darts first (apply_rule).
+    if (!op.words.scheme) fmt::format_to(out, "  std::sort(ws.holes.begin(), ws.holes.end());\n");
+  }
+  fmt::format_to(out, "  ws.comatch.resize({} * np);\n  [[maybe_unused]] Dart* const comatch = ws.comatch.data();\n", R.node_count());
+  if (added > 0) {
+    if (deleted > 0)
+      fmt::format_to(out,
+                     "  const std::size_t reused = std::min(ws.holes.size(), {0} * np);\n"
+                     "  const Dart first_new = {0} * np > reused ? g.add_darts({0} * np - reused) : no_dart;\n"
+                     "  std::size_t next_hole = 0, next_new = 0;\n",
+                     added);
+    else
+      fmt::format_to(out, "  const Dart first_new = g.add_darts({} * np);\n", added);
+  }
+  for (NodeId y = 0; y < R.node_count(); ++y)
+    if (const NodeId x = core.to_left(y); x != no_node)
+      fmt::format_to(out, "  std::copy_n(match + {} * np, np, comatch + {} * np);  // {} is preserved\n", x, y, cpp_literal(R.name(y)));
+  // Added nodes: new darts in R's node order, position by position (as
+  // the interpreter numbers them), after the deleted darts are reused.
+  std::size_t rank = 0;
+  for (NodeId y = 0; y < R.node_count(); ++y) {
+    if (core.to_left(y) != no_node) continue;
+    if (deleted > 0)
+      fmt::format_to(out,
+                     "  for (std::size_t p = 0; p < np; ++p)  // {} is added\n"
+                     "    comatch[{} * np + p] = next_hole < reused ? ws.holes[next_hole++] : static_cast<Dart>(first_new + next_new++);\n",
+                     cpp_literal(R.name(y)), y);
+    else
+      fmt::format_to(out,
+                     "  for (std::size_t p = 0; p < np; ++p) comatch[{} * np + p] = static_cast<Dart>(first_new + {} * np + p);  // {} is added\n", y,
+                     rank, cpp_literal(R.name(y)));
+    ++rank;
+  }
+  any = false;
+  for (ArcId e = 0; e < R.arc_count(); ++e) {
+    if (core.preserved_right_arc(e)) continue;
+    if (!any) fmt::format_to(out, "  for (std::size_t p = 0; p < np; ++p) {{  // adds R \\ K\n");
+    any = true;
+    const auto& a = R.arc(e);
+    const int k = generator_index(gens, arc_word(op.words.right, e));
+    fmt::format_to(out, "    g.set_link({}, comatch[{} * np + p], comatch[{} * np + {}]);  // {}\n", a.label, a.source, a.target,
+                   k < 0 ? std::string("p") : fmt::format("shift{}[p]", k), arc_text(R, e, op.words.right));
+  }
+  if (any) fmt::format_to(out, "  }}\n");
+  if (deleted > 0) fmt::format_to(out, "  fill_holes(g, ws, {});\n", added > 0 ? "reused" : "0");
+}
+
+}  // namespace
+
+std::optional<std::string> not_compilable(const Operation& op) {
+  if (op.terms) return "it has embedding terms, and this version of dartcheck compile generates the topology only (issue 41)";
+  return std::nullopt;
+}
+
+std::string function_name(std::string_view rule_name, const std::vector<std::string>& taken) {
+  std::string base;
+  for (const char c : rule_name) base += (std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 0x80) ? c : '_';
+  if (base.empty() || std::isdigit(static_cast<unsigned char>(base[0]))) base = "rule_" + base;
+  std::string name = base;
+  for (int k = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++k) name = fmt::format("{}_{}", base, k);
+  return name;
+}
+
+std::string compile_operation(const CompileUnit& unit, const std::string& function) {
+  const Operation& op = *unit.operation;
+  const Rule& core = op.rule;
+  const RuleFacts f = facts_of(op);
+  std::string code;
+  Out out(code);
+  fmt::format_to(out, "// {} ({}), {}: a {}.\n// L: {}\n// R: {}\n", cpp_literal(core.name()), core.model().name, unit.origin,
+                 op.words.scheme ? "rule scheme (002 Sec. 6)" : "DPO rule (002 Def. 2)", side_text(core.left(), op.words.left),
+                 side_text(core.right(), op.words.right));
+  if (!op.expressions.empty())
+    fmt::format_to(out,
+                   "// Its {} Jerboa embedding expression(s) are Java code, which dartcheck evaluates\n// nowhere: the interpreter and this function "
+                   "apply the topology.\n",
+                   op.expressions.size());
+  if (!f.gens.empty()) {
+    fmt::format_to(out, "// W's generators (with conjugates):");
+    for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, " w{} = {}", k, f.gens[k].str());
+    fmt::format_to(out, "\n");
+  }
+  fmt::format_to(out,
+                 "inline Refusal {}(Map& g, std::span<const Dart> hooks, Workspace& ws) {{\n"
+                 "  if (hooks.size() != {})\n"
+                 "    return ws.refuse(Refusal::bad_hooks, \"the rule needs {} hook dart{}, one per component of L\");\n"
+                 "  for (const Dart h : hooks)\n"
+                 "    if (h >= g.size()) return ws.refuse(Refusal::bad_hooks, \"hook dart \" + std::to_string(h) + \" is not below \" + "
+                 "std::to_string(g.size()));\n",
+                 function, core.hooks().size(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
+  if (!op.words.scheme) {
+    fmt::format_to(
+        out, "  if (g.model().name != {})\n    return ws.refuse(Refusal::bad_hooks, \"the rule is for \" {} \", the map is a \" + g.model().name);\n",
+        cpp_literal(core.model().name), cpp_literal(core.model().name));
+    emit_dpo_match(out, op);
+  } else {
+    // P_v (002 Def. 20).
+    fmt::format_to(
+        out, "  // P_v (002 Def. 20): the darts reached from the hook along W's generators.\n  static const char* const generator_names[] = {{");
+    for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, "{}{}", k == 0 ? "" : ", ", cpp_literal(f.gens[k].str()));
+    fmt::format_to(out, "}};\n  const auto follow = [&g](std::size_t k, Dart d) -> Dart {{\n    switch (k) {{\n");
+    for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, "      case {}: {}\n", k, follow_case(f.gens[k]));
+    fmt::format_to(out,
+                   "      default: return no_dart;\n    }}\n  }};\n"
+                   "  if (const Refusal r = walk_patterns<{}>(g, hooks, ws, follow, generator_names); r != Refusal::none) return r;\n",
+                   f.gens.size());
+    fmt::format_to(out, "  const std::size_t np = ws.np;\n  ws.match.assign({} * np, no_dart);\n", core.left().node_count());
+    if (f.identity_match)
+      fmt::format_to(out,
+                     "  // L is the hook with a loop per letter of W: product node (p, hook) is the p-th dart of P_v.\n"
+                     "  std::copy(ws.pattern.begin(), ws.pattern.end(), ws.match.begin());\n");
+    else
+      emit_propagation(out, op, f);
+  }
+  if (emit_conditions(out, op, f)) {
+    emit_rewrite(out, op);
+    fmt::format_to(out, "  return Refusal::none;\n");
+  }
+  fmt::format_to(out, "}}\n");
+  return code;
+}
+
+std::string compile_header(const std::vector<CompileUnit>& units, std::string_view ns, std::string_view source) {
+  std::string code;
+  Out out(code);
+  fmt::format_to(
+      out,
+      "// Generated by `dartcheck compile` from {}; regenerate rather than edit.\n"
+      "// Each function applies one rule or rule scheme that dartcheck's static checker\n"
+      "// calls consistent, exactly as dartcheck's interpreter applies it (docs/compile.md).\n"
+      "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <span>\n#include <string>\n\n"
+      "#include \"rewriting/compiled_runtime.hpp\"\n\nnamespace {} {{\n\n"
+      "using dartcheck::Dart;\nusing dartcheck::Map;\nusing dartcheck::no_dart;\nusing dartcheck::Refusal;\n"
+      "using dartcheck::compiled::check_match;\nusing dartcheck::compiled::combinatorial_at;\nusing dartcheck::compiled::fill_holes;\nusing "
+      "dartcheck::compiled::propagate;\n"
+      "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::Workspace;\n\n",
+      source, ns);
+  std::vector<std::string> names;
+  for (const CompileUnit& u : units) {
+    names.push_back(function_name(u.operation->rule.name(), names));
+    code += compile_operation(u, names.back()) + "\n";
+  }
+  fmt::format_to(out,
+                 "/// A compiled operation: the rule's name and its function.\n"
+                 "struct CompiledOperation {{\n  const char* name;\n  Refusal (*apply)(Map&, std::span<const Dart>, Workspace&);\n}};\n\n"
+                 "inline constexpr std::array<CompiledOperation, {}> operations{{{{\n",
+                 units.size());
+  for (std::size_t k = 0; k < units.size(); ++k) fmt::format_to(out, "    {{{}, &{}}},\n", cpp_literal(units[k].operation->rule.name()), names[k]);
+  fmt::format_to(out, "}}}};\n\n}}  // namespace {}\n", ns);
+  return code;
+}
+
+}  // namespace dartcheck::compiler

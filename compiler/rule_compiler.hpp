@@ -1,0 +1,48 @@
+// Compiled operations (issue 41): a rule or rule scheme becomes C++ that
+// applies it on dartcheck's Map through the runtime of
+// rewriting/compiled_runtime.hpp, with everything that depends on the rule
+// alone resolved when the code is generated: W's generators spelt out as
+// links, the match's propagation as one case per node of L with its arcs'
+// dimensions and shift tables, the dangling and representability checks
+// per node and arc, the rewrite as one loop per deleted and added arc, the
+// placement of R's nodes. What depends on the host (P_v, its shifts, the
+// darts) is computed at run time exactly as the interpreter computes it,
+// so a compiled rule gives the interpreter's H, dart for dart.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rewriting/operation.hpp"
+
+namespace dartcheck::compiler {
+
+/// One operation to compile: the operation, its name in the catalog and
+/// where it was read (for the generated comments).
+struct CompileUnit {
+  const Operation* operation = nullptr;
+  std::string origin;  // "catalogs/seed-operations.yaml:384:5"
+};
+
+/// Why an operation cannot be compiled (yet), or nullopt when it can.
+/// Embedding terms are not compiled by this version: the rule's topology
+/// alone would be a different operation.
+std::optional<std::string> not_compilable(const Operation& op);
+
+/// A C++ identifier for a rule name: letters, digits and '_' kept, every
+/// other byte '_', a leading digit prefixed, distinct from `taken`.
+std::string function_name(std::string_view rule_name, const std::vector<std::string>& taken);
+
+/// The generated function for one compilable operation, named `function`:
+/// a comment with the rule's nodes and arcs, then an inline function
+///   dartcheck::Refusal function(dartcheck::Map&, std::span<const dartcheck::Dart>, dartcheck::compiled::Workspace&)
+std::string compile_operation(const CompileUnit& unit, const std::string& function);
+
+/// A whole header: the includes, the functions of `units` (each compilable)
+/// in namespace `ns`, and a table `operations` of {rule name, function} in
+/// catalog order. `source` names the catalog in the header's first line.
+std::string compile_header(const std::vector<CompileUnit>& units, std::string_view ns, std::string_view source);
+
+}  // namespace dartcheck::compiler

@@ -1,0 +1,209 @@
+// What the C++ that `dartcheck compile` generates relies on (issue 41): the
+// dense Map, the refusals of the interpreter, the compaction of a derivation
+// and the tables below. Generated code includes this header and nothing
+// else of dartcheck, so the header set it depends on is: core/map.hpp,
+// core/model.hpp, rewriting/match.hpp (Refusal), rewriting/derivation.hpp
+// (compact) and this file.
+//
+// A compiled rule is a function
+//     Refusal NAME(Map& g, std::span<const Dart> hooks, compiled::Workspace& ws);
+// that applies the rule or rule scheme at the hook darts exactly as
+// dartcheck::apply does (same match, same refusals before any write, same
+// darts created and renumbered), writing the match, comatch and renumbering
+// into `ws` instead of allocating them. On refusal `g` is unchanged and
+// ws.why says why.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/map.hpp"
+#include "rewriting/derivation.hpp"
+#include "rewriting/match.hpp"
+
+namespace dartcheck::compiled {
+
+inline constexpr std::uint32_t none = 0xffffffffU;
+
+/// The tables of one application, kept from one application to the next
+/// so that a loop of small applications on a large map costs the darts
+/// each one touches (as SchemeRewriter does for the interpreter).
+struct Workspace {
+  /// |P_v|: the darts of the hook's pattern graph (1 for a DPO rule).
+  std::size_t np = 0;
+  /// pattern[p]: the p-th dart of P_v in BFS order (pattern[0] the hook).
+  std::vector<Dart> pattern;
+  /// shift[k][p]: the position of p·w_k, w_k the k-th generator of W.
+  std::vector<std::vector<std::uint32_t>> shift;
+  /// match[x * np + p]: the dart of G matched by product node (p, x).
+  std::vector<Dart> match;
+  /// comatch[y * np + p]: the dart of H of product node (p, y).
+  std::vector<Dart> comatch;
+  /// Darts of G renumbered to keep H dense: (old, new).
+  std::vector<std::pair<Dart, Dart>> moved;
+  /// Why the last application was refused.
+  std::string why;
+
+  // Per-dart marks (none between applications) and the walk's queue.
+  std::vector<std::uint32_t> position;
+  std::vector<Dart> queue;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> work;  // (p, x) to propagate
+  std::vector<Dart> holes;
+
+  Refusal refuse(Refusal r, std::string sentence) {
+    why = std::move(sentence);
+    return r;
+  }
+  /// Sizes the per-dart tables for a map of `darts` darts and W's
+  /// `generators` generators.
+  void prepare(std::size_t darts, std::size_t generators) {
+    if (position.size() < darts) position.resize(darts, none);
+    if (queue.size() < darts + 1) queue.resize(darts + 1);
+    shift.resize(generators);
+    for (auto& s : shift) s.clear();
+    moved.clear();
+    why.clear();
+  }
+  /// A DPO rule: one instance (np = 1), no pattern to walk.
+  void prepare_dpo(std::size_t darts, std::size_t left_nodes) {
+    prepare(darts, 0);
+    np = 1;
+    pattern.clear();
+    match.assign(left_nodes, no_dart);
+  }
+  /// Resets the marks of the first `size` darts of the queue.
+  void unmark_queue(std::size_t size) {
+    for (std::size_t k = 0; k < size; ++k) position[queue[k]] = none;
+  }
+};
+
+/// P_v for every hook dart (002 Def. 20), by BFS along W's generators;
+/// `follow(k, d)` is the dart reached from d along the k-th generator
+/// (no_dart when there is no such path), a lambda the generated code
+/// writes with the generator's links spelt out. Every hook's walk must give
+/// the first one's shift tables (002 Sec. 6.3: one pattern for every
+/// component of L). The walk writes the dart it reached at the queue's
+/// tail and moves the tail only when the dart is new, as the interpreter's
+/// walk does, so the positions are the interpreter's.
+template <std::size_t Generators, class Follow>
+Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, Follow follow, const char* const* generator_names) {
+  ws.prepare(g.size(), Generators);
+  if (hooks.empty()) {  // L is empty (a rule that creates): one instance
+    ws.pattern.clear();
+    ws.np = 1;
+    return Refusal::none;
+  }
+  for (std::size_t h = 0; h < hooks.size(); ++h) {
+    std::size_t size = 1;
+    ws.queue[0] = hooks[h];
+    ws.position[hooks[h]] = 0;
+    for (std::size_t k = 0; k < size; ++k)
+      for (std::size_t w = 0; w < Generators; ++w) {
+        const Dart here = ws.queue[k];
+        const Dart t = follow(w, here);
+        if (t == no_dart) {
+          ws.unmark_queue(size);
+          return ws.refuse(Refusal::not_combinatorial,
+                           "dart " + std::to_string(here) + " has no " + generator_names[w] + "-path: the host is not combinatorial");
+        }
+        const std::uint32_t met = ws.position[t];
+        const std::uint32_t at = met == none ? static_cast<std::uint32_t>(size) : met;
+        ws.position[t] = at;
+        ws.queue[size] = t;
+        size += met == none;
+        if (h == 0) {
+          ws.shift[w].push_back(at);
+        } else if (ws.shift[w][k] != at) {
+          ws.unmark_queue(size);
+          return ws.refuse(Refusal::no_match, "the pattern graphs of hook darts " + std::to_string(hooks[0]) + " and " + std::to_string(hooks[h]) +
+                                                  " are not isomorphic (Sec. 6.3 needs one pattern for every component of L)");
+        }
+      }
+    if (h == 0) ws.pattern.assign(ws.queue.begin(), ws.queue.begin() + static_cast<std::ptrdiff_t>(size));
+    ws.unmark_queue(size);
+  }
+  ws.np = ws.pattern.size();
+  return Refusal::none;
+}
+
+/// A DPO rule's host must be combinatorial at every matched dart (as
+/// rewriting/match.cpp requires): each i-arc recorded back at its target,
+/// an oriented dimension's predecessor linking to the dart, and no missing
+/// arc outside the model's partial dimensions.
+inline bool combinatorial_at(const Map& g, Dart d) {
+  const Model& m = g.model();
+  for (const Dim i : m.dims) {
+    const Dart s = g.link(i, d);
+    const bool partial = has_dim(m.partial, i);
+    if (s == no_dart) {
+      if (!partial) return false;
+      continue;
+    }
+    if (g.inverse_link(i, s) != d) return false;
+    if (m.is_oriented(i)) {
+      const Dart p = g.inverse_link(i, d);
+      if (p == no_dart ? !partial : g.link(i, p) != d) return false;
+    }
+  }
+  return true;
+}
+
+/// The match's propagation along one instantiated arc of L: product node
+/// (q, x) is dart `there`. False when it is already another dart (the
+/// instantiated L would send one node to two darts).
+inline bool propagate(Workspace& ws, std::uint32_t q, std::uint32_t x, Dart there) {
+  Dart& slot = ws.match[x * ws.np + q];
+  if (slot == no_dart) {
+    slot = there;
+    ws.work.emplace_back(q, x);
+    return true;
+  }
+  return slot == there;
+}
+
+/// Every product node of the instantiated L matched (ι(L, P_v) connected)
+/// and no two on one dart: the interpreter's checks, in its order.
+/// `node_names` are L's node names.
+inline Refusal check_match(Workspace& ws, std::size_t left_nodes, const char* const* node_names) {
+  std::size_t marked = 0;
+  auto unmark = [&] {
+    for (std::size_t k = 0; k < marked; ++k) ws.position[ws.match[k]] = none;
+  };
+  // match is [x * np + p], so "the first `marked` entries" are those marked.
+  for (std::size_t k = 0; k < left_nodes * ws.np; ++k) {
+    const Dart d = ws.match[k];
+    if (d == no_dart) {
+      unmark();
+      return ws.refuse(Refusal::disconnected, "node (" + std::to_string(ws.pattern[k % ws.np]) + ", " + node_names[k / ws.np] +
+                                                  ") of the instantiated L is unreachable from the hooks: ι(L, P_v) is not connected, so "
+                                                  "the hooks do not fix the match (002 Sec. 6.3)");
+    }
+    if (ws.position[d] != none) {
+      unmark();
+      return ws.refuse(Refusal::not_injective, "two nodes of the instantiated L match dart " + std::to_string(d));
+    }
+    ws.position[d] = 0;
+    ++marked;
+  }
+  unmark();
+  return Refusal::none;
+}
+
+/// After the added arcs are written: when fewer darts were added than
+/// deleted, the last darts of the map fill the holes left (compact), and
+/// the comatch follows their renumbering.
+inline void fill_holes(Map& g, Workspace& ws, std::size_t reused) {
+  if (ws.holes.size() <= reused) return;
+  ws.holes.erase(ws.holes.begin(), ws.holes.begin() + static_cast<std::ptrdiff_t>(reused));
+  ws.moved = compact(g, ws.holes, ws.comatch);
+  // The marks (sized for G, which is larger than H here) index the moves.
+  for (std::size_t k = 0; k < ws.moved.size(); ++k) ws.position[ws.moved[k].first] = static_cast<std::uint32_t>(k);
+  for (Dart& d : ws.comatch)
+    if (d < ws.position.size() && ws.position[d] != none) d = ws.moved[ws.position[d]].second;
+  for (const auto& move : ws.moved) ws.position[move.first] = none;
+}
+
+}  // namespace dartcheck::compiled
