@@ -139,6 +139,10 @@ ShardFile read_shard_file(const std::string& file) {
     } catch (const Json::parse_error& e) {
       throw InputError(file, line, static_cast<int>(std::min<std::size_t>(e.byte, text.size() + 1)),
                        fmt::format("not a JSON line of --format jsonl: {}", e.what()));
+    } catch (const Json::exception& e) {
+      // A number out of double's range ("4.61e607", found by fuzz_shard)
+      // is nlohmann's out_of_range, not a parse_error.
+      throw InputError(file, line, 1, fmt::format("not a JSON line of --format jsonl: {}", e.what()));
     }
     const std::string type = string_at(j, "type", file, line);
     const std::string format = string_at(j, "format", file, line);
