@@ -3,7 +3,8 @@
 // against what a user would pick instead, on the same OFF input in one
 // program:
 //   - dartcheck: the seed catalog's quad-subdivision-gmap and -omap schemes
-//     (apply_scheme at dart 0), topology only;
+//     (apply_scheme at dart 0), topology only, interpreted and compiled by
+//     `dartcheck compile` (issue 41; the header is generated at build time);
 //   - CGAL: Linear_cell_complex_for_combinatorial_map<2,3>, the topological
 //     part of the libcgal-demo's subdivide_lcc_pqq (insert_barycenter_in_cell
 //     <1> on every edge, insert_barycenter_in_cell<2> on every face, then
@@ -42,6 +43,7 @@
 #include "rewriting/scheme_application.hpp"
 #include "generators/mesh_map.hpp"
 #include "bench/peer_bench.hpp"
+#include DARTCHECK_COMPILED_SEED
 
 namespace {
 
@@ -76,6 +78,24 @@ Result run_dartcheck(const std::string& off, const dartcheck::Model& model, cons
     ms = since(t0);
     out = g.size();
     return r.ok() && check_map(g).valid();
+  });
+}
+
+// The same scheme through its compiled function (a fresh Workspace per
+// run, as the interpreter's apply_scheme builds its tables per call).
+template <class Compiled>
+Result run_compiled(const std::string& off, const dartcheck::Model& model, Compiled apply, int runs) {
+  using namespace dartcheck;
+  const Map input = load_mesh(model, off);
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    Map g = input;
+    const Dart hook = 0;
+    compiled::Workspace ws;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Refusal r = apply(g, std::span(&hook, 1), ws);
+    ms = since(t0);
+    out = g.size();
+    return r == Refusal::none && check_map(g).valid();
   });
 }
 
@@ -155,6 +175,10 @@ int main(int argc, char** argv) {
   const std::vector<Peer> peers{
       {"dartcheck 2-G-map scheme", "darts", [&] { return run_dartcheck(off, dartcheck::Model::gmap(2), "quad-subdivision-gmap", runs); }},
       {"dartcheck 2-O-map scheme", "darts", [&] { return run_dartcheck(off, dartcheck::Model::omap(2), "quad-subdivision-omap", runs); }},
+      {"dartcheck 2-G-map scheme, compiled", "darts",
+       [&] { return run_compiled(off, dartcheck::Model::gmap(2), &compiled_seed_operations::quad_subdivision_gmap, runs); }},
+      {"dartcheck 2-O-map scheme, compiled", "darts",
+       [&] { return run_compiled(off, dartcheck::Model::omap(2), &compiled_seed_operations::quad_subdivision_omap, runs); }},
       {"CGAL LCC pqq topology", "darts", [&] { return run_cgal(off, runs); }},
       {"OpenMesh Catmull-Clark", "halfedges", [&] { return run_openmesh(off, runs); }},
   };
