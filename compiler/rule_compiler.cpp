@@ -29,6 +29,14 @@ std::string cpp_literal(std::string_view s) {
   return out + "\"";
 }
 
+// Text from a file inside a // comment: as it is when it is printable
+// ASCII and cannot continue the comment onto the next line (a trailing
+// backslash), otherwise as a literal.
+std::string comment_text(std::string_view s) {
+  const bool plain = std::all_of(s.begin(), s.end(), [](char c) { return c >= 0x20 && c < 0x7f; }) && !s.ends_with('\\');
+  return plain ? std::string(s) : cpp_literal(s);
+}
+
 int generator_index(const std::vector<ConjWord>& gens, const ConjWord& w) {
   return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
 }
@@ -394,9 +402,9 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
   const RuleFacts f = facts_of(op);
   std::string code;
   Out out(code);
-  fmt::format_to(out, "// {} ({}), {}: a {}.\n// L: {}\n// R: {}\n", cpp_literal(core.name()), core.model().name, unit.origin,
-                 op.words.scheme ? "rule scheme (002 Sec. 6)" : "DPO rule (002 Def. 2)", side_text(core.left(), op.words.left),
-                 side_text(core.right(), op.words.right));
+  fmt::format_to(out, "// {} ({}), {}: a {}.\n// L: {}\n// R: {}\n", cpp_literal(core.name()), comment_text(core.model().name),
+                 comment_text(unit.origin), op.words.scheme ? "rule scheme (002 Sec. 6)" : "DPO rule (002 Def. 2)",
+                 side_text(core.left(), op.words.left), side_text(core.right(), op.words.right));
   if (!op.expressions.empty())
     fmt::format_to(out,
                    "// Its {} Jerboa embedding expression(s) are Java code, which dartcheck evaluates\n// nowhere: the interpreter and this function "
@@ -461,7 +469,7 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
       "using dartcheck::compiled::check_match;\nusing dartcheck::compiled::combinatorial_at;\nusing dartcheck::compiled::fill_holes;\nusing "
       "dartcheck::compiled::propagate;\n"
       "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::Workspace;\n\n",
-      source, ns);
+      comment_text(source), ns);
   std::vector<std::string> names;
   for (const CompileUnit& u : units) {
     names.push_back(function_name(u.operation->rule.name(), names));

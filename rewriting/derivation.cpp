@@ -8,8 +8,6 @@
 namespace dartcheck {
 namespace {
 
-Outcome<Derivation> refuse(Refusal r, std::string why) { return {std::nullopt, r, std::move(why)}; }
-
 // An added arc x -i-> y needs the i-slot of x empty once L \ K is deleted:
 // x's i-arc in G (if any) must be deleted by the rule, and no two added
 // arcs may leave x with the same label.
@@ -73,10 +71,10 @@ std::vector<std::pair<Dart, Dart>> compact(Map& g, std::vector<Dart> holes, std:
 
 Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> hook_darts) {
   auto matched = match_from_hooks(rule, g, hook_darts);
-  if (!matched.ok()) return refuse(matched.refusal, matched.why);
+  if (!matched.ok()) return refuse<Derivation>(matched.refusal, matched.why);
   Derivation d{std::move(*matched.value), {}, {}};
-  if (auto why = dangling_violation(rule, g, d.match); !why.empty()) return refuse(Refusal::dangling, why);
-  if (auto why = representability(rule, g, d.match); !why.empty()) return refuse(Refusal::not_representable, why);
+  if (auto why = dangling_violation(rule, g, d.match); !why.empty()) return refuse<Derivation>(Refusal::dangling, why);
+  if (auto why = representability(rule, g, d.match); !why.empty()) return refuse<Derivation>(Refusal::not_representable, why);
 
   const TopoGraph &L = rule.left(), &R = rule.right();
   // Delete the arcs of L \ K, then free the darts of deleted nodes.

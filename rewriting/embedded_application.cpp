@@ -8,13 +8,7 @@
 #include "rewriting/term_eval.hpp"
 
 namespace dartcheck {
-
 namespace {
-
-template <class T>
-Outcome<T> refuse(Refusal r, std::string why) {
-  return {std::nullopt, r, std::move(why)};
-}
 
 // The instantiated L: node (p, x) matched to dart[x][p]. A DPO rule is a
 // scheme with one pattern position.

@@ -35,8 +35,6 @@ std::string_view refusal_name(Refusal r) {
 
 namespace {
 
-Outcome<Match> refuse(Refusal r, std::string why) { return {std::nullopt, r, std::move(why)}; }
-
 // The i-arcs at d must be those of a combinatorial graph for propagation and
 // the dangling condition to see every arc: an i-arc out of d whose target
 // points back, and for oriented dimensions a predecessor that agrees.
@@ -62,14 +60,15 @@ std::string combinatorial_at(const Map& g, Dart d) {
 Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const Dart> hook_darts) {
   const TopoGraph& L = rule.left();
   if (hook_darts.size() != rule.hooks().size())
-    return refuse(Refusal::bad_hooks, fmt::format("rule '{}' has {} hook(s), {} dart(s) given", rule.name(), rule.hooks().size(), hook_darts.size()));
+    return refuse<Match>(Refusal::bad_hooks,
+                         fmt::format("rule '{}' has {} hook(s), {} dart(s) given", rule.name(), rule.hooks().size(), hook_darts.size()));
   if (!(g.model() == rule.model()))
-    return refuse(Refusal::bad_hooks, fmt::format("rule '{}' is for {}, the map is a {}", rule.name(), rule.model().name, g.model().name));
+    return refuse<Match>(Refusal::bad_hooks, fmt::format("rule '{}' is for {}, the map is a {}", rule.name(), rule.model().name, g.model().name));
   Match m{std::vector<Dart>(L.node_count(), no_dart)};
   std::vector<NodeId> queue;
   for (std::size_t k = 0; k < hook_darts.size(); ++k) {
     if (hook_darts[k] >= g.size())
-      return refuse(Refusal::bad_hooks, fmt::format("hook dart {} is not a dart of the map ({} darts)", hook_darts[k], g.size()));
+      return refuse<Match>(Refusal::bad_hooks, fmt::format("hook dart {} is not a dart of the map ({} darts)", hook_darts[k], g.size()));
     m.node[rule.hooks()[k]] = hook_darts[k];
     queue.push_back(rule.hooks()[k]);
   }
@@ -78,7 +77,8 @@ Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const 
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const NodeId v = queue[q];
     if (auto why = combinatorial_at(g, m.node[v]); !why.empty())
-      return refuse(Refusal::not_combinatorial, fmt::format("{} (matched to node '{}'); DPO application needs a combinatorial host", why, L.name(v)));
+      return refuse<Match>(Refusal::not_combinatorial,
+                           fmt::format("{} (matched to node '{}'); DPO application needs a combinatorial host", why, L.name(v)));
     for (const auto& a : L.arcs()) {
       NodeId other = no_node;
       Dart image = no_dart;
@@ -92,8 +92,8 @@ Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const 
         continue;
       }
       if (image == no_dart)
-        return refuse(Refusal::no_match, fmt::format("L has {} -{}-> {} but dart {} has no {}-arc that way", L.name(a.source), a.label,
-                                                     L.name(a.target), m.node[v], a.label));
+        return refuse<Match>(Refusal::no_match, fmt::format("L has {} -{}-> {} but dart {} has no {}-arc that way", L.name(a.source), a.label,
+                                                            L.name(a.target), m.node[v], a.label));
       m.node[other] = image;
       queue.push_back(other);
     }
@@ -102,20 +102,21 @@ Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const 
   // arcs on distinct arcs (an arc of G is identified by source and label).
   for (const auto& a : L.arcs())
     if (g.link(a.label, m.node[a.source]) != m.node[a.target])
-      return refuse(Refusal::no_match, fmt::format("L has {} -{}-> {} (darts {} and {}) but the {}-arc of dart {} goes elsewhere", L.name(a.source),
-                                                   a.label, L.name(a.target), m.node[a.source], m.node[a.target], a.label, m.node[a.source]));
+      return refuse<Match>(Refusal::no_match,
+                           fmt::format("L has {} -{}-> {} (darts {} and {}) but the {}-arc of dart {} goes elsewhere", L.name(a.source), a.label,
+                                       L.name(a.target), m.node[a.source], m.node[a.target], a.label, m.node[a.source]));
   std::vector<std::pair<Dart, NodeId>> images;
   for (NodeId v = 0; v < L.node_count(); ++v) images.emplace_back(m.node[v], v);
   std::sort(images.begin(), images.end());
   for (std::size_t k = 1; k < images.size(); ++k)
     if (images[k].first == images[k - 1].first)
-      return refuse(Refusal::not_injective, fmt::format("nodes '{}' and '{}' of L both match dart {}", L.name(images[k - 1].second),
-                                                        L.name(images[k].second), images[k].first));
+      return refuse<Match>(Refusal::not_injective, fmt::format("nodes '{}' and '{}' of L both match dart {}", L.name(images[k - 1].second),
+                                                               L.name(images[k].second), images[k].first));
   for (ArcId e = 0; e < L.arc_count(); ++e)
     for (ArcId f = e + 1; f < L.arc_count(); ++f)
       if (L.arc(e).source == L.arc(f).source && L.arc(e).label == L.arc(f).label)
-        return refuse(Refusal::not_injective,
-                      fmt::format("L has two {}-arcs out of '{}', but a dart has one", L.arc(e).label, L.name(L.arc(e).source)));
+        return refuse<Match>(Refusal::not_injective,
+                             fmt::format("L has two {}-arcs out of '{}', but a dart has one", L.arc(e).label, L.name(L.arc(e).source)));
   return {std::move(m), Refusal::none, {}};
 }
 

@@ -44,6 +44,12 @@ struct Outcome {
   bool ok() const { return value.has_value(); }
 };
 
+/// A refused outcome: no value, the refusal and the sentence that says why.
+template <class T>
+Outcome<T> refuse(Refusal r, std::string why) {
+  return {std::nullopt, r, std::move(why)};
+}
+
 /// Builds the match that sends hook k of the rule to hook_darts[k].
 /// Costs O(|L| * |D|): independent of the size of the map.
 Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const Dart> hook_darts);

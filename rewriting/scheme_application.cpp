@@ -7,14 +7,6 @@
 #include <fmt/format.h>
 
 namespace dartcheck {
-namespace {
-
-template <class T>
-Outcome<T> refuse(Refusal r, std::string why) {
-  return {std::nullopt, r, std::move(why)};
-}
-
-}  // namespace
 
 std::vector<ConjWord> scheme_generators(const Model& model, const ArcWords& words) {
   const ConjugateRewriting rw(model);

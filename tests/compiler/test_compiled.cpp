@@ -36,6 +36,7 @@
 #include DARTCHECK_COMPILED_SUBDIVISION
 #include DARTCHECK_COMPILED_JERBOA_REBUILT
 #include DARTCHECK_COMPILED_JERBOA_REBUILT2
+#include DARTCHECK_COMPILED_HOSTILE
 
 namespace dartcheck {
 namespace {
@@ -233,6 +234,18 @@ TEST(CompiledOperations, JerboaModelersAgreeWithTheInterpreter) {
   expect_agreement(compare_catalog(source("tests/data/jerboa-rebuild/JerboaRebuilt.jme"), rebuilt), rebuilt.size());
   const auto& rebuilt2 = compiled_JerboaRebuilt2::operations;
   expect_agreement(compare_catalog(source("../shared/jerboa-samples/JerboaRebuilt2.jme"), rebuilt2), rebuilt2.size());
+}
+
+// Names with quotes, backslashes, newlines, ESC sequences, U+FFFE and
+// invalid UTF-8 (tests/data/hostile-names.yaml): the header compiles (a
+// name in a comment could end it, or continue it onto the code), the table
+// keeps the name byte for byte (the catalog finds the rule by it), and the
+// rule agrees with the interpreter.
+TEST(CompiledOperations, HostileNamesCompileAndAgree) {
+  const auto& ops = compiled_hostile_names::operations;
+  ASSERT_EQ(ops.size(), 1U);  // the consistent one; "bad-...-utf8" fails I(1)
+  EXPECT_EQ(std::string(ops[0].name), "r\"1\\\n\t\a\x1b[31m\xef\xbf\xbe");
+  expect_agreement(compare_catalog(source("tests/data/hostile-names.yaml"), ops), ops.size());
 }
 
 // The catalogs whose rules all carry embedding terms compile to empty
