@@ -8,13 +8,9 @@
 #include <vector>
 
 #include "core/map.hpp"
+#include "core/polyhedron.hpp"
 
 namespace dartcheck {
-
-/// A face as the cycle of its vertex indices.
-using Polygon = std::vector<std::uint32_t>;
-/// A volume as the faces that bound it.
-using Polyhedron = std::vector<Polygon>;
 
 /// A cell complex that cannot become a map of the requested model: the
 /// message says which face, edge or vertex and why.

@@ -12,13 +12,14 @@
 #include <vector>
 
 #include "core/map.hpp"
+#include "core/polyhedron.hpp"
 
 namespace dartcheck::querymodify {
 
-/// A cell: its faces, each a cycle of mesh vertices. The faces of one cell
-/// are oriented alike (all outward or all inward), so each edge of the cell
-/// is traversed once in each direction.
-using Polyhedron = std::vector<std::vector<std::uint32_t>>;
+// A cell is a Polyhedron (core/polyhedron.hpp): its faces, each a cycle of
+// mesh vertices. Here the faces of one cell are oriented alike (all
+// outward or all inward), so each edge of the cell is traversed once in
+// each direction.
 
 struct CellMap {
   Map map{Model::open_omap(3)};
