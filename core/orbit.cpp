@@ -85,6 +85,19 @@ std::size_t OrbitWalker::count_orbits(std::span<const Word> generators) {
   return count;
 }
 
+OrbitPartition partition_orbits(const Map& map, std::span<const Word> generators) {
+  constexpr std::uint32_t unset = 0xffffffffU;
+  OrbitPartition p{std::vector<std::uint32_t>(map.size(), unset), {}};
+  OrbitWalker walker(map);
+  for (Dart d = 0; d < map.size(); ++d) {
+    if (p.of[d] != unset) continue;
+    const auto k = static_cast<std::uint32_t>(p.first.size());
+    for (Dart e : walker.orbit(d, generators)) p.of[e] = k;
+    p.first.push_back(d);
+  }
+  return p;
+}
+
 long long CellCounts::euler() const {
   long long chi = 0;
   for (std::size_t k = 0; k < cells.size(); ++k) chi += (k % 2 == 0 ? 1 : -1) * static_cast<long long>(cells[k]);

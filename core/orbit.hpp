@@ -64,6 +64,17 @@ class OrbitWalker {
   std::vector<Dart> visited_;
 };
 
+/// The orbits of `generators` over the whole map, numbered in the order of
+/// their smallest darts: `of[d]` is the number of d's orbit and `first[k]`
+/// the smallest dart of orbit k, one dart per orbit (CGAL's
+/// one_dart_per_cell). One walk of the map, O(|darts| x |generators|).
+struct OrbitPartition {
+  std::vector<std::uint32_t> of;
+  std::vector<Dart> first;
+  std::size_t size() const { return first.size(); }
+};
+OrbitPartition partition_orbits(const Map& map, std::span<const Word> generators);
+
 /// Cell counts of a map: cells[k] is the number of k-cells, k = 0..n;
 /// components is the number of connected components.
 struct CellCounts {

@@ -266,11 +266,9 @@ std::string event_line(const OrbitKind& kind, const LoggedEvent& e) {
 }
 
 std::vector<Dart> orbit_representatives(const Map& m, const OrbitKind& kind) {
-  std::vector<Dart> rep(m.size(), no_dart);
-  OrbitWalker walker(m);
-  for (Dart d = 0; d < m.size(); ++d)
-    if (rep[d] == no_dart)
-      for (Dart e : walker.orbit(d, kind.generators)) rep[e] = d;
+  const OrbitPartition orbits = partition_orbits(m, kind.generators);
+  std::vector<Dart> rep(m.size());
+  for (Dart d = 0; d < m.size(); ++d) rep[d] = orbits.first[orbits.of[d]];
   return rep;
 }
 

@@ -81,15 +81,9 @@ std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<co
   if (t_points.size() != t.size() || q_to_t.size() != q.size() || matched_points.size() != q.size())
     throw std::invalid_argument("place_target_points needs a point per target dart, and an image and a matched point per query dart");
   // T's vertices.
-  OrbitWalker walker(t);
-  const auto generators = cell_generators(t.model(), 0);
-  std::vector<std::uint32_t> vertex(t.size(), UINT32_MAX);
-  std::uint32_t vertices = 0;
-  for (Dart d = 0; d < t.size(); ++d) {
-    if (vertex[d] != UINT32_MAX) continue;
-    for (Dart e : walker.orbit(d, generators)) vertex[e] = vertices;
-    ++vertices;
-  }
+  const OrbitPartition t_vertices = partition_orbits(t, cell_generators(t.model(), 0));
+  const std::vector<std::uint32_t>& vertex = t_vertices.of;
+  const auto vertices = static_cast<std::uint32_t>(t_vertices.size());
   // Kept vertices take their input points.
   std::vector<bool> kept(vertices, false);
   std::vector<Point3> at(vertices);

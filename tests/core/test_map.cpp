@@ -1,7 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 #include "core/map.hpp"
 #include "core/orbit.hpp"
+#include "generators/random_maps.hpp"
 
 using namespace dartcheck;
 
@@ -66,4 +70,28 @@ TEST(Orbit, WalkerClearsItsMarksBetweenCalls) {
   EXPECT_EQ(w.orbit(3, gens).size(), 2u);
   EXPECT_EQ(w.count_orbits(gens), 2u);
   EXPECT_EQ(w.count_orbits(gens), 2u);
+}
+
+// partition_orbits against the walker, on random maps of every model the
+// generator builds and every cell dimension: the orbits counted alike
+// (count_orbits walks its own way), first[k] the smallest dart of orbit k,
+// and two darts in one orbit exactly when the walker's orbit of the first
+// holds the second.
+TEST(Orbit, PartitionAgreesWithTheWalker) {
+  std::mt19937 rng(36);
+  for (const Model& model : {Model::gmap(2), Model::gmap(3), Model::omap(2), Model::omap(3)})
+    for (int k = 0; k < 20; ++k) {
+      const Map m = build_random_map(model, draw_recipe(rng, 1 + k % 7, model.dimension()));
+      OrbitWalker walker(m);
+      for (int cell = 0; cell <= model.dimension(); ++cell) {
+        const auto gens = cell_generators(model, cell);
+        const OrbitPartition p = partition_orbits(m, gens);
+        ASSERT_EQ(p.size(), walker.count_orbits(gens));
+        for (std::size_t o = 0; o < p.size(); ++o) {
+          const auto& darts = walker.orbit(p.first[o], gens);
+          EXPECT_EQ(*std::min_element(darts.begin(), darts.end()), p.first[o]);
+          for (Dart e : darts) EXPECT_EQ(p.of[e], o);
+        }
+      }
+    }
 }
