@@ -72,75 +72,9 @@ std::string side_text(const TopoGraph& g, const std::vector<ConjWord>& words) {
   return out;
 }
 
-// The rule-only facts the interpreter's SchemeRewriter::State derives, in
-// the order its match checks them.
-struct RuleFacts {
-  std::vector<ConjWord> gens;
-  bool identity_match = false;
-  std::string two_arcs_in_l;
-  struct Dangling {
-    NodeId x;
-    Dim i;
-    bool out, in;
-  };
-  std::vector<Dangling> dangling;
-  struct Added {
-    ArcId arc;
-    std::string always;
-    NodeId x = no_node;
-    bool freed = false, kept = false;
-  };
-  std::vector<Added> added;
-};
-
-RuleFacts facts_of(const Operation& op) {
-  const Rule& core = op.rule;
-  const TopoGraph &L = core.left(), &R = core.right();
-  RuleFacts f;
-  f.gens = scheme_generators(core.model(), op.words);
-  f.identity_match = L.node_count() == 1 && core.hooks().size() == 1;
-  std::vector<int> loops;
-  for (ArcId e = 0; e < L.arc_count() && f.identity_match; ++e) {
-    const ConjWord& word = arc_word(op.words.left, e);
-    const Dim i = L.arc(e).label;
-    f.identity_match = word.size() == 1 && !word.bar(0) && word.dim(0) == i && !core.model().is_oriented(i);
-    loops.push_back(i);
-  }
-  for (const ConjWord& w : f.gens)
-    f.identity_match = f.identity_match && w.size() == 1 && !w.bar(0) && std::find(loops.begin(), loops.end(), w.dim(0)) != loops.end();
-  for (ArcId e = 0; e < L.arc_count() && f.two_arcs_in_l.empty(); ++e)
-    for (ArcId g : L.out_arcs(L.arc(e).source))
-      if (g > e && L.arc(e).label == L.arc(g).label) {
-        f.two_arcs_in_l = fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source));
-        break;
-      }
-  auto has_label = [](const TopoGraph& g, const std::vector<ArcId>& arcs, Dim i) {
-    return std::any_of(arcs.begin(), arcs.end(), [&](ArcId e) { return g.arc(e).label == i; });
-  };
-  for (NodeId x = 0; x < L.node_count(); ++x) {
-    if (core.to_right(x) != no_node) continue;
-    for (Dim i : core.model().dims) {
-      const bool out = has_label(L, L.out_arcs(x), i), in = has_label(L, L.in_arcs(x), i);
-      if (!out || !in) f.dangling.push_back({x, i, out, in});
-    }
-  }
-  for (ArcId e = 0; e < R.arc_count(); ++e) {
-    if (core.preserved_right_arc(e)) continue;
-    const auto& a = R.arc(e);
-    RuleFacts::Added x{e, {}, core.to_left(a.source), false, false};
-    for (ArcId g : R.out_arcs(a.source))
-      if (g > e && !core.preserved_right_arc(g) && R.arc(g).label == a.label) {
-        x.always = fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source));
-        break;
-      }
-    if (x.x != no_node) {
-      for (ArcId g : L.out_arcs(x.x)) x.freed |= !core.preserved_left_arc(g) && L.arc(g).label == a.label;
-      for (ArcId g : R.out_arcs(a.source)) x.kept |= core.preserved_right_arc(g) && R.arc(g).label == a.label;
-    }
-    f.added.push_back(std::move(x));
-  }
-  return f;
-}
+// The rule-only facts are the interpreter's own (scheme_facts), so the
+// generated refusals are the ones SchemeRewriter checks.
+using RuleFacts = SchemeFacts;
 
 using Out = std::back_insert_iterator<std::string>;
 
@@ -399,7 +333,7 @@ std::string function_name(std::string_view rule_name, const std::vector<std::str
 std::string compile_operation(const CompileUnit& unit, const std::string& function) {
   const Operation& op = *unit.operation;
   const Rule& core = op.rule;
-  const RuleFacts f = facts_of(op);
+  const RuleFacts f = scheme_facts(op.rule, op.words);
   std::string code;
   Out out(code);
   fmt::format_to(out, "// {} ({}), {}: a {}.\n// L: {}\n// R: {}\n", cpp_literal(core.name()), comment_text(core.model().name),

@@ -132,32 +132,13 @@ struct SchemeRewriter::State {
     NodeId other;
   };
   std::vector<std::vector<Step>> steps;
-  std::string two_arcs_in_l;  // L has two i-arcs out of one node: refused at every match
-  // Deleted node x without an L arc out of (in to) it in dimension i: its
-  // darts must carry no i-arc out (in).
-  struct Dangling {
-    NodeId x;
-    Dim i;
-    bool out, in;
-  };
-  std::vector<Dangling> dangling;
-  // Per arc of R \ K: a refusal of the rule itself, or the L node whose
-  // darts must be free in the arc's dimension.
-  struct Added {
-    std::string always;
-    NodeId x = no_node;
-    Dim label = 0;
-    bool freed = false, kept = false;
-  };
-  std::vector<Added> added;
+  // The refusals and placements that depend on the rule alone
+  // (scheme_facts: two L arcs with one label, dangling, representability,
+  // the identity match).
+  std::string two_arcs_in_l;
+  std::vector<SchemeFacts::Dangling> dangling;
+  std::vector<SchemeFacts::Added> added;
   std::size_t added_nodes = 0;
-  // L is the hook alone and each of its arcs a loop x -(i, i)-> x on a
-  // non-oriented dimension i, and every generator of W is one of these
-  // letters: the match is then (p, hook) -> the p-th dart of P_v. (The
-  // propagation would find it: following letter i from the p-th dart is
-  // the p·i-th dart, and P_v, the closure under these letters, is every
-  // position reached; the darts of P_v are distinct, so it is injective.)
-  // Jerboa's hook node <0,1,...> is this case.
   bool identity_match = false;
 
   // position[d]: d's position in P_v while a pattern is walked, then a
@@ -176,17 +157,14 @@ struct SchemeRewriter::State {
 };
 
 SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(w), gens(scheme_generators(r.model(), w)), letter(letters_of(gens)) {
+  SchemeFacts facts = scheme_facts(r, w);
+  two_arcs_in_l = std::move(facts.two_arcs_in_l);
+  dangling = std::move(facts.dangling);
+  added = std::move(facts.added);
+  added_nodes = facts.added_nodes;
+  identity_match = facts.identity_match;
   const ConjugateRewriting rw(core.model());
   const TopoGraph &L = core.left(), &R = core.right();
-  identity_match = L.node_count() == 1 && core.hooks().size() == 1;
-  std::vector<int> loops;
-  for (ArcId e = 0; e < L.arc_count() && identity_match; ++e) {
-    const ConjWord& word = arc_word(words.left, e);
-    const Dim i = L.arc(e).label;
-    identity_match = word.size() == 1 && !word.bar(0) && word.dim(0) == i && !core.model().is_oriented(i);
-    loops.push_back(i);
-  }
-  for (int l : letter) identity_match = identity_match && std::find(loops.begin(), loops.end(), l) != loops.end();
   for (ArcId e = 0; e < L.arc_count(); ++e) {
     left_fwd.push_back(generator_index(gens, arc_word(words.left, e)));
     left_bwd.push_back(generator_index(gens, rw.conjugate(arc_word(words.left, e))));
@@ -207,40 +185,62 @@ SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(
         steps[x].push_back({e, a.label, false, left_bwd[e], a.source});
     }
   }
-  for (ArcId e = 0; e < L.arc_count() && two_arcs_in_l.empty(); ++e)
-    for (ArcId f : L.out_arcs(L.arc(e).source))
-      if (f > e && L.arc(e).label == L.arc(f).label) {
-        two_arcs_in_l = fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source));
+}
+
+SchemeFacts scheme_facts(const Rule& core, const ArcWords& words) {
+  const TopoGraph &L = core.left(), &R = core.right();
+  SchemeFacts f;
+  f.gens = scheme_generators(core.model(), words);
+  // L is the hook alone and each of its arcs a loop x -(i, i)-> x on a
+  // non-oriented dimension i, and every generator of W is one of these
+  // letters: the match is then (p, hook) -> the p-th dart of P_v. (The
+  // propagation would find it: following letter i from the p-th dart is
+  // the p·i-th dart, and P_v, the closure under these letters, is every
+  // position reached; the darts of P_v are distinct, so it is injective.)
+  // Jerboa's hook node <0,1,...> is this case.
+  f.identity_match = L.node_count() == 1 && core.hooks().size() == 1;
+  std::vector<Dim> loops;
+  for (ArcId e = 0; e < L.arc_count() && f.identity_match; ++e) {
+    const ConjWord& word = arc_word(words.left, e);
+    const Dim i = L.arc(e).label;
+    f.identity_match = word.size() == 1 && !word.bar(0) && word.dim(0) == i && !core.model().is_oriented(i);
+    loops.push_back(i);
+  }
+  for (const ConjWord& w : f.gens)
+    f.identity_match = f.identity_match && w.size() == 1 && !w.bar(0) && std::find(loops.begin(), loops.end(), w.dim(0)) != loops.end();
+  for (ArcId e = 0; e < L.arc_count() && f.two_arcs_in_l.empty(); ++e)
+    for (ArcId g : L.out_arcs(L.arc(e).source))
+      if (g > e && L.arc(e).label == L.arc(g).label) {
+        f.two_arcs_in_l = fmt::format("L has two {}-arcs out of {}: their instances share one arc", L.arc(e).label, L.name(L.arc(e).source));
         break;
       }
   auto has_label = [](const TopoGraph& g, const std::vector<ArcId>& arcs, Dim i) {
-    return std::any_of(arcs.begin(), arcs.end(), [&](ArcId f) { return g.arc(f).label == i; });
+    return std::any_of(arcs.begin(), arcs.end(), [&](ArcId e) { return g.arc(e).label == i; });
   };
   for (NodeId x = 0; x < L.node_count(); ++x) {
     if (core.to_right(x) != no_node) continue;
     for (Dim i : core.model().dims) {
       const bool out = has_label(L, L.out_arcs(x), i), in = has_label(L, L.in_arcs(x), i);
-      if (!out || !in) dangling.push_back({x, i, out, in});
+      if (!out || !in) f.dangling.push_back({x, i, out, in});
     }
   }
   for (ArcId e = 0; e < R.arc_count(); ++e) {
     if (core.preserved_right_arc(e)) continue;
     const auto& a = R.arc(e);
-    Added x;
-    x.label = a.label;
-    for (ArcId f : R.out_arcs(a.source))
-      if (f > e && !core.preserved_right_arc(f) && R.arc(f).label == a.label) {
+    SchemeFacts::Added x{e, {}, core.to_left(a.source), a.label, false, false};
+    for (ArcId g : R.out_arcs(a.source))
+      if (g > e && !core.preserved_right_arc(g) && R.arc(g).label == a.label) {
         x.always = fmt::format("R adds two {}-arcs out of {}", a.label, R.name(a.source));
         break;
       }
-    x.x = core.to_left(a.source);
     if (x.x != no_node) {
-      for (ArcId f : L.out_arcs(x.x)) x.freed |= !core.preserved_left_arc(f) && L.arc(f).label == a.label;
-      for (ArcId f : R.out_arcs(a.source)) x.kept |= core.preserved_right_arc(f) && R.arc(f).label == a.label;
+      for (ArcId g : L.out_arcs(x.x)) x.freed |= !core.preserved_left_arc(g) && L.arc(g).label == a.label;
+      for (ArcId g : R.out_arcs(a.source)) x.kept |= core.preserved_right_arc(g) && R.arc(g).label == a.label;
     }
-    added.push_back(std::move(x));
+    f.added.push_back(std::move(x));
   }
-  for (NodeId y = 0; y < R.node_count(); ++y) added_nodes += core.to_left(y) == no_node;
+  for (NodeId y = 0; y < R.node_count(); ++y) f.added_nodes += core.to_left(y) == no_node;
+  return f;
 }
 
 Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const Dart> hook_darts) {
@@ -341,14 +341,14 @@ Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const 
   if (!two_arcs_in_l.empty()) return no(Refusal::not_injective, two_arcs_in_l);
   // Dangling: a deleted node needs an L arc in and out for every dimension
   // its darts carry.
-  for (const Dangling& c : dangling)
+  for (const SchemeFacts::Dangling& c : dangling)
     for (std::size_t p = 0; p < np; ++p)
       if ((!c.out && g.link(c.i, m[c.x][p]) != no_dart) || (!c.in && g.inverse_link(c.i, m[c.x][p]) != no_dart))
         return no(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[c.x][p], L.name(c.x), c.i));
   // Representability, per scheme arc (the same for every pattern node).
   for (ArcId e = 0, k = 0; e < R.arc_count(); ++e) {
     if (core.preserved_right_arc(e)) continue;
-    const Added& a = added[k++];
+    const SchemeFacts::Added& a = added[k++];
     if (!a.always.empty()) return no(Refusal::not_representable, a.always);
     if (a.x == no_node) continue;
     for (std::size_t p = 0; p < np && !a.freed; ++p)

@@ -39,6 +39,40 @@ struct PatternGraphs {
 /// repeats, in the order the walk of P_v follows them.
 std::vector<ConjWord> scheme_generators(const Model& model, const ArcWords& words);
 
+/// What an application of a scheme derives from the rule alone, in the
+/// order match_scheme checks it. The interpreter (SchemeRewriter) computes
+/// it once per rewriter; `dartcheck compile` generates code from it, so
+/// both refuse on the same facts.
+struct SchemeFacts {
+  std::vector<ConjWord> gens;  // scheme_generators
+  /// L is the hook alone with a loop x -(i,i)-> x per non-oriented letter
+  /// of W: product node (p, hook) is the p-th dart of P_v.
+  bool identity_match = false;
+  /// Non-empty when L has two i-arcs out of one node: refused at every match.
+  std::string two_arcs_in_l;
+  /// A deleted node x without an L arc out of (into) it in dimension i:
+  /// its darts must carry no i-arc out (in).
+  struct Dangling {
+    NodeId x;
+    Dim i;
+    bool out, in;
+  };
+  std::vector<Dangling> dangling;
+  /// Per arc of R \ K: a refusal of the rule itself (`always`), or the L
+  /// node x whose darts must be free in the arc's dimension unless L \ K
+  /// frees it and K keeps none.
+  struct Added {
+    ArcId arc;
+    std::string always;
+    NodeId x = no_node;
+    Dim label = 0;
+    bool freed = false, kept = false;
+  };
+  std::vector<Added> added;
+  std::size_t added_nodes = 0;  // nodes of R \ K
+};
+SchemeFacts scheme_facts(const Rule& core, const ArcWords& words);
+
 /// Refuses when a word has no path from a pattern dart
 /// (not-combinatorial) or when two hooks' pattern graphs differ (no-match).
 Outcome<PatternGraphs> pattern_graphs(const Model& model, const ArcWords& words, const Map& g, std::span<const Dart> hook_darts);
