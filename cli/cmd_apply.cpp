@@ -167,7 +167,7 @@ int apply(const ApplyOptions& o) {
   if (!(map.model() == rule->rule.model()))
     throw InputError("<command line>", 0, 0,
                      fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, map.model().name, o.rule, rule->rule.model().name));
-  check_hook_count(*rule, o.hooks);
+  check_hooks(*rule, o.hooks, map, o.map);
   fmt::print("rule: {} ({})\nhost: {}\n", o.rule, rule->rule.model().name, describe_target(o.map, map));
   if (rule->terms) {
     if (!o.kappa_out.empty()) throw InputError("<command line>", 0, 0, "--kappa-out: for topological rules (infer reads G-maps without values)");

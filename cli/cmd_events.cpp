@@ -38,11 +38,11 @@ std::vector<OrbitKind> requested_kinds(const std::vector<std::string>& texts, co
 
 // G => H at the hooks, with H's validity; or why the rule did not apply.
 reports::EventsApplication apply_at(const EventsOptions& o, const CatalogRule& rule, const Catalog& catalog) {
-  check_hook_count(rule, o.hooks);
   Map g = resolve_map(o.map, rule.rule.model(), &catalog);
   if (!(g.model() == rule.rule.model()))
     throw InputError("<command line>", 0, 0,
                      fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule, rule.rule.model().name));
+  check_hooks(rule, o.hooks, g, o.map);
   // Events are defined on maps (004): on an invalid G the logs disagree for
   // reasons that are not the rule's (a false alarm), so G must be valid, as
   // fuzz --maps asks of its hosts.

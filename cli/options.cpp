@@ -39,15 +39,23 @@ double parse_duration(const std::string& text, const std::string& option) {
   return *v * scale;
 }
 
-void check_hook_count(const CatalogRule& rule, const std::vector<Dart>& hooks) {
+void check_hooks(const CatalogRule& rule, const std::vector<Dart>& hooks, const Map& map, const std::string& map_name) {
   const auto& want = rule.rule.hooks();
-  if (hooks.size() == want.size()) return;
-  std::vector<std::string> names;
-  for (NodeId h : want) names.push_back(rule.rule.left().name(h));
-  throw InputError("<command line>", 0, 0,
-                   want.empty() ? fmt::format("--hook: rule '{}' has no hook (L is empty or matched as a whole): give no --hook", rule.rule.name())
-                                : fmt::format("--hook: rule '{}' has {} hook{} ({}), {} given: one --hook dart each, in that order", rule.rule.name(),
-                                              want.size(), want.size() == 1 ? "" : "s", fmt::join(names, ", "), hooks.size()));
+  if (hooks.size() != want.size()) {
+    std::vector<std::string> names;
+    for (NodeId h : want) names.push_back(rule.rule.left().name(h));
+    throw InputError("<command line>", 0, 0,
+                     want.empty() ? fmt::format("--hook: rule '{}' has no hook (L is empty or matched as a whole): give no --hook", rule.rule.name())
+                                  : fmt::format("--hook: rule '{}' has {} hook{} ({}), {} given: one --hook dart each, in that order",
+                                                rule.rule.name(), want.size(), want.size() == 1 ? "" : "s", fmt::join(names, ", "), hooks.size()));
+  }
+  // A dart the map does not have is a mistake on the command line, not a
+  // refusal of the rule (issue 39).
+  for (const Dart h : hooks)
+    if (h >= map.size())
+      throw InputError("<command line>", 0, 0,
+                       fmt::format("--hook: {} is not a dart of {} ({})", h, printable(map_name),
+                                   map.size() == 0 ? std::string("it has no darts") : fmt::format("darts 0 to {}", map.size() - 1)));
 }
 
 int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected) {

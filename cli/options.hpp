@@ -31,8 +31,9 @@ inline constexpr double max_duration_seconds = 31 * 24 * 3600;
 double parse_duration(const std::string& text, const std::string& option);
 
 /// --hook gives one dart per hook of the rule (none for a rule without
-/// hooks); InputError naming the hooks otherwise.
-void check_hook_count(const CatalogRule& rule, const std::vector<Dart>& hooks);
+/// hooks), each a dart of the map; InputError naming the hooks or the
+/// dart otherwise.
+void check_hooks(const CatalogRule& rule, const std::vector<Dart>& hooks, const Map& map, const std::string& map_name);
 
 /// The end of a run of check, fuzz, prove or report: prints the baseline's
 /// disagreements and every mismatch line on stderr, says how many of
