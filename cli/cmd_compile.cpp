@@ -36,7 +36,7 @@ std::string default_namespace(const std::string& catalog) {
 int compile(const CompileOptions& o) {
   const std::string ns = o.ns.empty() ? default_namespace(o.catalog) : o.ns;
   if (!std::regex_match(ns, std::regex("[A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*")))
-    throw InputError("<command line>", 0, 0, fmt::format("--namespace: '{}' is not a C++ namespace name (identifiers joined by ::)", ns));
+    throw InputError("<command line>", 0, 0, fmt::format("--namespace: '{}' is not a C++ namespace name (identifiers joined by ::)", printable(ns)));
   if (!o.output.empty()) {
     if (!o.output.ends_with(".hpp") && !o.output.ends_with(".h") && !o.output.ends_with(".hh"))
       throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a header name ending in .hpp, .hh or .h", o.output));
@@ -51,20 +51,20 @@ int compile(const CompileOptions& o) {
     if (!verdict.consistent()) {
       ++inconsistent;
       if (!o.rule.empty()) {
-        fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled\n", r.rule.name(),
-                   r.location.str(), failing(verdict));
+        fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled\n",
+                   printable(r.rule.name()), printable(r.location.str()), failing(verdict));
         return violation;
       }
-      fmt::print(stderr, "skipped {} ({}): fails {}\n", r.rule.name(), r.location.str(), failing(verdict));
+      fmt::print(stderr, "skipped {} ({}): fails {}\n", printable(r.rule.name()), printable(r.location.str()), failing(verdict));
       continue;
     }
     if (const auto why = compiler::not_compilable(r)) {
       ++unsupported;
       if (!o.rule.empty()) {
-        fmt::print(stderr, "error: compile: rule '{}' ({}) is not compiled: {}\n", r.rule.name(), r.location.str(), *why);
+        fmt::print(stderr, "error: compile: rule '{}' ({}) is not compiled: {}\n", printable(r.rule.name()), printable(r.location.str()), *why);
         return bad_input;
       }
-      fmt::print(stderr, "skipped {} ({}): {}\n", r.rule.name(), r.location.str(), *why);
+      fmt::print(stderr, "skipped {} ({}): {}\n", printable(r.rule.name()), printable(r.location.str()), *why);
       continue;
     }
     units.push_back({&r, r.location.str()});
@@ -74,7 +74,7 @@ int compile(const CompileOptions& o) {
     fmt::print("{}", header);
   } else {
     write_file(o.output, header);
-    fmt::print("written: {} ({} in namespace {})\n", o.output, counted(units.size(), "compiled rule"), ns);
+    fmt::print("written: {} ({} in namespace {})\n", printable(o.output), counted(units.size(), "compiled rule"), ns);
   }
   fmt::print(stderr, "{} compiled; {} skipped as inconsistent, {} with what the compiler does not handle\n", counted(units.size(), "rule"),
              inconsistent, unsupported);

@@ -124,6 +124,14 @@ with open(os.path.join(report_dir, "results.json"), "rb") as f:
             failures.append(f"report results.json: {e.message[:300]}")
     except (UnicodeDecodeError, json.JSONDecodeError) as e:
         failures.append(f"report results.json: not valid JSON: {e}")
+# compile's messages name rules and files through printable(): no raw
+# control byte (here an ESC sequence in the output's name) reaches the
+# terminal. The header itself is compiled by tests/compiler.
+p = subprocess.run([DARTCHECK, "compile", HOSTILE, "-o", os.path.join(WORK, "hostile\x1b[31m.hpp")], cwd=SOURCE, capture_output=True)
+if p.returncode != 0:
+    failures.append(f"compile {HOSTILE}: exit {p.returncode}\n{p.stderr.decode('utf-8', 'replace')[-2000:]}")
+if any((b < 0x20 and b != 0x0a) or b == 0x7f for b in p.stdout + p.stderr):
+    failures.append(f"compile {HOSTILE}: raw control bytes in its messages: {(p.stdout + p.stderr)[:300]!r}")
 # YAML written by dartcheck is read back by dartcheck (yaml-cpp) to the same verdicts.
 baseline = os.path.join(WORK, "hostile-baseline.yaml")
 run(["check", HOSTILE, "--write-baseline", baseline], 0)
