@@ -78,6 +78,14 @@ using RuleFacts = SchemeFacts;
 
 using Out = std::back_insert_iterator<std::string>;
 
+// Injectivity and connectedness of the instantiated L (check_match), with
+// L's node names for its sentences.
+void emit_check_match(Out out, const TopoGraph& L) {
+  fmt::format_to(out, "  static const char* const left_names[] = {{");
+  for (NodeId x = 0; x < L.node_count(); ++x) fmt::format_to(out, "{}{}", x == 0 ? "" : ", ", cpp_literal(L.name(x)));
+  fmt::format_to(out, "}};\n  if (const Refusal r = check_match(ws, {}, left_names); r != Refusal::none) return r;\n", L.node_count());
+}
+
 // The match: (p, hook) is the hook dart, propagated along the instantiated
 // arcs of L, one switch case per node with its arcs spelt out.
 void emit_propagation(Out out, const Operation& op, const RuleFacts& f) {
@@ -124,9 +132,7 @@ void emit_propagation(Out out, const Operation& op, const RuleFacts& f) {
     }
     fmt::format_to(out, "      default:\n        break;\n    }}\n  }}\n");
   }
-  fmt::format_to(out, "  static const char* const left_names[] = {{");
-  for (NodeId x = 0; x < L.node_count(); ++x) fmt::format_to(out, "{}{}", x == 0 ? "" : ", ", cpp_literal(L.name(x)));
-  fmt::format_to(out, "}};\n  if (const Refusal r = check_match(ws, {}, left_names); r != Refusal::none) return r;\n", L.node_count());
+  emit_check_match(out, L);
 }
 
 // A DPO rule's match, as rewriting/match.cpp builds it: from the hooks,
@@ -148,11 +154,11 @@ void emit_dpo_match(Out out, const Operation& op) {
   }
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const NodeId v = queue[q];
-    fmt::format_to(out,
-                   "  if (!combinatorial_at(g, ws.match[{0}]))\n"
-                   "    return ws.refuse(Refusal::not_combinatorial, \"the host is not combinatorial at dart \" + std::to_string(ws.match[{0}]) + \" "
-                   "(matched to node \" {1} \"); DPO application needs a combinatorial host\");\n",
-                   v, cpp_literal(L.name(v)));
+    fmt::format_to(
+        out,
+        "  if (std::string why = combinatorial_violation(g, ws.match[{0}]); !why.empty())\n"
+        "    return ws.refuse(Refusal::not_combinatorial, why + \" (matched to node \" {1} \"); DPO application needs a combinatorial host\");\n",
+        v, cpp_literal(L.name(v)));
     for (ArcId e = 0; e < L.arc_count(); ++e) {
       const auto& a = L.arc(e);
       NodeId other = no_node;
@@ -184,9 +190,7 @@ void emit_dpo_match(Out out, const Operation& op) {
                    "elsewhere\");\n",
                    a.label, a.source, a.target, cpp_literal(fmt::format("{} -{}-> {}", L.name(a.source), a.label, L.name(a.target))));
   }
-  fmt::format_to(out, "  static const char* const left_names[] = {{");
-  for (NodeId x = 0; x < L.node_count(); ++x) fmt::format_to(out, "{}{}", x == 0 ? "" : ", ", cpp_literal(L.name(x)));
-  fmt::format_to(out, "}};\n  if (const Refusal r = check_match(ws, {}, left_names); r != Refusal::none) return r;\n", L.node_count());
+  emit_check_match(out, L);
 }
 
 // The refusals that do not depend on the match's darts beyond a link:
@@ -239,10 +243,10 @@ bool emit_conditions(Out out, const Operation& op, const RuleFacts& f) {
 // 32-bit, so the compiler could not keep them in registers across writes).
 // The order of the writes within a step does not matter: a representable
 // rule writes each (dart, dimension) slot once.
-void emit_rewrite(Out out, const Operation& op) {
+void emit_rewrite(Out out, const Operation& op, const RuleFacts& f) {
   const Rule& core = op.rule;
   const TopoGraph &L = core.left(), &R = core.right();
-  const auto gens = scheme_generators(core.model(), op.words);
+  const std::vector<ConjWord>& gens = f.gens;
   std::size_t deleted = 0, added = 0;
   for (NodeId x = 0; x < L.node_count(); ++x) deleted += core.to_right(x) == no_node;
   for (NodeId y = 0; y < R.node_count(); ++y) added += core.to_left(y) == no_node;
@@ -382,7 +386,7 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
       emit_propagation(out, op, f);
   }
   if (emit_conditions(out, op, f)) {
-    emit_rewrite(out, op);
+    emit_rewrite(out, op, f);
     fmt::format_to(out, "  return Refusal::none;\n");
   }
   fmt::format_to(out, "}}\n");
@@ -400,7 +404,7 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
       "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <span>\n#include <string>\n\n"
       "#include \"rewriting/compiled_runtime.hpp\"\n\nnamespace {} {{\n\n"
       "using dartcheck::Dart;\nusing dartcheck::Map;\nusing dartcheck::no_dart;\nusing dartcheck::Refusal;\n"
-      "using dartcheck::compiled::check_match;\nusing dartcheck::compiled::combinatorial_at;\nusing dartcheck::compiled::fill_holes;\nusing "
+      "using dartcheck::compiled::check_match;\nusing dartcheck::combinatorial_violation;\nusing dartcheck::compiled::fill_holes;\nusing "
       "dartcheck::compiled::propagate;\n"
       "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::Workspace;\n\n",
       comment_text(source), ns);

@@ -129,28 +129,6 @@ Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, 
   return Refusal::none;
 }
 
-/// A DPO rule's host must be combinatorial at every matched dart (as
-/// rewriting/match.cpp requires): each i-arc recorded back at its target,
-/// an oriented dimension's predecessor linking to the dart, and no missing
-/// arc outside the model's partial dimensions.
-inline bool combinatorial_at(const Map& g, Dart d) {
-  const Model& m = g.model();
-  for (const Dim i : m.dims) {
-    const Dart s = g.link(i, d);
-    const bool partial = has_dim(m.partial, i);
-    if (s == no_dart) {
-      if (!partial) return false;
-      continue;
-    }
-    if (g.inverse_link(i, s) != d) return false;
-    if (m.is_oriented(i)) {
-      const Dart p = g.inverse_link(i, d);
-      if (p == no_dart ? !partial : g.link(i, p) != d) return false;
-    }
-  }
-  return true;
-}
-
 /// The match's propagation along one instantiated arc of L: product node
 /// (q, x) is dart `there`. False when it is already another dart (the
 /// instantiated L would send one node to two darts).

@@ -33,12 +33,7 @@ std::string_view refusal_name(Refusal r) {
   return "?";
 }
 
-namespace {
-
-// The i-arcs at d must be those of a combinatorial graph for propagation and
-// the dangling condition to see every arc: an i-arc out of d whose target
-// points back, and for oriented dimensions a predecessor that agrees.
-std::string combinatorial_at(const Map& g, Dart d) {
+std::string combinatorial_violation(const Map& g, Dart d) {
   for (Dim i : g.model().dims) {
     const Dart s = g.link(i, d);
     const bool partial = has_dim(g.model().partial, i);
@@ -54,8 +49,6 @@ std::string combinatorial_at(const Map& g, Dart d) {
   }
   return {};
 }
-
-}  // namespace
 
 Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const Dart> hook_darts) {
   const TopoGraph& L = rule.left();
@@ -76,7 +69,7 @@ Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const 
   // m(x) = inverse_link_i(m(y)) when only y is known.
   for (std::size_t q = 0; q < queue.size(); ++q) {
     const NodeId v = queue[q];
-    if (auto why = combinatorial_at(g, m.node[v]); !why.empty())
+    if (auto why = combinatorial_violation(g, m.node[v]); !why.empty())
       return refuse<Match>(Refusal::not_combinatorial,
                            fmt::format("{} (matched to node '{}'); DPO application needs a combinatorial host", why, L.name(v)));
     for (const auto& a : L.arcs()) {

@@ -50,6 +50,13 @@ Outcome<T> refuse(Refusal r, std::string why) {
   return {std::nullopt, r, std::move(why)};
 }
 
+/// Empty when the i-arcs at d are those of a combinatorial graph, as a DPO
+/// match needs for propagation and the dangling condition to see every arc
+/// (an i-arc out of d whose target points back, an oriented dimension's
+/// predecessor that agrees, no missing arc outside the partial
+/// dimensions); otherwise the first that is not.
+std::string combinatorial_violation(const Map& g, Dart d);
+
 /// Builds the match that sends hook k of the rule to hook_darts[k].
 /// Costs O(|L| * |D|): independent of the size of the map.
 Outcome<Match> match_from_hooks(const Rule& rule, const Map& g, std::span<const Dart> hook_darts);
