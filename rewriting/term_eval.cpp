@@ -95,6 +95,56 @@ void TermEvaluator::compile(const Term& t, std::span<const std::string> names, C
 
 // --- Collects --------------------------------------------------------------
 
+void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const Word> inner, OrbitWalker& inner_walker,
+                          std::vector<std::uint64_t>& done_bits, std::vector<Value>& out, const std::string& name, const std::vector<Dim>& dims) {
+  const std::size_t first = out.size();
+  if (done_bits.size() * 64 < map.size()) done_bits.resize((map.size() + 63) / 64, 0);
+  auto done = [&](Dart x) { return (done_bits[x >> 6] >> (x & 63)) & 1U; };
+  auto mark = [&](Dart x) { done_bits[x >> 6] |= std::uint64_t{1} << (x & 63); };
+  // Every dart marked is in the orbit (the pi-orbits lie inside it).
+  struct Unmark {
+    std::vector<std::uint64_t>& bits;
+    std::span<const Dart> darts;
+    ~Unmark() {
+      for (Dart x : darts) bits[x >> 6] &= ~(std::uint64_t{1} << (x & 63));
+    }
+  } const unmark{done_bits, orbit};
+  // The pi-orbit of x inside the <o'>-orbit, through <o> ∩ <o'>. The
+  // common cases are read off the links: no common dimension (x alone),
+  // or one dimension i whose link is an involution at x ({x, alpha_i(x)}:
+  // every G-map dimension); otherwise the orbit is walked.
+  const bool none_common = inner.empty(), one_letter = inner.size() == 1 && inner[0].size() == 1;
+  const Dim i = one_letter ? inner[0][0] : 0;
+  for (Dart x : orbit) {
+    if (done(x)) continue;
+    const Value* v = nullptr;
+    if (none_common) {
+      v = e.value(x);
+    } else if (const Dart y = one_letter ? map.link(i, x) : no_dart; one_letter && (y == no_dart || y == x || map.link(i, y) == x)) {
+      mark(x);
+      v = e.value(x);
+      if (y != no_dart && y != x) {
+        mark(y);
+        if (!v) v = e.value(y);
+      }
+    } else {
+      for (Dart z : inner_walker.orbit(x, inner)) {
+        mark(z);
+        if (!v) v = e.value(z);
+      }
+    }
+    if (!v) {
+      out.resize(first);
+      throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", name, fmt::join(dims, ","), name, x));
+    }
+    out.push_back(*v);
+  }
+  // A multiset has no order; a canonical one makes every function of it
+  // (center's floating-point sum) the same from whichever dart of the
+  // orbit the traversal starts.
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), value_less);
+}
+
 std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, const std::vector<Dim>& orbit) {
   for (std::size_t k = 0; k < memo_.size(); ++k)
     if (memo_[k].embedding == e && memo_[k].name == name && memo_[k].orbit == orbit) return k;
@@ -116,52 +166,7 @@ std::uint32_t TermEvaluator::collect_bag(CollectMemo& memo, Dart d) {
   }
   const std::span<const Dart> orbit = outer_last_;
   std::vector<Value>& out = memo.elements;
-  const std::size_t first = out.size();
-  if (done_.size() * 64 < g_.map.size()) done_.resize((g_.map.size() + 63) / 64, 0);
-  auto done = [&](Dart x) { return (done_[x >> 6] >> (x & 63)) & 1U; };
-  auto mark = [&](Dart x) { done_[x >> 6] |= std::uint64_t{1} << (x & 63); };
-  // Every dart marked is in the orbit (the pi-orbits lie inside it).
-  struct Unmark {
-    std::vector<std::uint64_t>& bits;
-    std::span<const Dart> darts;
-    ~Unmark() {
-      for (Dart x : darts) bits[x >> 6] &= ~(std::uint64_t{1} << (x & 63));
-    }
-  } const unmark{done_, orbit};
-  // The pi-orbit of x inside the <o'>-orbit, through <o> ∩ <o'>. The
-  // common cases are read off the links: no common dimension (x alone),
-  // or one dimension i whose link is an involution at x ({x, alpha_i(x)}:
-  // every G-map dimension); otherwise the orbit is walked.
-  const bool none_common = memo.inner.empty(), one_letter = memo.inner.size() == 1 && memo.inner[0].size() == 1;
-  const Dim i = one_letter ? memo.inner[0][0] : 0;
-  for (Dart x : orbit) {
-    if (done(x)) continue;
-    const Value* v = nullptr;
-    if (none_common) {
-      v = e.value(x);
-    } else if (const Dart y = one_letter ? g_.map.link(i, x) : no_dart; one_letter && (y == no_dart || y == x || g_.map.link(i, y) == x)) {
-      mark(x);
-      v = e.value(x);
-      if (y != no_dart && y != x) {
-        mark(y);
-        if (!v) v = e.value(y);
-      }
-    } else {
-      for (Dart z : inner_.orbit(x, memo.inner)) {
-        mark(z);
-        if (!v) v = e.value(z);
-      }
-    }
-    if (!v) {
-      out.resize(first);
-      throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", memo.name, fmt::join(memo.orbit, ","), memo.name, x));
-    }
-    out.push_back(*v);
-  }
-  // A multiset has no order; a canonical one makes every function of it
-  // (center's floating-point sum) the same from whichever dart of the
-  // orbit the traversal starts.
-  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), value_less);
+  collect_orbit_values(g_.map, e, orbit, memo.inner, inner_, done_, out, memo.name, memo.orbit);
   const auto k = static_cast<std::uint32_t>(memo.start.size() - 1);
   memo.start.push_back(static_cast<std::uint32_t>(out.size()));
   if (memorise_)

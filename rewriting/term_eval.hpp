@@ -19,6 +19,18 @@ namespace dartcheck {
 
 class TermEvaluator;
 
+/// The multiset of a collect pi<o'>(x) (003 Def. 9) from a walk `orbit` of
+/// x's <o'>-orbit: one value per pi-orbit inside it, each pi-orbit taken
+/// through `inner`, the generators of <o> ∩ <o'> (walked with
+/// `inner_walker`), appended to `out` in a canonical order (value_less),
+/// so the multiset is the same from any dart of the orbit. `done` holds one
+/// bit per dart, clear before and after. Throws EvaluationError, naming
+/// pi (`name`) and <o'> (`dims`), when a pi-orbit has no value. The
+/// evaluator and compiled rules (rewriting/compiled_terms.hpp) both
+/// collect through it.
+void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const Word> inner, OrbitWalker& inner_walker,
+                          std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name, const std::vector<Dim>& dims);
+
 /// A checked term compiled for one evaluator, in postfix order: node
 /// variables resolved to binding slots, embeddings to the map's embedding
 /// index, collects to the evaluator's memo. Running it looks nothing up by
@@ -29,6 +41,18 @@ class TermEvaluator;
 class CompiledTerm {
  private:
   friend class TermEvaluator;
+
+  /// The multiset of a collect pi<o'>(x) (003 Def. 9) from a walk `orbit` of
+  /// x's <o'>-orbit: one value per pi-orbit inside it, each pi-orbit taken
+  /// through `inner`, the generators of <o> ∩ <o'> (walked with
+  /// `inner_walker`), appended to `out` in a canonical order (value_less),
+  /// so the multiset is the same from any dart of the orbit. `done` holds one
+  /// bit per dart, clear before and after. Throws EvaluationError, naming
+  /// pi (`name`) and <o'> (`dims`), when a pi-orbit has no value. The
+  /// evaluator and compiled rules (rewriting/compiled_terms.hpp) both
+  /// collect through it.
+  void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const Word> inner, OrbitWalker& inner_walker,
+                            std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name, const std::vector<Dim>& dims);
   struct Step {
     enum class Op : std::uint8_t { literal, access, collect, call, fail };
     Op op = Op::literal;

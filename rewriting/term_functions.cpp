@@ -1,7 +1,5 @@
 #include "rewriting/term_functions.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
 
 namespace dartcheck {
@@ -12,90 +10,101 @@ using VT = ValueType;
 const Value& val(std::span<const Operand> a, std::size_t k) { return value_arg(a, k); }
 std::span<const Value> bag(std::span<const Operand> a, std::size_t k) { return multiset_arg(a, k); }
 
-Value combine(VT t, const Value& p, double a, const Value& q, double b) {
-  std::array<double, 3> c{};
-  for (std::size_t k = 0; k < 3; ++k) c[k] = a * p.x[k] + b * q.x[k];
-  return Value::coords(t, c);
-}
+// A value type as C++ code, for the calls `dartcheck compile` writes.
+std::string cpp_type(VT t) { return fmt::format("dartcheck::ValueType::{}", type_name(t)); }
+std::string cpp_call(std::string_view f, std::string_view args) { return fmt::format("dartcheck::algebra::{}({})", f, args); }
 
-Value average(VT t, std::span<const Value> m, const char* what) {
-  if (m.empty()) throw EvaluationError(fmt::format("{} of an empty multiset", what));
-  std::array<double, 3> c{};
-  for (const Value& v : m)
-    for (std::size_t k = 0; k < 3; ++k) c[k] += v.x[k];
-  for (double& x : c) x /= static_cast<double>(m.size());
-  return Value::coords(t, c);
-}
-
+// Every function calls rewriting/algebra.hpp, and its `cpp` text is that
+// same call with the arguments as {0}, {1}, ... .
 FunctionRegistry make_builtin() {
+  using namespace algebra;
   FunctionRegistry r;
   const Sort real = Sort::of(VT::real), integer = Sort::of(VT::integer), color = Sort::of(VT::color);
-  r.add("real", {integer}, real, [](auto a) { return Value::real(static_cast<double>(val(a, 0).i)); });
+  r.add(
+      "real", {integer}, real, [](auto a) { return to_real(val(a, 0)); }, cpp_call("to_real", "{0}"));
 
   // Constructors.
   for (VT t : {VT::point2, VT::vector2})
-    r.add(std::string(type_name(t)), {real, real}, Sort::of(t), [t](auto a) { return Value::coords(t, {val(a, 0).x[0], val(a, 1).x[0], 0}); });
+    r.add(
+        std::string(type_name(t)), {real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1)); },
+        cpp_call("coords", cpp_type(t) + ", {0}, {1}"));
   for (VT t : {VT::point3, VT::vector3, VT::color})
-    r.add(std::string(type_name(t)), {real, real, real}, Sort::of(t), [t](auto a) {
-      return Value::coords(t, {val(a, 0).x[0], val(a, 1).x[0], val(a, 2).x[0]});
-    });
+    r.add(
+        std::string(type_name(t)), {real, real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1), val(a, 2)); },
+        cpp_call("coords", cpp_type(t) + ", {0}, {1}, {2}"));
 
-  // Point and vector arithmetic, in 2D and 3D.
+  // Point and vector arithmetic, in 2D and 3D: a·x + b·y (combine).
   for (const auto& types : {std::pair{VT::point2, VT::vector2}, std::pair{VT::point3, VT::vector3}}) {
     const VT p = types.first, v = types.second;  // named: clang 14 cannot capture structured bindings
     const Sort P = Sort::of(p), V = Sort::of(v);
-    r.add("+", {P, V}, P, [p](auto a) { return combine(p, val(a, 0), 1, val(a, 1), 1); });
-    r.add("+", {V, V}, V, [v](auto a) { return combine(v, val(a, 0), 1, val(a, 1), 1); });
-    r.add("-", {P, V}, P, [p](auto a) { return combine(p, val(a, 0), 1, val(a, 1), -1); });
-    r.add("-", {P, P}, V, [v](auto a) { return combine(v, val(a, 0), 1, val(a, 1), -1); });
-    r.add("-", {V, V}, V, [v](auto a) { return combine(v, val(a, 0), 1, val(a, 1), -1); });
-    r.add("-", {V}, V, [v](auto a) { return combine(v, val(a, 0), -1, val(a, 0), 0); });
-    r.add("*", {real, V}, V, [v](auto a) { return combine(v, val(a, 1), val(a, 0).x[0], val(a, 1), 0); });
-    r.add("*", {V, real}, V, [v](auto a) { return combine(v, val(a, 0), val(a, 1).x[0], val(a, 0), 0); });
-    r.add("/", {V, real}, V, [v](auto a) { return combine(v, val(a, 0), 1 / val(a, 1).x[0], val(a, 0), 0); });
-    r.add("midpoint", {P, P}, P, [p](auto a) { return combine(p, val(a, 0), 0.5, val(a, 1), 0.5); });
-    // 003 Sec. 9.1: the weighted barycenter of two positions.
-    r.add("barycenter", {P, real, P, real}, P, [p](auto a) {
-      const double wa = val(a, 1).x[0], wb = val(a, 3).x[0];
-      if (wa + wb == 0) throw EvaluationError("barycenter with weights summing to 0");
-      return combine(p, val(a, 0), wa / (wa + wb), val(a, 2), wb / (wa + wb));
-    });
-    r.add("center", {Sort::bag(p)}, P, [p](auto a) { return average(p, bag(a, 0), "center"); });
-    r.add("length", {V}, real, [](auto a) {
-      const auto& x = val(a, 0).x;
-      return Value::real(std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]));
-    });
+    const std::string tp = cpp_type(p), tv = cpp_type(v);
+    r.add(
+        "+", {P, V}, P, [p](auto a) { return combine(p, val(a, 0), 1, val(a, 1), 1); }, cpp_call("combine", tp + ", {0}, 1, {1}, 1"));
+    r.add(
+        "+", {V, V}, V, [v](auto a) { return combine(v, val(a, 0), 1, val(a, 1), 1); }, cpp_call("combine", tv + ", {0}, 1, {1}, 1"));
+    r.add(
+        "-", {P, V}, P, [p](auto a) { return combine(p, val(a, 0), 1, val(a, 1), -1); }, cpp_call("combine", tp + ", {0}, 1, {1}, -1"));
+    r.add(
+        "-", {P, P}, V, [v](auto a) { return combine(v, val(a, 0), 1, val(a, 1), -1); }, cpp_call("combine", tv + ", {0}, 1, {1}, -1"));
+    r.add(
+        "-", {V, V}, V, [v](auto a) { return combine(v, val(a, 0), 1, val(a, 1), -1); }, cpp_call("combine", tv + ", {0}, 1, {1}, -1"));
+    r.add(
+        "-", {V}, V, [v](auto a) { return combine(v, val(a, 0), -1, val(a, 0), 0); }, cpp_call("combine", tv + ", {0}, -1, {0}, 0"));
+    r.add(
+        "*", {real, V}, V, [v](auto a) { return combine(v, val(a, 1), val(a, 0).x[0], val(a, 1), 0); },
+        cpp_call("combine", tv + ", {1}, ({0}).x[0], {1}, 0"));
+    r.add(
+        "*", {V, real}, V, [v](auto a) { return combine(v, val(a, 0), val(a, 1).x[0], val(a, 0), 0); },
+        cpp_call("combine", tv + ", {0}, ({1}).x[0], {0}, 0"));
+    r.add(
+        "/", {V, real}, V, [v](auto a) { return combine(v, val(a, 0), 1 / val(a, 1).x[0], val(a, 0), 0); },
+        cpp_call("combine", tv + ", {0}, 1 / ({1}).x[0], {0}, 0"));
+    r.add(
+        "midpoint", {P, P}, P, [p](auto a) { return combine(p, val(a, 0), 0.5, val(a, 1), 0.5); }, cpp_call("combine", tp + ", {0}, 0.5, {1}, 0.5"));
+    r.add(
+        "barycenter", {P, real, P, real}, P, [p](auto a) { return barycenter(p, val(a, 0), val(a, 1), val(a, 2), val(a, 3)); },
+        cpp_call("barycenter", tp + ", {0}, {1}, {2}, {3}"));
+    r.add(
+        "center", {Sort::bag(p)}, P, [p](auto a) { return average(p, bag(a, 0), "center"); }, cpp_call("average", tp + ", {0}, \"center\""));
+    r.add(
+        "length", {V}, real, [](auto a) { return length(val(a, 0)); }, cpp_call("length", "{0}"));
   }
   // Colors: the average (003 Sec. 3.4 "mix : color x color -> color").
-  r.add("mix", {color, color}, color, [](auto a) { return combine(VT::color, val(a, 0), 0.5, val(a, 1), 0.5); });
-  r.add("mix", {Sort::bag(VT::color)}, color, [](auto a) { return average(VT::color, bag(a, 0), "mix"); });
+  const std::string tc = cpp_type(VT::color);
+  r.add(
+      "mix", {color, color}, color, [](auto a) { return combine(VT::color, val(a, 0), 0.5, val(a, 1), 0.5); },
+      cpp_call("combine", tc + ", {0}, 0.5, {1}, 0.5"));
+  r.add(
+      "mix", {Sort::bag(VT::color)}, color, [](auto a) { return average(VT::color, bag(a, 0), "mix"); }, cpp_call("average", tc + ", {0}, \"mix\""));
 
   // Scalars.
-  r.add("+", {real, real}, real, [](auto a) { return Value::real(val(a, 0).x[0] + val(a, 1).x[0]); });
-  r.add("-", {real, real}, real, [](auto a) { return Value::real(val(a, 0).x[0] - val(a, 1).x[0]); });
-  r.add("*", {real, real}, real, [](auto a) { return Value::real(val(a, 0).x[0] * val(a, 1).x[0]); });
-  r.add("/", {real, real}, real, [](auto a) { return Value::real(val(a, 0).x[0] / val(a, 1).x[0]); });
-  r.add("-", {real}, real, [](auto a) { return Value::real(-val(a, 0).x[0]); });
-  r.add("+", {integer, integer}, integer, [](auto a) { return Value::integer(val(a, 0).i + val(a, 1).i); });
-  r.add("-", {integer, integer}, integer, [](auto a) { return Value::integer(val(a, 0).i - val(a, 1).i); });
-  r.add("*", {integer, integer}, integer, [](auto a) { return Value::integer(val(a, 0).i * val(a, 1).i); });
-  r.add("-", {integer}, integer, [](auto a) { return Value::integer(-val(a, 0).i); });
-  r.add("/", {integer, integer}, integer, [](auto a) {
-    if (val(a, 1).i == 0) throw EvaluationError("integer division by 0");
-    return Value::integer(val(a, 0).i / val(a, 1).i);
-  });
-  r.add("sum", {Sort::bag(VT::real)}, real, [](auto a) {
-    double s = 0;
-    for (const Value& v : bag(a, 0)) s += v.x[0];
-    return Value::real(s);
-  });
-  r.add("sum", {Sort::bag(VT::integer)}, integer, [](auto a) {
-    std::int64_t s = 0;
-    for (const Value& v : bag(a, 0)) s += v.i;
-    return Value::integer(s);
-  });
+  r.add(
+      "+", {real, real}, real, [](auto a) { return real_plus(val(a, 0), val(a, 1)); }, cpp_call("real_plus", "{0}, {1}"));
+  r.add(
+      "-", {real, real}, real, [](auto a) { return real_minus(val(a, 0), val(a, 1)); }, cpp_call("real_minus", "{0}, {1}"));
+  r.add(
+      "*", {real, real}, real, [](auto a) { return real_times(val(a, 0), val(a, 1)); }, cpp_call("real_times", "{0}, {1}"));
+  r.add(
+      "/", {real, real}, real, [](auto a) { return real_divided(val(a, 0), val(a, 1)); }, cpp_call("real_divided", "{0}, {1}"));
+  r.add(
+      "-", {real}, real, [](auto a) { return real_negated(val(a, 0)); }, cpp_call("real_negated", "{0}"));
+  r.add(
+      "+", {integer, integer}, integer, [](auto a) { return integer_plus(val(a, 0), val(a, 1)); }, cpp_call("integer_plus", "{0}, {1}"));
+  r.add(
+      "-", {integer, integer}, integer, [](auto a) { return integer_minus(val(a, 0), val(a, 1)); }, cpp_call("integer_minus", "{0}, {1}"));
+  r.add(
+      "*", {integer, integer}, integer, [](auto a) { return integer_times(val(a, 0), val(a, 1)); }, cpp_call("integer_times", "{0}, {1}"));
+  r.add(
+      "-", {integer}, integer, [](auto a) { return integer_negated(val(a, 0)); }, cpp_call("integer_negated", "{0}"));
+  r.add(
+      "/", {integer, integer}, integer, [](auto a) { return integer_divided(val(a, 0), val(a, 1)); }, cpp_call("integer_divided", "{0}, {1}"));
+  r.add(
+      "sum", {Sort::bag(VT::real)}, real, [](auto a) { return real_sum(bag(a, 0)); }, cpp_call("real_sum", "{0}"));
+  r.add(
+      "sum", {Sort::bag(VT::integer)}, integer, [](auto a) { return integer_sum(bag(a, 0)); }, cpp_call("integer_sum", "{0}"));
   for (int t = 0; t <= static_cast<int>(VT::string); ++t)
-    r.add("count", {Sort::bag(static_cast<VT>(t))}, integer, [](auto a) { return Value::integer(static_cast<std::int64_t>(bag(a, 0).size())); });
+    r.add(
+        "count", {Sort::bag(static_cast<VT>(t))}, integer, [](auto a) { return count(bag(a, 0)); }, cpp_call("count", "{0}"));
   return r;
 }
 
@@ -112,14 +121,16 @@ const FunctionRegistry& FunctionRegistry::builtin() {
   return r;
 }
 
-void FunctionRegistry::add(std::string name, std::vector<Sort> params, Sort result, std::function<Value(std::span<const Operand>)> apply) {
+void FunctionRegistry::add(std::string name, std::vector<Sort> params, Sort result, std::function<Value(std::span<const Operand>)> apply,
+                           std::string cpp) {
   for (Function& f : functions_)
     if (f.name == name && f.params == params) {
       f.result = result;
       f.apply = std::move(apply);
+      f.cpp = std::move(cpp);
       return;
     }
-  functions_.push_back({std::move(name), std::move(params), result, std::move(apply)});
+  functions_.push_back({std::move(name), std::move(params), result, std::move(apply), std::move(cpp)});
 }
 
 const Function* FunctionRegistry::find(const std::string& name, const std::vector<Sort>& args) const {

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "rewriting/algebra.hpp"
 #include "rewriting/value.hpp"
 
 namespace dartcheck {
@@ -25,18 +26,16 @@ using Operand = std::variant<Value, std::span<const Value>>;
 inline const Value& value_arg(std::span<const Operand> a, std::size_t k) { return std::get<Value>(a[k]); }
 inline std::span<const Value> multiset_arg(std::span<const Operand> a, std::size_t k) { return std::get<std::span<const Value>>(a[k]); }
 
-/// Thrown by a function that has no value at its arguments (center of an
-/// empty multiset); evaluation reports it with the term.
-class EvaluationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 struct Function {
   std::string name;
   std::vector<Sort> params;
   Sort result;
   std::function<Value(std::span<const Operand>)> apply;
+  /// The same function as a C++ expression for `dartcheck compile`, its
+  /// arguments written {0}, {1}, ... (fmt syntax): a call of
+  /// rewriting/algebra.hpp, which `apply` calls too. Empty for a function a
+  /// modeler registers (its body is not known as C++).
+  std::string cpp;
   std::string profile() const;  // "midpoint : point2 x point2 -> point2"
 };
 
@@ -48,7 +47,7 @@ class FunctionRegistry {
 
   /// Registers an overload; a second one with the same name and
   /// parameters replaces the first. `result` must be a value sort.
-  void add(std::string name, std::vector<Sort> params, Sort result, std::function<Value(std::span<const Operand>)> apply);
+  void add(std::string name, std::vector<Sort> params, Sort result, std::function<Value(std::span<const Operand>)> apply, std::string cpp = {});
 
   /// The overload of `name` whose parameters equal `args`, or nullptr.
   const Function* find(const std::string& name, const std::vector<Sort>& args) const;

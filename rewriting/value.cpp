@@ -72,24 +72,6 @@ std::string Sort::str() const {
   return kind == multiset ? fmt::format("{}•", t) : t;
 }
 
-Value Value::real(double v) {
-  Value r;
-  r.type = ValueType::real;
-  r.x[0] = v;
-  return r;
-}
-Value Value::integer(std::int64_t v) {
-  Value r;
-  r.type = ValueType::integer;
-  r.i = v;
-  return r;
-}
-Value Value::boolean(bool v) {
-  Value r;
-  r.type = ValueType::boolean;
-  r.i = v ? 1 : 0;
-  return r;
-}
 namespace {
 
 // Strings are few (Jerboa's names and tags) and immortal: a deque keeps
@@ -134,12 +116,6 @@ const std::string& Value::string() const {
 bool value_less(const Value& a, const Value& b) {
   if (a.type == ValueType::string && b.type == ValueType::string) return a.string() < b.string();
   return std::tie(a.type, a.x, a.i) < std::tie(b.type, b.x, b.i);
-}
-Value Value::coords(ValueType t, std::array<double, 3> c) {
-  Value r;
-  r.type = t;
-  r.x = c;
-  return r;
 }
 
 std::string Value::str() const {

@@ -44,11 +44,12 @@ struct Value {
   std::array<double, 3> x{};  // coordinates; real in x[0]
   std::int64_t i = 0;         // integer, boolean; a string's intern number
 
-  static Value real(double v);
-  static Value integer(std::int64_t v);
-  static Value boolean(bool v);
+  // Inline: compiled terms (rewriting/algebra.hpp) build values in loops.
+  static Value real(double v) { return {ValueType::real, {v, 0, 0}, 0}; }
+  static Value integer(std::int64_t v) { return {ValueType::integer, {}, v}; }
+  static Value boolean(bool v) { return {ValueType::boolean, {}, v ? 1 : 0}; }
   static Value text(std::string v);
-  static Value coords(ValueType t, std::array<double, 3> c);
+  static Value coords(ValueType t, std::array<double, 3> c) { return {t, c, 0}; }
 
   /// The text of a string value (empty for other types).
   const std::string& string() const;

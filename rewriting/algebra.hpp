@@ -1,0 +1,87 @@
+// The arithmetic of the built-in algebra (003 Sec. 3.4, core of
+// rewriting/term_functions.cpp), one inline function per operation. The
+// interpreter's registry calls these functions, and the C++ that `dartcheck
+// compile` generates calls the same ones (each built-in Function carries its
+// call as text), so a compiled term computes the interpreter's value with the
+// same floating-point operations in the same order: equal bit for bit under
+// one set of compiler flags.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include "rewriting/value.hpp"
+
+namespace dartcheck {
+
+/// Thrown by a function that has no value at its arguments (center of an
+/// empty multiset); evaluation reports it with the term.
+class EvaluationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+namespace algebra {
+
+/// a·p + b·q coordinate by coordinate, as type t: every point and vector
+/// operation is one of these (a sum has a = b = 1, a negation b = 0).
+inline Value combine(ValueType t, const Value& p, double a, const Value& q, double b) {
+  std::array<double, 3> c{};
+  for (std::size_t k = 0; k < 3; ++k) c[k] = a * p.x[k] + b * q.x[k];
+  return Value::coords(t, c);
+}
+
+/// The mean of a multiset's coordinates (center, mix); `what` names the
+/// function in the error of an empty multiset.
+inline Value average(ValueType t, std::span<const Value> m, const char* what) {
+  if (m.empty()) throw EvaluationError(std::string(what) + " of an empty multiset");
+  std::array<double, 3> c{};
+  for (const Value& v : m)
+    for (std::size_t k = 0; k < 3; ++k) c[k] += v.x[k];
+  for (double& x : c) x /= static_cast<double>(m.size());
+  return Value::coords(t, c);
+}
+
+/// 003 Sec. 9.1: the barycenter of p and q with weights wa and wb.
+inline Value barycenter(ValueType t, const Value& p, const Value& wa, const Value& q, const Value& wb) {
+  const double a = wa.x[0], b = wb.x[0];
+  if (a + b == 0) throw EvaluationError("barycenter with weights summing to 0");
+  return combine(t, p, a / (a + b), q, b / (a + b));
+}
+
+inline Value length(const Value& v) { return Value::real(std::sqrt(v.x[0] * v.x[0] + v.x[1] * v.x[1] + v.x[2] * v.x[2])); }
+inline Value to_real(const Value& i) { return Value::real(static_cast<double>(i.i)); }
+inline Value coords(ValueType t, const Value& a, const Value& b) { return Value::coords(t, {a.x[0], b.x[0], 0}); }
+inline Value coords(ValueType t, const Value& a, const Value& b, const Value& c) { return Value::coords(t, {a.x[0], b.x[0], c.x[0]}); }
+
+inline Value real_plus(const Value& a, const Value& b) { return Value::real(a.x[0] + b.x[0]); }
+inline Value real_minus(const Value& a, const Value& b) { return Value::real(a.x[0] - b.x[0]); }
+inline Value real_times(const Value& a, const Value& b) { return Value::real(a.x[0] * b.x[0]); }
+inline Value real_divided(const Value& a, const Value& b) { return Value::real(a.x[0] / b.x[0]); }
+inline Value real_negated(const Value& a) { return Value::real(-a.x[0]); }
+inline Value integer_plus(const Value& a, const Value& b) { return Value::integer(a.i + b.i); }
+inline Value integer_minus(const Value& a, const Value& b) { return Value::integer(a.i - b.i); }
+inline Value integer_times(const Value& a, const Value& b) { return Value::integer(a.i * b.i); }
+inline Value integer_negated(const Value& a) { return Value::integer(-a.i); }
+inline Value integer_divided(const Value& a, const Value& b) {
+  if (b.i == 0) throw EvaluationError("integer division by 0");
+  return Value::integer(a.i / b.i);
+}
+
+inline Value real_sum(std::span<const Value> m) {
+  double s = 0;
+  for (const Value& v : m) s += v.x[0];
+  return Value::real(s);
+}
+inline Value integer_sum(std::span<const Value> m) {
+  std::int64_t s = 0;
+  for (const Value& v : m) s += v.i;
+  return Value::integer(s);
+}
+inline Value count(std::span<const Value> m) { return Value::integer(static_cast<std::int64_t>(m.size())); }
+
+}  // namespace algebra
+}  // namespace dartcheck
