@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/embedding_checks.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
@@ -19,10 +20,15 @@
 namespace dartcheck::cli {
 namespace {
 
-std::string failing(const RuleVerdict& v) {
+// The failing conditions of the static checker's verdict, as `check`
+// gives it: the topological ones (002) and the embedding ones (003's
+// Theorems 2 and 4 for terms, Jerboa's presence checks). Empty: consistent.
+std::string failing(const Catalog& catalog, const CatalogRule& r) {
   std::string out;
-  for (const auto& c : v.conditions)
+  for (const auto& c : check_rule(r.rule, r.words).conditions)
     if (!c.holds) fmt::format_to(std::back_inserter(out), "{}{}", out.empty() ? "" : " ", c.name());
+  for (const std::string& name : analysis::failing_names(analysis::embedding_checks(catalog, r)))
+    fmt::format_to(std::back_inserter(out), "{}{}", out.empty() ? "" : " ", name);
   return out;
 }
 
@@ -47,15 +53,14 @@ int compile(const CompileOptions& o) {
   std::size_t inconsistent = 0, unsupported = 0;
   for (const CatalogRule& r : catalog.rules) {
     if (!o.rule.empty() && r.rule.name() != o.rule) continue;
-    const RuleVerdict verdict = check_rule(r.rule, r.words);
-    if (!verdict.consistent()) {
+    if (const std::string fails = failing(catalog, r); !fails.empty()) {
       ++inconsistent;
       if (!o.rule.empty()) {
         fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled\n",
-                   printable(r.rule.name()), printable(r.location.str()), failing(verdict));
+                   printable(r.rule.name()), printable(r.location.str()), fails);
         return violation;
       }
-      fmt::print(stderr, "skipped {} ({}): fails {}\n", printable(r.rule.name()), printable(r.location.str()), failing(verdict));
+      fmt::print(stderr, "skipped {} ({}): fails {}\n", printable(r.rule.name()), printable(r.location.str()), fails);
       continue;
     }
     if (const auto why = compiler::not_compilable(r)) {

@@ -6,43 +6,12 @@
 
 #include <fmt/format.h>
 
+#include "compiler/cpp_text.hpp"
+#include "compiler/term_compiler.hpp"
 #include "rewriting/scheme_application.hpp"
 
 namespace dartcheck::compiler {
 namespace {
-
-// A C++ string literal holding exactly the bytes of s (names come from
-// files: quotes, backslashes and control bytes are escaped, other bytes
-// as octal, so a name can neither end the literal nor a comment line).
-std::string cpp_literal(std::string_view s) {
-  std::string out = "\"";
-  for (const unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      out += fmt::format("\\{:03o}", c);
-    }
-  }
-  return out + "\"";
-}
-
-// Text from a file inside a // comment: as it is when it is printable
-// ASCII and cannot continue the comment onto the next line (a trailing
-// backslash), otherwise as a literal.
-std::string comment_text(std::string_view s) {
-  const bool plain = std::all_of(s.begin(), s.end(), [](char c) { return c >= 0x20 && c < 0x7f; }) && !s.ends_with('\\');
-  return plain ? std::string(s) : cpp_literal(s);
-}
-
-int generator_index(const std::vector<ConjWord>& gens, const ConjWord& w) {
-  return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
-}
-
-// The position of p·w as an expression in `p` (ε stays at p).
-std::string shifted(int generator, std::string_view p) { return generator < 0 ? std::string(p) : fmt::format("ws.shift[{}][{}]", generator, p); }
 
 // The statements of `follow` for one generator: its letters as links.
 std::string follow_case(const ConjWord& w) {
@@ -320,10 +289,7 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f) {
 
 }  // namespace
 
-std::optional<std::string> not_compilable(const Operation& op) {
-  if (op.terms) return "it has embedding terms, and this version of dartcheck compile generates the topology only (issue 41)";
-  return std::nullopt;
-}
+std::optional<std::string> not_compilable(const Operation& op) { return terms_not_compilable(op); }
 
 std::string function_name(std::string_view rule_name, const std::vector<std::string>& taken) {
   std::string base;
@@ -353,19 +319,31 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
     for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, " w{} = {}", k, f.gens[k].str());
     fmt::format_to(out, "\n");
   }
+  std::optional<TermCode> terms;
+  if (op.terms) {
+    terms.emplace(op, f);
+    fmt::format_to(out, "// Terms ({} instantiation, 003 Sec. 6.3):\n", op.terms->instantiation == Instantiation::extended ? "extended" : "direct");
+    for (const char side : {'L', 'R'})
+      for (const NodeTerm& t : side == 'L' ? op.terms->left : op.terms->right)
+        fmt::format_to(out, "//   {} {}: {} = {}\n", side, comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()));
+  }
+  fmt::format_to(out, "inline Refusal {}({}, std::span<const Dart> hooks, Workspace& ws) {{\n", function, terms ? "EmbeddedMap& em" : "Map& g");
+  if (terms) terms->lookups(out);
   fmt::format_to(out,
-                 "inline Refusal {}(Map& g, std::span<const Dart> hooks, Workspace& ws) {{\n"
                  "  if (hooks.size() != {})\n"
                  "    return ws.refuse(Refusal::bad_hooks, \"the rule needs {} hook dart{}, one per component of L\");\n"
                  "  for (const Dart h : hooks)\n"
                  "    if (h >= g.size()) return ws.refuse(Refusal::bad_hooks, \"hook dart \" + std::to_string(h) + \" is not below \" + "
                  "std::to_string(g.size()));\n",
-                 function, core.hooks().size(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
+                 core.hooks().size(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
   if (!op.words.scheme) {
     fmt::format_to(
         out, "  if (g.model().name != {})\n    return ws.refuse(Refusal::bad_hooks, \"the rule is for \" {} \", the map is a \" + g.model().name);\n",
         cpp_literal(core.model().name), cpp_literal(core.model().name));
     emit_dpo_match(out, op);
+    // The interpreter checks a DPO rule's terms on the match, then applies
+    // the rule (dangling, representability).
+    if (terms) terms->before_rewrite(out);
   } else {
     // P_v (002 Def. 20).
     fmt::format_to(
@@ -386,7 +364,10 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
       emit_propagation(out, op, f);
   }
   if (emit_conditions(out, op, f)) {
+    // A scheme's match includes its conditions (match_scheme), then terms.
+    if (terms && op.words.scheme) terms->before_rewrite(out);
     emit_rewrite(out, op, f);
+    if (terms) terms->after_rewrite(out);
     fmt::format_to(out, "  return Refusal::none;\n");
   }
   fmt::format_to(out, "}}\n");
@@ -396,30 +377,48 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
 std::string compile_header(const std::vector<CompileUnit>& units, std::string_view ns, std::string_view source) {
   std::string code;
   Out out(code);
-  fmt::format_to(
-      out,
-      "// Generated by `dartcheck compile` from {}; regenerate rather than edit.\n"
-      "// Each function applies one rule or rule scheme that dartcheck's static checker\n"
-      "// calls consistent, exactly as dartcheck's interpreter applies it (docs/compile.md).\n"
-      "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <span>\n#include <string>\n\n"
-      "#include \"rewriting/compiled_runtime.hpp\"\n\nnamespace {} {{\n\n"
-      "using dartcheck::Dart;\nusing dartcheck::Map;\nusing dartcheck::no_dart;\nusing dartcheck::Refusal;\n"
-      "using dartcheck::compiled::check_match;\nusing dartcheck::combinatorial_violation;\nusing dartcheck::compiled::fill_holes;\nusing "
-      "dartcheck::compiled::propagate;\n"
-      "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::Workspace;\n\n",
-      comment_text(source), ns);
+  fmt::format_to(out,
+                 "// Generated by `dartcheck compile` from {}; regenerate rather than edit.\n"
+                 "// Each function applies one rule or rule scheme that dartcheck's static checker\n"
+                 "// calls consistent, exactly as dartcheck's interpreter applies it (docs/compile.md).\n"
+                 "#pragma once\n\n#include <algorithm>\n#include <array>\n#include <cstddef>\n#include <cstdint>\n#include <limits>\n#include "
+                 "<span>\n#include <string>\n#include <vector>\n\n"
+                 "#include \"rewriting/compiled_runtime.hpp\"\n\nnamespace {} {{\n\n"
+                 "using dartcheck::Dart;\nusing dartcheck::Map;\nusing dartcheck::no_dart;\nusing dartcheck::Refusal;\n"
+                 "using dartcheck::compiled::check_match;\nusing dartcheck::combinatorial_violation;\nusing dartcheck::compiled::fill_holes;\nusing "
+                 "dartcheck::compiled::propagate;\n"
+                 "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::Workspace;\n"
+                 "// Terms (rewriting/compiled_terms.hpp).\n"
+                 "using dartcheck::dims_generators;\nusing dartcheck::EmbeddedMap;\nusing dartcheck::Embedding;\nusing dartcheck::EvaluationError;\n"
+                 "using dartcheck::Value;\nusing dartcheck::ValueType;\nusing dartcheck::Word;\nusing dartcheck::compiled::CollectSite;\n"
+                 "using dartcheck::compiled::end_writes;\nusing dartcheck::compiled::neighbour;\nusing dartcheck::compiled::overlap;\n"
+                 "using dartcheck::compiled::read;\nusing dartcheck::compiled::Source;\nusing dartcheck::compiled::TermWorkspace;\n"
+                 "using dartcheck::compiled::unlabel;\nusing dartcheck::compiled::write_orbit;\n\n",
+                 comment_text(source), ns);
   std::vector<std::string> names;
   for (const CompileUnit& u : units) {
     names.push_back(function_name(u.operation->rule.name(), names));
     code += compile_operation(u, names.back()) + "\n";
   }
-  fmt::format_to(out,
-                 "/// A compiled operation: the rule's name and its function.\n"
-                 "struct CompiledOperation {{\n  const char* name;\n  Refusal (*apply)(Map&, std::span<const Dart>, Workspace&);\n}};\n\n"
-                 "inline constexpr std::array<CompiledOperation, {}> operations{{{{\n",
-                 units.size());
-  for (std::size_t k = 0; k < units.size(); ++k) fmt::format_to(out, "    {{{}, &{}}},\n", cpp_literal(units[k].operation->rule.name()), names[k]);
-  fmt::format_to(out, "}}}};\n\n}}  // namespace {}\n", ns);
+  // Two tables: topological rules apply to a Map, rules with terms to an
+  // EmbeddedMap.
+  std::size_t topological = 0;
+  for (const CompileUnit& u : units) topological += !u.operation->terms;
+  fmt::format_to(
+      out,
+      "/// A compiled operation: the rule's name and its function.\n"
+      "struct CompiledOperation {{\n  const char* name;\n  Refusal (*apply)(Map&, std::span<const Dart>, Workspace&);\n}};\n"
+      "/// A compiled operation with embedding terms.\n"
+      "struct CompiledEmbeddedOperation {{\n  const char* name;\n  Refusal (*apply)(EmbeddedMap&, std::span<const Dart>, Workspace&);\n}};\n\n");
+  for (const bool embedded : {false, true}) {
+    fmt::format_to(out, "inline constexpr std::array<{}, {}> {}{{{{\n", embedded ? "CompiledEmbeddedOperation" : "CompiledOperation",
+                   embedded ? units.size() - topological : topological, embedded ? "embedded_operations" : "operations");
+    for (std::size_t k = 0; k < units.size(); ++k)
+      if (units[k].operation->terms.has_value() == embedded)
+        fmt::format_to(out, "    {{{}, &{}}},\n", cpp_literal(units[k].operation->rule.name()), names[k]);
+    fmt::format_to(out, "}}}};\n");
+  }
+  fmt::format_to(out, "\n}}  // namespace {}\n", ns);
   return code;
 }
 

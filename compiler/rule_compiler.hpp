@@ -27,8 +27,8 @@ struct CompileUnit {
 };
 
 /// Why an operation cannot be compiled (yet), or nullopt when it can.
-/// Embedding terms are not compiled by this version: the rule's topology
-/// alone would be a different operation.
+/// A rule with terms compiles when every function its terms call is one
+/// of the built-in algebra's (compiler/term_compiler.hpp).
 std::optional<std::string> not_compilable(const Operation& op);
 
 /// A C++ identifier for a rule name: letters, digits and '_' kept, every

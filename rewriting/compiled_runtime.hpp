@@ -3,10 +3,14 @@
 // and the tables below. Generated code includes this header and nothing
 // else of dartcheck, so the header set it depends on is: core/map.hpp,
 // core/model.hpp, rewriting/match.hpp (Refusal), rewriting/derivation.hpp
-// (compact) and this file.
+// (compact) and this file; a rule with embedding terms adds
+// rewriting/compiled_terms.hpp with rewriting/embedded_map.hpp (the map and
+// its embeddings), rewriting/value.hpp, rewriting/algebra.hpp (the
+// built-in functions) and core/orbit.hpp.
 //
 // A compiled rule is a function
 //     Refusal NAME(Map& g, std::span<const Dart> hooks, compiled::Workspace& ws);
+// (EmbeddedMap& instead of Map& for a rule with embedding terms)
 // that applies the rule or rule scheme at the hook darts exactly as
 // dartcheck::apply does (same match, same refusals before any write, same
 // darts created and renumbered), writing the match, comatch and renumbering
@@ -21,6 +25,7 @@
 #include <vector>
 
 #include "core/map.hpp"
+#include "rewriting/compiled_terms.hpp"
 #include "rewriting/derivation.hpp"
 #include "rewriting/match.hpp"
 
@@ -46,6 +51,8 @@ struct Workspace {
   std::vector<std::pair<Dart, Dart>> moved;
   /// Why the last application was refused.
   std::string why;
+  /// The tables of a rule with embedding terms (rewriting/compiled_terms.hpp).
+  TermWorkspace terms;
 
   // Per-dart marks (none between applications) and the walk's queue.
   std::vector<std::uint32_t> position;

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <filesystem>
 #include <numeric>
 #include <random>
@@ -28,7 +29,11 @@
 #include "generators/random_maps.hpp"
 #include "analysis/map_sources.hpp"
 #include "io/catalog.hpp"
+#include "generators/random_embedding.hpp"
+#include "io/mesh_io.hpp"
 #include "rewriting/application.hpp"
+#include "rewriting/embedded_application.hpp"
+#include "rewriting/term_eval.hpp"
 
 #include DARTCHECK_COMPILED_SEED
 #include DARTCHECK_COMPILED_EVENT
@@ -248,12 +253,148 @@ TEST(CompiledOperations, HostileNamesCompileAndAgree) {
   expect_agreement(compare_catalog(source("tests/data/hostile-names.yaml"), ops), ops.size());
 }
 
-// The catalogs whose rules all carry embedding terms compile to empty
-// tables for now (terms are the next step of issue 41); their headers
-// still compile under the project's flags.
-TEST(CompiledOperations, TermCatalogsCompileToNoFunctionYet) {
-  EXPECT_EQ(compiled_embedding_operations::operations.size(), 0U);
-  EXPECT_EQ(compiled_subdivision_operations::operations.size(), 0U);
+// Rules with embedding terms (003): the compiled function against the
+// interpreter's EmbeddedRewriter with one evaluation per orbit (what a
+// consistent rule allows, 003 Thm 4). Property: both refuse with the same
+// Refusal, leaving map and values unchanged; or both give equal maps and, at
+// every dart, the same value of every embedding, bit for bit (the compiled
+// terms call the interpreter's own arithmetic, rewriting/algebra.hpp), and
+// no orbit given two values. Hosts: random maps with random values from a
+// small pool (so that neighbouring orbits often share one), the catalog's
+// maps with such values, the catalog's meshes with their positions, and, for the subdivision catalog, the
+// meshes after the first step (the second step needs its labels).
+
+// Every embedding's value at every dart, as bits (Value's == would call
+// 0.0 and -0.0 equal).
+std::vector<std::vector<std::optional<std::array<std::uint64_t, 5>>>> bits_of(const EmbeddedMap& g) {
+  std::vector<std::vector<std::optional<std::array<std::uint64_t, 5>>>> out;
+  for (const Embedding& e : g.embeddings) {
+    out.emplace_back();
+    for (Dart d = 0; d < g.map.size(); ++d) {
+      const Value* v = e.value(d);
+      if (!v) {
+        out.back().push_back(std::nullopt);
+        continue;
+      }
+      out.back().push_back(std::array<std::uint64_t, 5>{static_cast<std::uint64_t>(v->type), std::bit_cast<std::uint64_t>(v->x[0]),
+                                                        std::bit_cast<std::uint64_t>(v->x[1]), std::bit_cast<std::uint64_t>(v->x[2]),
+                                                        static_cast<std::uint64_t>(v->i)});
+    }
+  }
+  return out;
+}
+
+template <class Compiled>
+void compare_embedded_at(const Operation& op, const Compiled& compiled, const EmbeddedMap& host, const std::vector<Dart>& hooks,
+                         compiled::Workspace& ws, Tally& tally) {
+  EmbeddedMap interpreted = host, generated = host;
+  EmbeddedRewriter rewriter(op.rule, op.words, *op.terms, interpreted, Evaluation::one_per_orbit);
+  const auto expected = rewriter.apply(hooks, false);
+  const Refusal got = compiled.apply(generated, hooks, ws);
+  const std::string where =
+      fmt::format("rule '{}' at hooks {} of a {}-dart {}", compiled.name, fmt::join(hooks, ","), host.map.size(), host.map.model().name);
+  ASSERT_EQ(refusal_name(got), refusal_name(expected.refusal)) << where << "\n  interpreter: " << expected.why << "\n  compiled: " << ws.why;
+  if (!expected.ok()) {
+    ++tally.refused;
+    ASSERT_TRUE(generated.map == host.map) << where << ": a refusal changed the map";
+    ASSERT_EQ(bits_of(generated), bits_of(host)) << where << ": a refusal changed a value";
+    return;
+  }
+  ++tally.applied;
+  ASSERT_TRUE(generated.map == interpreted.map) << where << ": the maps differ";
+  ASSERT_EQ(bits_of(generated), bits_of(interpreted)) << where << ": the values differ";
+  ASSERT_TRUE(expected.value->conflicts.empty()) << where << ": " << expected.value->conflicts.front();
+  ASSERT_EQ(ws.terms.conflicts, 0U) << where;
+}
+
+template <std::size_t N, class Compiled>
+Tally compare_embedded_catalog(const std::string& file, const std::array<Compiled, N>& operations) {
+  const Catalog catalog = read_catalog(file);
+  std::mt19937 rng(43);
+  Tally tally;
+  compiled::Workspace ws;
+  const EmbeddingSignature* pos = nullptr;
+  for (const EmbeddingSignature& s : catalog.signatures)
+    if (s.name == "pos") pos = &s;
+  // The meshes with positions, and each after every rule at dart 0 (a
+  // later rule may need an earlier one's labels).
+  std::vector<EmbeddedMap> meshes;
+  for (const auto& f : std::filesystem::directory_iterator(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/meshes"))
+    if (pos && f.path().extension() == ".off") meshes.push_back(mesh_with_positions(Model::gmap(2), read_mesh(f.path().string()), *pos));
+  for (std::size_t m = 0, n = meshes.size(); m < n; ++m)
+    for (const Compiled& c : operations) {
+      EmbeddedMap next = meshes[m];
+      const Dart hook = 0;
+      if (c.apply(next, {&hook, 1}, ws) == Refusal::none) meshes.push_back(std::move(next));
+    }
+  for (const Compiled& c : operations) {
+    const CatalogRule* rule = catalog.find_rule(c.name);
+    EXPECT_NE(rule, nullptr) << c.name << " is not in " << file;
+    if (!rule) continue;
+    ++tally.rules;
+    const std::size_t applied_before = tally.applied;
+    const Model& model = rule->rule.model();
+    std::vector<EmbeddedMap> hosts;
+    for (std::size_t k = 0; k < random_maps(); ++k)
+      hosts.push_back(embed_randomly(build_random_map(model, draw_recipe(rng, 1 + k % 6, model.dimension())), catalog.signatures, rng));
+    for (const EmbeddedMap& m : meshes)
+      if (m.map.model() == model) hosts.push_back(m);
+    // L and R read as maps, with random values, and with L's closed terms
+    // (literals such as Fig. 14a's point2(1, 1)) on their darts' orbits.
+    for (const TopoGraph* side : {&rule->rule.left(), &rule->rule.right()})
+      if (auto m = side_as_map(*side, model, true); m && m->size() > 0) {
+        EmbeddedMap g = embed_randomly(*m, catalog.signatures, rng);
+        hosts.push_back(g);
+        TermEvaluator ev(g);
+        for (const NodeTerm& t : rule->terms->left)
+          if (t.term.variables().empty() && side == &rule->rule.left())
+            for (std::size_t e = 0; e < g.embeddings.size(); ++e)
+              if (g.embeddings[e].signature.name == t.embedding)
+                g.label_orbit(e, *side->find(t.node), ev.value(t.term, std::span<const std::string>{}, std::span<const Dart>{}));
+        hosts.push_back(std::move(g));
+      }
+    // The catalog's maps (the papers' figures), each with random values.
+    for (const MapSource& source : catalog.maps)
+      if (Map m = analysis::build_source(source); m.model() == model)
+        for (std::size_t k = 0; k < random_maps(); ++k) hosts.push_back(embed_randomly(m, catalog.signatures, rng));
+    const std::size_t hook_count = rule->rule.hooks().size();
+    for (const EmbeddedMap& host : hosts) {
+      if (host.map.size() == 0) continue;
+      if (hook_count == 1) {
+        for (Dart d = 0; d < host.map.size(); ++d) {
+          compare_embedded_at(*rule, c, host, {d}, ws, tally);
+          if (::testing::Test::HasFatalFailure()) return tally;
+        }
+      } else {
+        for (int k = 0; k < 40; ++k) {
+          std::vector<Dart> hooks;
+          for (std::size_t h = 0; h < hook_count; ++h) hooks.push_back(static_cast<Dart>(rng() % host.map.size()));
+          compare_embedded_at(*rule, c, host, hooks, ws, tally);
+          if (::testing::Test::HasFatalFailure()) return tally;
+        }
+      }
+    }
+    // A map without an embedding the rule labels is refused alike.
+    EmbeddedMap bare(hosts.front().map);
+    compare_embedded_at(*rule, c, bare, std::vector<Dart>(hook_count, 0), ws, tally);
+    EXPECT_GT(tally.applied, applied_before) << "rule " << c.name << " never applied";
+  }
+  return tally;
+}
+
+TEST(CompiledOperations, EmbeddingCatalogAgreesWithTheInterpreterBitForBit) {
+  const auto& ops = compiled_embedding_operations::embedded_operations;
+  EXPECT_EQ(compiled_embedding_operations::operations.size(), 0U);  // every rule has terms
+  ASSERT_EQ(ops.size(), 14U);                                       // the consistent rules (test_embedded_application counts them too)
+  const Tally t = compare_embedded_catalog(source("catalogs/embedding-operations.yaml"), ops);
+  expect_agreement(t, ops.size());
+}
+
+TEST(CompiledOperations, SubdivisionCatalogAgreesWithTheInterpreterBitForBit) {
+  const auto& ops = compiled_subdivision_operations::embedded_operations;
+  ASSERT_EQ(ops.size(), 2U);  // catmull-clark-points, catmull-clark
+  const Tally t = compare_embedded_catalog(source("catalogs/subdivision-operations.yaml"), ops);
+  expect_agreement(t, ops.size());
 }
 
 }  // namespace

@@ -1,0 +1,370 @@
+#include "compiler/term_compiler.hpp"
+
+#include <cmath>
+#include <map>
+
+#include <fmt/args.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "compiler/cpp_text.hpp"
+#include "rewriting/term_functions.hpp"
+
+namespace dartcheck::compiler {
+namespace {
+
+// Every function call of a term, depth first.
+void for_each_call(const Term& t, const auto& f) {
+  if (t.kind == Term::Kind::call) f(t);
+  for (const Term& a : t.args) for_each_call(a, f);
+}
+
+// `x.pi` on node x for its own embedding pi (the interpreter's own_value):
+// checked by a read, not an evaluation and a comparison.
+bool own_value(const NodeTerm& t) {
+  return t.term.kind == Term::Kind::access && t.term.name == t.embedding && t.term.args[0].kind == Term::Kind::variable &&
+         t.term.args[0].name == t.node;
+}
+
+// A double as a C++ literal that reads back to the same bits.
+std::string double_literal(double x) {
+  if (std::isnan(x)) return "std::numeric_limits<double>::quiet_NaN()";
+  if (std::isinf(x)) return x > 0 ? "std::numeric_limits<double>::infinity()" : "-std::numeric_limits<double>::infinity()";
+  return fmt::format("{:a}", x);  // hexadecimal: exact
+}
+
+}  // namespace
+
+std::optional<std::string> terms_not_compilable(const Operation& op) {
+  if (!op.terms) return std::nullopt;
+  std::optional<std::string> why;
+  auto check = [&](const NodeTerm& t) {
+    for_each_call(t.term, [&](const Term& c) {
+      if (!why && (!c.function || c.function->cpp.empty()))
+        why = fmt::format("its term {} calls {}, a function with no C++ text (not one of the built-in algebra's)", t.term.str(), c.name);
+    });
+  };
+  for (const NodeTerm& t : op.terms->left) check(t);
+  for (const NodeTerm& t : op.terms->right) check(t);
+  return why;
+}
+
+struct TermCode::Plan {
+  const Operation& op;
+  const SchemeFacts& facts;
+  const RuleTerms& terms;
+  std::vector<const EmbeddingSignature*> used;
+  std::vector<std::string> embeddings;  // every embedding a term names: e0, e1, ...
+  std::vector<NodeId> left_node, right_node, stored_at;
+  std::vector<char> closed, left_closed;
+  std::map<const Term*, std::size_t> site;  // collect -> CollectSite number (and bag)
+  std::vector<const Term*> sites;
+
+  Plan(const Operation& o, const SchemeFacts& f) : op(o), facts(f), terms(*o.terms) {
+    const Rule& r = op.rule;
+    used = terms.used();
+    for (const EmbeddingSignature* e : used) embedding(e->name);
+    for (const NodeTerm& x : terms.left) left_node.push_back(*r.left().find(x.node));
+    // As the interpreter: R's term is a value G keeps when it repeats its
+    // preserved node's L label or is `x.pi` for its own embedding.
+    for (const NodeTerm& x : terms.right) {
+      right_node.push_back(*r.right().find(x.node));
+      const NodeId l = r.to_left(right_node.back());
+      const Term* before = l == no_node ? nullptr : terms.find('L', r.left().name(l), x.embedding);
+      NodeId at = before && before->same(x.term) ? l : no_node;
+      if (at == no_node && x.term.kind == Term::Kind::access && x.term.name == x.embedding && x.term.args[0].kind == Term::Kind::variable)
+        if (const auto v = r.left().find(x.term.args[0].name)) at = *v;
+      stored_at.push_back(at);
+    }
+    const TopoGraph &L = r.left(), &R = r.right();
+    for (const EmbeddingSignature* sig : used) {
+      bool all = true;
+      for (NodeId y = 0; all && y < R.node_count(); ++y)
+        for (Dim i : sig->orbit) all = all && R.out_arcs(y, i).size() == 1;
+      closed.push_back(all);
+      bool left = true;
+      for (NodeId x = 0; left && x < L.node_count(); ++x)
+        for (Dim i : sig->orbit) left = left && !L.out_arcs(x, i).empty();
+      left_closed.push_back(left);
+    }
+    auto number = [&](const Term& t, const auto& self) -> void {
+      if (t.kind == Term::Kind::access || t.kind == Term::Kind::collect) embedding(t.name);
+      if (t.kind == Term::Kind::collect) {
+        site[&t] = sites.size();
+        sites.push_back(&t);
+      }
+      for (const Term& a : t.args) self(a, self);
+    };
+    for (const NodeTerm& x : terms.left) number(x.term, number);
+    for (const NodeTerm& x : terms.right) number(x.term, number);
+  }
+
+  std::size_t embedding(const std::string& name) {
+    const auto it = std::find(embeddings.begin(), embeddings.end(), name);
+    if (it != embeddings.end()) return static_cast<std::size_t>(it - embeddings.begin());
+    embeddings.push_back(name);
+    return embeddings.size() - 1;
+  }
+  std::size_t index_of(const std::string& name) const {
+    return static_cast<std::size_t>(std::find(embeddings.begin(), embeddings.end(), name) - embeddings.begin());
+  }
+  bool extended() const { return terms.instantiation == Instantiation::extended; }
+
+  // The dart of a Node term at pattern position p.
+  std::string node(const Term& t) const {
+    if (t.kind == Term::Kind::variable) {
+      if (const auto x = op.rule.left().find(t.name)) return fmt::format("match[{} * np + p]", *x);
+      return fmt::format("(throw EvaluationError({}), no_dart)", cpp_literal(fmt::format("node variable '{}' is not bound", t.name)));
+    }
+    return fmt::format("neighbour(g, {}, {}, {})", t.dim, node(t.args[0]), cpp_literal(t.str()));
+  }
+
+  // Statements computing the value of t into a fresh variable; its name.
+  std::string value(const Term& t, std::string& code, int& next) const {
+    const std::string v = fmt::format("v{}", next++);
+    switch (t.kind) {
+      case Term::Kind::literal:
+      case Term::Kind::parameter: {
+        const Value& x = t.literal;
+        if (x.type == ValueType::string)
+          fmt::format_to(std::back_inserter(code), "    const Value {} = Value::text({});\n", v, cpp_literal(x.string()));
+        else
+          fmt::format_to(std::back_inserter(code), "    const Value {} = Value{{ValueType::{}, {{{}, {}, {}}}, {}}};  // {}\n", v, type_name(x.type),
+                         double_literal(x.x[0]), double_literal(x.x[1]), double_literal(x.x[2]), x.i, comment_text(t.str()));
+        return v;
+      }
+      case Term::Kind::access:
+        fmt::format_to(std::back_inserter(code), "    const Value {} = read(e{}, {}, {}, {});\n", v, index_of(t.name), node(t.args[0]),
+                       cpp_literal(t.name), cpp_literal(t.str()));
+        return v;
+      case Term::Kind::collect: {
+        const std::size_t s = site.at(&t);
+        fmt::format_to(std::back_inserter(code), "    const std::span<const Value> {} = tw.collect({}, site{}, g, e{}, {});  // {}\n", v, s, s,
+                       index_of(t.name), node(t.args[0]), comment_text(t.str()));
+        return v;
+      }
+      case Term::Kind::call: {
+        fmt::dynamic_format_arg_store<fmt::format_context> args;
+        for (const Term& a : t.args) args.push_back(value(a, code, next));
+        fmt::format_to(std::back_inserter(code), "    const Value {} = {};  // {}\n", v, fmt::vformat(t.function->cpp, args), comment_text(t.str()));
+        return v;
+      }
+      case Term::Kind::variable:
+      case Term::Kind::neighbour:
+        break;
+    }
+    fmt::format_to(std::back_inserter(code), "    const Value {} = (throw EvaluationError({}), Value{{}});\n", v,
+                   cpp_literal(fmt::format("'{}' is a node, not a value", t.str())));
+    return v;
+  }
+
+  // Unions of one side's instances along its arcs in <o>.
+  void classes(Out out, const TopoGraph& side, const std::vector<ConjWord>& words, const std::vector<Dim>& orbit, const std::string& table) const {
+    fmt::format_to(out, "    TermWorkspace::reset({}, {} * np);\n", table, side.node_count());
+    bool any = false;
+    for (ArcId e = 0; e < side.arc_count(); ++e) {
+      const auto& a = side.arc(e);
+      if (std::find(orbit.begin(), orbit.end(), a.label) == orbit.end()) continue;
+      if (!any) fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) {{\n");
+      any = true;
+      const int k = generator_index(facts.gens, arc_word(words, e));
+      fmt::format_to(
+          out, "      TermWorkspace::unite({}, static_cast<std::uint32_t>({} * np + p), static_cast<std::uint32_t>({} * np + {}));  // {}\n", table,
+          a.source, a.target, shifted(k, "p"), comment_text(fmt::format("{} -{}-> {}", side.name(a.source), a.label, side.name(a.target))));
+    }
+    if (any) fmt::format_to(out, "    }}\n");
+    fmt::format_to(out, "    TermWorkspace::flatten({});\n", table);
+  }
+
+  std::string instance_name(const TopoGraph& side, NodeId x) const {
+    return op.words.scheme ? fmt::format("std::string({}) + \"@\" + std::to_string(ws.pattern[p])", cpp_literal(side.name(x)))
+                           : fmt::format("std::string({})", cpp_literal(side.name(x)));
+  }
+};
+
+TermCode::TermCode(const Operation& op, const SchemeFacts& facts) : plan_(std::make_unique<Plan>(op, facts)) {}
+TermCode::~TermCode() = default;
+
+void TermCode::lookups(Out out) const {
+  const Plan& p = *plan_;
+  fmt::format_to(out, "  Map& g = em.map;\n  TermWorkspace& tw = ws.terms;\n");
+  for (std::size_t k = 0; k < p.embeddings.size(); ++k)
+    fmt::format_to(out, "  Embedding* const e{} = em.find({});\n", k, cpp_literal(p.embeddings[k]));
+  for (const EmbeddingSignature* e : p.used) {
+    const std::string why = fmt::format("the rule labels {} <{}>, and the map has no embedding {}", e->name, fmt::join(e->orbit, ","), e->name);
+    fmt::format_to(out, "  if (!e{}) return ws.refuse(Refusal::no_value, {});\n", p.index_of(e->name), cpp_literal(why));
+  }
+  for (std::size_t s = 0; s < p.sites.size(); ++s)
+    fmt::format_to(out, "  static const CollectSite site{}({}, {{{}}});\n", s, cpp_literal(p.sites[s]->name), fmt::join(p.sites[s]->orbit, ", "));
+}
+
+void TermCode::before_rewrite(Out out) const {
+  const Plan& p = *plan_;
+  const Rule& r = p.op.rule;
+  const TopoGraph &L = r.left(), &R = r.right();
+  fmt::format_to(out, "  // Terms (003 Def. 10): L's labels, then one source per class of R.\n  tw.prepare({}, {});\n", p.used.size(),
+                 p.sites.size());
+  fmt::format_to(out, "  {{\n  [[maybe_unused]] const Dart* const match = ws.match.data();\n  try {{\n");
+  for (std::size_t k = 0; k < p.terms.left.size(); ++k) {
+    const NodeTerm& t = p.terms.left[k];
+    const NodeId x = p.left_node[k];
+    const std::size_t e = p.index_of(t.embedding);
+    fmt::format_to(out, "  for (std::size_t p = 0; p < np; ++p) {{  // L: {} labeled {} = {}\n    const Dart d = match[{} * np + p];\n",
+                   comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()), x);
+    if (own_value(t)) {
+      fmt::format_to(out, "    if (!e{0}->value(d)) (void)read(e{0}, d, {1}, {2});\n", e, cpp_literal(t.embedding), cpp_literal(t.term.str()));
+    } else {
+      std::string code;
+      int next = 0;
+      const std::string v = p.value(t.term, code, next);
+      code += fmt::format(
+          "    const Value* have = e{}->value(d);\n"
+          "    if (!have || !(*have == {}))\n"
+          "      return ws.refuse(Refusal::label_mismatch, \"node \" + {} + \" of L is labeled \" {} \" = \" + {}.str() + \", but dart \" + "
+          "std::to_string(d) + \" has \" + (have ? have->str() : std::string(\"no value\")));\n",
+          e, v, p.instance_name(L, x), cpp_literal(fmt::format("{} = {}", t.embedding, t.term.str())), v);
+      out = std::copy(code.begin(), code.end(), out);
+    }
+    fmt::format_to(out, "  }}\n");
+  }
+  fmt::format_to(out,
+                 "  }} catch (const EvaluationError& x) {{\n    return ws.refuse(Refusal::no_value, std::string(\"a term of L has no value: \") + "
+                 "x.what());\n  }}\n");
+  // Lemma 3, where L's darts are not closed under the orbit.
+  if (p.extended())
+    for (std::size_t u = 0; u < p.used.size(); ++u) {
+      if (p.left_closed[u]) continue;
+      const EmbeddingSignature& e = *p.used[u];
+      fmt::format_to(out, "  {{  // 003 Lemma 3 for {} <{}>: L does not close the orbit\n", comment_text(e.name), fmt::join(e.orbit, ","));
+      p.classes(out, L, p.op.words.left, e.orbit, "tw.left_class");
+      fmt::format_to(out, "    static const std::vector<Word> gens = dims_generators({{{}}});\n    static const char* const names[] = {{",
+                     fmt::join(e.orbit, ", "));
+      for (NodeId x = 0; x < L.node_count(); ++x) fmt::format_to(out, "{}{}", x ? ", " : "", cpp_literal(L.name(x)));
+      fmt::format_to(
+          out,
+          "}};\n    if (std::string why = overlap(tw, g, gens, std::span<const Dart>(match, {} * np), np, names, ws.pattern, {}); !why.empty())\n"
+          "      return ws.refuse(Refusal::overlap, std::move(why));\n  }}\n",
+          L.node_count(), cpp_literal(e.name));
+    }
+  // Classes of R and their sources (one evaluation per class: Thm 4).
+  fmt::format_to(out, "  try {{\n");
+  for (std::size_t u = 0; u < p.used.size(); ++u) {
+    const EmbeddingSignature& sig = *p.used[u];
+    const std::size_t e = p.index_of(sig.name);
+    fmt::format_to(out, "  {{  // {} <{}>\n", comment_text(sig.name), fmt::join(sig.orbit, ","));
+    if (p.extended()) {
+      fmt::format_to(out, "    std::vector<std::uint32_t>& cls = tw.class_of[{}];\n", u);
+      p.classes(out, R, p.op.words.right, sig.orbit, "cls");
+      fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign({} * np, Source{{}});\n", u, R.node_count());
+    } else {
+      fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign({} * np, Source{{}});\n", u, p.terms.right.size());
+    }
+    for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
+      const NodeTerm& t = p.terms.right[k];
+      if (t.embedding != sig.name) continue;
+      const NodeId y = p.right_node[k];
+      fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) {{  // R: {} labeled {} = {}\n      Source& here = src[{}];\n",
+                     comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()),
+                     p.extended() ? fmt::format("cls[{} * np + p]", y) : fmt::format("{} * np + p", k));
+      fmt::format_to(out, "      if (here.index != Embedding::none) continue;  // its class has one\n");
+      if (const NodeId at = p.stored_at[k]; at != no_node) {
+        fmt::format_to(out,
+                       "      const Dart d = match[{} * np + p];  // kept from G: no evaluation\n"
+                       "      if (d >= e{}->slot.size() || e{}->slot[d] == Embedding::none)\n"
+                       "        throw EvaluationError(std::string({}) + \": dart \" + std::to_string(d) + \" has no \" {} \" value\");\n"
+                       "      here = {{e{}->slot[d], true}};\n",
+                       at, e, e, cpp_literal(t.term.str()), cpp_literal(t.embedding), e);
+      } else {
+        std::string code;
+        int next = 0;
+        const std::string v = p.value(t.term, code, next);
+        for (std::size_t i = 0; i < code.size(); ++i) {  // one more indent
+          if (i == 0 || code[i - 1] == '\n') code.insert(i, "  ");
+        }
+        out = std::copy(code.begin(), code.end(), out);
+        fmt::format_to(out, "      here = {{static_cast<std::uint32_t>(tw.evaluated.size()), false}};\n      tw.evaluated.push_back({});\n", v);
+      }
+      fmt::format_to(out, "    }}\n");
+    }
+    fmt::format_to(out, "  }}\n");
+  }
+  fmt::format_to(out,
+                 "  }} catch (const EvaluationError& x) {{\n    return ws.refuse(Refusal::no_value, std::string(\"a term of R has no value: \") + "
+                 "x.what());\n  }}\n  }}\n");
+}
+
+void TermCode::after_rewrite(Out out) const {
+  const Plan& p = *plan_;
+  const Rule& r = p.op.rule;
+  const TopoGraph &L = r.left(), &R = r.right();
+  fmt::format_to(out, "  // Labels (003 Def. 12).\n  em.follow(ws.moved);\n  {{\n  [[maybe_unused]] const Dart* const cm = ws.comatch.data();\n");
+  std::vector<NodeId> added;
+  for (NodeId y = 0; y < R.node_count(); ++y)
+    if (r.to_left(y) == no_node) added.push_back(y);
+  if (!added.empty()) {
+    fmt::format_to(out, "  for (Embedding& e : em.embeddings) {{  // added darts start unlabeled\n");
+    for (NodeId y : added)
+      fmt::format_to(
+          out,
+          "    for (std::size_t p = 0; p < np; ++p)\n      if (const Dart d = cm[{} * np + p]; d < e.slot.size()) e.slot[d] = Embedding::none;\n", y);
+    fmt::format_to(out, "  }}\n");
+  }
+  for (std::size_t k = 0; k < p.terms.left.size(); ++k) {
+    const NodeTerm& t = p.terms.left[k];
+    const NodeId y = r.to_right(p.left_node[k]);
+    if (y == no_node || p.terms.find('R', t.node, t.embedding)) continue;
+    const std::size_t e = p.index_of(t.embedding);
+    fmt::format_to(out,
+                   "  {{  // {} keeps no {} label in R: it loses its value\n"
+                   "    const std::vector<Word> gens = dims_generators(e{}->signature.orbit);\n"
+                   "    for (std::size_t p = 0; p < np; ++p) unlabel(tw, g, *e{}, gens, cm[{} * np + p], {});\n  }}\n",
+                   comment_text(t.node), comment_text(t.embedding), e, e, y, p.extended());
+  }
+  for (std::size_t u = 0; u < p.used.size(); ++u) {
+    const EmbeddingSignature& sig = *p.used[u];
+    const std::size_t e = p.index_of(sig.name);
+    fmt::format_to(out, "  {{  // {} <{}>\n    Embedding& e = *e{};\n    const std::vector<Source>& src = tw.sources[{}];\n", comment_text(sig.name),
+                   fmt::join(sig.orbit, ","), e, u);
+    if (p.extended() && p.closed[u]) {
+      // Every node of R has one arc of each dimension of <o>: a class is a
+      // whole orbit of H, written without a walk.
+      fmt::format_to(out,
+                     "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n"
+                     "    std::vector<std::uint32_t>& pool = tw.pool_of;\n"
+                     "    pool.assign({} * np, Embedding::none);\n"
+                     "    for (std::size_t c = 0; c < {} * np; ++c)\n"
+                     "      if (const Source f = src[c]; f.index != Embedding::none) pool[c] = f.stored ? f.index : e.store(tw.evaluated[f.index]);\n"
+                     "    for (std::size_t i = 0; i < {} * np; ++i)  // R closes <{}>: a class is a whole orbit of H\n"
+                     "      if (const std::uint32_t v = pool[cls[i]]; v != Embedding::none) e.set_index(cm[i], v);\n",
+                     u, R.node_count(), R.node_count(), R.node_count(), fmt::join(sig.orbit, ","));
+    } else if (p.extended()) {
+      fmt::format_to(
+          out, "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n    static const std::vector<Word> gens = dims_generators({{{}}});\n",
+          u, fmt::join(sig.orbit, ", "));
+      for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
+        if (p.terms.right[k].embedding != sig.name) continue;
+        const NodeId y = p.right_node[k];
+        fmt::format_to(out,
+                       "    for (std::size_t p = 0; p < np; ++p)  // {}: its orbit of H\n      write_orbit(tw, g, e, gens, cm[{} * np + p], "
+                       "src[cls[{} * np + p]]);\n",
+                       comment_text(p.terms.right[k].node), y, y);
+      }
+      fmt::format_to(out, "    end_writes(tw);\n");
+    } else {
+      for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
+        if (p.terms.right[k].embedding != sig.name) continue;
+        const NodeId y = p.right_node[k];
+        fmt::format_to(out,
+                       "    for (std::size_t p = 0; p < np; ++p) {{  // {}: its own dart (direct)\n"
+                       "      const Source f = src[{} * np + p];\n      e.set_index(cm[{} * np + p], f.stored ? f.index : "
+                       "e.store(tw.evaluated[f.index]));\n    }}\n",
+                       comment_text(p.terms.right[k].node), k, y);
+      }
+    }
+    fmt::format_to(out, "  }}\n");
+  }
+  fmt::format_to(out, "  }}\n");
+  (void)L;
+}
+
+}  // namespace dartcheck::compiler

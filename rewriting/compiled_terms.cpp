@@ -1,0 +1,153 @@
+#include "rewriting/compiled_terms.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "rewriting/term_eval.hpp"
+
+namespace dartcheck::compiled {
+
+CollectSite::CollectSite(std::string embedding, std::vector<Dim> orbit)
+    : name(std::move(embedding)), dims(std::move(orbit)), outer(dims_generators(dims)) {}
+
+void TermWorkspace::prepare(std::size_t used, std::size_t sites) {
+  if (bags.size() < sites) bags.resize(sites);
+  class_of.resize(used);
+  sources.resize(used);
+  evaluated.clear();
+  pooled.clear();
+  conflicts = 0;
+}
+
+void TermWorkspace::reset(std::vector<std::uint32_t>& up, std::size_t instances) {
+  up.resize(instances);
+  std::iota(up.begin(), up.end(), std::uint32_t{0});
+}
+
+void TermWorkspace::flatten(std::vector<std::uint32_t>& up) {
+  // Roots are the smallest instances of their classes, so one pass in
+  // order finds every root already final.
+  for (std::uint32_t& a : up) a = up[a];
+}
+
+void TermWorkspace::walkers_for(const Map& g) {
+  if (walked_ == &g && outer_) return;
+  walked_ = &g;
+  outer_ = std::make_unique<OrbitWalker>(g);
+  inner_ = std::make_unique<OrbitWalker>(g);
+  writer_ = std::make_unique<OrbitWalker>(g);
+}
+
+std::span<const Value> TermWorkspace::collect(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, Dart d) {
+  if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", site.name));
+  if (!site.ready || site.for_orbit != e->signature.orbit) {
+    std::vector<Dim> within;  // <o> ∩ <o'>, in <o>'s order as the evaluator's
+    for (Dim i : e->signature.orbit)
+      if (std::find(site.dims.begin(), site.dims.end(), i) != site.dims.end()) within.push_back(i);
+    site.inner = dims_generators(within);
+    site.for_orbit = e->signature.orbit;
+    site.ready = true;
+  }
+  walkers_for(g);
+  std::vector<Value>& out = bags[bag];
+  out.clear();
+  collect_orbit_values(g, *e, outer_->orbit(d, site.outer), site.inner, *inner_, done_, out, site.name, site.dims);
+  return out;
+}
+
+const std::vector<Dart>& TermWorkspace::orbit(const Map& g, Dart d, std::span<const Word> generators) {
+  walkers_for(g);
+  return writer_->orbit(d, generators);
+}
+
+const Value& read(const Embedding* e, Dart d, const char* embedding, const char* term) {
+  if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", embedding));
+  const Value* v = e->value(d);
+  if (!v) throw EvaluationError(fmt::format("{}: dart {} has no {} value", term, d, embedding));
+  return *v;
+}
+
+Dart neighbour(const Map& g, Dim i, Dart d, const char* term) {
+  if (!g.model().contains(i)) throw EvaluationError(fmt::format("alpha{} is not a dimension of the map", i));
+  const Dart n = g.link(i, d);
+  if (n == no_dart) throw EvaluationError(fmt::format("{}: dart {} has no {}-arc", term, d, i));
+  return n;
+}
+
+// As the interpreter's check: the matched darts are marked with their
+// instance; each pi-orbit of G holding one is walked once, from the first
+// met, and every matched dart in it must be in that instance's class.
+std::string overlap(TermWorkspace& tw, const Map& g, std::span<const Word> generators, std::span<const Dart> match, std::size_t np,
+                    std::span<const char* const> names, std::span<const Dart> pattern, const char* embedding) {
+  constexpr std::uint32_t covered = DartTable::none - 1;
+  DartTable& orbit_of = tw.given;
+  const DartTable::ClearOnExit emptied{orbit_of};
+  for (std::size_t k = 0; k < match.size(); ++k) orbit_of.set(match[k], static_cast<std::uint32_t>(k));
+  auto name = [&](std::size_t k) {
+    const std::string node = names[k / np];
+    return pattern.empty() ? node : fmt::format("{}@{}", node, pattern[k % np]);
+  };
+  // The interpreter visits instances node by node, pattern copy by copy:
+  // k = x * np + p is that order.
+  for (std::size_t k = 0; k < match.size(); ++k) {
+    const Dart d = match[k];
+    if (orbit_of.get(d) == covered) continue;
+    const std::uint32_t cls = tw.left_class[k];
+    for (Dart y : tw.orbit(g, d, generators)) {
+      const std::uint32_t i = orbit_of.get(y);
+      if (i == DartTable::none || i == covered) continue;
+      if (tw.left_class[i] != cls)
+        return fmt::format(
+            "nodes {} and {} are in different {}-orbits of L, but their darts {} and {} share one {}-orbit of the map (003 Lemma 3, "
+            "non-overlap): the extended rule would give that orbit the labels of both",
+            name(k), name(i), embedding, d, y, embedding);
+      orbit_of.set(y, covered);
+    }
+  }
+  return {};
+}
+
+void unlabel(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, bool extended) {
+  if (!extended) {
+    e.set_index(d, Embedding::none);
+    return;
+  }
+  for (Dart x : tw.orbit(g, d, generators)) e.set_index(x, Embedding::none);
+}
+
+std::uint32_t pool_index(TermWorkspace& tw, Embedding& e, Source from) {
+  if (from.stored) return from.index;
+  if (tw.pooled.size() < tw.evaluated.size()) tw.pooled.resize(tw.evaluated.size(), Embedding::none);
+  std::uint32_t& at = tw.pooled[from.index];
+  if (at == Embedding::none) at = e.store(tw.evaluated[from.index]);
+  return at;
+}
+
+void write_orbit(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, Source from) {
+  if (const std::uint32_t w = tw.given.get(d); w != DartTable::none) {
+    const TermWorkspace::Writer& first = tw.writers[w];
+    const bool same = (from.index == first.from.index && from.stored == first.from.stored) || (from.stored && first.value == from.index) ||
+                      e.pool[first.value] == (from.stored ? e.pool[from.index] : tw.evaluated[from.index]);
+    if (same) return;
+    ++tw.conflicts;
+    e.set_index(d, pool_index(tw, e, from));
+    return;
+  }
+  const std::uint32_t idx = pool_index(tw, e, from);
+  const auto w = static_cast<std::uint32_t>(tw.writers.size());
+  tw.writers.push_back({idx, from});
+  for (Dart x : tw.orbit(g, d, generators)) {
+    e.set_index(x, idx);
+    tw.given.set(x, w);
+  }
+}
+
+void end_writes(TermWorkspace& tw) {
+  tw.given.clear();
+  tw.writers.clear();
+}
+
+}  // namespace dartcheck::compiled

@@ -1,0 +1,134 @@
+// The embedding part of compiled operations (issue 41): what the C++ that
+// `dartcheck compile` generates for a rule with terms (003) calls at run
+// time. The rule-dependent work is generated: each term as straight-line
+// calls of rewriting/algebra.hpp, the classes of the instantiated sides as
+// one union per arc and pattern position, the writes per node. What depends
+// on the host is here, written once for the interpreter and the compiled
+// code where it can be (a collect's multiset is collect_orbit_values, the
+// evaluator's own), so a compiled rule writes the interpreter's values.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/dart_table.hpp"
+#include "core/orbit.hpp"
+#include "rewriting/algebra.hpp"
+#include "rewriting/embedded_map.hpp"
+
+namespace dartcheck::compiled {
+
+/// Where the value of a labeled instance (or class) of R is: a stored value
+/// of G kept by the rule (an index into the embedding's pool) or one the
+/// application evaluated (an index into TermWorkspace::evaluated).
+struct Source {
+  std::uint32_t index = Embedding::none;
+  bool stored = false;
+};
+
+/// A collect pi<o'>(x) of a term, known when the code is generated: its
+/// embedding's name and <o'>. The generators of <o> ∩ <o'> depend on the
+/// map's embedding pi : <o> (as in the evaluator), so they are found at the
+/// first collect and kept while the map's <o> stays the same.
+struct CollectSite {
+  CollectSite(std::string embedding, std::vector<Dim> orbit);
+  std::string name;
+  std::vector<Dim> dims;
+  std::vector<Word> outer;
+  // The map's <o> that `inner` was made for.
+  mutable std::vector<Dim> for_orbit;
+  mutable std::vector<Word> inner;
+  mutable bool ready = false;
+};
+
+/// The tables of an application's terms, kept from one application to the
+/// next (a member of compiled::Workspace).
+struct TermWorkspace {
+  /// One bag per collect of the function (a term may hold several, each
+  /// lent to its call while the others are evaluated).
+  std::vector<std::vector<Value>> bags;
+  /// class_of[u][y * np + p]: the class of instance (p, y) for the u-th
+  /// embedding the rule labels (a union-find root once flattened).
+  std::vector<std::vector<std::uint32_t>> class_of;
+  std::vector<std::uint32_t> left_class;  // of L, for Lemma 3
+  /// sources[u][c]: the value of class c (or of instance k * np + p when
+  /// each instance has its own).
+  std::vector<std::vector<Source>> sources;
+  std::vector<Value> evaluated;
+  std::vector<std::uint32_t> pooled;   // evaluated[i]'s pool index once stored
+  std::vector<std::uint32_t> pool_of;  // per class: the pool index written
+  /// The orbits of H written by walking (Def. 12): the writer of each dart.
+  DartTable given;
+  struct Writer {
+    std::uint32_t value;
+    Source from;
+  };
+  std::vector<Writer> writers;
+  /// Orbits given two values (003 Def. 13: the propagation does not
+  /// exist); H keeps both, as the interpreter's. Never for a rule the
+  /// static checker calls consistent (Thm 4).
+  std::size_t conflicts = 0;
+
+  /// Sizes the per-application tables: `used` embeddings labeled, `sites`
+  /// collects in the function.
+  void prepare(std::size_t used, std::size_t sites);
+  /// The union-find of one side's instances (`instances` = nodes * np).
+  static void reset(std::vector<std::uint32_t>& up, std::size_t instances);
+  static std::uint32_t find(std::vector<std::uint32_t>& up, std::uint32_t a) {
+    while (up[a] != a) a = up[a] = up[up[a]];
+    return a;
+  }
+  static void unite(std::vector<std::uint32_t>& up, std::uint32_t a, std::uint32_t b) {
+    a = find(up, a);
+    b = find(up, b);
+    if (a != b) up[a < b ? b : a] = a < b ? a : b;  // the smaller instance is the root
+  }
+  /// Every entry its root.
+  static void flatten(std::vector<std::uint32_t>& up);
+
+  /// The multiset of `site` from dart d (collect_orbit_values), in this
+  /// site's bag. Throws EvaluationError when the map lacks the embedding.
+  std::span<const Value> collect(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, Dart d);
+  /// The darts of d's orbit under `generators` in H (a walk).
+  const std::vector<Dart>& orbit(const Map& g, Dart d, std::span<const Word> generators);
+
+ private:
+  void walkers_for(const Map& g);
+  const Map* walked_ = nullptr;
+  std::unique_ptr<OrbitWalker> outer_, inner_, writer_;
+  std::vector<std::uint64_t> done_;
+};
+
+/// x.pi: the value of e at d, or EvaluationError naming `term` (the map
+/// has no embedding pi, or d has no pi value).
+const Value& read(const Embedding* e, Dart d, const char* embedding, const char* term);
+/// x.alpha_i: d's i-neighbour, or EvaluationError naming `term`.
+Dart neighbour(const Map& g, Dim i, Dart d, const char* term);
+
+/// 003 Lemma 3 for one embedding pi : <o> (`generators` of <o>): instances
+/// of L in different classes (`left_class`, by x * np + p) must match darts
+/// in different pi-orbits of G. Returns why not, or an empty string.
+/// `names` are L's nodes, `pattern` P_v's darts (empty for a DPO rule).
+std::string overlap(TermWorkspace& tw, const Map& g, std::span<const Word> generators, std::span<const Dart> match, std::size_t np,
+                    std::span<const char* const> names, std::span<const Dart> pattern, const char* embedding);
+
+/// The label of a preserved node of L that R does not label is dropped
+/// from its dart (`direct`) or its whole pi-orbit of H (`extended`).
+void unlabel(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, bool extended);
+
+/// The pool index of a source's value in e, storing an evaluated value on
+/// its first write (once: later writes of it share the entry).
+std::uint32_t pool_index(TermWorkspace& tw, Embedding& e, Source from);
+
+/// Def. 12 where R is not closed under <o>: the value of `from` goes to the
+/// whole pi-orbit of d in H, unless an earlier writer gave it one (equal:
+/// nothing to do; different: a conflict, and d alone takes the second
+/// value, as in the interpreter). `given` and `writers` are per embedding:
+/// clear them (end_writes) before the next one.
+void write_orbit(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, Source from);
+void end_writes(TermWorkspace& tw);
+
+}  // namespace dartcheck::compiled
