@@ -44,6 +44,8 @@
 #include "io/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
 
+#include DARTCHECK_COMPILED_EMBEDDING
+
 namespace {
 
 using LCC = CGAL::Linear_cell_complex_for_combinatorial_map<2, 3>;
@@ -92,6 +94,33 @@ Result run_dartcheck(const std::string& off, int runs, std::size_t triangles, Sc
     {
       EmbeddedRewriter rewriter(s.rule, s.words, *s.terms, g, evaluation);
       for (Dart h : hooks) ok &= rewriter.apply(std::span(&h, 1), false).ok();
+    }
+    ms = since(t0);
+    out = g.map.size();
+    return ok && count_cells(g.map).cells[2] == triangles && check_map(g.map).valid() && check_embedding(g.map, g.embeddings[0], true).consistent() &&
+           centres_are_barycenters(input, g);
+  });
+}
+
+// The same schemes compiled by `dartcheck compile` (issue 41): one
+// evaluation per class, as the interpreter's one-per-orbit rows, the same
+// checks.
+using CompiledRule = dartcheck::Refusal (*)(dartcheck::EmbeddedMap&, std::span<const dartcheck::Dart>, dartcheck::compiled::Workspace&);
+Result run_compiled(const std::string& off, int runs, std::size_t triangles, Scope scope) {
+  using namespace dartcheck;
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  const CatalogRule& s = *catalog.find_rule("triangulation-all-faces-pos");
+  const CompiledRule rule = scope == Scope::per_face ? &compiled_embedding_operations::triangulation_jerboa_pos
+                                                     : &compiled_embedding_operations::triangulation_all_faces_pos;
+  const EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), s.terms->embeddings[0]);
+  const std::vector<Dart> hooks = orbit_hooks(input.map, scope == Scope::per_face ? std::vector<Dim>{0, 1} : std::vector<Dim>{0, 1, 2});
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    EmbeddedMap g = input;
+    bool ok = true;
+    const auto t0 = std::chrono::steady_clock::now();
+    {
+      compiled::Workspace ws;
+      for (Dart h : hooks) ok &= rule(g, std::span(&h, 1), ws) == Refusal::none;
     }
     ms = since(t0);
     out = g.map.size();
@@ -384,6 +413,8 @@ int main(int argc, char** argv) {
       {"dartcheck triangulation-all-faces-pos, once, one evaluation per orbit",
        [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::one_per_orbit); }},
       {"dartcheck triangulation-all-faces-pos, topology only (apply_scheme, no terms)", [&] { return run_topology(off, runs, sides); }},
+      {"dartcheck compiled triangulation-jerboa-pos, per face", [&] { return run_compiled(off, runs, sides, Scope::per_face); }},
+      {"dartcheck compiled triangulation-all-faces-pos, once", [&] { return run_compiled(off, runs, sides, Scope::all_faces); }},
       {"generic scheme floor by hand, per face (P_v, Lemma 3 and Def. 12 walks)",
        [&] { return run_generic_floor(off, runs, sides, Scope::per_face); }},
       {"generic scheme floor by hand, all faces (P_v, classes over P_v)", [&] { return run_generic_floor(off, runs, sides, Scope::all_faces); }},

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include <fmt/args.h>
 #include <fmt/format.h>
@@ -33,6 +34,12 @@ std::string double_literal(double x) {
   return fmt::format("{:a}", x);  // hexadecimal: exact
 }
 
+struct Grouping {
+  bool grouped = true;
+  std::vector<std::size_t> group_of;
+  std::vector<std::vector<int>> words;  // per group: generators followed
+};
+
 }  // namespace
 
 std::optional<std::string> terms_not_compilable(const Operation& op) {
@@ -59,6 +66,7 @@ struct TermCode::Plan {
   std::vector<char> closed, left_closed;
   std::map<const Term*, std::size_t> site;  // collect -> CollectSite number (and bag)
   std::vector<const Term*> sites;
+  std::vector<Grouping> right_groups;  // per used embedding
 
   Plan(const Operation& o, const SchemeFacts& f) : op(o), facts(f), terms(*o.terms) {
     const Rule& r = op.rule;
@@ -97,6 +105,7 @@ struct TermCode::Plan {
     };
     for (const NodeTerm& x : terms.left) number(x.term, number);
     for (const NodeTerm& x : terms.right) number(x.term, number);
+    for (const EmbeddingSignature* sig : used) right_groups.push_back(grouping(R, op.words.right, sig->orbit));
   }
 
   std::size_t embedding(const std::string& name) {
@@ -158,6 +167,95 @@ struct TermCode::Plan {
     return v;
   }
 
+  // How the classes of R's instances for one orbit are found: by groups of
+  // nodes joined by arcs of <o> with the empty word (their instances in one
+  // pattern copy share a class), each group's classes a walk of P_v along
+  // its nodes' loop words and their conjugates; or, when an arc of <o> with
+  // a word joins two groups, by unions per instance.
+  Grouping grouping(const TopoGraph& side, const std::vector<ConjWord>& words, const std::vector<Dim>& orbit) const {
+    Grouping out;
+    const std::size_t n = side.node_count();
+    std::vector<std::size_t> up(n);
+    std::iota(up.begin(), up.end(), std::size_t{0});
+    auto find = [&](std::size_t a) {
+      while (up[a] != a) a = up[a];
+      return a;
+    };
+    auto in_orbit = [&](Dim i) { return std::find(orbit.begin(), orbit.end(), i) != orbit.end(); };
+    for (ArcId e = 0; e < side.arc_count(); ++e)
+      if (in_orbit(side.arc(e).label) && arc_word(words, e).empty()) up[find(side.arc(e).source)] = find(side.arc(e).target);
+    std::vector<std::size_t> number(n, n);
+    for (NodeId x = 0; x < n; ++x) {
+      const std::size_t r = find(x);
+      if (number[r] == n) {
+        number[r] = out.words.size();
+        out.words.emplace_back();
+      }
+      out.group_of.push_back(number[r]);
+    }
+    const ConjugateRewriting rw(op.rule.model());
+    for (ArcId e = 0; e < side.arc_count(); ++e) {
+      const auto& a = side.arc(e);
+      const ConjWord& w = arc_word(words, e);
+      if (!in_orbit(a.label) || w.empty()) continue;
+      const std::size_t g = out.group_of[a.source];
+      if (g != out.group_of[a.target]) {
+        out.grouped = false;
+        return out;
+      }
+      for (const ConjWord& x : {w, rw.conjugate(w)}) {
+        const int k = generator_index(facts.gens, x);
+        if (k < 0 || static_cast<std::size_t>(k) >= facts.gens.size()) {
+          out.grouped = false;
+          return out;
+        }
+        if (std::find(out.words[g].begin(), out.words[g].end(), k) == out.words[g].end()) out.words[g].push_back(k);
+      }
+    }
+    return out;
+  }
+
+  // The class of R's instance (p, y) for embedding u, as an expression.
+  std::string class_of(std::size_t u, NodeId y) const {
+    const Grouping& g = right_groups[u];
+    return g.grouped ? fmt::format("cls[{} * np + p]", g.group_of[y]) : fmt::format("cls[{} * np + p]", y);
+  }
+
+  // R's classes for embedding u into `cls` and tw.class_count[u].
+  void right_classes(Out out, std::size_t u) const {
+    const Grouping& gr = right_groups[u];
+    const TopoGraph& R = op.rule.right();
+    if (!gr.grouped) {
+      classes(out, R, op.words.right, used[u]->orbit, "cls");
+      fmt::format_to(out, "    tw.class_count[{}] = static_cast<std::uint32_t>({} * np);\n", u, R.node_count());
+      return;
+    }
+    fmt::format_to(out, "    cls.assign({} * np, dartcheck::compiled::none);\n    std::uint32_t count = 0;\n", gr.words.size());
+    for (std::size_t g = 0; g < gr.words.size(); ++g) {
+      std::string members;
+      for (NodeId y = 0; y < R.node_count(); ++y)
+        if (gr.group_of[y] == g) members += (members.empty() ? "" : ", ") + comment_text(R.name(y));
+      if (gr.words[g].empty()) {
+        fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) cls[{} * np + p] = count++;  // {{{}}}: a class per copy\n", g, members);
+        continue;
+      }
+      std::string follow;
+      for (int k : gr.words[g])
+        follow += fmt::format(
+            "          if (const std::uint32_t r = ws.shift[{0}][q]; cls[{1} * np + r] == dartcheck::compiled::none) {{  // {2}\n"
+            "            cls[{1} * np + r] = count;\n            tw.stack.push_back(r);\n          }}\n",
+            k, g, facts.gens[static_cast<std::size_t>(k)].str());
+      fmt::format_to(out,
+                     "    for (std::uint32_t p0 = 0; p0 < np; ++p0) {{  // {{{}}}: copies joined along the loops\n"
+                     "      if (cls[{} * np + p0] != dartcheck::compiled::none) continue;\n"
+                     "      cls[{} * np + p0] = count;\n      tw.stack.assign(1, p0);\n"
+                     "      while (!tw.stack.empty()) {{\n        const std::uint32_t q = tw.stack.back();\n        tw.stack.pop_back();\n{}"
+                     "      }}\n      ++count;\n    }}\n",
+                     members, g, g, follow);
+    }
+    fmt::format_to(out, "    tw.class_count[{}] = count;\n", u);
+  }
+
   // Unions of one side's instances along its arcs in <o>.
   void classes(Out out, const TopoGraph& side, const std::vector<ConjWord>& words, const std::vector<Dim>& orbit, const std::string& table) const {
     fmt::format_to(out, "    TermWorkspace::reset({}, {} * np);\n", table, side.node_count());
@@ -201,7 +299,7 @@ void TermCode::lookups(Out out) const {
 void TermCode::before_rewrite(Out out) const {
   const Plan& p = *plan_;
   const Rule& r = p.op.rule;
-  const TopoGraph &L = r.left(), &R = r.right();
+  const TopoGraph& L = r.left();
   fmt::format_to(out, "  // Terms (003 Def. 10): L's labels, then one source per class of R.\n  tw.prepare({}, {});\n", p.used.size(),
                  p.sites.size());
   fmt::format_to(out, "  {{\n  [[maybe_unused]] const Dart* const match = ws.match.data();\n  try {{\n");
@@ -254,8 +352,8 @@ void TermCode::before_rewrite(Out out) const {
     fmt::format_to(out, "  {{  // {} <{}>\n", comment_text(sig.name), fmt::join(sig.orbit, ","));
     if (p.extended()) {
       fmt::format_to(out, "    std::vector<std::uint32_t>& cls = tw.class_of[{}];\n", u);
-      p.classes(out, R, p.op.words.right, sig.orbit, "cls");
-      fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign({} * np, Source{{}});\n", u, R.node_count());
+      p.right_classes(out, u);
+      fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign(tw.class_count[{}], Source{{}});\n", u, u);
     } else {
       fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign({} * np, Source{{}});\n", u, p.terms.right.size());
     }
@@ -265,7 +363,7 @@ void TermCode::before_rewrite(Out out) const {
       const NodeId y = p.right_node[k];
       fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) {{  // R: {} labeled {} = {}\n      Source& here = src[{}];\n",
                      comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()),
-                     p.extended() ? fmt::format("cls[{} * np + p]", y) : fmt::format("{} * np + p", k));
+                     p.extended() ? p.class_of(u, y) : fmt::format("{} * np + p", k));
       fmt::format_to(out, "      if (here.index != Embedding::none) continue;  // its class has one\n");
       if (const NodeId at = p.stored_at[k]; at != no_node) {
         fmt::format_to(out,
@@ -329,14 +427,18 @@ void TermCode::after_rewrite(Out out) const {
       // Every node of R has one arc of each dimension of <o>: a class is a
       // whole orbit of H, written without a walk.
       fmt::format_to(out,
-                     "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n"
+                     "    const std::vector<std::uint32_t>& cls = tw.class_of[{0}];\n"
                      "    std::vector<std::uint32_t>& pool = tw.pool_of;\n"
-                     "    pool.assign({} * np, Embedding::none);\n"
-                     "    for (std::size_t c = 0; c < {} * np; ++c)\n"
+                     "    pool.assign(tw.class_count[{0}], Embedding::none);\n"
+                     "    for (std::size_t c = 0; c < pool.size(); ++c)\n"
                      "      if (const Source f = src[c]; f.index != Embedding::none) pool[c] = f.stored ? f.index : e.store(tw.evaluated[f.index]);\n"
-                     "    for (std::size_t i = 0; i < {} * np; ++i)  // R closes <{}>: a class is a whole orbit of H\n"
-                     "      if (const std::uint32_t v = pool[cls[i]]; v != Embedding::none) e.set_index(cm[i], v);\n",
-                     u, R.node_count(), R.node_count(), R.node_count(), fmt::join(sig.orbit, ","));
+                     "    // R closes <{1}>: a class is a whole orbit of H.\n",
+                     u, fmt::join(sig.orbit, ","));
+      for (NodeId y = 0; y < R.node_count(); ++y)
+        fmt::format_to(out,
+                       "    for (std::size_t p = 0; p < np; ++p)  // {}\n"
+                       "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.set_index(cm[{} * np + p], v);\n",
+                       comment_text(R.name(y)), p.class_of(u, y), y);
     } else if (p.extended()) {
       fmt::format_to(
           out, "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n    static const std::vector<Word> gens = dims_generators({{{}}});\n",
@@ -346,8 +448,8 @@ void TermCode::after_rewrite(Out out) const {
         const NodeId y = p.right_node[k];
         fmt::format_to(out,
                        "    for (std::size_t p = 0; p < np; ++p)  // {}: its orbit of H\n      write_orbit(tw, g, e, gens, cm[{} * np + p], "
-                       "src[cls[{} * np + p]]);\n",
-                       comment_text(p.terms.right[k].node), y, y);
+                       "src[{}]);\n",
+                       comment_text(p.terms.right[k].node), y, p.class_of(u, y));
       }
       fmt::format_to(out, "    end_writes(tw);\n");
     } else {

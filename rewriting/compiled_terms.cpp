@@ -16,6 +16,7 @@ CollectSite::CollectSite(std::string embedding, std::vector<Dim> orbit)
 void TermWorkspace::prepare(std::size_t used, std::size_t sites) {
   if (bags.size() < sites) bags.resize(sites);
   class_of.resize(used);
+  class_count.resize(used);
   sources.resize(used);
   evaluated.clear();
   pooled.clear();
@@ -54,8 +55,48 @@ std::span<const Value> TermWorkspace::collect(std::size_t bag, const CollectSite
   walkers_for(g);
   std::vector<Value>& out = bags[bag];
   out.clear();
-  collect_orbit_values(g, *e, outer_->orbit(d, site.outer), site.inner, *inner_, done_, out, site.name, site.dims);
+  const bool two_letters = site.outer.size() == 2 && site.outer[0].size() == 1 && site.outer[1].size() == 1;
+  const std::span<const Dart> orbit =
+      two_letters && alternate(g, site.outer[0][0], site.outer[1][0], d) ? std::span<const Dart>(cycle_) : outer_->orbit(d, site.outer);
+  collect_orbit_values(g, *e, orbit, site.inner, *inner_, done_, out, site.name, site.dims);
   return out;
+}
+
+// An orbit of two involutions a, b (a face <0,1> of a 2-G-map, an edge
+// <0,2>) is a cycle or a path of alternating links: walked without marks,
+// a then b from d until the walk is back at d or at a fixed point, then b
+// then a from d. Any link that is not an involution (an invalid host) gives
+// up, and the caller walks the orbit with marks; so does a walk longer
+// than the map.
+bool TermWorkspace::alternate(const Map& g, Dim a, Dim b, Dart d) {
+  cycle_.assign(1, d);
+  auto step = [&](Dim i, Dart x, Dart& next) {
+    next = g.link(i, x);
+    return next != no_dart && g.link(i, next) == x;
+  };
+  Dart x = d;
+  Dim i = a;
+  for (;;) {
+    Dart y;
+    if (!step(i, x, y)) return false;
+    if (y == x) break;        // a fixed point: the orbit is a path
+    if (y == d) return true;  // back at d: a cycle
+    if (cycle_.size() > g.size()) return false;
+    cycle_.push_back(y);
+    x = y;
+    i = i == a ? b : a;
+  }
+  x = d;  // the path's other half, from d along b first
+  i = b;
+  for (;;) {
+    Dart y;
+    if (!step(i, x, y)) return false;
+    if (y == x) return true;
+    if (y == d || cycle_.size() > g.size()) return false;  // a path cannot close
+    cycle_.push_back(y);
+    x = y;
+    i = i == a ? b : a;
+  }
 }
 
 const std::vector<Dart>& TermWorkspace::orbit(const Map& g, Dart d, std::span<const Word> generators) {

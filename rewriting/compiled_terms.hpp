@@ -50,9 +50,14 @@ struct TermWorkspace {
   /// One bag per collect of the function (a term may hold several, each
   /// lent to its call while the others are evaluated).
   std::vector<std::vector<Value>> bags;
-  /// class_of[u][y * np + p]: the class of instance (p, y) for the u-th
-  /// embedding the rule labels (a union-find root once flattened).
+  /// class_of[u]: the classes of the instances of R for the u-th
+  /// embedding the rule labels, numbered 0 .. class_count[u] - 1, at
+  /// [group * np + p] where the generated code found groups of nodes (nodes
+  /// joined by arcs of the orbit with the empty word: their instances in one
+  /// copy p share a class), at [y * np + p] (a union-find root) otherwise.
   std::vector<std::vector<std::uint32_t>> class_of;
+  std::vector<std::uint32_t> class_count;
+  std::vector<std::uint32_t> stack;       // of the walks that number the classes
   std::vector<std::uint32_t> left_class;  // of L, for Lemma 3
   /// sources[u][c]: the value of class c (or of instance k * np + p when
   /// each instance has its own).
@@ -97,6 +102,8 @@ struct TermWorkspace {
 
  private:
   void walkers_for(const Map& g);
+  bool alternate(const Map& g, Dim a, Dim b, Dart d);
+  std::vector<Dart> cycle_;
   const Map* walked_ = nullptr;
   std::unique_ptr<OrbitWalker> outer_, inner_, writer_;
   std::vector<std::uint64_t> done_;
