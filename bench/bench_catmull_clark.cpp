@@ -48,6 +48,8 @@
 #include "rewriting/embedded_application.hpp"
 #include "rewriting/scheme_application.hpp"
 
+#include DARTCHECK_COMPILED_SUBDIVISION
+
 namespace {
 
 using Point = std::array<double, 3>;
@@ -184,6 +186,35 @@ Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck
   return row;
 }
 
+// The two schemes compiled by `dartcheck compile` (issue 41): one
+// evaluation per class, the same checks as the interpreter's rows.
+Row run_compiled(const std::string& off, int runs, std::size_t quads, const Points& ref, double tol) {
+  using namespace dartcheck;
+  const Catalog& catalog = subdivision_catalog();
+  EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.signatures[0]);
+  for (std::size_t k = 1; k < catalog.signatures.size(); ++k) input.add_embedding(catalog.signatures[k]);
+  const std::vector<Dart> hooks = orbit_hooks(input.map, {0, 1, 2});
+  Row row;
+  row.r = measure(runs, [&](double& ms, std::size_t& out) {
+    EmbeddedMap g = input;
+    bool ok = true;
+    const auto t0 = std::chrono::steady_clock::now();
+    {
+      compiled::Workspace ws;
+      for (Dart h : hooks) ok &= compiled_subdivision_operations::catmull_clark_points(g, std::span(&h, 1), ws) == Refusal::none;
+      for (Dart h : hooks) ok &= compiled_subdivision_operations::catmull_clark(g, std::span(&h, 1), ws) == Refusal::none;
+    }
+    ms = since(t0);
+    out = g.map.size();
+    ok = ok && count_cells(g.map).cells[2] == quads && check_map(g.map).valid() && check_embedding(g.map, g.embeddings[0], true).consistent();
+    const Points p = points_of(g);
+    row.deviation = deviation(p.interior, ref.interior, tol);
+    row.boundary = p.boundary;
+    return ok && row.deviation <= tol && p.boundary == ref.boundary;
+  });
+  return row;
+}
+
 // The floor of the dartcheck rows: catmull-clark's topology alone.
 Row run_topology(const std::string& off, int runs, std::size_t quads) {
   using namespace dartcheck;
@@ -302,6 +333,7 @@ int main(int argc, char** argv) {
       {"dartcheck catmull-clark-points + catmull-clark, one evaluation per orbit", "darts",
        [&] { return run_dartcheck(off, runs, sides, Evaluation::one_per_orbit, ref, tol); }},
       {"dartcheck catmull-clark, topology only (SchemeRewriter, no terms)", "darts", [&] { return run_topology(off, runs, sides); }},
+      {"dartcheck compiled catmull-clark-points + catmull-clark", "darts", [&] { return run_compiled(off, runs, sides, ref, tol); }},
       {"OpenMesh CatmullClarkT, PolyMesh with double points", "halfedges", [&] { return run_openmesh(off, runs, sides, ref, tol); }},
       {"CGAL Subdivision_method_3::CatmullClark_subdivision, Surface_mesh", "halfedges", [&] { return run_cgal(off, runs, sides, ref, tol); }},
   };
