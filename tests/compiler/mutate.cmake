@@ -1,13 +1,15 @@
 # The mutation check of the compiled operations (issue 41): copies IN to
-# OUT with the first added 0-arc of the first rule that adds one turned into
-# a 1-arc, a change that the differential test must notice.
-#   cmake -DIN=header -DOUT=mutant -P mutate.cmake
+# OUT with the first occurrence of FIND replaced by REPLACE (one link's
+# dimension, one weight of a term), a change the differential test must
+# notice.
+#   cmake -DIN=header -DOUT=mutant "-DFIND=text" "-DREPLACE=text" -P mutate.cmake
 file(READ ${IN} text)
-string(FIND "${text}" "    g.set_link(0, comatch[" at)
+string(FIND "${text}" "${FIND}" at)
 if(at EQUAL -1)
-  message(FATAL_ERROR "${IN} adds no 0-arc: nothing to mutate")
+  message(FATAL_ERROR "${IN} has no '${FIND}': nothing to mutate")
 endif()
 string(SUBSTRING "${text}" 0 ${at} head)
-math(EXPR rest "${at} + 17")
+string(LENGTH "${FIND}" length)
+math(EXPR rest "${at} + ${length}")
 string(SUBSTRING "${text}" ${rest} -1 tail)
-file(WRITE ${OUT} "${head}    g.set_link(1,${tail}")
+file(WRITE ${OUT} "${head}${REPLACE}${tail}")
