@@ -153,12 +153,31 @@ const dartcheck::Catalog& subdivision_catalog() {
   return c;
 }
 
+// The mesh with its positions and the two other embeddings, unlabeled.
+dartcheck::EmbeddedMap subdivision_input(const std::string& off) {
+  using namespace dartcheck;
+  const Catalog& catalog = subdivision_catalog();
+  EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.signatures[0]);
+  for (std::size_t k = 1; k < catalog.signatures.size(); ++k) input.add_embedding(catalog.signatures[k]);
+  return input;
+}
+
+// The checks of a dartcheck row: a valid map of `quads` faces, positions
+// consistent and total, the interior points CGAL's within tol.
+bool subdivided(const dartcheck::EmbeddedMap& g, std::size_t quads, const Points& ref, double tol, Row& row) {
+  using namespace dartcheck;
+  if (count_cells(g.map).cells[2] != quads || !check_map(g.map).valid() || !check_embedding(g.map, g.embeddings[0], true).consistent()) return false;
+  const Points p = points_of(g);
+  row.deviation = deviation(p.interior, ref.interior, tol);
+  row.boundary = p.boundary;
+  return row.deviation <= tol && p.boundary == ref.boundary;
+}
+
 Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck::Evaluation evaluation, const Points& ref, double tol) {
   using namespace dartcheck;
   const Catalog& catalog = subdivision_catalog();
   const CatalogRule &points = *catalog.find_rule("catmull-clark-points"), &cc = *catalog.find_rule("catmull-clark");
-  EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.signatures[0]);
-  for (std::size_t k = 1; k < catalog.signatures.size(); ++k) input.add_embedding(catalog.signatures[k]);
+  const EmbeddedMap input = subdivision_input(off);
   const std::vector<Dart> hooks = orbit_hooks(input.map, {0, 1, 2});
   Row row;
   row.r = measure(runs, [&](double& ms, std::size_t& out) {
@@ -177,11 +196,7 @@ Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck
     }
     ms = since(t0);
     out = g.map.size();
-    ok = ok && count_cells(g.map).cells[2] == quads && check_map(g.map).valid() && check_embedding(g.map, g.embeddings[0], true).consistent();
-    const Points p = points_of(g);
-    row.deviation = deviation(p.interior, ref.interior, tol);
-    row.boundary = p.boundary;
-    return ok && row.deviation <= tol && p.boundary == ref.boundary;
+    return ok && subdivided(g, quads, ref, tol, row);
   });
   return row;
 }
@@ -190,9 +205,7 @@ Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck
 // evaluation per class, the same checks as the interpreter's rows.
 Row run_compiled(const std::string& off, int runs, std::size_t quads, const Points& ref, double tol) {
   using namespace dartcheck;
-  const Catalog& catalog = subdivision_catalog();
-  EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), catalog.signatures[0]);
-  for (std::size_t k = 1; k < catalog.signatures.size(); ++k) input.add_embedding(catalog.signatures[k]);
+  const EmbeddedMap input = subdivision_input(off);
   const std::vector<Dart> hooks = orbit_hooks(input.map, {0, 1, 2});
   Row row;
   row.r = measure(runs, [&](double& ms, std::size_t& out) {
@@ -206,11 +219,7 @@ Row run_compiled(const std::string& off, int runs, std::size_t quads, const Poin
     }
     ms = since(t0);
     out = g.map.size();
-    ok = ok && count_cells(g.map).cells[2] == quads && check_map(g.map).valid() && check_embedding(g.map, g.embeddings[0], true).consistent();
-    const Points p = points_of(g);
-    row.deviation = deviation(p.interior, ref.interior, tol);
-    row.boundary = p.boundary;
-    return ok && row.deviation <= tol && p.boundary == ref.boundary;
+    return ok && subdivided(g, quads, ref, tol, row);
   });
   return row;
 }

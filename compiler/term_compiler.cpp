@@ -9,6 +9,7 @@
 #include <fmt/ranges.h>
 
 #include "compiler/cpp_text.hpp"
+#include "rewriting/embedded_application.hpp"
 #include "rewriting/term_functions.hpp"
 
 namespace dartcheck::compiler {
@@ -60,41 +61,17 @@ struct TermCode::Plan {
   const Operation& op;
   const SchemeFacts& facts;
   const RuleTerms& terms;
-  std::vector<const EmbeddingSignature*> used;
-  std::vector<std::string> embeddings;  // every embedding a term names: e0, e1, ...
-  std::vector<NodeId> left_node, right_node, stored_at;
-  std::vector<char> closed, left_closed;
+  TermFacts tf;  // the interpreter's own decisions (term_facts)
+  const std::vector<const EmbeddingSignature*>& used = tf.used;
+  const std::vector<NodeId>&left_node = tf.left_node, &right_node = tf.right_node, &stored_at = tf.stored_at;
+  const std::vector<char>&closed = tf.closed, &left_closed = tf.left_closed;
+  std::vector<std::string> embeddings;      // every embedding a term names: e0, e1, ...
   std::map<const Term*, std::size_t> site;  // collect -> CollectSite number (and bag)
   std::vector<const Term*> sites;
   std::vector<Grouping> right_groups;  // per used embedding
 
-  Plan(const Operation& o, const SchemeFacts& f) : op(o), facts(f), terms(*o.terms) {
-    const Rule& r = op.rule;
-    used = terms.used();
+  Plan(const Operation& o, const SchemeFacts& f) : op(o), facts(f), terms(*o.terms), tf(term_facts(o.rule, *o.terms)) {
     for (const EmbeddingSignature* e : used) embedding(e->name);
-    for (const NodeTerm& x : terms.left) left_node.push_back(*r.left().find(x.node));
-    // As the interpreter: R's term is a value G keeps when it repeats its
-    // preserved node's L label or is `x.pi` for its own embedding.
-    for (const NodeTerm& x : terms.right) {
-      right_node.push_back(*r.right().find(x.node));
-      const NodeId l = r.to_left(right_node.back());
-      const Term* before = l == no_node ? nullptr : terms.find('L', r.left().name(l), x.embedding);
-      NodeId at = before && before->same(x.term) ? l : no_node;
-      if (at == no_node && x.term.kind == Term::Kind::access && x.term.name == x.embedding && x.term.args[0].kind == Term::Kind::variable)
-        if (const auto v = r.left().find(x.term.args[0].name)) at = *v;
-      stored_at.push_back(at);
-    }
-    const TopoGraph &L = r.left(), &R = r.right();
-    for (const EmbeddingSignature* sig : used) {
-      bool all = true;
-      for (NodeId y = 0; all && y < R.node_count(); ++y)
-        for (Dim i : sig->orbit) all = all && R.out_arcs(y, i).size() == 1;
-      closed.push_back(all);
-      bool left = true;
-      for (NodeId x = 0; left && x < L.node_count(); ++x)
-        for (Dim i : sig->orbit) left = left && !L.out_arcs(x, i).empty();
-      left_closed.push_back(left);
-    }
     auto number = [&](const Term& t, const auto& self) -> void {
       if (t.kind == Term::Kind::access || t.kind == Term::Kind::collect) embedding(t.name);
       if (t.kind == Term::Kind::collect) {
@@ -105,7 +82,7 @@ struct TermCode::Plan {
     };
     for (const NodeTerm& x : terms.left) number(x.term, number);
     for (const NodeTerm& x : terms.right) number(x.term, number);
-    for (const EmbeddingSignature* sig : used) right_groups.push_back(grouping(R, op.words.right, sig->orbit));
+    for (const EmbeddingSignature* sig : used) right_groups.push_back(grouping(op.rule.right(), op.words.right, sig->orbit));
   }
 
   std::size_t embedding(const std::string& name) {

@@ -58,30 +58,10 @@ struct EmbeddedRewriter::Context {
   const RuleTerms& terms;
   EmbeddedMap& g;
   Evaluation evaluation;
-  std::vector<NodeId> left_node, right_node;  // of terms.left[k], terms.right[k]
-  // stored_at[k]: the L node whose matched dart's stored value is R term
-  // k's value, or no_node when the term is evaluated. Either the term
-  // repeats the L label of its preserved node (same embedding, same term:
-  // the labeled match checked it), or it is `x.pi` for its own embedding
-  // pi: no evaluation, and the orbit shares the stored pool entry.
-  std::vector<NodeId> stored_at;
-  // used[u] = terms.used()[u]. closed[u]: every node of R has one
-  // out-arc of each dimension of used[u]'s orbit. A successful rewrite
-  // makes every arc of R a link of H between the comatched darts (an
-  // added arc is written once, two added i-arcs out of one node or an
-  // added arc beside a kept one are refused, a kept arc is a matched link
-  // no removal touches, and compaction renumbers links and comatch
-  // alike; SchemeApplication.IsTheDerivationOfTheInstantiatedRule checks
-  // it), so the links of H in that orbit from an instance of R lead to
-  // instances of R: a class of the instantiated R is a whole pi-orbit of
-  // H, written without a walk.
-  std::vector<const EmbeddingSignature*> used;
-  std::vector<char> closed;
-  // left_closed[u]: every node of L has an out-arc of each dimension of
-  // used[u]'s orbit. A match maps arcs to links, so the matched darts are
-  // then closed under that orbit's links and each class of the
-  // instantiated L is a whole pi-orbit of G: Lemma 3 cannot fail.
-  std::vector<bool> left_closed;
+  TermFacts facts;  // what the rule and its terms decide alone
+  const std::vector<NodeId>&left_node = facts.left_node, &right_node = facts.right_node, &stored_at = facts.stored_at;
+  const std::vector<const EmbeddingSignature*>& used = facts.used;
+  const std::vector<char>&closed = facts.closed, &left_closed = facts.left_closed;
   TermEvaluator ev;
   // The terms of L and R compiled for ev, once per application (the map
   // may have gained embeddings between applications).
@@ -106,32 +86,10 @@ struct EmbeddedRewriter::Context {
   DartTable orbit_of, given;  // each left empty between applications
 
   Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
-      : rule(r), words(w), terms(t), g(map), evaluation(e), ev(map), walker(map.map), scheme(r, w) {
-    for (const NodeTerm& x : t.left) left_node.push_back(*r.left().find(x.node));
-    for (const NodeTerm& x : t.right) {
-      right_node.push_back(*r.right().find(x.node));
-      const NodeId l = r.to_left(right_node.back());
-      const Term* before = l == no_node ? nullptr : t.find('L', r.left().name(l), x.embedding);
-      NodeId at = before && before->same(x.term) ? l : no_node;
-      if (at == no_node && x.term.kind == Term::Kind::access && x.term.name == x.embedding && x.term.args[0].kind == Term::Kind::variable)
-        if (const auto v = r.left().find(x.term.args[0].name)) at = *v;
-      stored_at.push_back(at);
-    }
-    used = t.used();
+      : rule(r), words(w), terms(t), g(map), evaluation(e), facts(term_facts(r, t)), ev(map), walker(map.map), scheme(r, w) {
     classes.resize(used.size());
     class_source.resize(used.size());
     for (const EmbeddingSignature* sig : used) used_gens.push_back(dims_generators(sig->orbit));
-    const TopoGraph& R = r.right();
-    for (const EmbeddingSignature* sig : used) {
-      bool all = true;
-      for (NodeId y = 0; all && y < R.node_count(); ++y)
-        for (Dim i : sig->orbit) all = all && R.out_arcs(y, i).size() == 1;
-      closed.push_back(all);
-      bool left = true;
-      for (NodeId x = 0; left && x < r.left().node_count(); ++x)
-        for (Dim i : sig->orbit) left = left && !r.left().out_arcs(x, i).empty();
-      left_closed.push_back(left);
-    }
   }
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
@@ -442,6 +400,33 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     }
   }
   return {std::move(out), Refusal::none, {}};
+}
+
+TermFacts term_facts(const Rule& r, const RuleTerms& t) {
+  TermFacts f;
+  for (const NodeTerm& x : t.left) f.left_node.push_back(*r.left().find(x.node));
+  for (const NodeTerm& x : t.right) {
+    f.right_node.push_back(*r.right().find(x.node));
+    const NodeId l = r.to_left(f.right_node.back());
+    const Term* before = l == no_node ? nullptr : t.find('L', r.left().name(l), x.embedding);
+    NodeId at = before && before->same(x.term) ? l : no_node;
+    if (at == no_node && x.term.kind == Term::Kind::access && x.term.name == x.embedding && x.term.args[0].kind == Term::Kind::variable)
+      if (const auto v = r.left().find(x.term.args[0].name)) at = *v;
+    f.stored_at.push_back(at);
+  }
+  f.used = t.used();
+  const TopoGraph &L = r.left(), &R = r.right();
+  for (const EmbeddingSignature* sig : f.used) {
+    bool all = true;
+    for (NodeId y = 0; all && y < R.node_count(); ++y)
+      for (Dim i : sig->orbit) all = all && R.out_arcs(y, i).size() == 1;
+    f.closed.push_back(all);
+    bool left = true;
+    for (NodeId x = 0; left && x < L.node_count(); ++x)
+      for (Dim i : sig->orbit) left = left && !L.out_arcs(x, i).empty();
+    f.left_closed.push_back(left);
+  }
+  return f;
 }
 
 EmbeddedRewriter::EmbeddedRewriter(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g, Evaluation evaluation)

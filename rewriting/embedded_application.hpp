@@ -60,6 +60,32 @@ enum class Evaluation : std::uint8_t {
   one_per_orbit,
 };
 
+/// What an embedded application derives from the rule and its terms alone:
+/// computed once per EmbeddedRewriter, and by `dartcheck compile`, which
+/// generates code from it, so both decide alike.
+struct TermFacts {
+  std::vector<NodeId> left_node, right_node;  // the node of terms.left[k], terms.right[k]
+  /// stored_at[k]: the L node whose matched dart's stored value is R term
+  /// k's value, or no_node when the term is evaluated. Either the term
+  /// repeats the L label of its preserved node (same embedding, same term:
+  /// the labeled match checked it), or it is `x.pi` for its own embedding
+  /// pi: no evaluation, and the orbit shares the stored pool entry.
+  std::vector<NodeId> stored_at;
+  std::vector<const EmbeddingSignature*> used;  // terms.used()
+  /// closed[u]: every node of R has one out-arc of each dimension of
+  /// used[u]'s orbit. A successful rewrite makes every arc of R a link of H
+  /// between the comatched darts, so the links of H in that orbit from an
+  /// instance of R lead to instances of R: a class of the instantiated R is
+  /// a whole pi-orbit of H, written without a walk.
+  std::vector<char> closed;
+  /// left_closed[u]: every node of L has an out-arc of each dimension of
+  /// used[u]'s orbit. A match maps arcs to links, so the matched darts are
+  /// then closed under that orbit's links and each class of the
+  /// instantiated L is a whole pi-orbit of G: Lemma 3 cannot fail.
+  std::vector<char> left_closed;
+};
+TermFacts term_facts(const Rule& rule, const RuleTerms& terms);
+
 /// Applies one embedded rule many times to one map, keeping its
 /// traversal marks, per-dart tables and evaluator between applications:
 /// a loop of small applications on a large map costs the darts each one
