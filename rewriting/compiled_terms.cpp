@@ -15,6 +15,7 @@ CollectSite::CollectSite(std::string embedding, std::vector<Dim> orbit)
 
 void TermWorkspace::prepare(std::size_t used, std::size_t sites) {
   if (bags.size() < sites) bags.resize(sites);
+  if (within.size() < sites) within.resize(sites);
   class_of.resize(used);
   class_count.resize(used);
   sources.resize(used);
@@ -44,13 +45,14 @@ void TermWorkspace::walkers_for(const Map& g) {
 
 std::span<const Value> TermWorkspace::collect(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, Dart d) {
   if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", site.name));
-  if (!site.ready || site.for_orbit != e->signature.orbit) {
-    std::vector<Dim> within;  // <o> ∩ <o'>, in <o>'s order as the evaluator's
+  Within& w = within[bag];
+  if (w.for_site != &site || w.for_orbit != e->signature.orbit) {
+    std::vector<Dim> common;  // <o> ∩ <o'>, in <o>'s order as the evaluator's
     for (Dim i : e->signature.orbit)
-      if (std::find(site.dims.begin(), site.dims.end(), i) != site.dims.end()) within.push_back(i);
-    site.inner = dims_generators(within);
-    site.for_orbit = e->signature.orbit;
-    site.ready = true;
+      if (std::find(site.dims.begin(), site.dims.end(), i) != site.dims.end()) common.push_back(i);
+    w.inner = dims_generators(common);
+    w.for_orbit = e->signature.orbit;
+    w.for_site = &site;
   }
   walkers_for(g);
   std::vector<Value>& out = bags[bag];
@@ -58,7 +60,7 @@ std::span<const Value> TermWorkspace::collect(std::size_t bag, const CollectSite
   const bool two_letters = site.outer.size() == 2 && site.outer[0].size() == 1 && site.outer[1].size() == 1;
   const std::span<const Dart> orbit =
       two_letters && alternate(g, site.outer[0][0], site.outer[1][0], d) ? std::span<const Dart>(cycle_) : outer_->orbit(d, site.outer);
-  collect_orbit_values(g, *e, orbit, site.inner, *inner_, done_, out, site.name, site.dims);
+  collect_orbit_values(g, *e, orbit, w.inner, *inner_, done_, out, site.name, site.dims);
   return out;
 }
 

@@ -30,18 +30,13 @@ struct Source {
 };
 
 /// A collect pi<o'>(x) of a term, known when the code is generated: its
-/// embedding's name and <o'>. The generators of <o> ∩ <o'> depend on the
-/// map's embedding pi : <o> (as in the evaluator), so they are found at the
-/// first collect and kept while the map's <o> stays the same.
+/// embedding's name and <o'>. Immutable (the generated code keeps it in a
+/// function-local static, shared by every thread).
 struct CollectSite {
   CollectSite(std::string embedding, std::vector<Dim> orbit);
   std::string name;
   std::vector<Dim> dims;
   std::vector<Word> outer;
-  // The map's <o> that `inner` was made for.
-  mutable std::vector<Dim> for_orbit;
-  mutable std::vector<Word> inner;
-  mutable bool ready = false;
 };
 
 /// The tables of an application's terms, kept from one application to the
@@ -50,6 +45,16 @@ struct TermWorkspace {
   /// One bag per collect of the function (a term may hold several, each
   /// lent to its call while the others are evaluated).
   std::vector<std::vector<Value>> bags;
+  /// Per collect: the generators of <o> ∩ <o'>, which depend on the map's
+  /// embedding pi : <o> (as in the evaluator), found at the first collect
+  /// and kept while the site and the map's <o> stay the same (a workspace
+  /// may serve several compiled functions, whose collects share numbers).
+  struct Within {
+    const CollectSite* for_site = nullptr;
+    std::vector<Dim> for_orbit;
+    std::vector<Word> inner;
+  };
+  std::vector<Within> within;
   /// class_of[u]: the classes of the instances of R for the u-th
   /// embedding the rule labels, numbered 0 .. class_count[u] - 1, at
   /// [group * np + p] where the generated code found groups of nodes (nodes
