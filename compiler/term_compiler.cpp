@@ -371,7 +371,7 @@ void TermCode::before_rewrite(Out out) const {
 void TermCode::after_rewrite(Out out) const {
   const Plan& p = *plan_;
   const Rule& r = p.op.rule;
-  const TopoGraph &L = r.left(), &R = r.right();
+  const TopoGraph& R = r.right();
   fmt::format_to(out, "  // Labels (003 Def. 12).\n  em.follow(ws.moved);\n  {{\n  [[maybe_unused]] const Dart* const cm = ws.comatch.data();\n");
   std::vector<NodeId> added;
   for (NodeId y = 0; y < R.node_count(); ++y)
@@ -443,7 +443,6 @@ void TermCode::after_rewrite(Out out) const {
     fmt::format_to(out, "  }}\n");
   }
   fmt::format_to(out, "  }}\n");
-  (void)L;
 }
 
 }  // namespace dartcheck::compiler
