@@ -3,10 +3,10 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
+#include "io/counterexample_file.hpp"
 #include "io/map_io.hpp"
 
 namespace dartcheck::analysis {
@@ -38,35 +38,24 @@ std::string write_counterexample(const std::string& dir, const std::string& stem
   write_file(stem + ".host.yaml", map_to_yaml(cx.host));
   if (cx.result) write_file(stem + ".result.yaml", map_to_yaml(*cx.result));
   const std::string replay = replay_command(what, catalog, rule, stem + ".host.yaml", cx.hooks);
-  YAML::Emitter y;
-  y << YAML::BeginMap;
-  y << YAML::Key << "rule" << YAML::Value << rule;
-  y << YAML::Key << "catalog" << YAML::Value << catalog;
-  for (const auto& [k, v] : fields) y << YAML::Key << k << YAML::Value << v;
-  y << YAML::Key << "static_failures" << YAML::Value << YAML::Flow << static_failures;
-  y << YAML::Key << "host" << YAML::Value << stem + ".host.yaml";
-  y << YAML::Key << "host_darts" << YAML::Value << cx.host.size();
-  y << YAML::Key << "hooks" << YAML::Value << YAML::Flow << cx.hooks;
-  if (!cx.match.empty()) {
-    y << YAML::Key << "match" << YAML::Value << YAML::Flow << YAML::BeginMap;
-    for (const auto& [node, dart] : cx.match) y << YAML::Key << node << YAML::Value << dart;
-    y << YAML::EndMap;
-  }
-  if (cx.result) y << YAML::Key << "result" << YAML::Value << stem + ".result.yaml";
-  y << YAML::Key << "broken" << YAML::Value << YAML::Flow << cx.broken();
-  if (!cx.unrepresentable.empty()) y << YAML::Key << "not_representable" << YAML::Value << cx.unrepresentable;
-  if (!cx.event_contradictions.empty()) y << YAML::Key << "event_contradictions" << YAML::Value << cx.event_contradictions;
-  y << YAML::Key << "violations" << YAML::Value << YAML::BeginSeq;
-  for (const auto& v : cx.violations) {
-    y << YAML::Flow << YAML::BeginMap << YAML::Key << "dart" << YAML::Value << v.element << YAML::Key << "constraint" << YAML::Value
-      << constraint_name(v) << YAML::Key << "what" << YAML::Value << describe(v, fmt::format("dart {}", v.element)) << YAML::EndMap;
-  }
-  y << YAML::EndSeq;
-  y << YAML::Key << "origin" << YAML::Value << cx.origin;
-  y << YAML::Key << "minimal" << YAML::Value << cx.minimal;
-  y << YAML::Key << "replay" << YAML::Value << replay;
-  y << YAML::EndMap;
-  write_file(stem + ".counterexample.yaml", std::string(y.c_str()) + "\n");
+  CounterexampleFile file{rule,
+                          catalog,
+                          fields,
+                          static_failures,
+                          stem + ".host.yaml",
+                          cx.host.size(),
+                          cx.hooks,
+                          cx.match,
+                          cx.result ? stem + ".result.yaml" : "",
+                          cx.broken(),
+                          cx.unrepresentable,
+                          cx.event_contradictions,
+                          {},
+                          cx.origin,
+                          cx.minimal,
+                          replay};
+  for (const auto& v : cx.violations) file.violations.push_back({v.element, constraint_name(v), describe(v, fmt::format("dart {}", v.element))});
+  write_file(stem + ".counterexample.yaml", counterexample_file_text(file));
   return replay;
 }
 

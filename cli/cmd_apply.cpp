@@ -22,7 +22,7 @@
 #include "io/map_io.hpp"
 #include "io/jerboa_jba.hpp"
 #include "rewriting/application.hpp"
-#include "inference/kappa_file.hpp"
+#include "io/kappa_file.hpp"
 
 namespace dartcheck::cli {
 
@@ -104,7 +104,7 @@ void write_kappa(const ApplyOptions& o, const Renumbering& c, std::size_t g_size
     fmt::print("darts renumbered: {} of the {} preserved darts have another id in the result{}\n", moved, pairs.size(),
                o.kappa_out.empty() ? " (--kappa-out FILE writes the correspondence for infer --kappa)" : "");
   if (o.kappa_out.empty()) return;
-  write_file(o.kappa_out, inference::kappa_file_text(pairs, {"The dart correspondence of one application (dartcheck apply --kappa-out):",
+  write_file(o.kappa_out, kappa_file_text(pairs, {"The dart correspondence of one application (dartcheck apply --kappa-out):",
                                                              "before dart (host), after dart (result), for every preserved dart."}));
   fmt::print("written: {} ({} preserved darts)\n", o.kappa_out, pairs.size());
 }

@@ -19,7 +19,7 @@
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "inference/infer.hpp"
-#include "inference/kappa_file.hpp"
+#include "io/kappa_file.hpp"
 #include "io/catalog.hpp"
 #include "io/catalog_writer.hpp"
 #include "io/jerboa_modeler_writer.hpp"

@@ -6,7 +6,6 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <yaml-cpp/exceptions.h>
 
 #include "analysis/interrupt.hpp"
 #include "cli/commands.hpp"
@@ -341,10 +340,6 @@ int run_command(const Commands& commands) {
   } catch (const OutputError& e) {
     fmt::print(stderr, "error: {}\n", printable(e.what()));
     return cli::output_error;
-  } catch (const YAML::Exception& e) {
-    // Readers turn YAML errors into positioned InputErrors; this is a last resort.
-    fmt::print(stderr, "error: YAML at line {}, column {}: {}\n", e.mark.line + 1, e.mark.column + 1, printable(e.msg));
-    return cli::bad_input;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "error: out of memory (the input is larger than this machine can hold; see --limit-darts)\n");
     return cli::bad_input;

@@ -1,5 +1,5 @@
 // The side files (a byte chooses): κ files of the inference
-// (inference/kappa_file) and baselines (io/baseline). What reads is
+// (io/kappa_file) and baselines (io/baseline). What reads is
 // written back by dartcheck's own writer and must read back equal: a
 // baseline's entries; a κ file's explicit pairs (kappa_file_text).
 #include <sstream>
@@ -7,7 +7,7 @@
 
 #include "core/input_error.hpp"
 #include "fuzz/harness.hpp"
-#include "inference/kappa_file.hpp"
+#include "io/kappa_file.hpp"
 #include "io/baseline.hpp"
 
 namespace {
@@ -30,9 +30,9 @@ void baseline_round_trip(const std::string& file) {
 }
 
 void kappa_round_trip(const std::string& file) {
-  const inference::KappaSpec k = inference::read_kappa_file(file, Model::gmap(2));
+  const inference::KappaSpec k = read_kappa_file(file, Model::gmap(2));
   if (k.identity || !k.orbits.empty()) return;  // kappa_file_text writes explicit pairs only
-  const inference::KappaSpec back = inference::read_kappa_file(file_of(inference::kappa_file_text(k.pairs, {"fuzz"}), ".yaml"), Model::gmap(2));
+  const inference::KappaSpec back = read_kappa_file(file_of(kappa_file_text(k.pairs, {"fuzz"}), ".yaml"), Model::gmap(2));
   if (back.pairs != k.pairs) throw std::logic_error("a written κ file reads back with other pairs");
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/input_error.hpp"
 #include "core/map.hpp"
+#include "io/kappa_file.hpp"
 
 namespace dartcheck::inference {
 
@@ -50,21 +51,8 @@ class KappaGraph {
   std::size_t preserved_ = 0;
 };
 
-/// How the user states κ (000 Sec. 9: explicit pairs, Jerboa's snapshot
-/// convention of equal dart ids, or orbits associated and walked in
-/// parallel).
-struct KappaSpec {
-  bool identity = false;  // every dart id present in both maps
-  std::vector<std::pair<Dart, Dart>> pairs;
-  struct OrbitPair {
-    std::vector<Dim> orbit;
-    Dart before = 0, after = 0;
-  };
-  std::vector<OrbitPair> orbits;
-  /// Where each pair and orbit association was read (a κ file), if known:
-  /// errors then name file:line:column.
-  std::vector<SourceLocation> pair_locations, orbit_locations;
-};
+/// κ as a file or a caller states it: io/kappa_file.hpp.
+using dartcheck::KappaSpec;
 
 /// Builds κ(G, H). Throws std::invalid_argument with a sentence when the
 /// maps have different models, a model is not a G-map (κ-graphs are

@@ -9,10 +9,29 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
-#include "inference/kappa_graph.hpp"
+#include "core/input_error.hpp"
+#include "core/map.hpp"
 
-namespace dartcheck::inference {
+namespace dartcheck {
+
+/// How the user states κ (000 Sec. 9: explicit pairs, Jerboa's snapshot
+/// convention of equal dart ids, or orbits associated and walked in
+/// parallel).
+struct KappaSpec {
+  bool identity = false;  // every dart id present in both maps
+  std::vector<std::pair<Dart, Dart>> pairs;
+  struct OrbitPair {
+    std::vector<Dim> orbit;
+    Dart before = 0, after = 0;
+  };
+  std::vector<OrbitPair> orbits;
+  /// Where each pair and orbit association was read (a κ file), if known:
+  /// errors then name file:line:column.
+  std::vector<SourceLocation> pair_locations, orbit_locations;
+};
 
 KappaSpec read_kappa_file(const std::string& file, const Model& model);
 
@@ -20,4 +39,4 @@ KappaSpec read_kappa_file(const std::string& file, const Model& model);
 /// read_kappa_file reads back; `comment` goes first, one "# " line each.
 std::string kappa_file_text(const std::vector<std::pair<Dart, Dart>>& pairs, const std::vector<std::string>& comment);
 
-}  // namespace dartcheck::inference
+}  // namespace dartcheck

@@ -1,18 +1,16 @@
-#include "inference/kappa_file.hpp"
+#include "io/kappa_file.hpp"
 
 #include <fmt/format.h>
 
 #include "io/yaml_util.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 
-namespace dartcheck::inference {
+namespace dartcheck {
 namespace {
 
 SourceLocation where(const std::string& file, const YAML::Node& n) { return {file, n.Mark().line + 1, n.Mark().column + 1}; }
 
-}  // namespace
-
-KappaSpec read_kappa_file(const std::string& file, const Model& model) {
+KappaSpec read_kappa(const std::string& file, const Model& model) {
   const YAML::Node root = load_yaml_file(file);
   yaml::expect_map(file, root, "kappa file");
   yaml::allow_keys(file, root, {"identity", "pairs", "orbits"});
@@ -58,6 +56,16 @@ KappaSpec read_kappa_file(const std::string& file, const Model& model) {
   return spec;
 }
 
+}  // namespace
+
+KappaSpec read_kappa_file(const std::string& file, const Model& model) {
+  try {
+    return read_kappa(file, model);
+  } catch (const YAML::Exception& e) {
+    throw yaml_input_error(file, e);  // a shape the reader did not foresee: still at its position
+  }
+}
+
 std::string kappa_file_text(const std::vector<std::pair<Dart, Dart>>& pairs, const std::vector<std::string>& comment) {
   std::string out;
   for (const auto& line : comment) out += fmt::format("# {}\n", line);
@@ -66,4 +74,4 @@ std::string kappa_file_text(const std::vector<std::pair<Dart, Dart>>& pairs, con
   return out + "]\n";
 }
 
-}  // namespace dartcheck::inference
+}  // namespace dartcheck
