@@ -250,7 +250,7 @@ Result run_generic_floor(const std::string& off, int runs, std::size_t triangles
     std::array<std::vector<std::uint32_t>, 3> shift;
     DartTable corner_of;
     OrbitWalker walker(m);
-    const std::vector<Word> vertex_gens = dims_generators({1, 2});
+    const std::vector<OrbitWord> vertex_gens = dims_generators({1, 2});
     // Classes of P_v under two generators, by a walk along the shifts.
     auto classes = [&](int a, int b, std::vector<std::uint32_t>& cls) {
       cls.assign(pattern.size(), none);

@@ -31,11 +31,11 @@ Map load(const std::string& target, const Model& model, const Catalog* catalog) 
   return analysis::resolve_map(target, model, catalog);
 }
 
-querymodify::Constraint parse_free(const std::string& s) {
-  if (s == "any") return querymodify::Constraint::any;
-  if (s == "boundary") return querymodify::Constraint::boundary;
-  if (s == "interior") return querymodify::Constraint::interior;
-  if (s == "no-link") return querymodify::Constraint::no_connection;
+querymodify::BoundaryCondition parse_free(const std::string& s) {
+  if (s == "any") return querymodify::BoundaryCondition::any;
+  if (s == "boundary") return querymodify::BoundaryCondition::boundary;
+  if (s == "interior") return querymodify::BoundaryCondition::interior;
+  if (s == "no-link") return querymodify::BoundaryCondition::no_connection;
   throw command_line(fmt::format("--free: expected any, boundary, interior or no-link, got '{}'", s));
 }
 
@@ -46,7 +46,7 @@ struct NamedQuery {
 
 // The --query maps read as words from --start, then the hex patterns.
 std::vector<NamedQuery> named_queries(const QueryOptions& o, const Map& input, const Model& model, const Catalog* cat,
-                                      querymodify::Constraint free_links) {
+                                      querymodify::BoundaryCondition free_links) {
   std::vector<NamedQuery> queries;
   for (const auto& target : o.queries) {
     const Map q = load(target, model, cat);
@@ -76,7 +76,7 @@ int query(const QueryOptions& o) {
     throw command_line(fmt::format("--format: expected text, json or jsonl, got '{}'", o.format));
   if (o.strategy != "all" && o.strategy != "greedy" && o.strategy != "global")
     throw command_line(fmt::format("--strategy: expected all, greedy or global, got '{}'", o.strategy));
-  const querymodify::Constraint free_links = parse_free(o.free);
+  const querymodify::BoundaryCondition free_links = parse_free(o.free);
   if (o.queries.empty() && !o.hex) throw command_line("no query: give --query (repeatable) or --hex");
   const auto model = Model::by_name(o.model);
   if (!model) throw command_line(fmt::format("--model: unknown model '{}' (expected {})", o.model, Model::known_names()));
@@ -101,7 +101,7 @@ int query(const QueryOptions& o) {
                         input.model().name,
                         o.free,
                         o.strategy,
-                        o.queries.empty() ? "" : constraint_symbol(free_links),
+                        o.queries.empty() ? "" : boundary_symbol(free_links),
                         input.size(),
                         trie.nodes(),
                         o.queries.size(),

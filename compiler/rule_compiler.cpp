@@ -390,7 +390,7 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
                  "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::Workspace;\n"
                  "// Terms (rewriting/compiled_terms.hpp).\n"
                  "using dartcheck::dims_generators;\nusing dartcheck::EmbeddedMap;\nusing dartcheck::Embedding;\nusing dartcheck::EvaluationError;\n"
-                 "using dartcheck::Value;\nusing dartcheck::ValueType;\nusing dartcheck::Word;\nusing dartcheck::compiled::CollectSite;\n"
+                 "using dartcheck::Value;\nusing dartcheck::ValueType;\nusing dartcheck::OrbitWord;\nusing dartcheck::compiled::CollectSite;\n"
                  "using dartcheck::compiled::end_writes;\nusing dartcheck::compiled::neighbour;\nusing dartcheck::compiled::overlap;\n"
                  "using dartcheck::compiled::read;\nusing dartcheck::compiled::Source;\nusing dartcheck::compiled::TermWorkspace;\n"
                  "using dartcheck::compiled::unlabel;\nusing dartcheck::compiled::write_orbit;\n\n",

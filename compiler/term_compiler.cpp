@@ -312,7 +312,7 @@ void TermCode::before_rewrite(Out out) const {
       const EmbeddingSignature& e = *p.used[u];
       fmt::format_to(out, "  {{  // 003 Lemma 3 for {} <{}>: L does not close the orbit\n", comment_text(e.name), fmt::join(e.orbit, ","));
       p.classes(out, L, p.op.words.left, e.orbit, "tw.left_class");
-      fmt::format_to(out, "    static const std::vector<Word> gens = dims_generators({{{}}});\n    static const char* const names[] = {{",
+      fmt::format_to(out, "    static const std::vector<OrbitWord> gens = dims_generators({{{}}});\n    static const char* const names[] = {{",
                      fmt::join(e.orbit, ", "));
       for (NodeId x = 0; x < L.node_count(); ++x) fmt::format_to(out, "{}{}", x ? ", " : "", cpp_literal(L.name(x)));
       fmt::format_to(
@@ -391,7 +391,7 @@ void TermCode::after_rewrite(Out out) const {
     const std::size_t e = p.index_of(t.embedding);
     fmt::format_to(out,
                    "  {{  // {} keeps no {} label in R: it loses its value\n"
-                   "    const std::vector<Word> gens = dims_generators(e{}->signature.orbit);\n"
+                   "    const std::vector<OrbitWord> gens = dims_generators(e{}->signature.orbit);\n"
                    "    for (std::size_t p = 0; p < np; ++p) unlabel(tw, g, *e{}, gens, cm[{} * np + p], {});\n  }}\n",
                    comment_text(t.node), comment_text(t.embedding), e, e, y, p.extended());
   }
@@ -418,7 +418,8 @@ void TermCode::after_rewrite(Out out) const {
                        comment_text(R.name(y)), p.class_of(u, y), y);
     } else if (p.extended()) {
       fmt::format_to(
-          out, "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n    static const std::vector<Word> gens = dims_generators({{{}}});\n",
+          out,
+          "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n    static const std::vector<OrbitWord> gens = dims_generators({{{}}});\n",
           u, fmt::join(sig.orbit, ", "));
       for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
         if (p.terms.right[k].embedding != sig.name) continue;

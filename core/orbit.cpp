@@ -4,15 +4,15 @@
 
 namespace dartcheck {
 
-std::vector<Word> dims_generators(const std::vector<Dim>& dims) {
-  std::vector<Word> g;
+std::vector<OrbitWord> dims_generators(const std::vector<Dim>& dims) {
+  std::vector<OrbitWord> g;
   for (Dim i : dims) g.push_back({i});
   return g;
 }
 
-std::vector<Word> cell_generators(const Model& model, int k) {
+std::vector<OrbitWord> cell_generators(const Model& model, int k) {
   if (!model.is_generalized() && k == 0) {
-    std::vector<Word> g;
+    std::vector<OrbitWord> g;
     for (Dim j : model.dims)
       if (j >= 2) g.push_back({j, 1});
     return g;
@@ -25,7 +25,7 @@ std::vector<Word> cell_generators(const Model& model, int k) {
 
 OrbitWalker::OrbitWalker(const Map& map) : map_(map), marks_((map.size() + 63) / 64, 0) {}
 
-void OrbitWalker::traverse(Dart d, std::span<const Word> generators) {
+void OrbitWalker::traverse(Dart d, std::span<const OrbitWord> generators) {
   fit();
   const std::size_t first = visited_.size();
   visited_.push_back(d);
@@ -54,7 +54,7 @@ void OrbitWalker::traverse(Dart d, std::span<const Word> generators) {
   }
   for (std::size_t k = first; k < visited_.size(); ++k) {
     const Dart x = visited_[k];
-    for (const Word& w : generators) {
+    for (const OrbitWord& w : generators) {
       const Dart y = follow(map_, x, w);
       if (y != no_dart && !marked(y)) {
         mark(y);
@@ -64,14 +64,14 @@ void OrbitWalker::traverse(Dart d, std::span<const Word> generators) {
   }
 }
 
-const std::vector<Dart>& OrbitWalker::orbit(Dart d, std::span<const Word> generators) {
+const std::vector<Dart>& OrbitWalker::orbit(Dart d, std::span<const OrbitWord> generators) {
   visited_.clear();
   traverse(d, generators);
   for (Dart x : visited_) unmark(x);
   return visited_;
 }
 
-std::size_t OrbitWalker::count_orbits(std::span<const Word> generators) {
+std::size_t OrbitWalker::count_orbits(std::span<const OrbitWord> generators) {
   std::size_t count = 0;
   fit();
   visited_.clear();
@@ -85,7 +85,7 @@ std::size_t OrbitWalker::count_orbits(std::span<const Word> generators) {
   return count;
 }
 
-OrbitPartition partition_orbits(const Map& map, std::span<const Word> generators) {
+OrbitPartition partition_orbits(const Map& map, std::span<const OrbitWord> generators) {
   constexpr std::uint32_t unset = 0xffffffffU;
   OrbitPartition p{std::vector<std::uint32_t>(map.size(), unset), {}};
   OrbitWalker walker(map);

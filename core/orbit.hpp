@@ -16,7 +16,9 @@
 
 namespace dartcheck {
 
-using Word = std::vector<Dim>;
+/// An orbit word: a path of dimensions (O-map generators such as 21),
+/// not a conjugate word (core/conjugate_words) nor 001's query word.
+using OrbitWord = std::vector<Dim>;
 
 /// Target of the w-path from d, or no_dart if an arc is missing.
 inline Dart follow(const Map& map, Dart d, std::span<const Dim> w) {
@@ -30,9 +32,9 @@ inline Dart follow(const Map& map, Dart d, std::span<const Dim> w) {
 /// The generators of the orbit type of the k-cells of the map's model:
 /// <D \ {k}> for G-maps and for k >= 1 in O-maps; {j1 : 2 <= j <= n} for the
 /// vertices of O-maps (both letters keep the dart's origin vertex).
-std::vector<Word> cell_generators(const Model& model, int k);
+std::vector<OrbitWord> cell_generators(const Model& model, int k);
 /// Generators of an orbit type given as a set of dimensions.
-std::vector<Word> dims_generators(const std::vector<Dim>& dims);
+std::vector<OrbitWord> dims_generators(const std::vector<Dim>& dims);
 
 /// Traverses orbits with a reusable visited mark: one bit per dart,
 /// allocated once (and grown when the map grows); each traversal clears
@@ -43,16 +45,16 @@ class OrbitWalker {
   explicit OrbitWalker(const Map& map);
 
   /// The darts of the orbit of d under `generators`, in BFS order.
-  const std::vector<Dart>& orbit(Dart d, std::span<const Word> generators);
+  const std::vector<Dart>& orbit(Dart d, std::span<const OrbitWord> generators);
 
   /// Number of distinct orbits of `generators` over the whole map.
-  std::size_t count_orbits(std::span<const Word> generators);
+  std::size_t count_orbits(std::span<const OrbitWord> generators);
 
  private:
   bool marked(Dart d) const { return (marks_[d >> 6] >> (d & 63)) & 1U; }
   void mark(Dart d) { marks_[d >> 6] |= std::uint64_t{1} << (d & 63); }
   void unmark(Dart d) { marks_[d >> 6] &= ~(std::uint64_t{1} << (d & 63)); }
-  void traverse(Dart d, std::span<const Word> generators);
+  void traverse(Dart d, std::span<const OrbitWord> generators);
   // The map may have grown since the walker was made (a walker kept across
   // rule applications).
   void fit() {
@@ -73,7 +75,7 @@ struct OrbitPartition {
   std::vector<Dart> first;
   std::size_t size() const { return first.size(); }
 };
-OrbitPartition partition_orbits(const Map& map, std::span<const Word> generators);
+OrbitPartition partition_orbits(const Map& map, std::span<const OrbitWord> generators);
 
 /// Cell counts of a map: cells[k] is the number of k-cells, k = 0..n;
 /// components is the number of connected components.

@@ -2,15 +2,19 @@
 // (000's Jerboa labels, 004's orbit types, 003's collect orbits): angle
 // brackets (ASCII or U+27E8/U+27E9) around comma-separated entries, each a
 // run of digits or '_', spaces anywhere. What an entry means (a dimension,
-// a hole, an O-map word) is the caller's: rewriting/jerboa_scheme and
-// events/orbit_kind interpret the entries this returns.
+// a hole, an O-map word) is the caller's; the generalized orbit type of
+// Jerboa labels (entries are dimensions or '_') is read here too, events'
+// orbit kinds (O-map words) in events/orbit_kind.
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "core/model.hpp"
 
 namespace dartcheck {
 
@@ -27,5 +31,15 @@ void read_orbit_entries(std::string_view text, const std::function<void(const Or
 
 /// The entries of `text` in order ("<>" has none); errors as above.
 std::vector<OrbitEntry> orbit_entries(std::string_view text);
+
+/// A generalized orbit type: one entry per position, nullopt for the
+/// removing symbol '_'.
+using OrbitType = std::vector<std::optional<Dim>>;
+
+/// Parses "<0,_,2>" (also with ⟨ ⟩). Throws std::invalid_argument naming
+/// the byte position of the problem, and when a dimension repeats (a
+/// relabeling function is injective, 000 Def. 4.1).
+OrbitType parse_orbit_type(std::string_view text);
+std::string orbit_type_str(const OrbitType& t);
 
 }  // namespace dartcheck

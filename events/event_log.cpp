@@ -98,7 +98,7 @@ std::vector<LoggedEvent> derive(const Map& g, const Map& h, const OrbitKind& kin
     for (Dart d : go.of(a)) {
       if (!same) break;
       const Dart e = to_h(d);
-      for (const Word& w : kind.generators) {
+      for (const OrbitWord& w : kind.generators) {
         const Dart dg = follow(g, d, w), dh = follow(h, e, w);
         if ((dg == no_dart) != (dh == no_dart) || (dg != no_dart && to_h(dg) != dh)) {
           same = false;
@@ -173,7 +173,7 @@ void side_instance(const Map& m, const EventRule& r, const EventSide& side, cons
       const std::size_t s = local(a.source), t = local(a.target);
       for (std::size_t p = 0; p < np; ++p) unite(s * np + p, t * np + p);
     }
-    // Word generators (O-map DPO rules) join the nodes of x: one position.
+    // Orbit-word generators (O-map DPO rules) join the nodes of x: one position.
     if (!kind.single_letters())
       for (std::size_t i = 1; i < nx; ++i) unite(0, i * np);
     for (std::size_t i = 0; i < nx; ++i)

@@ -10,12 +10,12 @@
 namespace dartcheck::events {
 
 bool OrbitKind::single_letters() const {
-  return std::all_of(generators.begin(), generators.end(), [](const Word& w) { return w.size() == 1; });
+  return std::all_of(generators.begin(), generators.end(), [](const OrbitWord& w) { return w.size() == 1; });
 }
 
 DimSet OrbitKind::dims() const {
   DimSet s = 0;
-  for (const Word& w : generators)
+  for (const OrbitWord& w : generators)
     if (w.size() == 1) s |= dim_bit(w[0]);
   return s;
 }
@@ -36,7 +36,7 @@ OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
   for (const OrbitEntry& e : entries) {
     const std::string& entry = e.text;
     if (entry == "_") throw std::invalid_argument(fmt::format("orbit type '{}': entry '{}' is not a dimension", text, entry));
-    Word w;
+    OrbitWord w;
     if (model.is_generalized()) {
       // G-maps: an entry is one dimension (10-15 have two digits).
       if (entry.size() > 2) throw std::invalid_argument(fmt::format("orbit type '{}': '{}' is not a dimension", text, entry));
@@ -52,7 +52,7 @@ OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
     kind.generators.push_back(std::move(w));
   }
   std::sort(kind.generators.begin(), kind.generators.end(),
-            [](const Word& a, const Word& b) { return a.size() != b.size() ? a.size() < b.size() : a < b; });
+            [](const OrbitWord& a, const OrbitWord& b) { return a.size() != b.size() ? a.size() < b.size() : a < b; });
   return kind;
 }
 

@@ -14,7 +14,7 @@
 namespace dartcheck::events {
 
 struct OrbitKind {
-  std::vector<Word> generators;
+  std::vector<OrbitWord> generators;
   /// Every generator is a single dimension (G-map orbit types, and the
   /// O-map face and edge orbits).
   bool single_letters() const;

@@ -15,7 +15,7 @@ int find(std::vector<int>& parent, int x) {
 
 }  // namespace
 
-ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const Word& w) {
+ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const OrbitWord& w) {
   std::size_t k = 0;
   for (; k < w.size(); ++k) {
     NodeId next = no_node;
@@ -34,7 +34,7 @@ SideOrbits side_orbits(const EventRule&, const EventSide& side, const OrbitKind&
   std::iota(parent.begin(), parent.end(), 0);
   std::vector<std::vector<std::string>> missing(n);
   for (NodeId v = 0; v < n; ++v)
-    for (const Word& w : kind.generators) {
+    for (const OrbitWord& w : kind.generators) {
       const ExplicitPathEnd end = follow_explicit(side, v, w);
       if (end.letters == w.size()) {
         parent[static_cast<std::size_t>(find(parent, static_cast<int>(v)))] = find(parent, static_cast<int>(end.node));

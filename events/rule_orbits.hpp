@@ -35,7 +35,7 @@ struct ExplicitPathEnd {
   std::size_t letters;
   friend bool operator==(const ExplicitPathEnd&, const ExplicitPathEnd&) = default;
 };
-ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const Word& w);
+ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const OrbitWord& w);
 
 /// The <o>-orbits of one side of `r`.
 SideOrbits side_orbits(const EventRule& r, const EventSide& side, const OrbitKind& kind);

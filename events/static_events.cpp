@@ -69,7 +69,7 @@ namespace {
 // letter of a generator of <o>, as (source name, target name, label).
 std::multiset<std::tuple<std::string, std::string, int>> orbit_arcs(const EventSide& side, const std::vector<NodeId>& nodes, const OrbitKind& kind) {
   std::set<Dim> letters;
-  for (const Word& w : kind.generators) letters.insert(w.begin(), w.end());
+  for (const OrbitWord& w : kind.generators) letters.insert(w.begin(), w.end());
   std::multiset<std::tuple<std::string, std::string, int>> out;
   for (ArcId e : side.explicit_arcs) {
     const auto& a = side.graph->arc(e);
@@ -103,12 +103,12 @@ bool keeps_orbit(const EventRule& r, const OrbitKind& kind, const RuleOrbit& x, 
     }
   }
   if (kind.single_letters()) return arcs_l == arcs_r;
-  // Word generators (O-map vertices): the orbit is unchanged when every
+  // Orbit-word generators (O-map vertices): the orbit is unchanged when every
   // generator path ends at the same node on both sides, or leaves the
   // pattern from the same node after the same prefix (by an unmatched arc
   // of a preserved node, which the rule keeps). Nodes are compared by name.
   for (NodeId v : x.nodes)
-    for (const Word& w : kind.generators) {
+    for (const OrbitWord& w : kind.generators) {
       const ExplicitPathEnd a = follow_explicit(r.left, v, w), b = follow_explicit(r.right, rule.to_right(v), w);
       if (a.letters != b.letters || r.left.graph->name(a.node) != r.right.graph->name(b.node)) return false;
     }
@@ -269,7 +269,7 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
            x.complete ? fmt::format("{} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2)", xn)
                       : fmt::format("{} keeps its nodes, o-labels and o-arcs, but the map's orbit may reach other matched parts{}", xn, incomplete)});
     } else {
-      // Word generators: a generator path may pass through matched darts
+      // Orbit-word generators: a generator path may pass through matched darts
       // and end outside the match, so an incomplete orbit whose paths the
       // rule changes can split or merge without any of the paper's flags
       // (found by the fuzz cross-check on fig18b-rewire-paths, <21>).

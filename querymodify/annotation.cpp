@@ -22,10 +22,10 @@ constexpr std::uint32_t empty_mark = 0xFFFFFFFF;  // annotated ∅
 // d_i (0: none, empty_mark: ∅, else a label); returns what to annotate d_i
 // with (0: nothing), or nullopt for a violation.
 [[gnu::always_inline]] inline std::optional<std::uint32_t> check(std::uint32_t letter, bool free, std::uint32_t mark, bool label_taken) {
-  if (letter == 0 || letter == static_cast<std::uint32_t>(Constraint::any)) return 0;  // ε in a plain word, or '*'
-  if (letter == static_cast<std::uint32_t>(Constraint::boundary)) return free ? std::optional<std::uint32_t>(0) : std::nullopt;
-  if (letter == static_cast<std::uint32_t>(Constraint::interior)) return free ? std::nullopt : std::optional<std::uint32_t>(0);
-  if (letter == static_cast<std::uint32_t>(Constraint::no_connection)) {
+  if (letter == 0 || letter == static_cast<std::uint32_t>(BoundaryCondition::any)) return 0;  // ε in a plain word, or '*'
+  if (letter == static_cast<std::uint32_t>(BoundaryCondition::boundary)) return free ? std::optional<std::uint32_t>(0) : std::nullopt;
+  if (letter == static_cast<std::uint32_t>(BoundaryCondition::interior)) return free ? std::nullopt : std::optional<std::uint32_t>(0);
+  if (letter == static_cast<std::uint32_t>(BoundaryCondition::no_connection)) {
     if (free || mark == empty_mark) return 0;
     if (mark == unmatched) return empty_mark;
     return std::nullopt;
@@ -55,7 +55,7 @@ std::optional<QueryMatch> annotate(const Map& input, const QueryWord& w, Dart st
       const Dart di = free ? no_dart : input.link(w.dims[i], d);
       const std::uint32_t c = w.at(annotation[d], i);
       const std::uint32_t mark = free ? unmatched : annotation[di];
-      const auto result = check(c, free, mark, !is_constraint(c) && c != 0 && dart_of[c] != no_dart);
+      const auto result = check(c, free, mark, !is_boundary_condition(c) && c != 0 && dart_of[c] != no_dart);
       if (!result) return std::nullopt;
       if (*result == 0) continue;
       annotation[di] = *result;
@@ -78,7 +78,7 @@ void QueryTrie::add(const QueryWord& w, int id) {
   if (w.dims != dims_) throw std::invalid_argument("a prefix tree holds words of one model");
   std::uint32_t labels = 1;  // label 1 is the start dart
   for (std::uint32_t letter : w.letters)
-    if (!is_constraint(letter) && letter > labels) {
+    if (!is_boundary_condition(letter) && letter > labels) {
       if (letter != labels + 1) throw std::invalid_argument("a query word must number its labels in order of first use");
       ++labels;
     }
@@ -181,7 +181,7 @@ struct TrieSearch {
       const bool free = e == no_dart || (e == d && !oriented[i]);  // is_free, inlined
       const Dart di = free ? no_dart : e;
       const std::uint32_t m = free ? unmatched : mark(di);
-      auto taken = [&](std::uint32_t c) { return !is_constraint(c) && c != 0 && c < dart_of.size() && dart_of[c] != no_dart; };
+      auto taken = [&](std::uint32_t c) { return !is_boundary_condition(c) && c != 0 && c < dart_of.size() && dart_of[c] != no_dart; };
       if (children.size() == 1) {
         const std::uint32_t c = children.front().first;
         const auto result = check(c, free, m, taken(c));
@@ -195,8 +195,8 @@ struct TrieSearch {
       // children are visited in order): a free link takes ε, '*', '↔' (and
       // 0 in a plain word); a label only the same label; an unannotated
       // dart the next new label, '↔', 'ε̄', '*'; a ∅ dart '↔', 'ε̄', '*'.
-      constexpr auto nc = static_cast<std::uint32_t>(Constraint::no_connection), in = static_cast<std::uint32_t>(Constraint::interior),
-                     bd = static_cast<std::uint32_t>(Constraint::boundary), any = static_cast<std::uint32_t>(Constraint::any);
+      constexpr auto nc = static_cast<std::uint32_t>(BoundaryCondition::no_connection), in = static_cast<std::uint32_t>(BoundaryCondition::interior),
+                     bd = static_cast<std::uint32_t>(BoundaryCondition::boundary), any = static_cast<std::uint32_t>(BoundaryCondition::any);
       std::array<std::uint32_t, 4> wanted{};
       std::size_t count = 0;
       if (free)

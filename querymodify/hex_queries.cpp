@@ -123,7 +123,7 @@ const std::vector<HexQuery>& hex_queries() {
         q.subdivision = s;
         q.mirrored = mirror;
         q.tets = tm.tets.size();
-        q.word = query_word(tm.map, 0, Constraint::no_connection);
+        q.word = query_word(tm.map, 0, BoundaryCondition::no_connection);
         q.map = std::move(tm.map);
         out.push_back(std::move(q));
       }

@@ -36,21 +36,21 @@ std::vector<std::uint32_t> word(const Map& m, const Labeling& l) {
   return w;
 }
 
-const char* constraint_symbol(Constraint c) {
+const char* boundary_symbol(BoundaryCondition c) {
   switch (c) {
-    case Constraint::any:
+    case BoundaryCondition::any:
       return "*";
-    case Constraint::boundary:
+    case BoundaryCondition::boundary:
       return "ε";
-    case Constraint::interior:
+    case BoundaryCondition::interior:
       return "ε̄";
-    case Constraint::no_connection:
+    case BoundaryCondition::no_connection:
       return "↔";
   }
   return "?";
 }
 
-QueryWord query_word(const Map& query, Dart start, Constraint free_links, const std::vector<ConstraintOverride>& overrides) {
+QueryWord query_word(const Map& query, Dart start, BoundaryCondition free_links, const std::vector<BoundaryOverride>& overrides) {
   const Labeling l = bfs_labeling(query, start);
   if (l.darts.size() != query.size())
     throw std::invalid_argument(
@@ -66,8 +66,8 @@ QueryWord query_word(const Map& query, Dart start, Constraint free_links, const 
     std::size_t i = 0;
     while (i < w.dims.size() && w.dims[i] != o.dim) ++i;
     if (o.dart >= query.size() || i == w.dims.size() || !is_free(query, o.dim, o.dart))
-      throw std::invalid_argument(fmt::format("constraint on dart {} dimension {}: not a free link of the query", o.dart, o.dim));
-    w.letters[(l.label[o.dart] - 1) * w.dims.size() + i] = static_cast<std::uint32_t>(o.constraint);
+      throw std::invalid_argument(fmt::format("boundary condition on dart {} dimension {}: not a free link of the query", o.dart, o.dim));
+    w.letters[(l.label[o.dart] - 1) * w.dims.size() + i] = static_cast<std::uint32_t>(o.condition);
   }
   return w;
 }
@@ -78,7 +78,7 @@ std::string word_text(const QueryWord& w) {
     if (k) s += " | ";
     for (std::size_t i = 0; i < w.dims.size(); ++i) {
       const auto x = w.letters[k * w.dims.size() + i];
-      s += fmt::format("{}{}", i ? " " : "", is_constraint(x) ? constraint_symbol(static_cast<Constraint>(x)) : std::to_string(x));
+      s += fmt::format("{}{}", i ? " " : "", is_boundary_condition(x) ? boundary_symbol(static_cast<BoundaryCondition>(x)) : std::to_string(x));
     }
   }
   return s;

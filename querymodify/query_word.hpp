@@ -35,16 +35,17 @@ Labeling bfs_labeling(const Map& m, Dart start);
 /// isomorphic iff they have labelings giving the same word.
 std::vector<std::uint32_t> word(const Map& m, const Labeling& l);
 
-/// Boundary conditions on a free link of a query dart (001 Sec. 5.1.2).
-enum class Constraint : std::uint32_t {
+/// Boundary conditions on a free link of a query dart (001 Sec. 5.1.2),
+/// not the map constraints a rule must preserve (checkers/violation.hpp).
+enum class BoundaryCondition : std::uint32_t {
   any = 0xFFFFFFFF,            // '*': matches any input dart, free or not
   boundary = 0xFFFFFFFE,       // 'ε': the input link must be free
   interior = 0xFFFFFFFD,       // 'ε̄': the input link must not be free
   no_connection = 0xFFFFFFFC,  // '↔': must not reach another matched dart
 };
 /// True for the four special letters.
-constexpr bool is_constraint(std::uint32_t letter) { return letter >= static_cast<std::uint32_t>(Constraint::no_connection); }
-const char* constraint_symbol(Constraint c);
+constexpr bool is_boundary_condition(std::uint32_t letter) { return letter >= static_cast<std::uint32_t>(BoundaryCondition::no_connection); }
+const char* boundary_symbol(BoundaryCondition c);
 
 /// A query word (001 Def. 5): the word of a query map whose free links
 /// carry boundary conditions instead of 0.
@@ -57,15 +58,16 @@ struct QueryWord {
 
 /// The query word of `query` labeled from `start`; every free link gets
 /// `free_links`, except those listed in `overrides` (query dart, dimension,
-/// constraint). Throws std::invalid_argument if the query is not connected
+/// condition). Throws std::invalid_argument if the query is not connected
 /// (001 Sec. 5: queries are connected) or an override names a link that is
 /// not free.
-struct ConstraintOverride {
+struct BoundaryOverride {
   Dart dart;
   Dim dim;
-  Constraint constraint;
+  BoundaryCondition condition;
 };
-QueryWord query_word(const Map& query, Dart start, Constraint free_links = Constraint::any, const std::vector<ConstraintOverride>& overrides = {});
+QueryWord query_word(const Map& query, Dart start, BoundaryCondition free_links = BoundaryCondition::any,
+                     const std::vector<BoundaryOverride>& overrides = {});
 
 /// "1 2 ε | 3 1 * | ..." for messages and tests.
 std::string word_text(const QueryWord& w);

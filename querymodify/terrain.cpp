@@ -258,10 +258,10 @@ Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
   // required 3-free (ε) to receive the house.
   const HouseRule house = house_rule();
   t0 = Clock::now();
-  std::vector<ConstraintOverride> upper;
-  for (Dart d : house.upper) upper.push_back({d, 3, Constraint::boundary});
+  std::vector<BoundaryOverride> upper;
+  for (Dart d : house.upper) upper.push_back({d, 3, BoundaryCondition::boundary});
   QueryTrie spot_trie;
-  spot_trie.add(query_word(house.query.map, 0, Constraint::any, upper), 0);
+  spot_trie.add(query_word(house.query.map, 0, BoundaryCondition::any, upper), 0);
   const auto sites = all_matches(x.mesh.map, spot_trie, nullptr, 1);
   x.housed.query_seconds = since(t0);
   x.housed.raw_matches = sites.raw;

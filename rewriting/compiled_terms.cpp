@@ -101,7 +101,7 @@ bool TermWorkspace::alternate(const Map& g, Dim a, Dim b, Dart d) {
   }
 }
 
-const std::vector<Dart>& TermWorkspace::orbit(const Map& g, Dart d, std::span<const Word> generators) {
+const std::vector<Dart>& TermWorkspace::orbit(const Map& g, Dart d, std::span<const OrbitWord> generators) {
   walkers_for(g);
   return writer_->orbit(d, generators);
 }
@@ -123,7 +123,7 @@ Dart neighbour(const Map& g, Dim i, Dart d, const char* term) {
 // As the interpreter's check: the matched darts are marked with their
 // instance; each pi-orbit of G holding one is walked once, from the first
 // met, and every matched dart in it must be in that instance's class.
-std::string overlap(TermWorkspace& tw, const Map& g, std::span<const Word> generators, std::span<const Dart> match, std::size_t np,
+std::string overlap(TermWorkspace& tw, const Map& g, std::span<const OrbitWord> generators, std::span<const Dart> match, std::size_t np,
                     std::span<const char* const> names, std::span<const Dart> pattern, const char* embedding) {
   constexpr std::uint32_t covered = DartTable::none - 1;
   DartTable& orbit_of = tw.given;
@@ -153,7 +153,7 @@ std::string overlap(TermWorkspace& tw, const Map& g, std::span<const Word> gener
   return {};
 }
 
-void unlabel(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, bool extended) {
+void unlabel(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const OrbitWord> generators, Dart d, bool extended) {
   if (!extended) {
     e.set_index(d, Embedding::none);
     return;
@@ -169,7 +169,7 @@ std::uint32_t pool_index(TermWorkspace& tw, Embedding& e, Source from) {
   return at;
 }
 
-void write_orbit(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, Source from) {
+void write_orbit(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const OrbitWord> generators, Dart d, Source from) {
   if (const std::uint32_t w = tw.given.get(d); w != DartTable::none) {
     const TermWorkspace::Writer& first = tw.writers[w];
     const bool same = (from.index == first.from.index && from.stored == first.from.stored) || (from.stored && first.value == from.index) ||

@@ -36,7 +36,7 @@ struct CollectSite {
   CollectSite(std::string embedding, std::vector<Dim> orbit);
   std::string name;
   std::vector<Dim> dims;
-  std::vector<Word> outer;
+  std::vector<OrbitWord> outer;
 };
 
 /// The tables of an application's terms, kept from one application to the
@@ -52,7 +52,7 @@ struct TermWorkspace {
   struct Within {
     const CollectSite* for_site = nullptr;
     std::vector<Dim> for_orbit;
-    std::vector<Word> inner;
+    std::vector<OrbitWord> inner;
   };
   std::vector<Within> within;
   /// class_of[u]: the classes of the instances of R for the u-th
@@ -103,7 +103,7 @@ struct TermWorkspace {
   /// site's bag. Throws EvaluationError when the map lacks the embedding.
   std::span<const Value> collect(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, Dart d);
   /// The darts of d's orbit under `generators` in H (a walk).
-  const std::vector<Dart>& orbit(const Map& g, Dart d, std::span<const Word> generators);
+  const std::vector<Dart>& orbit(const Map& g, Dart d, std::span<const OrbitWord> generators);
 
  private:
   void walkers_for(const Map& g);
@@ -124,12 +124,12 @@ Dart neighbour(const Map& g, Dim i, Dart d, const char* term);
 /// of L in different classes (`left_class`, by x * np + p) must match darts
 /// in different pi-orbits of G. Returns why not, or an empty string.
 /// `names` are L's nodes, `pattern` P_v's darts (empty for a DPO rule).
-std::string overlap(TermWorkspace& tw, const Map& g, std::span<const Word> generators, std::span<const Dart> match, std::size_t np,
+std::string overlap(TermWorkspace& tw, const Map& g, std::span<const OrbitWord> generators, std::span<const Dart> match, std::size_t np,
                     std::span<const char* const> names, std::span<const Dart> pattern, const char* embedding);
 
 /// The label of a preserved node of L that R does not label is dropped
 /// from its dart (`direct`) or its whole pi-orbit of H (`extended`).
-void unlabel(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, bool extended);
+void unlabel(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const OrbitWord> generators, Dart d, bool extended);
 
 /// The pool index of a source's value in e, storing an evaluated value on
 /// its first write (once: later writes of it share the entry).
@@ -140,7 +140,7 @@ std::uint32_t pool_index(TermWorkspace& tw, Embedding& e, Source from);
 /// nothing to do; different: a conflict, and d alone takes the second
 /// value, as in the interpreter). `given` and `writers` are per embedding:
 /// clear them (end_writes) before the next one.
-void write_orbit(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const Word> generators, Dart d, Source from);
+void write_orbit(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const OrbitWord> generators, Dart d, Source from);
 void end_writes(TermWorkspace& tw);
 
 }  // namespace dartcheck::compiled

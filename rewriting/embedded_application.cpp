@@ -72,8 +72,8 @@ struct EmbeddedRewriter::Context {
   // evaluation per class or a write per class needs them (kept for the
   // next application's tables).
   std::vector<InstantiatedClasses> classes;
-  InstantiatedClasses left_classes;          // of Lemma 3's check
-  std::vector<std::vector<Word>> used_gens;  // generators of used[u]'s orbit
+  InstantiatedClasses left_classes;               // of Lemma 3's check
+  std::vector<std::vector<OrbitWord>> used_gens;  // generators of used[u]'s orbit
   // Per-application tables, kept for their memory: a loop of small
   // applications allocates nothing once they have grown.
   std::vector<Dart> flat;
@@ -111,7 +111,7 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, std::size_t 
   const DartTable::ClearOnExit emptied{orbit_of};
   for (NodeId x = 0; x < L.node_count(); ++x)
     for (std::size_t p = 0; p < np; ++p) orbit_of.set(in.at(x, p), static_cast<std::uint32_t>(x * np + p));
-  const std::vector<Word>& gens = used_gens[u];
+  const std::vector<OrbitWord>& gens = used_gens[u];
   for (NodeId x = 0; x < L.node_count(); ++x)
     for (std::size_t p = 0; p < np; ++p) {
       const Dart d = in.at(x, p);
@@ -311,7 +311,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   for (std::size_t u = 0; u < used.size(); ++u) {
     const EmbeddingSignature* sig = used[u];
     Embedding* e = g.find(sig->name);
-    const std::vector<Word>& gens = used_gens[u];
+    const std::vector<OrbitWord>& gens = used_gens[u];
     // The writer of each orbit of H this application labels: its first
     // labeled instance. A closed embedding finds it by class (writer_of,
     // per class), another by dart (given[d], set by walking the

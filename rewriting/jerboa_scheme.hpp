@@ -18,18 +18,9 @@
 #include "core/conjugate_words.hpp"
 #include "core/graph.hpp"
 #include "core/model.hpp"
+#include "core/orbit_notation.hpp"
 
 namespace dartcheck {
-
-/// A generalized orbit type: one entry per position, nullopt for the
-/// removing symbol '_'.
-using OrbitType = std::vector<std::optional<Dim>>;
-
-/// Parses "<0,_,2>" (also with ⟨ ⟩). Throws std::invalid_argument naming
-/// the byte position of the problem, and when a dimension repeats (a
-/// relabeling function is injective, 000 Def. 4.1).
-OrbitType parse_orbit_type(std::string_view text);
-std::string orbit_type_str(const OrbitType& t);
 
 /// Adds to `g` (whose arc words are `words`, one per arc) the implicit arcs
 /// of node v labeled `label` under the parameter orbit type `parameter`: an

@@ -95,8 +95,9 @@ void TermEvaluator::compile(const Term& t, std::span<const std::string> names, C
 
 // --- Collects --------------------------------------------------------------
 
-void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const Word> inner, OrbitWalker& inner_walker,
-                          std::vector<std::uint64_t>& done_bits, std::vector<Value>& out, const std::string& name, const std::vector<Dim>& dims) {
+void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const OrbitWord> inner,
+                          OrbitWalker& inner_walker, std::vector<std::uint64_t>& done_bits, std::vector<Value>& out, const std::string& name,
+                          const std::vector<Dim>& dims) {
   const std::size_t first = out.size();
   if (done_bits.size() * 64 < map.size()) done_bits.resize((map.size() + 63) / 64, 0);
   auto done = [&](Dart x) { return (done_bits[x >> 6] >> (x & 63)) & 1U; };

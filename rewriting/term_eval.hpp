@@ -28,8 +28,9 @@ class TermEvaluator;
 /// pi (`name`) and <o'> (`dims`), when a pi-orbit has no value. The
 /// evaluator and compiled rules (rewriting/compiled_terms.hpp) both
 /// collect through it.
-void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const Word> inner, OrbitWalker& inner_walker,
-                          std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name, const std::vector<Dim>& dims);
+void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const OrbitWord> inner,
+                          OrbitWalker& inner_walker, std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name,
+                          const std::vector<Dim>& dims);
 
 /// A checked term compiled for one evaluator, in postfix order: node
 /// variables resolved to binding slots, embeddings to the map's embedding
@@ -51,8 +52,9 @@ class CompiledTerm {
   /// pi (`name`) and <o'> (`dims`), when a pi-orbit has no value. The
   /// evaluator and compiled rules (rewriting/compiled_terms.hpp) both
   /// collect through it.
-  void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const Word> inner, OrbitWalker& inner_walker,
-                            std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name, const std::vector<Dim>& dims);
+  void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const OrbitWord> inner,
+                            OrbitWalker& inner_walker, std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name,
+                            const std::vector<Dim>& dims);
   struct Step {
     enum class Op : std::uint8_t { literal, access, collect, call, fail };
     Op op = Op::literal;
@@ -108,7 +110,7 @@ class TermEvaluator {
     std::string name;
     std::size_t embedding;  // index in the map's embeddings
     std::vector<Dim> orbit;
-    std::vector<Word> outer, inner;  // generators of <o'> and <o> ∩ <o'>
+    std::vector<OrbitWord> outer, inner;  // generators of <o'> and <o> ∩ <o'>
     DartTable bag_of;
     std::vector<Value> elements;
     std::vector<std::uint32_t> start{0};

@@ -128,7 +128,7 @@ Map mirror_along_3(const Map& g, const std::vector<bool>& sewn) {
   std::size_t face = 0;
   for (Dart d = 0; d < n; ++d) {
     if (seen[d]) continue;
-    const std::vector<Word> face_gens{Word{0}, Word{1}};
+    const std::vector<OrbitWord> face_gens{OrbitWord{0}, OrbitWord{1}};
     const auto& darts = walker.orbit(d, face_gens);
     bool free = true;
     for (Dart e : darts) seen[e] = true, free = free && g.link(3, e) == e;
@@ -141,7 +141,7 @@ Map mirror_along_3(const Map& g, const std::vector<bool>& sewn) {
 // Jerboa's unsew along i at d: every dart of d's orbit over the dimensions
 // other than i-1, i, i+1 (and its i-partner) gets an i-loop.
 void unsew(Map& m, Dart d, Dim i) {
-  std::vector<Word> gens;
+  std::vector<OrbitWord> gens;
   for (Dim j : m.model().dims)
     if (j + 1 < i || j > i + 1) gens.push_back({j});
   OrbitWalker walker(m);

@@ -87,15 +87,15 @@ RC_GTEST_PROP(ModifyOnFuzzedHosts, ExtendGluesTheNewTetrahedron, ()) {
   const std::vector<std::array<double, 3>> p{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
   const TetMap q = build_tet_map({{0, 1, 2, 3}}, &p), t = build_tet_map({{0, 1, 2, 3}, {1, 2, 3, 4}}, &p);
   std::vector<Dart> q_to_t(q.map.size());
-  std::vector<ConstraintOverride> free_face;
+  std::vector<BoundaryOverride> free_face;
   for (Dart d = 0; d < q.map.size(); ++d) {
     q_to_t[d] = d;
-    if (t.map.link(3, d) != no_dart) free_face.push_back({d, 3, Constraint::boundary});  // ε: the face must be free in the host
+    if (t.map.link(3, d) != no_dart) free_face.push_back({d, 3, BoundaryCondition::boundary});  // ε: the face must be free in the host
   }
   RC_ASSERT(free_face.size() == 3u);
   const Dart start = static_cast<Dart>(rng() % 12);
   const std::size_t before_free = free3(host.map);
-  const auto matches = matches_of(host.map, query_word(q.map, start, Constraint::any, free_face));
+  const auto matches = matches_of(host.map, query_word(q.map, start, BoundaryCondition::any, free_face));
   RC_PRE(!matches.empty());  // every host with a boundary face has one
   const QueryMatch& m = matches[rng() % matches.size()];
   const auto q_to_m = query_to_input(q.map, start, m);
@@ -127,7 +127,7 @@ RC_GTEST_PROP(ModifyOnFuzzedHosts, ReplaceFlipsTwoTetrahedraIntoThree, ()) {
     if (q.map.link(3, d) == no_dart) q_to_t[d] = t_boundary.at({q.vertex[d], q.vertex[q.map.link(1, d)]});
   const Dart start = static_cast<Dart>(rng() % 24);
   const std::size_t before_free = free3(host.map);
-  const auto matches = matches_of(host.map, query_word(q.map, start, Constraint::any));
+  const auto matches = matches_of(host.map, query_word(q.map, start, BoundaryCondition::any));
   RC_PRE(!matches.empty());
   const QueryMatch& m = matches[rng() % matches.size()];
   replace(host.map, q.map, t.map, q_to_t, query_to_input(q.map, start, m));

@@ -88,14 +88,14 @@ std::vector<std::vector<Dart>> brute_force(const Map& input, const QueryWord& w,
         const std::uint32_t c = w.at(k, i);
         const bool free = is_free(input, w.dims[i], f[k]);
         const Dart e = free ? no_dart : input.link(w.dims[i], f[k]);
-        if (c == static_cast<std::uint32_t>(Constraint::any)) continue;
-        if (c == static_cast<std::uint32_t>(Constraint::boundary) && !free) return false;
-        if (c == static_cast<std::uint32_t>(Constraint::interior) && free) return false;
-        if (c == static_cast<std::uint32_t>(Constraint::no_connection)) {
+        if (c == static_cast<std::uint32_t>(BoundaryCondition::any)) continue;
+        if (c == static_cast<std::uint32_t>(BoundaryCondition::boundary) && !free) return false;
+        if (c == static_cast<std::uint32_t>(BoundaryCondition::interior) && free) return false;
+        if (c == static_cast<std::uint32_t>(BoundaryCondition::no_connection)) {
           if (complete && !free && used[e]) return false;
           continue;
         }
-        if (is_constraint(c)) continue;
+        if (is_boundary_condition(c)) continue;
         if (free) return false;
         if (f[c] != no_dart && f[c] != e) return false;
       }
@@ -120,18 +120,19 @@ std::vector<std::vector<Dart>> brute_force(const Map& input, const QueryWord& w,
   return found;
 }
 
-Constraint random_constraint(std::mt19937& rng) {
-  static const Constraint all[] = {Constraint::any, Constraint::boundary, Constraint::interior, Constraint::no_connection};
+BoundaryCondition random_boundary_condition(std::mt19937& rng) {
+  static const BoundaryCondition all[] = {BoundaryCondition::any, BoundaryCondition::boundary, BoundaryCondition::interior,
+                                          BoundaryCondition::no_connection};
   return all[std::uniform_int_distribution<int>(0, 3)(rng)];
 }
 
-// A query: a random connected map with a random constraint on each free link.
+// A query: a random connected map with a random boundary condition on each free link.
 QueryWord random_query(const Map& q, std::mt19937& rng) {
-  std::vector<ConstraintOverride> o;
+  std::vector<BoundaryOverride> o;
   for (Dart d = 0; d < q.size(); ++d)
     for (Dim i : q.model().dims)
-      if (is_free(q, i, d)) o.push_back({d, i, random_constraint(rng)});
-  return query_word(q, 0, Constraint::any, o);
+      if (is_free(q, i, d)) o.push_back({d, i, random_boundary_condition(rng)});
+  return query_word(q, 0, BoundaryCondition::any, o);
 }
 
 RC_GTEST_PROP(QueryWords, EqualWordsIffIsomorphic, ()) {
@@ -156,7 +157,7 @@ RC_GTEST_PROP(QueryMatching, BoundaryQueryMatchesIffIsomorphic, ()) {
   const auto ra = *gen_map_recipe(1, 3), rb = *gen_map_recipe(1, 3);
   std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
   const Map q = component(random_map(kind, ra), 0);
-  const QueryWord w = query_word(q, 0, Constraint::boundary);
+  const QueryWord w = query_word(q, 0, BoundaryCondition::boundary);
   std::vector<Dart> perm;
   const bool same = *rc::gen::arbitrary<bool>();
   const Map m = same ? shuffled(q, perm, rng) : component(random_map(kind, rb), 0);
@@ -236,7 +237,7 @@ RC_GTEST_PROP(QueryOverlap, StrategiesSelectDisjointMatches, ()) {
   const int kind = *rc::gen::inRange(0, 3);
   std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
   QueryTrie trie;
-  for (int k = 0; k < 3; ++k) trie.add(query_word(component(random_map(kind, *gen_map_recipe(1, 2)), 0), 0, Constraint::any), k);
+  for (int k = 0; k < 3; ++k) trie.add(query_word(component(random_map(kind, *gen_map_recipe(1, 2)), 0), 0, BoundaryCondition::any), k);
   const Map m = random_map(kind, *gen_map_recipe(2, 6));
   for (const auto& chosen :
        {greedy_matches(m, trie), global_matches(m, trie, [](const QueryMatch& x) { return static_cast<double>(x.darts[0] % 7); })})
@@ -268,26 +269,26 @@ TEST(QueryMatching, BoundaryConditionsOnATriangle) {
     two.sew(2, d, 3 + d);
   }
   ASSERT_TRUE(check_map(two).valid());
-  EXPECT_TRUE(annotate(two, query_word(q, 0, Constraint::any), 0).has_value());
-  EXPECT_TRUE(annotate(two, query_word(q, 0, Constraint::no_connection), 0).has_value());  // the other triangle is not matched
-  EXPECT_FALSE(annotate(two, query_word(q, 0, Constraint::boundary), 0).has_value());      // the links are not free
-  EXPECT_TRUE(annotate(two, query_word(q, 0, Constraint::interior), 0).has_value());
+  EXPECT_TRUE(annotate(two, query_word(q, 0, BoundaryCondition::any), 0).has_value());
+  EXPECT_TRUE(annotate(two, query_word(q, 0, BoundaryCondition::no_connection), 0).has_value());  // the other triangle is not matched
+  EXPECT_FALSE(annotate(two, query_word(q, 0, BoundaryCondition::boundary), 0).has_value());      // the links are not free
+  EXPECT_TRUE(annotate(two, query_word(q, 0, BoundaryCondition::interior), 0).has_value());
   // Darts blocked by an earlier greedy selection are annotated ∅: fine for
   // '↔' and '*', and never matched.
   const std::vector<bool> blocked{false, false, false, true, true, true};
-  EXPECT_TRUE(annotate(two, query_word(q, 0, Constraint::no_connection), 0, &blocked).has_value());
-  EXPECT_FALSE(annotate(two, query_word(q, 0, Constraint::any), 3, &blocked).has_value());
+  EXPECT_TRUE(annotate(two, query_word(q, 0, BoundaryCondition::no_connection), 0, &blocked).has_value());
+  EXPECT_FALSE(annotate(two, query_word(q, 0, BoundaryCondition::any), 3, &blocked).has_value());
 
   Map folded(Model::open_omap(2), 3);
   for (Dart d = 0; d < 3; ++d) folded.sew(1, d, (d + 1) % 3);
   folded.sew(2, 0, 1);
   ASSERT_TRUE(check_map(folded).valid());
-  EXPECT_TRUE(annotate(folded, query_word(q, 0, Constraint::any), 0).has_value());
-  EXPECT_FALSE(annotate(folded, query_word(q, 0, Constraint::no_connection), 0).has_value());  // 0 -2- 1, both matched
+  EXPECT_TRUE(annotate(folded, query_word(q, 0, BoundaryCondition::any), 0).has_value());
+  EXPECT_FALSE(annotate(folded, query_word(q, 0, BoundaryCondition::no_connection), 0).has_value());  // 0 -2- 1, both matched
   // Dart 2 is 2-free: 'ε' holds there only.
-  const std::vector<ConstraintOverride> only2{{2, 2, Constraint::boundary}};
-  EXPECT_FALSE(annotate(folded, query_word(q, 0, Constraint::boundary), 0).has_value());
-  EXPECT_TRUE(annotate(folded, query_word(q, 0, Constraint::any, only2), 0).has_value());
+  const std::vector<BoundaryOverride> only2{{2, 2, BoundaryCondition::boundary}};
+  EXPECT_FALSE(annotate(folded, query_word(q, 0, BoundaryCondition::boundary), 0).has_value());
+  EXPECT_TRUE(annotate(folded, query_word(q, 0, BoundaryCondition::any, only2), 0).has_value());
 }
 
 }  // namespace
