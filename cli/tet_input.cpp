@@ -20,8 +20,8 @@ TetInput load_tet_input(const std::string& path) {
     throw InputError(tet_file, line_of(most_tets), 1, over_limit("darts", 12 * in.mesh.tets.size(), limits().darts, "--limit-darts"));
   try {
     in.map = querymodify::build_tet_map(in.mesh.tets, &in.mesh.points);
-  } catch (const querymodify::TetMapError& e) {
-    throw InputError(tet_file, line_of(e.tet), 1, e.what());
+  } catch (const BuildError& e) {
+    throw InputError(tet_file, e.culprit() == BuildError::Culprit::cell ? line_of(e.index()) : 0, 1, e.what());
   }
   return in;
 }

@@ -17,8 +17,8 @@ Map build_mesh(const Model& model, const Mesh& mesh) {
   try {
     return build_surface(model, mesh.faces);
   } catch (const BuildError& e) {
-    const bool located = e.face() >= 0 && static_cast<std::size_t>(e.face()) < mesh.face_lines.size();
-    throw InputError(mesh.file, located ? mesh.face_lines[static_cast<std::size_t>(e.face())] : 0, 0, e.what());
+    const bool located = e.culprit() == BuildError::Culprit::face && e.index() < mesh.face_lines.size();
+    throw InputError(mesh.file, located ? mesh.face_lines[e.index()] : 0, 0, e.what());
   }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <map>
+#include <utility>
 #include <unordered_map>
 
 namespace dartcheck {
@@ -12,12 +13,12 @@ using Key = std::uint64_t;
 Key edge_key(std::uint32_t u, std::uint32_t w) { return (Key{u} << 32) | w; }
 
 void check_face(const Polygon& f, std::size_t index) {
-  const long face = static_cast<long>(index);
-  if (f.size() < 3) throw BuildError(fmt::format("face {} has {} vertices (at least 3 expected)", index, f.size()), face);
+  constexpr auto face = BuildError::Culprit::face;
+  if (f.size() < 3) throw BuildError(fmt::format("face {} has {} vertices (at least 3 expected)", index, f.size()), face, index);
   Polygon sorted = f;
   std::sort(sorted.begin(), sorted.end());
   if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
-    throw BuildError(fmt::format("face {} visits vertex {} twice", index, *it), face);
+    throw BuildError(fmt::format("face {} visits vertex {} twice", index, *it), face, index);
 }
 
 void loop_dims_above(Map& m, Dim above, Dart first, Dart end) {
@@ -53,7 +54,7 @@ GSurface sew_gmap_surface(Map& m, const std::vector<Polygon>& faces, std::size_t
     if (uses.size() > 2)
       throw BuildError(
           fmt::format("edge ({}, {}) is shared by {} faces (a non-manifold edge; at most 2 expected)", key >> 32, key & 0xffffffffU, uses.size()),
-          static_cast<long>(face_base + uses[2].first));
+          BuildError::Culprit::face, face_base + uses[2].first);
     auto dart_at = [&](std::size_t fi, std::size_t e, std::uint32_t vertex) { return s.first[fi] + 2 * e + (faces[fi][e] == vertex ? 0 : 1); };
     const auto u = static_cast<std::uint32_t>(key >> 32), w = static_cast<std::uint32_t>(key & 0xffffffffU);
     if (uses.size() == 1) {
@@ -90,7 +91,7 @@ Map build_omap_surface(const Model& model, const std::vector<Polygon>& faces) {
         throw BuildError(three ? fmt::format("edge ({}, {}) is shared by more than two faces (a non-manifold edge)", u, w)
                                : fmt::format("faces {} and {} both traverse edge ({}, {}) from {} to {}: inconsistent orientation",
                                              face_of[edge_key(u, w)], fi, u, w, u, w),
-                         static_cast<long>(fi));
+                         BuildError::Culprit::face, fi);
       }
       face_of[edge_key(u, w)] = fi;
     }
@@ -141,27 +142,19 @@ Map build_volumes(const Model& model, const std::vector<Polyhedron>& volumes) {
   if (!model.is_generalized() || model.dimension() < 3)
     throw BuildError(fmt::format("volumes are built for n-G-maps with n >= 3, not {}", model.name));
   Map m(model);
-  // Sorted vertex set of a face -> (volume, face) uses, to 3-sew.
-  std::map<Polygon, std::vector<std::pair<std::size_t, std::size_t>>> shared;
   std::vector<GSurface> surfaces;
   std::size_t face_base = 0;
-  for (std::size_t vi = 0; vi < volumes.size(); ++vi) {
-    surfaces.push_back(sew_gmap_surface(m, volumes[vi], face_base));
-    face_base += volumes[vi].size();
-    for (std::size_t fi = 0; fi < volumes[vi].size(); ++fi) {
-      Polygon key = volumes[vi][fi];
-      std::sort(key.begin(), key.end());
-      shared[key].emplace_back(vi, fi);
-    }
+  for (const Polyhedron& v : volumes) {
+    surfaces.push_back(sew_gmap_surface(m, v, face_base));
+    face_base += v.size();
   }
   for (Dart d = 0; d < m.size(); ++d) m.sew(3, d, d);
-  for (const auto& [key, uses] : shared) {
-    if (uses.size() == 1) continue;
-    if (uses.size() > 2)
-      throw BuildError(fmt::format("a face with vertices {} is shared by {} volumes (at most 2 expected)", fmt::join(key, ","), uses.size()));
+  const CellComplex complex = CellComplex::of(volumes);
+  const std::vector<std::uint32_t> volume_of = complex.face_cells();
+  for (const auto& [ga, gb] : shared_faces(complex)) {
     // Named, not structured bindings: clang 14 cannot capture those.
-    const std::size_t v1 = uses[0].first, f1 = uses[0].second;
-    const std::size_t v2 = uses[1].first, f2 = uses[1].second;
+    const std::size_t v1 = volume_of[ga], f1 = ga - complex.cell_begin[v1];
+    const std::size_t v2 = volume_of[gb], f2 = gb - complex.cell_begin[v2];
     const Polygon& a = volumes[v1][f1];
     const Polygon& b = volumes[v2][f2];
     const std::size_t k = a.size();
@@ -171,7 +164,8 @@ Map build_volumes(const Model& model, const std::vector<Polyhedron>& volumes) {
         if (b[e] == at && b[(e + 1) % k] == to) return surfaces[v2].first[f2] + 2 * e;
         if (b[(e + 1) % k] == at && b[e] == to) return surfaces[v2].first[f2] + 2 * e + 1;
       }
-      throw BuildError(fmt::format("faces {} of volume {} and {} of volume {} have the same vertices but not the same edges", f1, v1, f2, v2));
+      throw BuildError(fmt::format("faces {} of volume {} and {} of volume {} have the same vertices but not the same edges", f1, v1, f2, v2),
+                       BuildError::Culprit::cell, v2);
     };
     for (std::size_t e = 0; e < k; ++e) {
       const auto u = a[e], w = a[(e + 1) % k];

@@ -2,27 +2,11 @@
 // shape builders and of the OFF/OBJ importer.
 #pragma once
 
-#include <cstdint>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
-#include "core/map.hpp"
-#include "core/polyhedron.hpp"
+#include "core/cell_gluing.hpp"
 
 namespace dartcheck {
-
-/// A cell complex that cannot become a map of the requested model: the
-/// message says which face, edge or vertex and why.
-class BuildError : public std::runtime_error {
- public:
-  /// `face` is the index of the face at fault, or -1.
-  explicit BuildError(const std::string& message, long face = -1) : std::runtime_error(message), face_(face) {}
-  long face() const { return face_; }
-
- private:
-  long face_;
-};
 
 /// Sews the faces along shared edges into a surface.
 ///
@@ -39,7 +23,8 @@ Map build_surface(const Model& model, const std::vector<Polygon>& faces);
 
 /// Builds each volume as a surface of an n-G-map (n >= 3) and 3-sews faces
 /// of different volumes that have the same vertex set; faces met by no
-/// other volume get 3-loops. Throws BuildError when a face is shared by more
+/// other volume get 3-loops; faces are matched by shared_faces
+/// (core/cell_gluing.hpp). Throws BuildError when a face is shared by more
 /// than two volumes or two faces have the same vertices but not the same
 /// edges.
 Map build_volumes(const Model& model, const std::vector<Polyhedron>& volumes);

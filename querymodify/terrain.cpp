@@ -108,7 +108,7 @@ std::vector<Point3> voxel_points(std::uint32_t n, const std::vector<double>& hei
 
 Mesh voxel_grid(std::uint32_t n, const std::vector<double>& heights) {
   const auto points = voxel_points(n, heights);
-  CellMap c = build_cell_map(voxel_cells(n));
+  GluedCells c = glue_cells(CellComplex::of(voxel_cells(n)));
   return {std::move(c.map), dart_points(c.vertex, points)};
 }
 
@@ -199,8 +199,8 @@ HouseRule house_rule() {
   Polyhedron roof{reversed(eaves)};
   for (std::size_t k = 0; k < 12; ++k) roof.push_back({eaves[k], eaves[(k + 1) % 12], apex});
   HouseRule r;
-  CellMap q = build_cell_map({spot});
-  CellMap t = build_cell_map({spot, storey(top, second), storey(second, eaves), roof});
+  GluedCells q = glue_cells(CellComplex::of({spot}));
+  GluedCells t = glue_cells(CellComplex::of({spot, storey(top, second), storey(second, eaves), roof}));
   r.query = {std::move(q.map), dart_points(q.vertex, points)};
   r.target = {std::move(t.map), dart_points(t.vertex, points)};
   for (Dart d = 0; d < 12; ++d) r.upper.push_back(d);

@@ -14,7 +14,7 @@
 
 #include "core/map.hpp"
 #include "querymodify/annotation.hpp"
-#include "querymodify/cell_map.hpp"
+#include "core/cell_gluing.hpp"
 #include "querymodify/geometry.hpp"
 #include "querymodify/modify.hpp"
 

@@ -3,10 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace dartcheck::querymodify {
 namespace {
+
+BuildError tet_error(std::size_t t, const std::string& message) { return BuildError(message, BuildError::Culprit::cell, t); }
 
 // The faces of a positively oriented tetrahedron (a, b, c, d), each with
 // its outward orientation.
@@ -34,24 +35,6 @@ Key face_key(const std::array<std::uint32_t, 4>& t, int f) {
   return sorted(t[static_cast<std::size_t>(face_vertices[f][0])], t[static_cast<std::size_t>(face_vertices[f][1])],
                 t[static_cast<std::size_t>(face_vertices[f][2])]);
 }
-
-// Face f2 and position j2 of the other face of a tetrahedron along the
-// edge that face f traverses at position j (in the opposite direction).
-struct Across {
-  int f, j;
-};
-constexpr auto across_table = [] {
-  std::array<std::array<Across, 3>, 4> out{};
-  for (int f = 0; f < 4; ++f)
-    for (int j = 0; j < 3; ++j) {
-      const int a = face_vertices[f][j], b = face_vertices[f][(j + 1) % 3];
-      for (int g = 0; g < 4; ++g)
-        for (int k = 0; k < 3; ++k)
-          if (g != f && face_vertices[g][k] == b && face_vertices[g][(k + 1) % 3] == a)
-            out[static_cast<std::size_t>(f)][static_cast<std::size_t>(j)] = {g, k};
-    }
-  return out;
-}();
 
 std::uint32_t corner(const std::array<std::uint32_t, 4>& t, int f, int j) { return t[static_cast<std::size_t>(face_vertices[f][j % 3])]; }
 
@@ -88,7 +71,7 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
     while (j < uses.size() && uses[j].key == uses[i].key) ++j;
     if (j - i > 2) {
       const Key& k = uses[i].key;
-      throw TetMapError(uses[i + 2].tet, fmt::format("the face {} {} {} is shared by {} tetrahedra (at most 2)", k[0], k[1], k[2], j - i));
+      throw tet_error(uses[i + 2].tet, fmt::format("the face {} {} {} is shared by {} tetrahedra (at most 2)", k[0], k[1], k[2], j - i));
     }
     if (j - i == 2) shared.emplace_back(i, i + 1);
     i = j;
@@ -109,13 +92,13 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
   if (points) {
     for (std::uint32_t t = 0; t < n; ++t) {
       const double o = orientation(out.tets[t], *points);
-      if (o == 0) throw TetMapError(t, fmt::format("tetrahedron {} is flat", t));
+      if (o == 0) throw tet_error(t, fmt::format("tetrahedron {} is flat", t));
       if (o < 0) std::swap(out.tets[t][2], out.tets[t][3]);
     }
     for (const auto& [a, b] : shared)
       if (!opposite(uses[a], uses[b]))
-        throw TetMapError(uses[b].tet, fmt::format("tetrahedra {} and {} lie on the same side of their shared face (the mesh folds over)",
-                                                   uses[a].tet, uses[b].tet));
+        throw tet_error(uses[b].tet, fmt::format("tetrahedra {} and {} lie on the same side of their shared face (the mesh folds over)", uses[a].tet,
+                                                 uses[b].tet));
   } else {
     // Propagate an orientation from each component's first tetrahedron.
     std::vector<std::vector<std::pair<std::size_t, std::size_t>>> around(n);  // (my use, the other's use)
@@ -137,7 +120,7 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
             if (!fixed[s2]) fixed[s2] = true, stack.push_back(s2);
             continue;
           }
-          if (fixed[s2]) throw TetMapError(s2, fmt::format("the mesh is not orientable (tetrahedra {} and {})", t, s2));
+          if (fixed[s2]) throw tet_error(s2, fmt::format("the mesh is not orientable (tetrahedra {} and {})", t, s2));
           std::swap(out.tets[s2][2], out.tets[s2][3]);
           fixed[s2] = true;
           stack.push_back(s2);
@@ -145,31 +128,21 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
       }
     }
   }
-  Map& m = out.map;
-  m = Map(Model::open_omap(3), 12 * std::size_t{n});
-  out.vertex.resize(m.size());
-  auto dart = [](std::uint32_t t, int f, int j) {
-    return static_cast<Dart>(12 * t + 3 * static_cast<std::uint32_t>(f) + static_cast<std::uint32_t>(j));
-  };
-  for (std::uint32_t t = 0; t < n; ++t)
-    for (int f = 0; f < 4; ++f)
-      for (int j = 0; j < 3; ++j) {
-        out.vertex[dart(t, f, j)] = corner(out.tets[t], f, j);
-        m.sew(1, dart(t, f, j), dart(t, f, (j + 1) % 3));
-        const Across a = across_table[static_cast<std::size_t>(f)][static_cast<std::size_t>(j)];
-        if (dart(t, f, j) < dart(t, a.f, a.j)) m.sew(2, dart(t, f, j), dart(t, a.f, a.j));
-      }
-  // β3: the dart u -> v of one tetrahedron and v -> u of the other, on the
-  // face they share.
-  for (const auto& [a, b] : shared) {
-    const Key& k = uses[a].key;
-    const std::uint32_t t0 = uses[a].tet, t1 = uses[b].tet;
-    const int f0 = face_with(t0, k), f1 = face_with(t1, k);
-    for (int j = 0; j < 3; ++j) {
-      const int j1 = traversal(out.tets[t1], f1, corner(out.tets[t0], f0, j + 1), corner(out.tets[t0], f0, j));
-      m.sew(3, dart(t0, f0, j), dart(t1, f1, j1));
+  // Dart 12t + 3f + j: the j-th vertex of face f of tetrahedron t.
+  CellComplex cells;
+  cells.vertices.reserve(12 * std::size_t{n});
+  cells.face_begin.reserve(4 * std::size_t{n} + 1);
+  cells.cell_begin.reserve(std::size_t{n} + 1);
+  for (std::uint32_t t = 0; t < n; ++t) {
+    for (int f = 0; f < 4; ++f) {
+      const std::array<std::uint32_t, 3> face{corner(out.tets[t], f, 0), corner(out.tets[t], f, 1), corner(out.tets[t], f, 2)};
+      cells.add_face(face);
     }
+    cells.end_cell();
   }
+  GluedCells glued = glue_cells(cells);
+  out.map = std::move(glued.map);
+  out.vertex = std::move(glued.vertex);
   return out;
 }
 

@@ -7,11 +7,9 @@
 
 #include <array>
 #include <cstdint>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
-#include "core/map.hpp"
+#include "core/cell_gluing.hpp"
 
 namespace dartcheck::querymodify {
 
@@ -24,18 +22,13 @@ struct TetMap {
   std::vector<std::array<std::uint32_t, 4>> tets;
 };
 
-/// A mesh that makes no 3-map, with the tetrahedron (index into the input)
-/// that shows it.
-struct TetMapError : std::invalid_argument {
-  TetMapError(std::size_t t, const std::string& what) : std::invalid_argument(what), tet(t) {}
-  std::size_t tet;
-};
-
 /// Builds the map. With `points`, each tetrahedron is oriented by the sign
 /// of its volume (throws on a flat one, and on two tetrahedra on the same
 /// side of their shared face); without, orientations are propagated
 /// across shared faces (throws if the mesh is not orientable). Throws
-/// when a face is shared by more than two tetrahedra. Throws TetMapError.
+/// when a face is shared by more than two tetrahedra. Throws BuildError
+/// naming the tetrahedron (Culprit::cell, its index in the input); the
+/// map is glued by glue_cells (core/cell_gluing.hpp).
 /// O(T log T) for T tetrahedra.
 TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& tets, const std::vector<std::array<double, 3>>* points = nullptr);
 

@@ -129,8 +129,9 @@ TEST(TetMap, BadMeshesNameATetrahedron) {
   auto tet_of_error = [](auto&& build) -> long {
     try {
       build();
-    } catch (const TetMapError& e) {
-      return static_cast<long>(e.tet);
+    } catch (const BuildError& e) {
+      EXPECT_EQ(e.culprit(), BuildError::Culprit::cell);
+      return static_cast<long>(e.index());
     }
     return -1;
   };

@@ -10,7 +10,7 @@
 
 #include "core/isomorphism.hpp"
 #include "core/orbit.hpp"
-#include "querymodify/cell_map.hpp"
+#include "core/cell_gluing.hpp"
 #include "querymodify/map_checks.hpp"
 #include "map_counts.hpp"
 #include "querymodify/overlap.hpp"
@@ -36,22 +36,23 @@ TEST(CellMap, VoxelGridByHand) {
 
 TEST(CellMap, BadCellsNameTheCell) {
   const Polyhedron tet{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-  EXPECT_NO_THROW(build_cell_map({tet}));
+  EXPECT_NO_THROW(glue_cells(CellComplex::of({tet})));
   Polyhedron open = tet;
   open.pop_back();
   try {
-    build_cell_map({tet, open});
+    glue_cells(CellComplex::of({tet, open}));
     FAIL() << "an open cell was accepted";
-  } catch (const CellMapError& e) {
-    EXPECT_EQ(e.cell, 1U);
+  } catch (const BuildError& e) {
+    EXPECT_EQ(e.culprit(), BuildError::Culprit::cell);
+    EXPECT_EQ(e.index(), 1U);
   }
   // The same tetrahedron's mirror image glued on face 1 2 3 traversed the
   // same way: the orientations differ.
   const Polyhedron other{{1, 3, 4}, {3, 2, 4}, {2, 1, 4}, {1, 2, 3}};
-  EXPECT_THROW(build_cell_map({tet, other}), CellMapError);
+  EXPECT_THROW(glue_cells(CellComplex::of({tet, other})), BuildError);
   const Polyhedron flipped{{1, 2, 4}, {2, 3, 4}, {3, 1, 4}, {1, 3, 2}};
-  EXPECT_TRUE(check_3map(build_cell_map({tet, flipped}).map).valid());
-  EXPECT_THROW(build_cell_map({{{0, 1}}}), CellMapError);
+  EXPECT_TRUE(check_3map(glue_cells(CellComplex::of({tet, flipped})).map).valid());
+  EXPECT_THROW(glue_cells(CellComplex::of({{{0, 1}}})), BuildError);
 }
 
 TEST(Terrain, FlattenedSpotIsTheHouseQuery) {
