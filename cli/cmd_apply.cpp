@@ -14,7 +14,7 @@
 #include "generators/random_embedding.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
-#include "cli/report_text.hpp"
+#include "reports/validity_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "io/catalog.hpp"
 #include "core/input_error.hpp"
@@ -25,6 +25,8 @@
 #include "io/kappa_file.hpp"
 
 namespace dartcheck::cli {
+
+using reports::print_validity;
 
 using namespace analysis;  // the engines the commands call
 
@@ -105,7 +107,7 @@ void write_kappa(const ApplyOptions& o, const Renumbering& c, std::size_t g_size
                o.kappa_out.empty() ? " (--kappa-out FILE writes the correspondence for infer --kappa)" : "");
   if (o.kappa_out.empty()) return;
   write_file(o.kappa_out, kappa_file_text(pairs, {"The dart correspondence of one application (dartcheck apply --kappa-out):",
-                                                             "before dart (host), after dart (result), for every preserved dart."}));
+                                                  "before dart (host), after dart (result), for every preserved dart."}));
   fmt::print("written: {} ({} preserved darts)\n", o.kappa_out, pairs.size());
 }
 

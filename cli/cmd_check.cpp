@@ -15,13 +15,17 @@
 #include "campaign/shard_stream.hpp"
 #include "cli/jobs.hpp"
 #include "cli/options.hpp"
-#include "cli/run_output.hpp"
+#include "reports/run_output.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "io/baseline.hpp"
 #include "io/catalog.hpp"
 
 namespace dartcheck::cli {
+
+using reports::finish_run;
+
+using reports::print_check;
 
 using namespace analysis;
 

@@ -10,7 +10,7 @@
 #include "campaign/shard_stream.hpp"
 #include "cli/options.hpp"
 #include "core/wording.hpp"
-#include "cli/report_text.hpp"
+#include "reports/validity_text.hpp"
 #include "reports/events_report.hpp"
 #include "checkers/map_validity.hpp"
 #include "core/input_error.hpp"

@@ -20,7 +20,7 @@
 #include "campaign/shard_stream.hpp"
 #include "cli/jobs.hpp"
 #include "cli/options.hpp"
-#include "cli/run_output.hpp"
+#include "reports/run_output.hpp"
 #include "analysis/embedded_fuzz.hpp"
 #include "analysis/counterexample_files.hpp"
 #include "analysis/fuzz.hpp"
@@ -33,6 +33,10 @@
 #include "io/map_io.hpp"
 
 namespace dartcheck::cli {
+
+using reports::finish_run;
+
+using reports::print_fuzz;
 
 using namespace analysis;  // the engines the commands call
 namespace {

@@ -12,7 +12,7 @@
 
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
-#include "cli/report_text.hpp"
+#include "reports/validity_text.hpp"
 #include "reports/infer_report.hpp"
 #include "checkers/map_validity.hpp"
 #include "io/jerboa_jba.hpp"

@@ -13,7 +13,7 @@
 #include "campaign/shard_stream.hpp"
 #include "cli/jobs.hpp"
 #include "cli/options.hpp"
-#include "cli/run_output.hpp"
+#include "reports/run_output.hpp"
 #include "analysis/rule_result.hpp"
 #include "reports/rule_result_json.hpp"
 #include "reports/rule_result_text.hpp"
@@ -22,6 +22,10 @@
 #include "proofs/rule_prover.hpp"
 
 namespace dartcheck::cli {
+
+using reports::finish_run;
+
+using reports::print_prove;
 
 using namespace analysis;  // the engines the commands call
 

@@ -12,13 +12,15 @@
 #include "campaign/shard_stream.hpp"
 #include "cli/commands.hpp"
 #include "reports/querymodify_report.hpp"
-#include "cli/tet_input.hpp"
+#include "querymodify/tet_input.hpp"
 #include "core/input_error.hpp"
 #include "io/catalog.hpp"
 #include "querymodify/hex_queries.hpp"
 #include "querymodify/overlap.hpp"
 
 namespace dartcheck::cli {
+
+using querymodify::load_tet_input;
 
 using namespace querymodify;
 

@@ -15,13 +15,16 @@
 #include "campaign/shard_stream.hpp"
 #include "cli/commands.hpp"
 #include "reports/querymodify_report.hpp"
-#include "cli/tet_input.hpp"
+#include "querymodify/tet_input.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "querymodify/map_checks.hpp"
 #include "querymodify/recombination.hpp"
 
 namespace dartcheck::cli {
+
+using querymodify::load_tet_input;
+using querymodify::TetInput;
 
 using namespace querymodify;
 

@@ -22,12 +22,17 @@
 #include "campaign/shard_stream.hpp"
 #include "cli/jobs.hpp"
 #include "cli/options.hpp"
-#include "cli/run_output.hpp"
+#include "reports/run_output.hpp"
 #include "core/wording.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 
 namespace dartcheck::cli {
+
+using reports::finish_run;
+
+using reports::ReportStages;
+using reports::write_report;
 
 using namespace analysis;  // the engines the commands call
 namespace fs = std::filesystem;

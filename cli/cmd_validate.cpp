@@ -4,11 +4,13 @@
 #include "checkers/map_validity.hpp"
 #include "io/jerboa_jba.hpp"
 #include "cli/commands.hpp"
-#include "cli/report_text.hpp"
+#include "reports/validity_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck::cli {
+
+using reports::print_validity;
 
 using namespace analysis;  // the engines the commands call
 namespace {

@@ -9,11 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "analysis/exit_status.hpp"
+#include "campaign/merge.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::cli {
 
-enum Exit : int { ok = 0, violation = 1, bad_input = 2, soundness_bug = 3, output_error = 4 };
+using namespace exit_status;  // ok, violation, bad_input, soundness_bug, output_error
 
 struct ValidateOptions {
   std::string target;
@@ -170,15 +172,8 @@ struct ProveCommand {
 /// otherwise.
 int prove(const ProveCommand& c);
 
-struct MergeOptions {
-  std::vector<std::string> shards = {};  // files written by --format jsonl
-  std::string format = "text", output = {}, catalog = {}, engine = "dot";
-  bool explain = false;
-};
-/// The shards of one run of check, fuzz, prove or report, rendered as the
-/// unsharded run renders them (text, json, sarif, junit, or html into
-/// `output`); the run's exit status. 2 when a shard is missing, given
-/// twice, unfinished, or from another run.
-int merge(const MergeOptions& o);
+/// `merge` is the campaign layer's (campaign/merge.hpp).
+using MergeOptions = campaign::MergeRequest;
+inline int merge(const MergeOptions& o) { return campaign::merge_shards(o); }
 
 }  // namespace dartcheck::cli

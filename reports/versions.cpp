@@ -22,4 +22,6 @@ std::vector<std::pair<std::string, std::string>> library_versions() {
   };
 }
 
+std::string dartcheck_version() { return DARTCHECK_VERSION; }
+
 }  // namespace dartcheck::reports

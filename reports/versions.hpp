@@ -11,4 +11,7 @@ namespace dartcheck::reports {
 /// and for Z3 and GMP the version of the library loaded.
 std::vector<std::pair<std::string, std::string>> library_versions();
 
+/// dartcheck's own version (the project's, as CMake knows it).
+std::string dartcheck_version();
+
 }  // namespace dartcheck::reports

@@ -1,4 +1,4 @@
-// Plain-text rendering of validity reports and cell counts for the CLI.
+// Plain-text rendering of validity reports and cell counts.
 #pragma once
 
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include "checkers/violation.hpp"
 #include "core/map.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::reports {
 
 /// Prints cells and every violation (up to `limit`, 0 = all, saying how
 /// many were left out).
@@ -16,4 +16,4 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& report
 /// "8 vertices, 12 edges, 6 faces"
 std::string cells_sentence(const Map& map);
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::reports

@@ -11,7 +11,7 @@
 #include "io/catalog.hpp"
 #include "reports/rule_result_text.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::reports {
 
 using Results = std::vector<analysis::RuleResult>;
 
@@ -24,10 +24,10 @@ void print_ci_format(const std::string& format, const std::string& command, cons
                      const std::vector<std::string>& baseline_mismatches);
 
 /// fuzz's output: text or json.
-void print_fuzz(const std::string& format, const reports::FuzzRun& run, const Results& results);
+void print_fuzz(const std::string& format, const FuzzRun& run, const Results& results);
 
 /// prove's output: text or json.
-void print_prove(const std::string& format, const reports::ProveRun& run, const Results& results);
+void print_prove(const std::string& format, const ProveRun& run, const Results& results);
 
 /// What report's page says about the stages that ran.
 struct ReportStages {
@@ -41,4 +41,10 @@ struct ReportStages {
 void write_report(const std::string& dir, const std::string& engine, const std::string& catalog_file, const Catalog& catalog, const Results& rows,
                   const std::vector<std::string>& baseline_mismatches, const ReportStages& stages);
 
-}  // namespace dartcheck::cli
+/// The end of a run of check, fuzz, prove or report: prints the baseline's
+/// disagreements and every mismatch line on stderr, says how many of
+/// `selected` rules finished if a signal stopped the run, and returns the
+/// exit status (3 a soundness bug, 130 interrupted, 1 a mismatch, 0).
+int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected);
+
+}  // namespace dartcheck::reports

@@ -1,9 +1,11 @@
-#include "cli/run_output.hpp"
+#include "reports/run_output.hpp"
 
 #include <filesystem>
 
 #include <fmt/format.h>
 
+#include "analysis/exit_status.hpp"
+#include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
 #include "core/output_file.hpp"
 #include "core/wording.hpp"
@@ -11,50 +13,51 @@
 #include "reports/html_page.hpp"
 #include "reports/report_page.hpp"
 #include "reports/rule_result_json.hpp"
+#include "reports/rule_result_text.hpp"
+#include "reports/versions.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::reports {
 
 using namespace analysis;
-using reports::html_text;
 
 void print_check(const std::string& format, const std::string& catalog_file, const Catalog& catalog, const Results& results,
                  const std::vector<std::string>& baseline_mismatches, bool explain) {
   if (format == "sarif" || format == "junit") {
     print_ci_format(format, "check", catalog_file, results, baseline_mismatches);
   } else if (format == "json") {
-    const auto doc = reports::results_document("check", catalog_file, catalog, results, baseline_mismatches);
-    fmt::print("{}\n", reports::json_text(doc));
+    const auto doc = results_document("check", catalog_file, catalog, results, baseline_mismatches);
+    fmt::print("{}\n", json_text(doc));
   } else {
-    fmt::print("{}", reports::check_table(catalog, results, baseline_mismatches.size(), {explain, catalog_file}));
+    fmt::print("{}", check_table(catalog, results, baseline_mismatches.size(), {explain, catalog_file}));
   }
 }
 
 void print_ci_format(const std::string& format, const std::string& command, const std::string& catalog_file, const Results& results,
                      const std::vector<std::string>& baseline_mismatches) {
   if (format == "sarif")
-    fmt::print("{}\n", reports::sarif_document(catalog_file, results, DARTCHECK_VERSION));
+    fmt::print("{}\n", sarif_document(catalog_file, results, dartcheck_version()));
   else
-    fmt::print("{}", reports::junit_document(command, catalog_file, results, baseline_mismatches));
+    fmt::print("{}", junit_document(command, catalog_file, results, baseline_mismatches));
 }
 
-void print_fuzz(const std::string& format, const reports::FuzzRun& run, const Results& results) {
+void print_fuzz(const std::string& format, const FuzzRun& run, const Results& results) {
   if (format == "json") {
-    reports::Json doc = reports::json_document("fuzz");
-    reports::Json rows = reports::Json::array();
-    for (const auto& r : results) rows.push_back(reports::rule_result_json(r));
+    Json doc = json_document("fuzz");
+    Json rows = Json::array();
+    for (const auto& r : results) rows.push_back(rule_result_json(r));
     doc["rules"] = std::move(rows);
-    doc["summary"] = reports::fuzz_summary_json(run, results);
-    fmt::print("{}\n", reports::json_text(std::move(doc)));
+    doc["summary"] = fuzz_summary_json(run, results);
+    fmt::print("{}\n", json_text(std::move(doc)));
   } else {
-    fmt::print("{}", reports::fuzz_table(run, results));
+    fmt::print("{}", fuzz_table(run, results));
   }
 }
 
-void print_prove(const std::string& format, const reports::ProveRun& run, const Results& results) {
+void print_prove(const std::string& format, const ProveRun& run, const Results& results) {
   if (format == "json")
-    fmt::print("{}\n", reports::json_text(reports::prove_document(run, results)));
+    fmt::print("{}\n", json_text(prove_document(run, results)));
   else
-    fmt::print("{}", reports::prove_text(run, results));
+    fmt::print("{}", prove_text(run, results));
 }
 
 namespace {
@@ -88,19 +91,30 @@ void write_report(const std::string& dir_name, const std::string& engine, const 
                   const Results& rows, const std::vector<std::string>& baseline_mismatches, const ReportStages& stages) {
   namespace fs = std::filesystem;
   const fs::path dir(dir_name);
-  reports::Pictures pictures(dir.string(), engine);
+  Pictures pictures(dir.string(), engine);
   std::string body = fmt::format("<h1>dartcheck report: {}</h1>\n", html_text(catalog_file)) + summary_html(rows, catalog, stages);
   body +=
       "<p class=\"note\">Pictures: L and R side by side; preserved black, deleted red, added green; hooks with a double border; "
       "filled nodes and doubled arcs are the witnesses of a failed condition. Links: 0 black, 1 red, 2 blue, 3 green.</p>\n";
-  body += reports::verdict_table_html(rows, stages.fuzz_seconds.has_value(), stages.prove_darts > 0);
-  for (const auto& r : rows) body += reports::rule_section_html(r, pictures);
+  body += verdict_table_html(rows, stages.fuzz_seconds.has_value(), stages.prove_darts > 0);
+  for (const auto& r : rows) body += rule_section_html(r, pictures);
   const std::string index = (dir / "index.html").string(), data = (dir / "results.json").string();
-  const std::string page = reports::html_document("dartcheck report: " + catalog_file, body);
+  const std::string page = html_document("dartcheck report: " + catalog_file, body);
   write_file(index, page);
   // The same results as data, in check's JSON form, beside the page.
-  write_file(data, reports::json_text(reports::results_document("report", catalog_file, catalog, rows, baseline_mismatches)) + "\n");
+  write_file(data, json_text(results_document("report", catalog_file, catalog, rows, baseline_mismatches)) + "\n");
   fmt::print("wrote {} ({}, {} pictures, {} bytes) and {}\n", index, counted(rows.size(), "rule"), pictures.count(), page.size(), data);
 }
 
-}  // namespace dartcheck::cli
+int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected) {
+  for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", printable(m));
+  for (const auto& line : mismatch_lines(results)) fmt::print(stderr, "{}\n", line);
+  const auto counts = analysis::count_results(results);
+  if (analysis::interrupted())
+    fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), selected, selected == 1 ? "" : "s");
+  if (counts.unsound || counts.events_contradicted) return exit_status::soundness_bug;
+  if (analysis::interrupted()) return analysis::interrupted_exit;
+  return counts.mismatches + baseline_mismatches.size() > 0 ? exit_status::violation : exit_status::ok;
+}
+
+}  // namespace dartcheck::reports

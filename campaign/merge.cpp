@@ -1,6 +1,6 @@
 // `dartcheck merge`: the shards of one run (check, fuzz, prove or report
 // with --shard K/N --format jsonl) back into one result, rendered by the
-// command's own renderers (cli/run_output.hpp). The static stage is
+// command's own renderers (reports/run_output.hpp). The static stage is
 // recomputed from the catalog, whose digest must be the shards'; the
 // costly stages come from the records (campaign/result_record.hpp).
 #include <limits>
@@ -9,26 +9,28 @@
 #include <fmt/format.h>
 
 #include "analysis/verdict_record.hpp"
+#include "analysis/exit_status.hpp"
+#include "campaign/merge.hpp"
 #include "campaign/result_record.hpp"
 #include "campaign/shard_stream.hpp"
-#include "cli/commands.hpp"
-#include "cli/options.hpp"
-#include "cli/run_output.hpp"
+#include "core/number_text.hpp"
+#include "reports/run_output.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "reports/rule_result_json.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::campaign {
+
+using namespace exit_status;
+using namespace reports;
 
 using namespace analysis;
-using campaign::ShardFile;
-using reports::Json;
 
 namespace {
 
 // A number of the header's parameters, as the command wrote it.
 template <class T>
-T parameter(const campaign::RunHeader& h, const char* key) {
+T parameter(const RunHeader& h, const char* key) {
   const auto it = h.parameters.find(key);
   if (it == h.parameters.end() || !it->is_number_unsigned() || it->get<std::uint64_t>() > std::numeric_limits<T>::max())
     throw InputError("<shards>", 0, 0, fmt::format("the header has no count \"{}\" for {}", key, h.command));
@@ -36,7 +38,7 @@ T parameter(const campaign::RunHeader& h, const char* key) {
 }
 
 // A string of the header's parameters ("" when absent).
-std::string text_parameter(const campaign::RunHeader& h, const char* key) {
+std::string text_parameter(const RunHeader& h, const char* key) {
   const auto it = h.parameters.find(key);
   if (it == h.parameters.end()) return {};
   if (!it->is_string()) throw InputError("<shards>", 0, 0, fmt::format("the header's \"{}\" is not a string", key));
@@ -45,15 +47,13 @@ std::string text_parameter(const campaign::RunHeader& h, const char* key) {
 
 // The catalog the shards ran on, unchanged since (its digest), with the
 // baseline they read.
-Catalog merged_catalog(const campaign::RunHeader& h, const std::string& override_path, std::vector<std::string>& baseline_mismatches) {
+Catalog merged_catalog(const RunHeader& h, const std::string& override_path, std::vector<std::string>& baseline_mismatches) {
   const std::string path = override_path.empty() ? h.catalog : override_path;
-  if (campaign::file_digest(path) != h.catalog_digest)
-    throw InputError(path, 0, 0,
-                     fmt::format("not the catalog the shards ran on (its digest is {}, theirs {})", campaign::file_digest(path), h.catalog_digest));
+  if (file_digest(path) != h.catalog_digest)
+    throw InputError(path, 0, 0, fmt::format("not the catalog the shards ran on (its digest is {}, theirs {})", file_digest(path), h.catalog_digest));
   Catalog catalog = read_catalog(path);
   if (!h.baseline.empty()) {
-    if (campaign::file_digest(h.baseline) != h.baseline_digest)
-      throw InputError(h.baseline, 0, 0, "not the baseline the shards ran with (its digest changed)");
+    if (file_digest(h.baseline) != h.baseline_digest) throw InputError(h.baseline, 0, 0, "not the baseline the shards ran with (its digest changed)");
     baseline_mismatches = apply_baseline(catalog, h.baseline);
   }
   return catalog;
@@ -64,14 +64,14 @@ Catalog merged_catalog(const campaign::RunHeader& h, const std::string& override
 Results merged_results(const Catalog& catalog, const std::vector<ShardFile>& shards) {
   const auto& h = shards.front().header;
   const RecordSource source = h.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
-  std::vector<std::map<std::string, const campaign::ShardRule*>> by_name(shards.size());
+  std::vector<std::map<std::string, const ShardRule*>> by_name(shards.size());
   for (std::size_t k = 0; k < shards.size(); ++k)
     for (const auto& r : shards[k].rules)
       if (!by_name[k].emplace(r.name, &r).second) throw InputError(shards[k].file, r.line, 1, fmt::format("rule '{}' twice", printable(r.name)));
   Results results;
   for (const auto& e : catalog.rules) {
     if (!h.rule.empty() && e.rule.name() != h.rule) continue;
-    const std::size_t k = campaign::stable_hash(e.rule.name()) % h.shard.count;
+    const std::size_t k = stable_hash(e.rule.name()) % h.shard.count;
     const auto it = by_name[k].find(reports::replace_invalid_utf8(e.rule.name()));
     if (it == by_name[k].end())
       throw InputError(shards[k].file, 0, 0,
@@ -79,8 +79,8 @@ Results merged_results(const Catalog& catalog, const std::vector<ShardFile>& sha
                                    h.shard.count));
     results.push_back(analyse_static(catalog, e, 0, {}, source));
     try {
-      campaign::restore_record(results.back(), it->second->record);
-    } catch (const campaign::RecordError& err) {
+      restore_record(results.back(), it->second->record);
+    } catch (const RecordError& err) {
       throw InputError(shards[k].file, it->second->line, 1, err.what());
     }
     by_name[k].erase(it);
@@ -137,7 +137,7 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
     for (const Json& f : shards[k].fragments) {
       const std::string name = f["rule"].get<std::string>();
       const auto at = order.find(name);
-      if (at == order.end() || campaign::stable_hash(catalog.rules[at->second].rule.name()) % h.shard.count != k)
+      if (at == order.end() || stable_hash(catalog.rules[at->second].rule.name()) % h.shard.count != k)
         throw InputError(shards[k].file, 0, 0,
                          fmt::format("rule '{}' is not a rule of shard {} of {} in the catalog", printable(name), k, h.catalog));
       if (!fragments.emplace(at->second, &f).second) throw InputError(shards[k].file, 0, 0, fmt::format("rule '{}' twice", printable(name)));
@@ -159,12 +159,12 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
 
 }  // namespace
 
-int merge(const MergeOptions& o) {
+int merge_shards(const MergeRequest& o) {
   std::vector<ShardFile> files;
-  for (const auto& f : o.shards) files.push_back(campaign::read_shard_file(f));
-  files = campaign::check_complete(std::move(files));
-  const campaign::RunHeader& h = files.front().header;
-  if (campaign::per_input_command(h.command)) return merge_inputs(files, o.format);
+  for (const auto& f : o.shards) files.push_back(read_shard_file(f));
+  files = check_complete(std::move(files));
+  const RunHeader& h = files.front().header;
+  if (per_input_command(h.command)) return merge_inputs(files, o.format);
   if (o.format == "html" && o.output.empty()) throw InputError("<command line>", 0, 0, "--format html: give -o DIR for the page");
   if (h.command == "report" && o.format == "text")
     throw InputError("<command line>", 0, 0, "--format: a report merges as html, json, sarif or junit");
@@ -214,4 +214,4 @@ int merge(const MergeOptions& o) {
   return finish_run(results, baseline_mismatches, selected);
 }
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::campaign

@@ -1,4 +1,4 @@
-// Tetrahedral meshes on the command line (recombine, query): read, checked
+// Tetrahedral mesh files as maps (recombine, query): read, checked
 // against --limit-darts, and built into an open 3-O-map, every error at
 // file:line:column of the mesh.
 #pragma once
@@ -8,15 +8,15 @@
 #include "io/tet_mesh_io.hpp"
 #include "querymodify/tet_map.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::querymodify {
 
 struct TetInput {
   TetMesh mesh;
-  querymodify::TetMap map;
+  TetMap map;
 };
 
 /// Reads a .node/.ele/.mesh file and builds its map, tetrahedra oriented
 /// by their points' volume. Throws InputError.
 TetInput load_tet_input(const std::string& path);
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::querymodify

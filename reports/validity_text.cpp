@@ -1,11 +1,11 @@
-#include "cli/report_text.hpp"
+#include "reports/validity_text.hpp"
 
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
 #include "core/orbit.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::reports {
 
 std::string cells_sentence(const Map& map) {
   static const char* names[] = {"vertices", "edges", "faces", "volumes"};
@@ -45,4 +45,4 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& r, std
   if (shown < r.violations.size()) fmt::print(out, "  ... and {} more (use --limit 0 to list all)\n", r.violations.size() - shown);
 }
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::reports

@@ -1,11 +1,11 @@
-#include "cli/tet_input.hpp"
+#include "querymodify/tet_input.hpp"
 
 #include <filesystem>
 
 #include "core/input_error.hpp"
 #include "core/limits.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::querymodify {
 
 TetInput load_tet_input(const std::string& path) {
   TetInput in;
@@ -19,11 +19,11 @@ TetInput load_tet_input(const std::string& path) {
   if (in.mesh.tets.size() > most_tets)
     throw InputError(tet_file, line_of(most_tets), 1, over_limit("darts", 12 * in.mesh.tets.size(), limits().darts, "--limit-darts"));
   try {
-    in.map = querymodify::build_tet_map(in.mesh.tets, &in.mesh.points);
+    in.map = build_tet_map(in.mesh.tets, &in.mesh.points);
   } catch (const BuildError& e) {
     throw InputError(tet_file, e.culprit() == BuildError::Culprit::cell ? line_of(e.index()) : 0, 1, e.what());
   }
   return in;
 }
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::querymodify

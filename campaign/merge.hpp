@@ -1,0 +1,27 @@
+// `dartcheck merge`: the shards of one run (check, fuzz, prove or report
+// with --shard K/N --format jsonl; events, recombine and query on many
+// inputs) back into one result, rendered by the commands' own renderers
+// (reports/run_output.hpp), so that a merged run prints what the unsharded
+// run prints. The static stage is recomputed from the catalog, whose
+// digest must be the shards'; the costly stages come from the records
+// (campaign/result_record.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace dartcheck::campaign {
+
+struct MergeRequest {
+  std::vector<std::string> shards = {};  // files written by --format jsonl
+  std::string format = "text", output = {}, catalog = {}, engine = "dot";
+  bool explain = false;
+};
+
+/// Reads, checks (complete, one run, the same catalog) and merges the
+/// shards, prints the merged output and returns the run's exit status
+/// (analysis/exit_status.hpp). Throws InputError on shards that do not
+/// make one run.
+int merge_shards(const MergeRequest& request);
+
+}  // namespace dartcheck::campaign
