@@ -30,9 +30,9 @@ void baseline_round_trip(const std::string& file) {
 }
 
 void kappa_round_trip(const std::string& file) {
-  const inference::KappaSpec k = read_kappa_file(file, Model::gmap(2));
+  const KappaSpec k = read_kappa_file(file, Model::gmap(2));
   if (k.identity || !k.orbits.empty()) return;  // kappa_file_text writes explicit pairs only
-  const inference::KappaSpec back = read_kappa_file(file_of(kappa_file_text(k.pairs, {"fuzz"}), ".yaml"), Model::gmap(2));
+  const KappaSpec back = read_kappa_file(file_of(kappa_file_text(k.pairs, {"fuzz"}), ".yaml"), Model::gmap(2));
   if (back.pairs != k.pairs) throw std::logic_error("a written κ file reads back with other pairs");
 }
 
