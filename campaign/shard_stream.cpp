@@ -228,4 +228,17 @@ std::vector<ShardFile> check_complete(std::vector<ShardFile> files) {
   return files;
 }
 
+void print_input_run(const std::string& format, const std::string& command, const std::string& input, reports::Json parameters,
+                     reports::Json document, const std::string& text, int status) {
+  if (format == "jsonl") {
+    ShardWriter lines(make_header(command, input, "", "", {}, std::move(parameters)));
+    lines.input(std::move(document), text);
+    lines.summary(reports::Json{{"status", status}});
+  } else if (format == "json") {
+    fmt::print("{}\n", reports::json_text(std::move(document)));
+  } else {
+    fmt::print("{}", text);
+  }
+}
+
 }  // namespace dartcheck::campaign

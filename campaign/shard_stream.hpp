@@ -39,6 +39,13 @@ RunHeader make_header(std::string command, const std::string& catalog, const std
 /// gathers the runs in the order of their inputs' paths.
 bool per_input_command(std::string_view command);
 
+/// Prints the run of a per-input command (recombine, query) as --format
+/// asks: its text, its JSON document, or (jsonl) the one run of a campaign
+/// over many inputs: a header naming the input and the options that
+/// change results, the input's line, and a summary with the exit status.
+void print_input_run(const std::string& format, const std::string& command, const std::string& input, reports::Json parameters,
+                     reports::Json document, const std::string& text, int status);
+
 /// Writes the lines on stdout, each flushed.
 class ShardWriter {
  public:

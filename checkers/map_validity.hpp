@@ -2,6 +2,9 @@
 // I(D), O(N), C(E), and the variants' relaxed I and loop ban.
 #pragma once
 
+#include <string>
+#include <string_view>
+
 #include "checkers/violation.hpp"
 #include "core/map.hpp"
 
@@ -34,5 +37,11 @@ unsigned validity_threads(std::size_t darts);
 /// The exact pass alone (used by the fast pass, and by tests as a second
 /// implementation of the definition to compare against).
 ValidityReport check_map_exact(const Map& map);
+
+/// For a map given as input to an analysis that is defined on maps only
+/// (inference, events, fuzz hosts): throws InputError on the command line,
+/// "`subject`: not a valid 2-gmap (7 violations: the first five): `why`",
+/// unless `map` is a valid map of its model.
+void require_valid_map(const Map& map, std::string_view subject, std::string_view why);
 
 }  // namespace dartcheck

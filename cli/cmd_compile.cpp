@@ -7,9 +7,9 @@
 #include <regex>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
-#include "analysis/embedding_checks.hpp"
-#include "checkers/rule_conditions.hpp"
+#include "analysis/rule_result.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "compiler/rule_compiler.hpp"
@@ -19,18 +19,6 @@
 
 namespace dartcheck::cli {
 namespace {
-
-// The failing conditions of the static checker's verdict, as `check`
-// gives it: the topological ones (002) and the embedding ones (003's
-// Theorems 2 and 4 for terms, Jerboa's presence checks). Empty: consistent.
-std::string failing(const Catalog& catalog, const CatalogRule& r) {
-  std::string out;
-  for (const auto& c : check_rule(r.rule, r.words).conditions)
-    if (!c.holds) fmt::format_to(std::back_inserter(out), "{}{}", out.empty() ? "" : " ", c.name());
-  for (const std::string& name : analysis::failing_names(analysis::embedding_checks(catalog, r)))
-    fmt::format_to(std::back_inserter(out), "{}{}", out.empty() ? "" : " ", name);
-  return out;
-}
 
 // The default namespace: compiled_ and the catalog's file stem.
 std::string default_namespace(const std::string& catalog) {
@@ -53,7 +41,8 @@ int compile(const CompileOptions& o) {
   std::size_t inconsistent = 0, unsupported = 0;
   for (const CatalogRule& r : catalog.rules) {
     if (!o.rule.empty() && r.rule.name() != o.rule) continue;
-    if (const std::string fails = failing(catalog, r); !fails.empty()) {
+    // The failing conditions as `check` gives them (002, and 003 for terms).
+    if (const std::string fails = fmt::format("{}", fmt::join(analysis::analyse_static(catalog, r, 0).failures, " ")); !fails.empty()) {
       ++inconsistent;
       if (!o.rule.empty()) {
         fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled\n",

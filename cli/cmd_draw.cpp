@@ -51,9 +51,8 @@ int draw(const DrawOptions& o) {
 }
 
 int draw_map(const DrawMapOptions& o) {
-  const auto model = Model::by_name(o.model);
-  if (!model) throw InputError("<command line>", 0, 0, fmt::format("--model: unknown model '{}' (expected {})", o.model, Model::known_names()));
-  const Map map = resolve_map(o.target, *model, nullptr);
+  const Model model = command_model(o.model);
+  const Map map = resolve_map(o.target, model, nullptr);
   const auto report = check_map(map);
   reports::GraphPicture p;
   p.title = fmt::format("{} ({}, {} darts)", o.target, map.model().name, map.size());

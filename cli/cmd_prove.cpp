@@ -11,7 +11,8 @@
 #include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
 #include "campaign/shard_stream.hpp"
-#include "cli/jobs.hpp"
+#include "campaign/jobs.hpp"
+#include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
 #include "reports/run_output.hpp"
 #include "analysis/rule_result.hpp"
@@ -23,8 +24,6 @@
 
 namespace dartcheck::cli {
 
-using reports::finish_run;
-
 using reports::print_prove;
 
 using namespace analysis;  // the engines the commands call
@@ -32,15 +31,10 @@ using namespace analysis;  // the engines the commands call
 int prove(const ProveCommand& c) {
   if (c.jobs > 1) {
     if (c.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
-    return run_jobs({c.jobs, c.shard, {.format = c.format, .explain = c.explain}, std::nullopt});
+    return campaign::run_jobs({c.jobs, c.shard, {.format = c.format, .explain = c.explain}, std::nullopt});
   }
-  Catalog catalog = read_command_catalog(c.catalog, c.rule, c.format == "json" ? "json" : "text");
-  const campaign::Shard shard = command_shard(c.shard);
-  const auto baseline_mismatches = c.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, c.baseline);
-  campaign::keep_shard(catalog, shard);
-  const RecordSource source = c.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
+  campaign::RuleRun run("prove", {c.catalog, c.rule, c.shard, c.baseline, c.format == "jsonl"});
   if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
-  catch_interrupts();
   if (c.max_darts < 1 || c.max_darts > 256) throw InputError("<command line>", 0, 0, "--max-darts: expected 1 to 256");
   if (c.scheme_darts < 1 || c.scheme_darts > 256) throw InputError("<command line>", 0, 0, "--scheme-darts: expected 1 to 256");
   proofs::ProveOptions o;
@@ -49,33 +43,20 @@ int prove(const ProveCommand& c) {
   o.rlimit = c.rlimit;
   o.timeout_ms = static_cast<unsigned>(c.timeout * 1000);
   o.stop = [] { return interrupted(); };  // Ctrl-C interrupts the running Z3 query too
-
-  std::optional<campaign::ShardWriter> lines;
-  if (c.format == "jsonl")
-    lines.emplace(campaign::make_header(
-        "prove", c.catalog, c.baseline, c.rule, shard,
-        reports::Json{{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}}));
-  const auto start = std::chrono::steady_clock::now();
+  run.open_lines(reports::Json{{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}});
   std::vector<RuleResult> results;
-  std::size_t selected = 0;
-  for (const auto& e : catalog.rules) {
-    if (!c.rule.empty() && e.rule.name() != c.rule) continue;
-    ++selected;
-    if (interrupted()) continue;  // a rule's queries finish; the next ones do not start
-    results.push_back(analyse_static(catalog, e, 0, {}, source));
+  const auto rules = run.rules();
+  for (const CatalogRule* e : rules) {
+    if (interrupted()) break;  // a rule's queries finish; the next ones do not start
+    results.push_back(analyse_static(run.catalog(), *e, 0, {}, run.source()));
     run_proof(results.back(), o, c.out, c.catalog);
-    if (lines) lines->rule(results.back());
+    run.finished(results.back());
   }
   if (!results.empty() && results.back().proof && results.back().proof->interrupted)
     fmt::print(stderr, "interrupted during the solver queries of {}: the queries it did not finish say 'interrupted'\n",
                results.back().entry->rule.name());
-  const double total = seconds_since(start);
-  const int status = finish_run(results, baseline_mismatches, selected);
-  const reports::ProveRun run{c.catalog, o.max_darts, o.rlimit, total, c.explain, baseline_mismatches};
-  if (lines)
-    lines->summary(campaign::run_summary(results, selected, interrupted(), total, baseline_mismatches));
-  else
-    print_prove(c.format, run, results);
+  const int status = run.finish(results, rules.size());
+  if (!run.writes_lines()) print_prove(c.format, {c.catalog, o.max_darts, o.rlimit, run.seconds(), c.explain, run.baseline_mismatches()}, results);
   return status;
 }
 

@@ -15,12 +15,13 @@
 #include <fmt/format.h>
 
 #include "analysis/interrupt.hpp"
-#include "analysis/map_sources.hpp"
+#include "analysis/fuzz_targets.hpp"
 #include "analysis/rule_result.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/commands.hpp"
 #include "campaign/shard_stream.hpp"
-#include "cli/jobs.hpp"
+#include "campaign/jobs.hpp"
+#include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
 #include "reports/run_output.hpp"
 #include "core/wording.hpp"
@@ -28,8 +29,6 @@
 #include "core/output_file.hpp"
 
 namespace dartcheck::cli {
-
-using reports::finish_run;
 
 using reports::ReportStages;
 using reports::write_report;
@@ -45,12 +44,11 @@ void fuzz_stage(std::vector<RuleResult>& rows, const Catalog& catalog, const Rep
   FuzzOptions fo;
   fo.seed = seed;
   fo.runs = SIZE_MAX;
-  std::vector<Map> seeds;
-  for (const auto& s : catalog.maps) seeds.push_back(build_source(s));
-  std::vector<const Operation*> rules;
-  for (const auto& r : rows) rules.push_back(r.entry);
+  // The rows are the catalog's rules that --rule selects, in order: the targets' rules.
+  const FuzzTargets targets = fuzz_targets(catalog, o.rule, {});
+  const auto& rules = targets.rules;
   fmt::print(stderr, "dartcheck report: fuzzing {} for {} s, seed {}\n", counted(rules.size(), "rule"), seconds, fo.seed);
-  auto found = fuzz_rules(rules, seeds, fo, seconds, isatty(fileno(stderr)) != 0);
+  auto found = fuzz_rules(rules, targets.seeds, fo, seconds, isatty(fileno(stderr)) != 0);
   for (std::size_t k = 0; k < found.size(); ++k)  // fewer than rows if interrupted
     add_fuzz(rows[k], std::move(found[k]), fo.seed, cx_dir, o.catalog, ".fuzz");
 }
@@ -73,16 +71,12 @@ int report(const ReportOptions& o) {
   if (o.jobs > 1) {
     if (o.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
     const bool seed = !o.fuzz.empty() && !o.seed;  // every shard fuzzes with the same seed
-    return run_jobs({o.jobs,
-                     o.shard,
-                     {.format = "html", .output = o.output, .engine = o.engine},
-                     seed ? std::optional<std::uint64_t>(std::random_device{}()) : std::nullopt});
+    return campaign::run_jobs({o.jobs,
+                               o.shard,
+                               {.format = "html", .output = o.output, .engine = o.engine},
+                               seed ? std::optional<std::uint64_t>(std::random_device{}()) : std::nullopt});
   }
-  Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
-  const campaign::Shard shard = command_shard(o.shard);
-  const auto baseline_mismatches = o.baseline.empty() ? std::vector<std::string>{} : apply_baseline(catalog, o.baseline);
-  campaign::keep_shard(catalog, shard);
-  catch_interrupts();
+  campaign::RuleRun run("report", {o.catalog, o.rule, o.shard, o.baseline, o.format == "jsonl"});
   ReportStages stages;
   stages.baseline = !o.baseline.empty();
   if (!o.fuzz.empty()) stages.fuzz_seconds = parse_duration(o.fuzz, "--fuzz");
@@ -92,30 +86,19 @@ int report(const ReportOptions& o) {
   stages.scheme_darts = std::min<std::size_t>(proofs::ProveOptions{}.scheme_darts, o.prove_darts);
   ensure_directory(o.output);  // before the work, not after it
   const std::string cx_dir = (fs::path(o.output) / "counterexamples").string();
-
-  const auto start = std::chrono::steady_clock::now();
   std::vector<RuleResult> rows;
-  for (const auto& e : catalog.rules)
-    if (o.rule.empty() || e.rule.name() == o.rule)
-      rows.push_back(analyse_static(catalog, e, 0, {}, stages.baseline ? RecordSource::baseline : RecordSource::catalog));
+  for (const CatalogRule* e : run.rules()) rows.push_back(analyse_static(run.catalog(), *e, 0, {}, run.source()));
   const std::size_t selected = rows.size();
-  if (stages.fuzz_seconds) fuzz_stage(rows, catalog, o, *stages.fuzz_seconds, stages.seed, cx_dir);
+  if (stages.fuzz_seconds) fuzz_stage(rows, run.catalog(), o, *stages.fuzz_seconds, stages.seed, cx_dir);
   if (stages.prove_darts > 0) prove_stage(rows, o, stages, cx_dir);
-
-  if (o.format == "jsonl") {
-    // A shard: the lines merge reads, after every stage (the fuzz budget is shared by the rules).
-    campaign::ShardWriter lines(campaign::make_header(
-        "report", o.catalog, o.baseline, o.rule, shard,
-        reports::Json{{"fuzz", o.fuzz},
-                      {"seed", stages.fuzz_seconds ? reports::Json(stages.seed) : reports::Json(nullptr)},  // drawn only to fuzz
-                      {"prove_darts", stages.prove_darts},
-                      {"scheme_darts", stages.scheme_darts}}));
-    for (const auto& r : rows) lines.rule(r);
-    lines.summary(campaign::run_summary(rows, selected, interrupted(), seconds_since(start), baseline_mismatches));
-  } else {
-    write_report(o.output, o.engine, o.catalog, catalog, rows, baseline_mismatches, stages);
-  }
-  return finish_run(rows, baseline_mismatches, selected);
+  // A shard's lines come after every stage (the fuzz budget is shared by the rules).
+  run.open_lines(reports::Json{{"fuzz", o.fuzz},
+                               {"seed", stages.fuzz_seconds ? reports::Json(stages.seed) : reports::Json(nullptr)},  // drawn only to fuzz
+                               {"prove_darts", stages.prove_darts},
+                               {"scheme_darts", stages.scheme_darts}});
+  for (const auto& r : rows) run.finished(r);
+  if (!run.writes_lines()) write_report(o.output, o.engine, o.catalog, run.catalog(), rows, run.baseline_mismatches(), stages);
+  return run.finish(rows, selected);
 }
 
 }  // namespace dartcheck::cli

@@ -6,55 +6,13 @@
 #include "checkers/map_validity.hpp"
 #include "analysis/interrupt.hpp"
 #include "cli/commands.hpp"
-#include "rewriting/application.hpp"
+#include "analysis/catalog_examples.hpp"
 #include "analysis/map_sources.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/derivation.hpp"
-#include "core/isomorphism.hpp"
-#include "core/orbit.hpp"
-#include "rewriting/scheme_application.hpp"
 
 namespace dartcheck::cli {
 
 using namespace analysis;  // the engines the commands call
-
-namespace {
-
-struct Outcome {
-  std::string got, detail;
-};
-
-const Map& built_map(const Catalog& catalog, const std::vector<Map>& built, const std::string& name) {
-  std::size_t index = 0;
-  while (catalog.maps[index].name != name) ++index;  // the catalog reader checked the name
-  return built[index];
-}
-
-// One worked example: the rule applied at its hooks (a scheme instantiated
-// there, 002 Sec. 6.3, a DPO rule matched from it), then the result's
-// validity, cell counts and isomorphism as the example asks.
-Outcome run_example(const Catalog& catalog, const std::vector<Map>& built, const CatalogRule& r, const Example& e) {
-  Map host = built_map(catalog, built, e.map);
-  const auto result = dartcheck::apply(r, host, e.hooks);
-  if (result.refusal != Refusal::none) return {std::string(refusal_name(result.refusal)), result.why};
-  const auto report = check_map(host);
-  if (!report.valid())
-    return {"invalid", fmt::format("{} violations, first: dart {} {}", report.violations.size(), report.violations[0].element,
-                                   constraint_name(report.violations[0]))};
-  Outcome out{"valid", fmt::format("{} darts", host.size())};
-  if (e.cells) {
-    const auto cells = count_cells(host).cells;
-    if (cells != *e.cells) return {"wrong cells", fmt::format("cells {} expected {}", fmt::join(cells, ","), fmt::join(*e.cells, ","))};
-  }
-  if (!e.isomorphic_to.empty()) {
-    const Map& target = built_map(catalog, built, e.isomorphic_to);
-    if (!isomorphic(host, target)) return {"not isomorphic", fmt::format("H is not isomorphic to map {} ({} darts)", e.isomorphic_to, target.size())};
-    out.detail += fmt::format(", isomorphic to {}", e.isomorphic_to);
-  }
-  return out;
-}
-
-}  // namespace
 
 int run(const RunOptions& o) {
   const Catalog catalog = read_catalog(o.catalog);
@@ -75,7 +33,7 @@ int run(const RunOptions& o) {
                r.rule.left().arc_count(), r.rule.right().node_count(), r.rule.right().arc_count());
     for (const auto& e : r.examples) {
       ++examples;
-      const Outcome got = run_example(catalog, built, r, e);
+      const ExampleOutcome got = run_example(catalog, built, r, e);
       const bool pass = got.got == e.expect;
       failures += !pass;
       fmt::print("    {} {} at {}: {} -> {}  ({}){}\n", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got.got, got.detail,

@@ -5,11 +5,9 @@
 #include "cli/commands.hpp"
 #include "core/conjugate_words.hpp"
 #include "core/input_error.hpp"
-#include "generators/random_maps.hpp"
+#include "generators/word_separation.hpp"
 #include "io/map_io.hpp"
 #include "proofs/word_congruence.hpp"
-
-#include <random>
 
 namespace dartcheck::cli {
 
@@ -19,31 +17,6 @@ static ConjWord parse_arg(const std::string& text, const Model& model, const cha
   } catch (const std::invalid_argument& e) {
     throw InputError("<command line>", 0, 0, fmt::format("{}: {}", which, e.what()));
   }
-}
-
-// Lemma 3 read backwards: congruent words end at the same dart on every
-// valid map, so two different endpoints prove the words are not congruent.
-// Looks for such a map among seeded random maps of the model.
-static std::optional<std::string> separating_map(const Model& model, const ConjWord& w, const ConjWord& w2) {
-  const bool supported = (model.is_generalized() && model.dimension() <= 3 && model == Model::gmap(model.dimension())) ||
-                         (model == Model::omap(2) || model == Model::omap(3));
-  if (!supported) return std::nullopt;
-  std::mt19937 rng(1);
-  for (int attempt = 0; attempt < 200; ++attempt) {
-    MapRecipe recipe;
-    for (int f = 1 + attempt % 8; f > 0; --f) recipe.face_sizes.push_back(static_cast<std::uint8_t>(1 + rng() % 6));
-    for (int s = static_cast<int>(rng() % 12); s > 0; --s)
-      recipe.sewings.push_back({static_cast<std::uint8_t>(model.dims[rng() % model.dims.size()]), static_cast<std::uint32_t>(rng()),
-                                static_cast<std::uint32_t>(rng()), static_cast<std::uint32_t>(rng())});
-    const Map map = build_random_map(model, recipe);
-    for (Dart d = 0; d < map.size(); ++d) {
-      const Dart a = follow(map, d, w), b = follow(map, d, w2);
-      if (a != b)
-        return fmt::format("on a random {} of {} darts (seed 1, attempt {}) the paths from dart {} end at {} and {}", model.name, map.size(), attempt,
-                           d, a, b);
-    }
-  }
-  return std::nullopt;
 }
 
 int words(const WordsOptions& o) {
@@ -88,7 +61,7 @@ int words(const WordsOptions& o) {
     if (solver->answer == proofs::Answer::unsat) fmt::print("note: R_{{N,E}} does not prove them congruent, yet no bounded map separates them\n");
     return violation;
   }
-  if (auto witness = separating_map(*model, w, w2)) {
+  if (auto witness = separating_random_map(*model, w, w2)) {
     fmt::print("{} and {}: not congruent: {}{}\n", w.str(), w2.str(), *witness, solver_line());
     return violation;
   }

@@ -11,6 +11,7 @@
 
 #include "analysis/exit_status.hpp"
 #include "campaign/merge.hpp"
+#include "reports/apply_output.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::cli {
@@ -48,7 +49,7 @@ struct ReportOptions {
   std::string catalog, rule, output, engine = "dot";
   std::string format = "html";  // html (the page in `output`), or jsonl (a shard's lines on stdout)
   std::string shard;            // "K/N": only the rules of shard K (campaign/shard.hpp)
-  std::size_t jobs = 1;         // processes, each a shard, merged (cli/jobs.hpp)
+  std::size_t jobs = 1;         // processes, each a shard, merged (campaign/jobs.hpp)
   std::string baseline;         // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::string fuzz;             // a duration: fuzz every rule within it (empty: no fuzzing)
   std::size_t prove_darts = 0;  // ask Z3 for counterexamples of up to this many darts (0: no)
@@ -66,11 +67,7 @@ struct DrawMapOptions {
 /// highlighted).
 int draw_map(const DrawMapOptions& o);
 
-struct ApplyOptions {
-  std::string catalog, rule, map, output, kappa_out;
-  std::vector<Dart> hooks;
-  std::size_t limit = 50;
-};
+using ApplyOptions = reports::ApplyRequest;
 int apply(const ApplyOptions& o);
 
 struct RunOptions {
@@ -81,7 +78,7 @@ int run(const RunOptions& o);
 struct CheckOptions {
   std::string catalog, rule, format = "text";
   std::string shard;           // "K/N": only the rules of shard K (campaign/shard.hpp)
-  std::size_t jobs = 1;        // processes, each a shard, merged (cli/jobs.hpp)
+  std::size_t jobs = 1;        // processes, each a shard, merged (campaign/jobs.hpp)
   std::string baseline;        // recorded verdicts from a YAML side file (io/baseline.hpp), for .jme modelers
   std::string write_baseline;  // write this run's verdicts as a baseline
   bool explain = false;
@@ -143,7 +140,7 @@ int words(const WordsOptions& o);
 struct FuzzCommand {
   std::string catalog, rule, time, out, format = "text";
   std::string shard;     // "K/N": only the rules of shard K (campaign/shard.hpp)
-  std::size_t jobs = 1;  // processes, each a shard, merged (cli/jobs.hpp)
+  std::size_t jobs = 1;  // processes, each a shard, merged (campaign/jobs.hpp)
   std::string baseline;  // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::optional<std::size_t> runs;
   std::optional<std::uint64_t> seed;
@@ -159,7 +156,7 @@ int fuzz(const FuzzCommand& c);
 struct ProveCommand {
   std::string catalog, rule, out, format = "text";
   std::string shard;     // "K/N": only the rules of shard K (campaign/shard.hpp)
-  std::size_t jobs = 1;  // processes, each a shard, merged (cli/jobs.hpp)
+  std::size_t jobs = 1;  // processes, each a shard, merged (campaign/jobs.hpp)
   std::string baseline;  // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::size_t max_darts = 10;
   std::size_t scheme_darts = 6;

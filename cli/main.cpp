@@ -9,7 +9,7 @@
 
 #include "analysis/interrupt.hpp"
 #include "cli/commands.hpp"
-#include "cli/jobs.hpp"
+#include "campaign/jobs.hpp"
 #include "cli/number_options.hpp"
 #include "cli/suggest.hpp"
 #include "reports/versions.hpp"
@@ -64,6 +64,11 @@ void add_run(CLI::App& app, Commands& commands) {
   commands.push_back({r, [o] { return cli::run(*o); }});
 }
 
+// --format, one of `choices` (CLI11 names them on a mistake).
+void add_format(CLI::App* command, std::string& format, const std::vector<std::string>& choices, const std::string& help) {
+  command->add_option("--format", format, help)->capture_default_str()->check(CLI::IsMember(choices));
+}
+
 // --shard K/N, as check, fuzz, prove, report and events take it.
 void add_shard(CLI::App* command, std::string& shard) {
   command->add_option("--shard", shard,
@@ -83,10 +88,8 @@ void add_check(CLI::App& app, Commands& commands) {
   auto* c = app.add_subcommand("check", "Static consistency conditions of every rule (002 Def. 11-16), against the catalog's verdicts");
   c->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   c->add_option("--rule", o->rule, "check only this rule");
-  c->add_option("--format", o->format,
-                "text, json, sarif (SARIF 2.1.0, for code scanning), junit (JUnit XML, for CI test reports) or jsonl (a shard's lines, for merge)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"text", "json", "sarif", "junit", "jsonl"}));
+  add_format(c, o->format, {"text", "json", "sarif", "junit", "jsonl"},
+             "text, json, sarif (SARIF 2.1.0, for code scanning), junit (JUnit XML, for CI test reports) or jsonl (a shard's lines, for merge)");
   add_campaign(c, o->shard, o->jobs);
   c->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (for a .jme modeler, which records none)");
   c->add_option("--write-baseline", o->write_baseline, "write this run's verdicts (and the rules not checked) as a baseline file");
@@ -106,9 +109,7 @@ void add_events(CLI::App& app, Commands& commands) {
   ev->add_option("--map", o->map, "apply the rule to this map (catalog map name, map file, mesh or shape) and print the event log");
   ev->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->transform(darts());
   ev->add_flag("--dynamic", o->dynamic, "also label every dart of both maps and set that log against the static one (exit 3 on a contradiction)");
-  ev->add_option("--format", o->format, "text, json or jsonl (a shard's lines, for merge)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"text", "json", "jsonl"}));
+  add_format(ev, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (a shard's lines, for merge)");
   add_shard(ev, o->shard);
   commands.push_back({ev, [o] { return cli::events_command(*o); }});
 }
@@ -142,9 +143,7 @@ void add_fuzz(CLI::App& app, Commands& commands) {
   f->add_option("--maps", o->maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
   // -o/--output as every other command; --out, the old spelling, stays.
   f->add_option("-o,--output,--out", o->out, "directory: write each counterexample here (host, match, result and a replay command)");
-  f->add_option("--format", o->format, "text, json, or jsonl (a JSON line per rule as it finishes, then a summary line)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"text", "json", "jsonl"}));
+  add_format(f, o->format, {"text", "json", "jsonl"}, "text, json, or jsonl (a JSON line per rule as it finishes, then a summary line)");
   add_campaign(f, o->shard, o->jobs);
   commands.push_back({f, [o] { return cli::fuzz(*o); }});
 }
@@ -168,9 +167,7 @@ void add_prove(CLI::App& app, Commands& commands) {
   p->add_option("--timeout", o->timeout, "also stop a query after this many seconds (answers then depend on the machine)")
       ->check(cli::real_option(0, 4'000'000));
   p->add_option("-o,--output,--out", o->out, "directory: write each counterexample on a map of the model here, with a replay command");
-  p->add_option("--format", o->format, "text, json or jsonl (a shard's lines, for merge)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"text", "json", "jsonl"}));
+  add_format(p, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (a shard's lines, for merge)");
   add_campaign(p, o->shard, o->jobs);
   p->add_flag("--explain", o->explain, "print the hosts and derived graphs of theorem-class counterexamples");
   commands.push_back({p, [o] { return cli::prove(*o); }});
@@ -226,7 +223,7 @@ void add_infer(CLI::App& app, Commands& commands) {
       ->capture_default_str();
   inf->add_option("--name", o->name, "name of the inferred rule")->capture_default_str();
   inf->add_option("-o,--output", o->output, "write the rules: .yaml catalog (maps, rules, examples that `run` re-checks) or Jerboa .jme");
-  inf->add_option("--format", o->format, "text or json")->capture_default_str();
+  add_format(inf, o->format, {"text", "json"}, "text or json");
   commands.push_back({inf, [o] { return cli::infer(*o); }});
 }
 
@@ -239,7 +236,7 @@ void add_recombine(CLI::App& app, Commands& commands) {
       ->capture_default_str()
       ->check(cli::real_option(-1, 1));
   rc->add_option("-o,--output", o->output, "write the hexes and the remaining tetrahedra as a medit .mesh");
-  rc->add_option("--format", o->format, "text, json or jsonl (one run of a campaign over many meshes, for merge)")->capture_default_str();
+  add_format(rc, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (one run of a campaign over many meshes, for merge)");
   commands.push_back({rc, [o] { return cli::recombine(*o); }});
 }
 
@@ -253,11 +250,13 @@ void add_query(CLI::App& app, Commands& commands) {
   qy->add_option("--start", o->start, "the query dart labeled 1")->capture_default_str()->transform(darts());
   qy->add_option("--free", o->free, "condition on the queries' free links: any (*), boundary (ε), interior (ε̄) or no-link (↔)")
       ->capture_default_str();
-  qy->add_option("--strategy", o->strategy, "all (every distinct match), greedy or global (largest first), without overlap")->capture_default_str();
+  qy->add_option("--strategy", o->strategy, "all (every distinct match), greedy or global (largest first), without overlap")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"all", "greedy", "global"}));
   qy->add_option("--catalog", o->catalog, "catalog whose maps the map and queries may name");
   qy->add_option("--model", o->model, "model for meshes and shapes")->capture_default_str();
   qy->add_option("--limit", o->limit, "matches printed")->capture_default_str()->transform(counts());
-  qy->add_option("--format", o->format, "text, json or jsonl (one run of a campaign over many maps, for merge)")->capture_default_str();
+  add_format(qy, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (one run of a campaign over many maps, for merge)");
   commands.push_back({qy, [o] { return cli::query(*o); }});
 }
 
@@ -272,9 +271,7 @@ void add_report(CLI::App& app, Commands& commands) {
   rp->add_option("--prove", o->prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->transform(host_darts());
   rp->add_option("--seed", o->seed, "random seed of --fuzz (default: drawn and printed)")->transform(counts());
   rp->add_option("--engine", o->engine, "Graphviz layout engine")->capture_default_str();
-  rp->add_option("--format", o->format, "html (the page in -o DIR) or jsonl (a shard's lines on stdout, for merge)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"html", "jsonl"}));
+  add_format(rp, o->format, {"html", "jsonl"}, "html (the page in -o DIR) or jsonl (a shard's lines on stdout, for merge)");
   add_campaign(rp, o->shard, o->jobs);
   commands.push_back({rp, [o] { return cli::report(*o); }});
 }
@@ -283,9 +280,7 @@ void add_merge(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<cli::MergeOptions>();
   auto* m = app.add_subcommand("merge", "Merge the shards of one run (--shard K/N --format jsonl) into one result, in any output format");
   m->add_option("shards", o->shards, "the shard files, one per shard, in any order")->required();
-  m->add_option("--format", o->format, "text, json, sarif, junit, or html (the report page, in -o DIR)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"text", "json", "sarif", "junit", "html"}));
+  add_format(m, o->format, {"text", "json", "sarif", "junit", "html"}, "text, json, sarif, junit, or html (the report page, in -o DIR)");
   m->add_option("-o,--output", o->output, "directory of the html page");
   m->add_option("--catalog", o->catalog, "the catalog, where it is now (default: the path the shards name; it must be unchanged)");
   m->add_flag("--explain", o->explain, "as check --explain and prove --explain");
@@ -353,7 +348,7 @@ int run_command(const Commands& commands) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  cli::set_command_line(argc, argv);  // --jobs runs it again as shards
+  campaign::set_command_line(argc, argv);  // --jobs runs it again as shards
   CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps"};
   app.require_subcommand(1);
   app.set_version_flag("-V,--version", [] {

@@ -21,6 +21,14 @@ Catalog read_command_catalog(const std::string& file, const std::string& rule, c
   return catalog;
 }
 
+Model command_model(const std::string& name) {
+  const auto model = Model::by_name(name);
+  if (!model) throw InputError("<command line>", 0, 0, fmt::format("--model: unknown model '{}' (expected {})", name, Model::known_names()));
+  return *model;
+}
+
+std::optional<Catalog> optional_catalog(const std::string& file) { return file.empty() ? std::nullopt : std::optional<Catalog>(read_catalog(file)); }
+
 campaign::Shard command_shard(const std::string& text) { return text.empty() ? campaign::Shard{} : campaign::parse_shard(text); }
 
 void check_hooks(const CatalogRule& rule, const std::vector<Dart>& hooks, const Map& map, const std::string& map_name) {

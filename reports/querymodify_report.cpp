@@ -27,7 +27,7 @@ Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr
 }  // namespace
 
 std::string recombine_text(const RecombineRun& run) {
-  const auto& r = *run.result;
+  const auto& r = run.result;
   const Quality q = quality_of(r);
   std::string out;
   out += fmt::format("mesh        {}: {} points, {} tetrahedra ({:.3f} s)\n", run.mesh, run.points, run.tets, run.read_seconds);
@@ -49,7 +49,7 @@ std::string recombine_text(const RecombineRun& run) {
 }
 
 Json recombine_document(const RecombineRun& run) {
-  const auto& r = *run.result;
+  const auto& r = run.result;
   const Quality q = quality_of(r);
   Json doc = json_document("recombine");
   doc["mesh"] = run.mesh;

@@ -7,23 +7,12 @@
 #include <vector>
 
 #include "querymodify/overlap.hpp"
-#include "querymodify/recombination.hpp"
+#include "querymodify/recombined_mesh.hpp"
 #include "reports/json_document.hpp"
 
 namespace dartcheck::reports {
 
-/// One recombination: its input, what the library returned, the checks
-/// and the times around it.
-struct RecombineRun {
-  std::string mesh, strategy, output;  // output: the written file, or empty
-  std::size_t points = 0, tets = 0, input_darts = 0, queries = 0;
-  double min_quality = 0;
-  const querymodify::Recombination* result = nullptr;
-  std::size_t darts = 0, expected_darts = 0;  // after the merges; 36 per hex + 12 per tetrahedron
-  bool valid = false;
-  double read_seconds = 0, input_check_seconds = 0, query_seconds = 0, output_check_seconds = 0, total_seconds = 0;
-  double peak_mib = 0;
-};
+using querymodify::RecombineRun;
 
 std::string recombine_text(const RecombineRun& run);
 Json recombine_document(const RecombineRun& run);

@@ -4,6 +4,9 @@
 
 #include "core/input_error.hpp"
 #include "core/orbit.hpp"
+#include "checkers/embedding_consistency.hpp"
+#include "checkers/map_validity.hpp"
+#include <fmt/ranges.h>
 
 namespace dartcheck::reports {
 
@@ -43,6 +46,22 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& r, std
     fmt::print(out, "  dart {}: {}\n", v.element, describe(v, fmt::format("dart {}", v.element)));
   }
   if (shown < r.violations.size()) fmt::print(out, "  ... and {} more (use --limit 0 to list all)\n", r.violations.size() - shown);
+}
+
+bool print_jba_validity(std::FILE* out, const JbaFile& f, std::size_t limit) {
+  const auto report = check_map(f.map);
+  print_validity(out, f.map, report, limit);
+  bool consistent = true;
+  for (const auto& e : f.embeddings) {
+    const auto c = check_embedding(f.map, e);
+    fmt::print(out, "embedding {} <{}> ({}): {} orbits, {} with a value, {} inconsistent\n", e.name, fmt::join(e.orbit, ","), e.type, c.orbits,
+               c.labeled, c.conflicts.size());
+    for (std::size_t k = 0; k < c.conflicts.size() && (limit == 0 || k < limit); ++k) fmt::print(out, "  {}\n", c.conflicts[k].describe(e));
+    if (limit && c.conflicts.size() > limit) fmt::print(out, "  ... {} more (--limit 0 shows all)\n", c.conflicts.size() - limit);
+    consistent = consistent && c.consistent();
+  }
+  fmt::print(out, "{}\n", report.valid() && consistent ? "valid embedded G-map" : "INVALID embedded G-map");
+  return report.valid() && consistent;
 }
 
 }  // namespace dartcheck::reports

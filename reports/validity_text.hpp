@@ -6,12 +6,19 @@
 
 #include "checkers/violation.hpp"
 #include "core/map.hpp"
+#include "io/jerboa_jba.hpp"
 
 namespace dartcheck::reports {
 
 /// Prints cells and every violation (up to `limit`, 0 = all, saying how
 /// many were left out).
 void print_validity(std::FILE* out, const Map& map, const ValidityReport& report, std::size_t limit);
+
+/// A Jerboa G-map: the map's constraints, then each embedding's
+/// consistency (003 Def. 6), one line per orbit with two values or
+/// unlabeled darts (up to `limit`); whether it is a valid, consistently
+/// embedded G-map.
+bool print_jba_validity(std::FILE* out, const JbaFile& file, std::size_t limit);
 
 /// "8 vertices, 12 edges, 6 faces"
 std::string cells_sentence(const Map& map);

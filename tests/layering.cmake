@@ -13,7 +13,7 @@ set(layers
   "events:core,rewriting,checkers,events"
   "inference:core,rewriting,io,checkers,inference"
   "querymodify:core,rewriting,io,checkers,querymodify"
-  "analysis:core,rewriting,io,checkers,generators,proofs,events,analysis"
+  "analysis:core,rewriting,io,checkers,generators,proofs,events,querymodify,analysis"
   "compiler:core,rewriting,checkers,compiler"
   "campaign:core,rewriting,io,checkers,generators,proofs,events,inference,querymodify,analysis,reports,campaign"
   # fuzz/ harnesses sit on top like the tests (fuzz_shard reads what campaign/ writes).

@@ -10,9 +10,9 @@
 #include <optional>
 #include <string>
 
-#include "cli/commands.hpp"
+#include "campaign/merge.hpp"
 
-namespace dartcheck::cli {
+namespace dartcheck::campaign {
 
 /// The process's arguments, for running it again as shards (set by main).
 void set_command_line(int argc, char** argv);
@@ -21,7 +21,7 @@ struct JobsRun {
   std::size_t jobs = 1;
   std::string shard;  // the command's --shard: refused with --jobs
   /// How to render the merge (the command's --format; a report's page in `merge.output`).
-  MergeOptions merge;
+  MergeRequest merge;
   /// fuzz and report: the seed every shard must share (drawn here when not given).
   std::optional<std::uint64_t> seed;
 };
@@ -31,4 +31,4 @@ struct JobsRun {
 /// (with its error output).
 int run_jobs(const JobsRun& run);
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::campaign

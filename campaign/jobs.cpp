@@ -1,4 +1,4 @@
-#include "cli/jobs.hpp"
+#include "campaign/jobs.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -13,13 +13,14 @@
 
 #include <fmt/format.h>
 
+#include "analysis/exit_status.hpp"
 #include "analysis/interrupt.hpp"
 #include "core/input_error.hpp"
 #include "io/input_file.hpp"
 
 extern char** environ;
 
-namespace dartcheck::cli {
+namespace dartcheck::campaign {
 
 namespace {
 
@@ -89,7 +90,7 @@ int run_jobs(const JobsRun& run) {
   const std::size_t shards = run.jobs * 4;
   fmt::print(stderr, "dartcheck: {} shards on {} processes{}\n", shards, run.jobs,
              run.seed ? fmt::format(", seed {} (replay with --seed {})", *run.seed, *run.seed) : "");
-  MergeOptions merge = run.merge;
+  MergeRequest merge = run.merge;
   std::map<pid_t, std::size_t> running;
   int failed = 0;
   for (std::size_t next = 0; next < shards || !running.empty();) {
@@ -111,13 +112,13 @@ int run_jobs(const JobsRun& run) {
     running.erase(it);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     // 0, 1 and 3 are verdicts, which the merge reports; anything else stops it.
-    if (code != ok && code != violation && code != soundness_bug) {
+    if (code != exit_status::ok && code != exit_status::violation && code != exit_status::soundness_bug) {
       fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, shards, code, read_input(fmt::format("{}/{}.err", dir, k)));
       if (!failed) failed = code;
     }
   }
   if (failed) return failed;
-  return cli::merge(merge);
+  return merge_shards(merge);
 }
 
-}  // namespace dartcheck::cli
+}  // namespace dartcheck::campaign

@@ -1,0 +1,87 @@
+#include "querymodify/recombined_mesh.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "core/input_error.hpp"
+#include "core/output_file.hpp"
+#include "querymodify/hex_queries.hpp"
+#include "querymodify/map_checks.hpp"
+#include "querymodify/tet_input.hpp"
+
+namespace dartcheck::querymodify {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+double peak_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;  // KiB on Linux
+}
+
+// medit's hexahedron order: the bottom quad (z = 0) as a cycle, then the
+// top quad above it. Corner v = x + 2y + 4z.
+std::array<std::uint32_t, 8> medit_order(const std::array<std::uint32_t, 8>& c) { return {c[0], c[1], c[3], c[2], c[4], c[5], c[7], c[6]}; }
+
+}  // namespace
+
+Strategy parse_strategy(const std::string& s) {
+  if (s == "greedy") return Strategy::greedy;
+  if (s == "global") return Strategy::global;
+  throw InputError("<command line>", 0, 0, fmt::format("--strategy: expected greedy or global, got '{}'", s));
+}
+
+TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
+  TetMesh out;
+  out.points = input.points;
+  for (std::size_t k : r.remaining_tets) out.tets.push_back(input.tets[k]);
+  for (const auto& c : r.hex_corners) out.hexes.push_back(medit_order(c));
+  return out;
+}
+
+RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output) {
+  RecombineRun run;
+  run.mesh = mesh;
+  run.strategy = strategy;
+  run.min_quality = min_quality;
+  const Strategy chosen = parse_strategy(strategy);
+  const auto start = Clock::now();
+  auto t = Clock::now();
+  TetInput in = load_tet_input(mesh);
+  run.read_seconds = since(t);
+  run.points = in.mesh.points.size();
+  run.tets = in.mesh.tets.size();
+  run.input_darts = in.map.map.size();
+  t = Clock::now();
+  run.input_valid = check_3map(in.map.map).valid();
+  run.input_check_seconds = since(t);
+  if (!run.input_valid) return run;
+  t = Clock::now();
+  const auto& queries = hex_queries();
+  run.queries = queries.size();
+  run.query_seconds = since(t);
+  run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality);
+  t = Clock::now();
+  run.valid = check_3map(in.map.map).valid();
+  run.output_check_seconds = since(t);
+  run.darts = in.map.map.size();
+  run.expected_darts = 36 * run.result.hexes + 12 * run.result.tets;
+  if (!output.empty()) {
+    std::ostringstream text;
+    write_medit(text, recombined_mesh(in.mesh, run.result));
+    write_file(output, text.str());
+    run.output = output;
+  }
+  run.total_seconds = since(start);
+  run.peak_mib = peak_mib();
+  return run;
+}
+
+}  // namespace dartcheck::querymodify

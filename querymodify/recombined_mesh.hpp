@@ -1,0 +1,42 @@
+// The recombination of a tetrahedral mesh file (`dartcheck recombine`):
+// read, checked, recombined (001 Sec. 7.1), checked again and written as
+// a medit mesh of hexahedra and the tetrahedra left, with the time of
+// each phase.
+#pragma once
+
+#include <string>
+
+#include "io/tet_mesh_io.hpp"
+#include "querymodify/recombination.hpp"
+
+namespace dartcheck::querymodify {
+
+/// greedy or global (--strategy); InputError otherwise.
+Strategy parse_strategy(const std::string& text);
+
+/// One recombination: its input, what the library returned, the checks
+/// and the times around it.
+struct RecombineRun {
+  std::string mesh, strategy, output;  // output: the written file, or empty
+  std::size_t points = 0, tets = 0, input_darts = 0, queries = 0;
+  double min_quality = 0;
+  bool input_valid = false;  // the input's map (build_tet_map makes valid maps of every mesh it accepts)
+  Recombination result;
+  std::size_t darts = 0, expected_darts = 0;  // after the merges; 36 per hex + 12 per tetrahedron
+  bool valid = false;
+  double read_seconds = 0, input_check_seconds = 0, query_seconds = 0, output_check_seconds = 0, total_seconds = 0;
+  double peak_mib = 0;  // the process's peak resident memory
+  /// The result is a valid map of 36 darts per hex and 12 per tetrahedron.
+  bool sound() const { return input_valid && valid && darts == expected_darts; }
+};
+
+/// Recombines the mesh in `mesh` (TetGen .node/.ele or medit .mesh) and
+/// writes the result to `output` unless it is empty. With an invalid input
+/// map (a defect of the reader) nothing is recombined.
+RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output);
+
+/// The hexes of `r` (medit's corner order) and the tetrahedra it left, on
+/// `input`'s points.
+TetMesh recombined_mesh(const TetMesh& input, const Recombination& r);
+
+}  // namespace dartcheck::querymodify
