@@ -22,22 +22,6 @@
 namespace dartcheck::cli {
 
 using namespace analysis;  // the engines the commands call
-namespace {
-
-void write_picture(const std::string& dot, const std::string& file, const std::string& engine) {
-  std::string format;
-  try {
-    format = reports::format_of(file);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("<command line>", 0, 0, fmt::format("-o: {}", e.what()));
-  }
-  const std::string data = format == "dot" ? dot : reports::render(dot, format, engine);
-  write_file(file, data);
-  fmt::print("wrote {} ({} bytes)\n", file, data.size());
-}
-
-}  // namespace
-
 int draw(const DrawOptions& o) {
   const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
   const CatalogRule* entry = catalog.find_rule(o.rule);
@@ -45,8 +29,10 @@ int draw(const DrawOptions& o) {
   auto witnesses = reports::failed_witnesses(verdict);
   const auto embedded = reports::embedding_picture(*entry, embedding_checks(catalog, *entry));
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
-  write_picture(reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms), o.output,
-                o.engine);
+  fmt::print(
+      "wrote {} ({} bytes)\n", o.output,
+      reports::write_picture(reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms),
+                             o.output, o.engine));
   return ok;
 }
 
@@ -60,7 +46,7 @@ int draw_map(const DrawMapOptions& o) {
   for (const auto& v : report.violations)
     if (v.element < map.size()) p.highlight[v.element] = true;
   if (!report.valid()) p.highlight_label = fmt::format("filled: {} violations", report.violations.size());
-  write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, o.engine);
+  fmt::print("wrote {} ({} bytes)\n", o.output, reports::write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, o.engine));
   if (report.valid()) return ok;
   // Every non-zero exit says why.
   fmt::print(stderr, "INVALID {}: {} violation{} (drawn filled; validate-map lists them)\n", map.model().name, report.violations.size(),

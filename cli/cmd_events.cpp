@@ -30,35 +30,54 @@ EventsApplication application(const EventsOptions& o, const CatalogRule& rule, c
   return apply_for_events(rule, std::move(g), o.hooks, o.map);
 }
 
+// The output of a run, as --format asks: each rule's part (its JSON
+// object, none for a rule skipped by --orbit, and its text) printed as it
+// comes, gathered into one document, or written as a shard's lines (both).
+class Output {
+ public:
+  Output(const EventsOptions& o, const campaign::Shard& shard) : o_(o) {
+    if (o.format != "jsonl") return;
+    std::vector<std::string> hooks;
+    for (Dart h : o.hooks) hooks.push_back(std::to_string(h));
+    lines_.emplace(campaign::make_header("events", o.catalog, "", o.rule, shard,
+                                         reports::Json{{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}}));
+  }
+  void rule(const CatalogRule& rule, std::optional<reports::Json> j, const std::string& text) {
+    if (lines_)
+      lines_->fragment(rule.rule.name(), j ? *j : reports::Json(nullptr), text);
+    else if (o_.format == "json" && j)
+      rules_.push_back(std::move(*j));
+    else if (o_.format != "json")
+      fmt::print("{}", text);
+  }
+  void finish(int status, std::size_t analysed) {
+    if (lines_) {
+      lines_->summary(reports::Json{{"status", status}, {"analysed", analysed}, {"interrupted", analysis::interrupted()}});
+    } else if (o_.format == "json") {
+      reports::Json doc = reports::json_document("events");
+      doc["catalog"] = o_.catalog;
+      doc["rules"] = std::move(rules_);
+      fmt::print("{}\n", reports::json_text(std::move(doc)));
+    }
+  }
+
+ private:
+  const EventsOptions& o_;
+  std::optional<campaign::ShardWriter> lines_;
+  reports::Json rules_ = reports::Json::array();
+};
+
 }  // namespace
 
 int events_command(const EventsOptions& o) {
-  const bool json = o.format == "json", jsonl = o.format == "jsonl";
-  Catalog catalog = read_command_catalog(o.catalog, o.rule, json ? "json" : "text");
+  Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
   const campaign::Shard shard = command_shard(o.shard);
   campaign::keep_shard(catalog, shard);
   if (!o.map.empty() && o.rule.empty()) throw InputError("<command line>", 0, 0, "--map needs --rule: an event log is for one rule");
   if (o.map.empty() && (!o.hooks.empty() || o.dynamic))
     throw InputError("<command line>", 0, 0, "--hook and --dynamic need --map: they concern one application");
-  std::optional<campaign::ShardWriter> lines;
-  if (jsonl) {
-    std::vector<std::string> hooks;
-    for (Dart h : o.hooks) hooks.push_back(std::to_string(h));
-    lines.emplace(campaign::make_header("events", o.catalog, "", o.rule, shard,
-                                        reports::Json{{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}}));
-  }
+  Output out(o, shard);
   int status = ok;
-  reports::Json json_rules = reports::Json::array();
-  // Each rule's part of the output: its JSON object (none for a rule
-  // skipped by --orbit) and its text; a shard writes both, for merge.
-  const auto emit = [&](const CatalogRule& rule, std::optional<reports::Json> j, const std::string& text) {
-    if (lines)
-      lines->fragment(rule.rule.name(), j ? *j : reports::Json(nullptr), text);
-    else if (json && j)
-      json_rules.push_back(std::move(*j));
-    else if (!json)
-      fmt::print("{}", text);
-  };
   std::optional<std::string> first_orbit_error;
   std::size_t analysed = 0;
   analysis::catch_interrupts();  // Ctrl-C: the rules analysed so far are printed, exit 130
@@ -66,9 +85,10 @@ int events_command(const EventsOptions& o) {
     if (analysis::interrupted()) break;
     if (!o.rule.empty() && rule.rule.name() != o.rule) continue;
     const EventRuleOutcome view = event_rule(rule);
+    const std::string name = fmt::format("rule {} ({})", rule.rule.name(), rule.rule.model().name);
     if (!view.rule) {
-      emit(rule, reports::Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", view.why}},
-           fmt::format("rule {} ({}): not analysed: {}\n", rule.rule.name(), rule.rule.model().name, view.why));
+      out.rule(rule, reports::Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", view.why}},
+               fmt::format("{}: not analysed: {}\n", name, view.why));
       if (!o.rule.empty()) status = violation;
       continue;
     }
@@ -80,7 +100,7 @@ int events_command(const EventsOptions& o) {
     } catch (const InputError& e) {
       if (!o.rule.empty()) throw;
       if (!first_orbit_error) first_orbit_error = e.what();
-      emit(rule, std::nullopt, fmt::format("rule {} ({}): skipped: {}\n", rule.rule.name(), rule.rule.model().name, e.what()));
+      out.rule(rule, std::nullopt, fmt::format("{}: skipped: {}\n", name, e.what()));
       continue;
     }
     ++analysed;
@@ -88,7 +108,7 @@ int events_command(const EventsOptions& o) {
     if (!o.map.empty()) r.application = application(o, rule, catalog);
     r.kinds = analyse_events(*view.rule, rule, kinds, r.application, o.dynamic);
     status = std::max(status, events_status(r));
-    emit(rule, reports::events_json(r), reports::events_text(r));
+    out.rule(rule, reports::events_json(r), reports::events_text(r));
   }
   // A shard may hold only rules that --orbit does not fit: not an error there.
   if (analysed == 0 && first_orbit_error && shard.whole())
@@ -97,14 +117,7 @@ int events_command(const EventsOptions& o) {
     fmt::print(stderr, "interrupted: {} analysed; the output holds them\n", counted(analysed, "rule"));
     status = analysis::interrupted_exit;
   }
-  if (lines) {
-    lines->summary(reports::Json{{"status", status}, {"analysed", analysed}, {"interrupted", analysis::interrupted()}});
-  } else if (json) {
-    reports::Json doc = reports::json_document("events");
-    doc["catalog"] = o.catalog;
-    doc["rules"] = std::move(json_rules);
-    fmt::print("{}\n", reports::json_text(std::move(doc)));
-  }
+  out.finish(status, analysed);
   return status;
 }
 

@@ -15,7 +15,7 @@
 #include <fmt/format.h>
 
 #include "analysis/interrupt.hpp"
-#include "analysis/fuzz_targets.hpp"
+#include "analysis/run_stages.hpp"
 #include "analysis/rule_result.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/commands.hpp"
@@ -35,37 +35,6 @@ using reports::write_report;
 
 using namespace analysis;  // the engines the commands call
 namespace fs = std::filesystem;
-
-namespace {
-
-// Fuzzes every rule within `seconds` (shared) and adds each outcome.
-void fuzz_stage(std::vector<RuleResult>& rows, const Catalog& catalog, const ReportOptions& o, double seconds, std::uint64_t seed,
-                const std::string& cx_dir) {
-  FuzzOptions fo;
-  fo.seed = seed;
-  fo.runs = SIZE_MAX;
-  // The rows are the catalog's rules that --rule selects, in order: the targets' rules.
-  const FuzzTargets targets = fuzz_targets(catalog, o.rule, {});
-  const auto& rules = targets.rules;
-  fmt::print(stderr, "dartcheck report: fuzzing {} for {} s, seed {}\n", counted(rules.size(), "rule"), seconds, fo.seed);
-  auto found = fuzz_rules(rules, targets.seeds, fo, seconds, isatty(fileno(stderr)) != 0);
-  for (std::size_t k = 0; k < found.size(); ++k)  // fewer than rows if interrupted
-    add_fuzz(rows[k], std::move(found[k]), fo.seed, cx_dir, o.catalog, ".fuzz");
-}
-
-// Asks Z3 about every rule (until a signal) and adds each proof.
-void prove_stage(std::vector<RuleResult>& rows, const ReportOptions& o, const ReportStages& stages, const std::string& cx_dir) {
-  proofs::ProveOptions po;
-  po.max_darts = stages.prove_darts;
-  po.scheme_darts = stages.scheme_darts;
-  fmt::print(stderr, "dartcheck report: proving {} up to {} darts (schemes {})\n", counted(rows.size(), "rule"), po.max_darts, po.scheme_darts);
-  for (auto& r : rows) {
-    if (interrupted()) break;
-    run_proof(r, po, cx_dir, o.catalog, ".prove");
-  }
-}
-
-}  // namespace
 
 int report(const ReportOptions& o) {
   if (o.jobs > 1) {
@@ -89,8 +58,15 @@ int report(const ReportOptions& o) {
   std::vector<RuleResult> rows;
   for (const CatalogRule* e : run.rules()) rows.push_back(analyse_static(run.catalog(), *e, 0, {}, run.source()));
   const std::size_t selected = rows.size();
-  if (stages.fuzz_seconds) fuzz_stage(rows, run.catalog(), o, *stages.fuzz_seconds, stages.seed, cx_dir);
-  if (stages.prove_darts > 0) prove_stage(rows, o, stages, cx_dir);
+  if (stages.fuzz_seconds) {
+    fmt::print(stderr, "dartcheck report: fuzzing {} for {} s, seed {}\n", counted(rows.size(), "rule"), *stages.fuzz_seconds, stages.seed);
+    fuzz_all(rows, run.catalog(), o.rule, *stages.fuzz_seconds, stages.seed, cx_dir, o.catalog, isatty(fileno(stderr)) != 0);
+  }
+  if (stages.prove_darts > 0) {
+    fmt::print(stderr, "dartcheck report: proving {} up to {} darts (schemes {})\n", counted(rows.size(), "rule"), stages.prove_darts,
+               stages.scheme_darts);
+    prove_all(rows, stages.prove_darts, stages.scheme_darts, cx_dir, o.catalog);
+  }
   // A shard's lines come after every stage (the fuzz budget is shared by the rules).
   run.open_lines(reports::Json{{"fuzz", o.fuzz},
                                {"seed", stages.fuzz_seconds ? reports::Json(stages.seed) : reports::Json(nullptr)},  // drawn only to fuzz

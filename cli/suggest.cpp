@@ -5,37 +5,11 @@
 #include <string_view>
 #include <vector>
 
+#include "core/closest_name.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck::cli {
 namespace {
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-// The closest name within edit distance 2 (or a name `typed` is a prefix
-// of), or empty.
-std::string closest(std::string_view typed, const std::vector<std::string>& names) {
-  std::string best;
-  std::size_t best_distance = 3;
-  for (const auto& name : names) {
-    const std::size_t d = name.starts_with(typed) && typed.size() > 2 ? 1 : edit_distance(typed, name);
-    if (d < best_distance) best = name, best_distance = d;
-  }
-  return best;
-}
 
 std::vector<std::string> command_names(const CLI::App& app) {
   std::vector<std::string> out;
@@ -72,7 +46,7 @@ std::optional<int> help_request(const CLI::App& app, int argc, char** argv) {
     fmt::print("{}", sub->help());
     return 0;
   }
-  const std::string best = closest(argv[2], command_names(app));
+  const std::string best = closest_name(argv[2], command_names(app));
   fmt::print(stderr, "error: 'help {}': no such command{}\n", printable(argv[2]), best.empty() ? "" : fmt::format("; did you mean '{}'?", best));
   return 2;
 }
@@ -82,7 +56,7 @@ int report_parse_error(const CLI::App& app, const CLI::ParseError& e, int argc, 
   const CLI::App* command = argc > 1 ? command_named(app, argv[1]) : nullptr;
   // A mistyped command: the suggestion is the whole message.
   if (argc > 1 && argv[1][0] != '-' && !command) {
-    const std::string best = closest(argv[1], command_names(app));
+    const std::string best = closest_name(argv[1], command_names(app));
     fmt::print(stderr, "error: '{}' is not a dartcheck command{} (dartcheck --help lists them)\n", printable(argv[1]),
                best.empty() ? "" : fmt::format("; did you mean '{}'?", best));
     return 2;
@@ -98,7 +72,7 @@ int report_parse_error(const CLI::App& app, const CLI::ParseError& e, int argc, 
     const std::string typed(arg.substr(0, arg.find('=')));
     const auto names = option_names(app, command);
     if (std::find(names.begin(), names.end(), typed) != names.end()) continue;
-    const std::string best = closest(typed, names);
+    const std::string best = closest_name(typed, names);
     fmt::print(stderr, "error: {}: unknown option {}{} (dartcheck help {} lists them)\n", command ? command->get_name() : "dartcheck",
                printable(typed), best.empty() ? "" : fmt::format("; did you mean {}?", best), command ? command->get_name() : "");
     return 2;

@@ -1,5 +1,7 @@
 #include "io/yaml_util.hpp"
 
+#include "core/closest_name.hpp"
+
 #include <algorithm>
 #include <fmt/format.h>
 #include <fstream>
@@ -47,8 +49,11 @@ void expect_sequence(const std::string& file, const YAML::Node& n, std::string_v
 void allow_keys(const std::string& file, const YAML::Node& map, std::initializer_list<std::string_view> allowed) {
   for (const auto& kv : map) {
     const auto key = kv.first.Scalar();
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      fail_at(file, kv.first, fmt::format("unknown key '{}' (expected one of: {})", key, fmt::join(allowed, ", ")));
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    const std::string near = closest_name(key, std::vector<std::string>(allowed.begin(), allowed.end()));
+    fail_at(file, kv.first,
+            fmt::format("unknown key '{}' ({}expected one of: {})", key, near.empty() ? "" : fmt::format("did you mean '{}'? ", near),
+                        fmt::join(allowed, ", ")));
   }
 }
 

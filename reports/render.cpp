@@ -7,6 +7,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "core/input_error.hpp"
+#include "core/output_file.hpp"
+
 #if defined(__SANITIZE_ADDRESS__)
 // Graphviz's plugins and fontconfig keep process-lifetime caches that
 // LeakSanitizer reports at exit; the objects this file allocates are all
@@ -72,6 +77,18 @@ std::string format_of(std::string_view file) {
   if (ext == "svg" || ext == "png" || ext == "dot" || ext == "pdf") return ext;
   if (ext == "gv") return "dot";
   throw std::invalid_argument("'" + std::string(file) + "': expected a file name ending in .svg, .png, .pdf, .dot or .gv");
+}
+
+std::size_t write_picture(std::string_view dot, const std::string& file, std::string_view engine) {
+  std::string format;
+  try {
+    format = format_of(file);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("<command line>", 0, 0, fmt::format("-o: {}", e.what()));
+  }
+  const std::string data = format == "dot" ? std::string(dot) : render(dot, format, engine);
+  write_file(file, data);
+  return data.size();
 }
 
 }  // namespace dartcheck::reports

@@ -18,4 +18,9 @@ std::string render(std::string_view dot, std::string_view format, std::string_vi
 /// accepted.
 std::string format_of(std::string_view file);
 
+/// Writes `dot` to `file` in the format its extension names (.dot/.gv:
+/// the DOT text itself), rendered by `engine`; returns the bytes written.
+/// InputError for an extension that names no format (-o), OutputError.
+std::size_t write_picture(std::string_view dot, const std::string& file, std::string_view engine);
+
 }  // namespace dartcheck::reports
