@@ -52,7 +52,8 @@ def main():
     failures = 0
     for command, expected in examples:
         # Outputs the examples write under /tmp go to WORKDIR instead.
-        run = command.replace("build/cli/dartcheck", dartcheck, 1).replace("/tmp/", work.rstrip("/") + "/")
+        # (before the binary goes in: its own path may be under /tmp).
+        run = command.replace("/tmp/", work.rstrip("/") + "/").replace("build/cli/dartcheck", dartcheck, 1)
         done = subprocess.run(run, shell=True, cwd=repo, capture_output=True, text=True, timeout=300)
         output = done.stdout + done.stderr
         problems = [] if done.returncode == 0 else [f"exit {done.returncode}"]
