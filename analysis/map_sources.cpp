@@ -12,6 +12,13 @@
 
 namespace dartcheck::analysis {
 
+Catalog read_rule_catalog(const std::string& file, const std::string& rule) {
+  Catalog catalog = read_catalog(file);
+  if (!rule.empty() && !catalog.find_rule(rule))
+    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", rule, file));
+  return catalog;
+}
+
 Map build_source(const MapSource& s) {
   if (s.map) return *s.map;
   if (!s.mesh.empty()) return load_mesh(s.model, s.mesh);

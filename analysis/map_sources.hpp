@@ -9,6 +9,10 @@
 
 namespace dartcheck::analysis {
 
+/// The catalog a command works on; InputError if `rule` (--rule), when
+/// given, names none of its rules.
+Catalog read_rule_catalog(const std::string& file, const std::string& rule);
+
 /// Builds a catalog map: explicit, shape or mesh. Errors carry the map's
 /// position in the catalog.
 Map build_source(const MapSource& source);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/interrupt.hpp"
+#include "analysis/map_sources.hpp"
 #include "analysis/verdict_record.hpp"
 #include "core/input_error.hpp"
 #include "reports/run_output.hpp"
@@ -10,10 +11,8 @@
 namespace dartcheck::campaign {
 
 RuleRun::RuleRun(std::string command, const RuleRunOptions& options) : command_(std::move(command)), options_(options) {
-  catalog_ = read_catalog(options.catalog);
-  if (!options.rule.empty() && !catalog_.find_rule(options.rule))
-    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", options.rule, options.catalog));
-  if (!options.shard.empty()) shard_ = parse_shard(options.shard);
+  catalog_ = analysis::read_rule_catalog(options.catalog, options.rule);
+  shard_ = shard_option(options.shard);
   // The baseline names every rule of the catalog: applied before the shard keeps its part.
   if (!options.baseline.empty()) baseline_mismatches_ = analysis::apply_baseline(catalog_, options.baseline);
   keep_shard(catalog_, shard_);

@@ -26,6 +26,9 @@ struct Shard {
 /// otherwise.
 Shard parse_shard(std::string_view text, std::string_view option = "--shard");
 
+/// --shard as a command takes it: the whole run when `text` is empty.
+inline Shard shard_option(const std::string& text) { return text.empty() ? Shard{} : parse_shard(text); }
+
 /// FNV-1a (64 bits) of `bytes`: fixed on every platform and compiler,
 /// unlike std::hash.
 std::uint64_t stable_hash(std::string_view bytes);

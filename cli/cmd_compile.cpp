@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "analysis/map_sources.hpp"
 #include "analysis/rule_result.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
@@ -36,7 +37,7 @@ int compile(const CompileOptions& o) {
       throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a header name ending in .hpp, .hh or .h", o.output));
     check_writable(o.output);
   }
-  const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  const Catalog catalog = analysis::read_rule_catalog(o.catalog, o.rule);
   std::vector<compiler::CompileUnit> units;
   std::size_t inconsistent = 0, unsupported = 0;
   for (const CatalogRule& r : catalog.rules) {

@@ -16,7 +16,7 @@ namespace dartcheck::cli {
 using namespace analysis;  // the engines the commands call
 
 int convert(const ConvertOptions& o) {
-  const Catalog catalog = read_command_catalog(o.input, "", "text");
+  const Catalog catalog = read_catalog(o.input);
   if (!o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
     throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a file name ending in .yaml or .yml", o.output));
   const std::string text = catalog_yaml(catalog);

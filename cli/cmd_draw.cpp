@@ -23,7 +23,7 @@ namespace dartcheck::cli {
 
 using namespace analysis;  // the engines the commands call
 int draw(const DrawOptions& o) {
-  const Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
+  const Catalog catalog = read_rule_catalog(o.catalog, o.rule);
   const CatalogRule* entry = catalog.find_rule(o.rule);
   const RuleVerdict verdict = check_rule(entry->rule, entry->words);
   auto witnesses = reports::failed_witnesses(verdict);

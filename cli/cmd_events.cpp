@@ -70,8 +70,8 @@ class Output {
 }  // namespace
 
 int events_command(const EventsOptions& o) {
-  Catalog catalog = read_command_catalog(o.catalog, o.rule, "text");
-  const campaign::Shard shard = command_shard(o.shard);
+  Catalog catalog = read_rule_catalog(o.catalog, o.rule);
+  const campaign::Shard shard = campaign::shard_option(o.shard);
   campaign::keep_shard(catalog, shard);
   if (!o.map.empty() && o.rule.empty()) throw InputError("<command line>", 0, 0, "--map needs --rule: an event log is for one rule");
   if (o.map.empty() && (!o.hooks.empty() || o.dynamic))

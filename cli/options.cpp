@@ -12,15 +12,6 @@
 
 namespace dartcheck::cli {
 
-Catalog read_command_catalog(const std::string& file, const std::string& rule, const std::string& format) {
-  if (format != "text" && format != "json")
-    throw InputError("<command line>", 0, 0, fmt::format("--format: expected text or json, got '{}'", format));
-  Catalog catalog = read_catalog(file);
-  if (!rule.empty() && !catalog.find_rule(rule))
-    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", rule, file));
-  return catalog;
-}
-
 Model command_model(const std::string& name) {
   const auto model = Model::by_name(name);
   if (!model) throw InputError("<command line>", 0, 0, fmt::format("--model: unknown model '{}' (expected {})", name, Model::known_names()));
@@ -28,8 +19,6 @@ Model command_model(const std::string& name) {
 }
 
 std::optional<Catalog> optional_catalog(const std::string& file) { return file.empty() ? std::nullopt : std::optional<Catalog>(read_catalog(file)); }
-
-campaign::Shard command_shard(const std::string& text) { return text.empty() ? campaign::Shard{} : campaign::parse_shard(text); }
 
 void check_hooks(const CatalogRule& rule, const std::vector<Dart>& hooks, const Map& map, const std::string& map_name) {
   const auto& want = rule.rule.hooks();

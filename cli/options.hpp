@@ -12,18 +12,11 @@
 
 namespace dartcheck::cli {
 
-/// Reads the catalog a command works on, after checking --format (text or
-/// json) and that --rule, if given, names one of its rules.
-Catalog read_command_catalog(const std::string& file, const std::string& rule, const std::string& format);
-
 /// --model: a model by its name; InputError listing the known ones.
 Model command_model(const std::string& name);
 
 /// --catalog, when given: the catalog whose maps the other options may name.
 std::optional<Catalog> optional_catalog(const std::string& file);
-
-/// --shard K/N (the whole run when `text` is empty).
-campaign::Shard command_shard(const std::string& text);
 
 /// Wall-clock seconds since `start`.
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
