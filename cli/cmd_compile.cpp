@@ -4,7 +4,6 @@
 // conditions: the generated code is only as consistent as the rule.
 
 #include <filesystem>
-#include <regex>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -13,6 +12,7 @@
 #include "analysis/rule_result.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "compiler/cpp_text.hpp"
 #include "compiler/rule_compiler.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
@@ -30,7 +30,7 @@ std::string default_namespace(const std::string& catalog) {
 
 int compile(const CompileOptions& o) {
   const std::string ns = o.ns.empty() ? default_namespace(o.catalog) : o.ns;
-  if (!std::regex_match(ns, std::regex("[A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*")))
+  if (!compiler::namespace_name(ns))
     throw InputError("<command line>", 0, 0, fmt::format("--namespace: '{}' is not a C++ namespace name (identifiers joined by ::)", printable(ns)));
   if (!o.output.empty()) {
     if (!o.output.ends_with(".hpp") && !o.output.ends_with(".h") && !o.output.ends_with(".hh"))

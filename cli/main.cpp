@@ -28,10 +28,15 @@ using Commands = std::vector<std::pair<CLI::App*, std::function<int()>>>;
 
 // Counts, darts and seeds (cli/number_options.hpp): CLI11 alone would read
 // "-5" into an unsigned option as 2^64 - 5 and "010" as 8.
-CLI::Validator counts() { return cli::count_option(); }
-CLI::Validator darts() { return cli::count_option(0, no_dart - 1); }
+CLI::Validator validator(cli::NumberCheck c) { return CLI::Validator(std::move(c.check), std::move(c.name)); }
+CLI::Validator count_option(std::uint64_t low = 0, std::uint64_t high = std::numeric_limits<std::uint64_t>::max()) {
+  return validator(cli::count_option(low, high));
+}
+CLI::Validator real_option(double low, double high) { return validator(cli::real_option(low, high)); }
+CLI::Validator counts() { return count_option(); }
+CLI::Validator darts() { return count_option(0, no_dart - 1); }
 // Bounds past which a search only runs out of time: as prove's --max-darts.
-CLI::Validator host_darts() { return cli::count_option(0, 256); }
+CLI::Validator host_darts() { return count_option(0, 256); }
 
 void add_validate(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<cli::ValidateOptions>();
@@ -80,7 +85,7 @@ void add_campaign(CLI::App* command, std::string& shard, std::size_t& jobs) {
   add_shard(command, shard);
   command->add_option("--jobs", jobs, "run as this many shard processes at once and merge them (the output of one job)")
       ->capture_default_str()
-      ->transform(cli::count_option(1, 256));
+      ->transform(count_option(1, 256));
 }
 
 void add_check(CLI::App& app, Commands& commands) {
@@ -132,14 +137,14 @@ void add_fuzz(CLI::App& app, Commands& commands) {
   f->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   f->add_option("--rule", o->rule, "fuzz only this rule");
   f->add_option("--time", o->time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
-  f->add_option("--runs", o->runs, "applications per rule (default 10000 without --time)")->transform(cli::count_option(1));
+  f->add_option("--runs", o->runs, "applications per rule (default 10000 without --time)")->transform(count_option(1));
   f->add_option("--event-checks", o->event_checks,
                 "applications per consistent rule whose event logs are set against its static events (004; 0: none)")
       ->capture_default_str()
       ->transform(counts());
   f->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   f->add_option("--seed", o->seed, "random seed (default: drawn and printed)")->transform(counts());
-  f->add_option("--max-darts", o->max_darts, "largest random host")->capture_default_str()->transform(cli::count_option(2, no_dart - 1));
+  f->add_option("--max-darts", o->max_darts, "largest random host")->capture_default_str()->transform(count_option(2, no_dart - 1));
   f->add_option("--maps", o->maps, "more hosts: map files (.yaml, Jerboa .jba), meshes (.off, .obj) or shapes (cube, grid:3x4, ...)");
   // -o/--output as every other command; --out, the old spelling, stays.
   f->add_option("-o,--output,--out", o->out, "directory: write each counterexample here (host, match, result and a replay command)");
@@ -155,17 +160,17 @@ void add_prove(CLI::App& app, Commands& commands) {
   p->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   p->add_option("--rule", o->rule, "prove only this rule");
   p->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (as check --baseline)");
-  p->add_option("--max-darts", o->max_darts, "search hosts of up to this many darts")->capture_default_str()->transform(cli::count_option(1, 256));
+  p->add_option("--max-darts", o->max_darts, "search hosts of up to this many darts")->capture_default_str()->transform(count_option(1, 256));
   p->add_option("--scheme-darts", o->scheme_darts,
                 "for rule schemes, hosts of up to this many darts (at most --max-darts): H has that many darts per node of R")
       ->capture_default_str()
-      ->transform(cli::count_option(1, 256));
+      ->transform(count_option(1, 256));
   p->add_option("--rlimit", o->rlimit, "Z3 resource limit per query (deterministic)")
       ->capture_default_str()
-      ->transform(cli::count_option(1, std::numeric_limits<unsigned>::max()));
+      ->transform(count_option(1, std::numeric_limits<unsigned>::max()));
   // Z3 takes milliseconds in an unsigned: at most 4,294,967 s; 0 is none.
   p->add_option("--timeout", o->timeout, "also stop a query after this many seconds (answers then depend on the machine)")
-      ->check(cli::real_option(0, 4'000'000));
+      ->check(real_option(0, 4'000'000));
   p->add_option("-o,--output,--out", o->out, "directory: write each counterexample on a map of the model here, with a replay command");
   add_format(p, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (a shard's lines, for merge)");
   add_campaign(p, o->shard, o->jobs);
@@ -234,7 +239,7 @@ void add_recombine(CLI::App& app, Commands& commands) {
   rc->add_option("--strategy", o->strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")->capture_default_str();
   rc->add_option("--min-quality", o->min_quality, "smallest scaled Jacobian a hex must exceed (-1 keeps inverted ones)")
       ->capture_default_str()
-      ->check(cli::real_option(-1, 1));
+      ->check(real_option(-1, 1));
   rc->add_option("-o,--output", o->output, "write the hexes and the remaining tetrahedra as a medit .mesh");
   add_format(rc, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (one run of a campaign over many meshes, for merge)");
   commands.push_back({rc, [o] { return cli::recombine(*o); }});
@@ -302,24 +307,18 @@ void add_draw_map(CLI::App& app, Commands& commands) {
 // set before any input is read.
 void add_limits(CLI::App& app) {
   auto& lim = limits();
-  app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")
-      ->capture_default_str()
-      ->transform(cli::count_option(1, no_dart - 1));
-  app.add_option("--limit-file-bytes", lim.file_bytes, "largest input file read, in bytes")->capture_default_str()->transform(cli::count_option(1));
-  app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")
-      ->capture_default_str()
-      ->transform(cli::count_option(1));
+  app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")->capture_default_str()->transform(count_option(1, no_dart - 1));
+  app.add_option("--limit-file-bytes", lim.file_bytes, "largest input file read, in bytes")->capture_default_str()->transform(count_option(1));
+  app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")->capture_default_str()->transform(count_option(1));
   // At most 10,000: a 25,000-deep sum overflowed the checker's recursion on an 8 MiB stack.
   app.add_option("--limit-term-depth", lim.term_depth, "deepest nesting of a term (at most 10000)")
       ->capture_default_str()
-      ->transform(cli::count_option(1, 10000));
-  app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")
-      ->capture_default_str()
-      ->transform(cli::count_option(1));
+      ->transform(count_option(1, 10000));
+  app.add_option("--limit-word-length", lim.word_length, "longest conjugate word, in letters")->capture_default_str()->transform(count_option(1));
   app.add_option("--limit-rewrite-words", lim.rewrite_words, "most words met while rewriting one word in a non-confluent R_{N,E}")
       ->capture_default_str()
-      ->transform(cli::count_option(1));
-  app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->transform(cli::count_option(1));
+      ->transform(count_option(1));
+  app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->transform(count_option(1));
 }
 
 // Runs the parsed command; the one place where each kind of error becomes
@@ -343,6 +342,24 @@ int run_command(const Commands& commands) {
     return cli::bad_input;
   }
   return cli::bad_input;
+}
+
+// The parser's names and help texts for cli/suggest's messages.
+cli::CommandTable command_table(const CLI::App& app) {
+  cli::CommandTable table;
+  const auto long_names = [](const CLI::App& a, std::vector<std::string>& out) {
+    for (const CLI::Option* o : a.get_options())
+      for (const auto& n : o->get_lnames()) out.push_back("--" + n);
+  };
+  long_names(app, table.options[""]);
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    table.commands.push_back(sub->get_name());
+    auto& names = table.options[sub->get_name()];
+    long_names(app, names);
+    long_names(*sub, names);
+  }
+  table.help = [&app](std::string_view command) { return command.empty() ? app.help() : app.get_subcommand(std::string(command))->help(); };
+  return table;
 }
 
 }  // namespace
@@ -383,11 +400,13 @@ int main(int argc, char** argv) {
   // long runs (check, fuzz, prove, report) install their own handler,
   // which stops at the next rule and prints the finished ones.
   analysis::exit_on_interrupt();
-  if (const auto status = cli::help_request(app, argc, argv)) return *status;
+  const cli::CommandTable table = command_table(app);
+  if (const auto status = cli::help_request(table, argc, argv)) return *status;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return cli::report_parse_error(app, e, argc, argv);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    return cli::report_parse_error(table, e.what(), argc, argv);
   }
   return run_command(commands);
 }

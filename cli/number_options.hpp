@@ -6,22 +6,28 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
-#include <optional>
-#include <string_view>
-
-#include <CLI/CLI.hpp>
+#include <string>
 
 #include "core/number_text.hpp"
 
 namespace dartcheck::cli {
 
+/// A check of an option's text for CLI11's Validator (built in main.cpp,
+/// the one file that includes CLI11): `check` returns the error or "" and
+/// may rewrite the text; `name` is the type shown in --help.
+struct NumberCheck {
+  std::function<std::string(std::string&)> check;
+  std::string name;
+};
+
 /// The check of a count option: a count from `low` to `high`. It rewrites
 /// the text, so give it with `->transform()` (CLI11 drops what `->check()`
 /// changes).
-CLI::Validator count_option(std::uint64_t low = 0, std::uint64_t high = std::numeric_limits<std::uint64_t>::max());
+NumberCheck count_option(std::uint64_t low = 0, std::uint64_t high = std::numeric_limits<std::uint64_t>::max());
 
 /// The check of a real option: a finite real from `low` to `high`.
-CLI::Validator real_option(double low, double high);
+NumberCheck real_option(double low, double high);
 
 }  // namespace dartcheck::cli

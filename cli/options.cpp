@@ -2,7 +2,6 @@
 
 #include "analysis/interrupt.hpp"
 #include "cli/commands.hpp"
-#include "cli/number_options.hpp"
 #include "reports/rule_result_text.hpp"
 
 #include <fmt/format.h>

@@ -39,6 +39,26 @@ inline std::string comment_text(std::string_view s) {
   return plain ? std::string(s) : cpp_literal(s);
 }
 
+/// Whether `ns` names a C++ namespace: identifiers ([A-Za-z_][A-Za-z0-9_]*)
+/// joined by "::".
+inline bool namespace_name(std::string_view ns) {
+  const auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  bool start = true;  // at the first letter of an identifier
+  for (std::size_t k = 0; k < ns.size(); ++k) {
+    if (start) {
+      if (!alpha(ns[k])) return false;
+      start = false;
+    } else if (ns.substr(k, 2) == "::") {
+      start = true;
+      ++k;
+    } else if (!alpha(ns[k]) && !digit(ns[k])) {
+      return false;
+    }
+  }
+  return !start;
+}
+
 /// The index of w among W's generators, -1 for ε.
 inline int generator_index(const std::vector<ConjWord>& gens, const ConjWord& w) {
   return w.empty() ? -1 : static_cast<int>(std::find(gens.begin(), gens.end(), w) - gens.begin());
