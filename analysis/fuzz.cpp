@@ -1,4 +1,5 @@
 #include "analysis/fuzz.hpp"
+#include "core/wording.hpp"
 #include "analysis/event_checks.hpp"
 #include "analysis/interrupt.hpp"
 
@@ -476,8 +477,8 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
     const auto& r = reports.back();
     // Without a terminal (CI logs), a line per finished rule instead.
     if (!progress)
-      fmt::print(stderr, "[{}/{}] {}: {}, {} applications, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict), r.applications,
-                 r.seconds);
+      fmt::print(stderr, "[{}/{}] {}: {}, {}, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict),
+                 counted(r.applications, "application"), r.seconds);
     if (finished) finished(k, r);
   }
   if (progress) fmt::print(stderr, "\r\033[K");

@@ -29,8 +29,8 @@ int run(const RunOptions& o) {
   analysis::catch_interrupts();  // Ctrl-C: the examples run so far, their summary, exit 130
   for (const auto& r : catalog.rules) {
     if (analysis::interrupted()) break;
-    fmt::print("  {} ({}): L {} nodes / {} arcs, R {} nodes / {} arcs\n", r.rule.name(), r.rule.model().name, r.rule.left().node_count(),
-               r.rule.left().arc_count(), r.rule.right().node_count(), r.rule.right().arc_count());
+    fmt::print("  {} ({}): L {} / {}, R {} / {}\n", r.rule.name(), r.rule.model().name, counted(r.rule.left().node_count(), "node"),
+               counted(r.rule.left().arc_count(), "arc"), counted(r.rule.right().node_count(), "node"), counted(r.rule.right().arc_count(), "arc"));
     for (const auto& e : r.examples) {
       ++examples;
       const ExampleOutcome got = run_example(catalog, built, r, e);
