@@ -72,6 +72,29 @@ def missing(shown, output):
     return None
 
 
+def run_examples(found, cwd, env):
+    """Runs each (label, command, shown lines) in cwd and prints ok or FAIL
+    with what went wrong; returns the number that failed (also README's
+    quick start, tests/docs/readme_examples.py)."""
+    failures = 0
+    for label, command, shown in found:
+        m = re.search(r"#\s*exits (\d+)\s*$", command)
+        status = int(m.group(1)) if m else 0
+        # stdout and stderr in one stream, in the order a terminal shows them
+        done = subprocess.run(command, shell=True, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                              errors="replace", timeout=600)
+        problems = [] if done.returncode == status else [f"exit {done.returncode}, expected {status}"]
+        lost = missing(shown, done.stdout)
+        if lost is not None:
+            problems.append(f"no line matching, in order: {lost.strip()}")
+        print(f"{'FAIL' if problems else 'ok'}: {label}: {command}" + "".join(f"\n  {p}" for p in problems))
+        if problems:
+            print("  output:\n    " + "\n    ".join(done.stdout.splitlines()[-20:]))
+            failures += 1
+    print(f"{len(found)} examples, {failures} failed")
+    return failures
+
+
 def scratch_tree(repo, work, elephant):
     """A directory that looks like the repository to the examples."""
     shutil.rmtree(work, ignore_errors=True)
@@ -95,25 +118,7 @@ def main():
     if len(found) < 30:
         print(f"only {len(found)} examples found in docs/cli.md")
         return 1
-    failures = 0
-    for number, command, shown in found:
-        m = re.search(r"#\s*exits (\d+)\s*$", command)
-        status = int(m.group(1)) if m else 0
-        # stdout and stderr in one stream, in the order a terminal shows them
-        done = subprocess.run(command, shell=True, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                              errors="replace", timeout=600)
-        output = done.stdout
-        problems = [] if done.returncode == status else [f"exit {done.returncode}, expected {status}"]
-        lost = missing(shown, output)
-        if lost is not None:
-            problems.append(f"no line matching, in order: {lost.strip()}")
-        print(f"{'FAIL' if problems else 'ok'}: docs/cli.md:{number}: {command}" + "".join(f"\n  {p}" for p in problems))
-        if problems:
-            print("  output:\n    " + "\n    ".join(output.splitlines()[-20:]))
-            failures += 1
-    print(f"{len(found)} docs/cli.md examples, {failures} failed")
-    return 1 if failures else 0
-
+    return 1 if run_examples([(f"docs/cli.md:{n}", c, shown) for n, c, shown in found], cwd, env) else 0
 
 if __name__ == "__main__":
     sys.exit(main())
