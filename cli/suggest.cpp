@@ -36,8 +36,9 @@ int report_parse_error(const CommandTable& table, std::string_view what, int arg
     return 2;
   }
   // A mistyped option: name the closest the command accepts.
+  static const std::vector<std::string> none;
   const auto known = table.options.find(command);
-  const std::vector<std::string> names = known == table.options.end() ? std::vector<std::string>{} : known->second;
+  const std::vector<std::string>& names = known == table.options.end() ? none : known->second;
   for (int k = command.empty() ? 1 : 2; k < argc; ++k) {
     const std::string_view arg = argv[k];
     const std::string typed(arg.substr(0, arg.find('=')));
@@ -54,7 +55,7 @@ int report_parse_error(const CommandTable& table, std::string_view what, int arg
     fmt::print(stderr, "error: no command given (dartcheck --help lists them)\n");
     return 2;
   }
-  fmt::print(stderr, "error: {}{}\n", command.empty() ? "" : command + ": ", printable(what));
+  fmt::print(stderr, "error: {}: {}\n", command, printable(what));
   return 2;
 }
 
