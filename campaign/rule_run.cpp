@@ -6,6 +6,8 @@
 #include "analysis/map_sources.hpp"
 #include "analysis/verdict_record.hpp"
 #include "core/input_error.hpp"
+#include "campaign/shard_stream.hpp"
+#include "reports/rule_result_json.hpp"
 #include "reports/run_output.hpp"
 
 namespace dartcheck::campaign {
@@ -28,18 +30,19 @@ std::vector<const CatalogRule*> RuleRun::rules() const {
 
 double RuleRun::seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
-void RuleRun::open_lines(reports::Json parameters) {
-  if (options_.jsonl) lines_.emplace(make_header(command_, options_.catalog, options_.baseline, options_.rule, shard_, std::move(parameters)));
+void RuleRun::open_lines(const Parameters& parameters) {
+  if (options_.jsonl) lines_.emplace(make_header(command_, options_.catalog, options_.baseline, options_.rule, shard_, parameters));
 }
 
 void RuleRun::finished(const analysis::RuleResult& r) {
   if (lines_) lines_->rule(r);
 }
 
-int RuleRun::finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, std::optional<reports::Json> summary) {
+int RuleRun::finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, const reports::FuzzRun* fuzz) {
   const int status = reports::finish_run(results, baseline_mismatches_, selected);
   if (lines_)
-    lines_->summary(summary ? std::move(*summary) : run_summary(results, selected, analysis::interrupted(), seconds(), baseline_mismatches_));
+    lines_->summary(fuzz ? reports::fuzz_summary_json(*fuzz, results)
+                         : run_summary(results, selected, analysis::interrupted(), seconds(), baseline_mismatches_));
   return status;
 }
 

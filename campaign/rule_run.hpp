@@ -12,7 +12,10 @@
 #include <vector>
 
 #include "analysis/rule_result.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/run_parameters.hpp"
+#include "campaign/shard_writer.hpp"
+#include "io/catalog.hpp"
+#include "reports/rule_result_text.hpp"
 
 namespace dartcheck::campaign {
 
@@ -39,15 +42,15 @@ class RuleRun {
 
   /// With --format jsonl, writes the header: the options that change
   /// results are `parameters` (shards merge only when they agree).
-  void open_lines(reports::Json parameters);
+  void open_lines(const Parameters& parameters);
   bool writes_lines() const { return lines_.has_value(); }
   /// A finished rule: its line now, so that a run killed later keeps it.
   void finished(const analysis::RuleResult& r);
 
   /// The exit status (reports::finish_run) of `results` out of `selected`
-  /// rules; with --format jsonl, the summary line (`summary`, or the
-  /// counts of check, prove and report).
-  int finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, std::optional<reports::Json> summary = std::nullopt);
+  /// rules; with --format jsonl, the summary line (fuzz's when `fuzz` is
+  /// given, or the counts of check, prove and report).
+  int finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, const reports::FuzzRun* fuzz = nullptr);
 
  private:
   std::string command_;

@@ -8,9 +8,11 @@
 
 #include <fmt/format.h>
 
+#include "campaign/input_run.hpp"
 #include "campaign/result_record.hpp"
 #include "core/input_error.hpp"
 #include "io/input_file.hpp"
+#include "reports/querymodify_report.hpp"
 #include "reports/rule_result_json.hpp"
 
 namespace dartcheck::campaign {
@@ -76,7 +78,7 @@ std::string difference(const RunHeader& a, const RunHeader& b) {
 }  // namespace
 
 RunHeader make_header(std::string command, const std::string& catalog, const std::string& baseline, const std::string& rule, Shard shard,
-                      Json parameters) {
+                      const Parameters& parameters) {
   RunHeader h;
   h.command = std::move(command);
   h.catalog = catalog;
@@ -86,7 +88,15 @@ RunHeader make_header(std::string command, const std::string& catalog, const std
   h.baseline_digest = baseline.empty() ? std::string() : file_digest(baseline);
   h.rule = rule;
   h.shard = shard;
-  h.parameters = std::move(parameters);
+  for (const auto& [name, value] : parameters)
+    h.parameters[name] = std::visit(
+        [](const auto& v) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>)
+            return Json(nullptr);
+          else
+            return Json(v);
+        },
+        value);
   return h;
 }
 
@@ -102,17 +112,19 @@ Json run_summary(const std::vector<analysis::RuleResult>& results, std::size_t s
 
 bool per_input_command(std::string_view command) { return command == "recombine" || command == "query"; }
 
-ShardWriter::ShardWriter(const RunHeader& header) : command_(header.command) { line("header", header_json(header)); }
+ShardWriter::ShardWriter(const RunHeader& header) : command_(header.command) { line("header", header_json(header), std::nullopt); }
 
 void ShardWriter::rule(const analysis::RuleResult& r) { line("rule", reports::rule_result_json(r), result_record(r)); }
 
-void ShardWriter::input(Json document, const std::string& text) { line("input", Json{{"document", std::move(document)}, {"text", text}}); }
-
-void ShardWriter::fragment(const std::string& rule, Json json, const std::string& text) {
-  line("fragment", Json{{"rule", rule}, {"json", std::move(json)}, {"text", text}});
+void ShardWriter::input(Json document, const std::string& text) {
+  line("input", Json{{"document", std::move(document)}, {"text", text}}, std::nullopt);
 }
 
-void ShardWriter::summary(Json summary) { line("summary", std::move(summary)); }
+void ShardWriter::fragment(const std::string& rule, Json json, const std::string& text) {
+  line("fragment", Json{{"rule", rule}, {"json", std::move(json)}, {"text", text}}, std::nullopt);
+}
+
+void ShardWriter::summary(Json summary) { line("summary", std::move(summary), std::nullopt); }
 
 void ShardWriter::line(const char* type, Json payload, std::optional<Json> record) {
   Json j = reports::json_document(command_ + "-jsonl");
@@ -228,17 +240,29 @@ std::vector<ShardFile> check_complete(std::vector<ShardFile> files) {
   return files;
 }
 
-void print_input_run(const std::string& format, const std::string& command, const std::string& input, reports::Json parameters,
-                     reports::Json document, const std::string& text, int status) {
+namespace {
+
+void print_input_run(const std::string& format, const std::string& command, const std::string& input, const Parameters& parameters, Json document,
+                     const std::string& text, int status) {
   if (format == "jsonl") {
-    ShardWriter lines(make_header(command, input, "", "", {}, std::move(parameters)));
+    ShardWriter lines(make_header(command, input, "", "", {}, parameters));
     lines.input(std::move(document), text);
-    lines.summary(reports::Json{{"status", status}});
+    lines.summary(Json{{"status", status}});
   } else if (format == "json") {
     fmt::print("{}\n", reports::json_text(std::move(document)));
   } else {
     fmt::print("{}", text);
   }
+}
+
+}  // namespace
+
+void print_input_run(const std::string& format, const std::string& mesh, const Parameters& parameters, const reports::RecombineRun& run, int status) {
+  print_input_run(format, "recombine", mesh, parameters, reports::recombine_document(run), reports::recombine_text(run), status);
+}
+
+void print_input_run(const std::string& format, const std::string& map, const Parameters& parameters, const reports::QueryRun& run, int status) {
+  print_input_run(format, "query", map, parameters, reports::query_document(run), reports::query_text(run), status);
 }
 
 }  // namespace dartcheck::campaign

@@ -1,5 +1,5 @@
-// The JSON lines a command writes with --format jsonl, and what merge
-// reads back: a header (the command, the catalog and its digest, the
+// The JSON lines a command writes with --format jsonl (campaign/shard_writer),
+// and what merge reads back: a header (the command, the catalog and its digest, the
 // options that change results, the shard), one line per finished rule
 // (the rule's JSON, as --format json gives it, and its record,
 // campaign/result_record.hpp), and a summary line when the run ends. Each
@@ -13,6 +13,7 @@
 
 #include "analysis/rule_result.hpp"
 #include "campaign/shard.hpp"
+#include "campaign/shard_writer.hpp"
 #include "reports/json_document.hpp"
 
 namespace dartcheck::campaign {
@@ -30,38 +31,10 @@ struct RunHeader {
   reports::Json parameters = reports::Json::object();
 };
 
-/// A header with the digests of the catalog and baseline files.
-RunHeader make_header(std::string command, const std::string& catalog, const std::string& baseline, const std::string& rule, Shard shard,
-                      reports::Json parameters);
-
 /// Commands whose run reads one input (recombine, query): a campaign runs
 /// one job per input; the header's `catalog` is the input, and merge
 /// gathers the runs in the order of their inputs' paths.
 bool per_input_command(std::string_view command);
-
-/// Prints the run of a per-input command (recombine, query) as --format
-/// asks: its text, its JSON document, or (jsonl) the one run of a campaign
-/// over many inputs: a header naming the input and the options that
-/// change results, the input's line, and a summary with the exit status.
-void print_input_run(const std::string& format, const std::string& command, const std::string& input, reports::Json parameters,
-                     reports::Json document, const std::string& text, int status);
-
-/// Writes the lines on stdout, each flushed.
-class ShardWriter {
- public:
-  explicit ShardWriter(const RunHeader& header);
-  void rule(const analysis::RuleResult& r);
-  /// A per-input command's result: its JSON document and its text.
-  void input(reports::Json document, const std::string& text);
-  /// One rule's part of an output that is not a RuleResult (events): its
-  /// JSON object (null when the JSON output has none) and its text.
-  void fragment(const std::string& rule, reports::Json json, const std::string& text);
-  void summary(reports::Json summary);
-
- private:
-  void line(const char* type, reports::Json payload, std::optional<reports::Json> record = std::nullopt);
-  std::string command_;
-};
 
 /// The summary line of check, prove and report: rules selected and
 /// finished, whether a signal stopped the run, its seconds, the counts.

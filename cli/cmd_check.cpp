@@ -12,7 +12,6 @@
 #include "analysis/rule_result.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/commands.hpp"
-#include "campaign/shard_stream.hpp"
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
@@ -59,7 +58,7 @@ int check(const CheckOptions& o) {
   if (!o.write_baseline.empty()) check_writable(o.write_baseline);  // before the work, not after it
   if (!o.write_baseline.empty() && !run.shard().whole())
     throw InputError("<command line>", 0, 0, "--write-baseline: a baseline records every rule, not a shard's");
-  run.open_lines(reports::Json{{"confirm_darts", o.confirm_darts}});
+  run.open_lines({{"confirm_darts", o.confirm_darts}});
   const Catalog& catalog = run.catalog();
   const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.words.scheme; });
   const std::vector<Map> maps = o.confirm_darts > 0 && schemes ? catalog_maps(catalog) : std::vector<Map>{};

@@ -7,10 +7,9 @@
 #include "analysis/rule_events.hpp"
 #include "cli/commands.hpp"
 #include "analysis/interrupt.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/events_output.hpp"
 #include "cli/options.hpp"
 #include "core/wording.hpp"
-#include "reports/events_report.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck::cli {
@@ -30,43 +29,6 @@ EventsApplication application(const EventsOptions& o, const CatalogRule& rule, c
   return apply_for_events(rule, std::move(g), o.hooks, o.map);
 }
 
-// The output of a run, as --format asks: each rule's part (its JSON
-// object, none for a rule skipped by --orbit, and its text) printed as it
-// comes, gathered into one document, or written as a shard's lines (both).
-class Output {
- public:
-  Output(const EventsOptions& o, const campaign::Shard& shard) : o_(o) {
-    if (o.format != "jsonl") return;
-    std::vector<std::string> hooks;
-    for (Dart h : o.hooks) hooks.push_back(std::to_string(h));
-    lines_.emplace(campaign::make_header("events", o.catalog, "", o.rule, shard,
-                                         reports::Json{{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}}));
-  }
-  void rule(const CatalogRule& rule, std::optional<reports::Json> j, const std::string& text) {
-    if (lines_)
-      lines_->fragment(rule.rule.name(), j ? *j : reports::Json(nullptr), text);
-    else if (o_.format == "json" && j)
-      rules_.push_back(std::move(*j));
-    else if (o_.format != "json")
-      fmt::print("{}", text);
-  }
-  void finish(int status, std::size_t analysed) {
-    if (lines_) {
-      lines_->summary(reports::Json{{"status", status}, {"analysed", analysed}, {"interrupted", analysis::interrupted()}});
-    } else if (o_.format == "json") {
-      reports::Json doc = reports::json_document("events");
-      doc["catalog"] = o_.catalog;
-      doc["rules"] = std::move(rules_);
-      fmt::print("{}\n", reports::json_text(std::move(doc)));
-    }
-  }
-
- private:
-  const EventsOptions& o_;
-  std::optional<campaign::ShardWriter> lines_;
-  reports::Json rules_ = reports::Json::array();
-};
-
 }  // namespace
 
 int events_command(const EventsOptions& o) {
@@ -76,7 +38,9 @@ int events_command(const EventsOptions& o) {
   if (!o.map.empty() && o.rule.empty()) throw InputError("<command line>", 0, 0, "--map needs --rule: an event log is for one rule");
   if (o.map.empty() && (!o.hooks.empty() || o.dynamic))
     throw InputError("<command line>", 0, 0, "--hook and --dynamic need --map: they concern one application");
-  Output out(o, shard);
+  std::vector<std::string> hooks;
+  for (Dart h : o.hooks) hooks.push_back(std::to_string(h));
+  campaign::EventsOutput out(o.format, o.catalog, o.rule, shard, {{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}});
   int status = ok;
   std::optional<std::string> first_orbit_error;
   std::size_t analysed = 0;
@@ -85,10 +49,8 @@ int events_command(const EventsOptions& o) {
     if (analysis::interrupted()) break;
     if (!o.rule.empty() && rule.rule.name() != o.rule) continue;
     const EventRuleOutcome view = event_rule(rule);
-    const std::string name = fmt::format("rule {} ({})", rule.rule.name(), rule.rule.model().name);
     if (!view.rule) {
-      out.rule(rule, reports::Json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", view.why}},
-               fmt::format("{}: not analysed: {}\n", name, view.why));
+      out.not_analysed(rule, view.why);
       if (!o.rule.empty()) status = violation;
       continue;
     }
@@ -100,7 +62,7 @@ int events_command(const EventsOptions& o) {
     } catch (const InputError& e) {
       if (!o.rule.empty()) throw;
       if (!first_orbit_error) first_orbit_error = e.what();
-      out.rule(rule, std::nullopt, fmt::format("{}: skipped: {}\n", name, e.what()));
+      out.skipped(rule, e.what());
       continue;
     }
     ++analysed;
@@ -108,7 +70,7 @@ int events_command(const EventsOptions& o) {
     if (!o.map.empty()) r.application = application(o, rule, catalog);
     r.kinds = analyse_events(*view.rule, rule, kinds, r.application, o.dynamic);
     status = std::max(status, events_status(r));
-    out.rule(rule, reports::events_json(r), reports::events_text(r));
+    out.analysed(r);
   }
   // A shard may hold only rules that --orbit does not fit: not an error there.
   if (analysed == 0 && first_orbit_error && shard.whole())
@@ -117,7 +79,7 @@ int events_command(const EventsOptions& o) {
     fmt::print(stderr, "interrupted: {} analysed; the output holds them\n", counted(analysed, "rule"));
     status = analysis::interrupted_exit;
   }
-  out.finish(status, analysed);
+  out.finish(status, analysed, analysis::interrupted());
   return status;
 }
 

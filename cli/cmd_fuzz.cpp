@@ -17,7 +17,6 @@
 #include "cli/commands.hpp"
 #include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
-#include "campaign/shard_stream.hpp"
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
 #include "core/wording.hpp"
@@ -28,7 +27,6 @@
 #include "analysis/fuzz.hpp"
 #include "analysis/fuzz_targets.hpp"
 #include "analysis/rule_result.hpp"
-#include "reports/rule_result_json.hpp"
 #include "reports/rule_result_text.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
@@ -75,12 +73,8 @@ int fuzz(const FuzzCommand& c) {
                      : fmt::format("{} applications per rule", o.runs));
   // The options that change results go in the header: shards merge only
   // when they agree (a --time run merges, but is not deterministic).
-  run.open_lines(reports::Json{{"seed", o.seed},
-                               {"runs", c.runs ? reports::Json(*c.runs) : reports::Json(nullptr)},
-                               {"time", c.time},
-                               {"max_darts", o.max_darts},
-                               {"event_checks", o.event_checks},
-                               {"maps", c.maps}});
+  run.open_lines(
+      {{"seed", o.seed}, {"runs", c.runs}, {"time", c.time}, {"max_darts", o.max_darts}, {"event_checks", o.event_checks}, {"maps", c.maps}});
   // Each rule's result (its counterexample files and, with jsonl, its line)
   // is written as soon as the rule finishes: a run killed later keeps them.
   std::vector<RuleResult> results;
@@ -91,7 +85,7 @@ int fuzz(const FuzzCommand& c) {
   };
   fuzz_rules(targets.rules, targets.seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);
   const reports::FuzzRun fuzz_run{c.catalog, o.seed, run.seconds(), selected, interrupted(), run.baseline_mismatches()};
-  const int status = run.finish(results, selected, reports::fuzz_summary_json(fuzz_run, results));
+  const int status = run.finish(results, selected, &fuzz_run);
   if (!run.writes_lines()) print_fuzz(c.format, fuzz_run, results);
   return status;
 }

@@ -82,7 +82,7 @@ int infer(const InferCommand& o) {
   const reports::InferRun run{o.before,           o.after,   orbit_type_str(OrbitType(orbit.begin(), orbit.end())), g_size, h_size,
                               graph->preserved(), kappa_text};
   if (o.format == "json")
-    fmt::print("{}\n", reports::json_text(reports::infer_document(run, *graph, attempts)));
+    fmt::print("{}\n", reports::infer_json(run, *graph, attempts));
   else
     fmt::print("{}", reports::infer_text(run, attempts));
   const auto inferred = std::count_if(attempts.begin(), attempts.end(), [](const Attempt& a) { return a.inferred(); });

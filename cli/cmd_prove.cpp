@@ -10,13 +10,11 @@
 #include "cli/commands.hpp"
 #include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
-#include "campaign/shard_stream.hpp"
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
 #include "reports/run_output.hpp"
 #include "analysis/rule_result.hpp"
-#include "reports/rule_result_json.hpp"
 #include "reports/rule_result_text.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
@@ -43,7 +41,7 @@ int prove(const ProveCommand& c) {
   o.rlimit = c.rlimit;
   o.timeout_ms = static_cast<unsigned>(c.timeout * 1000);
   o.stop = [] { return interrupted(); };  // Ctrl-C interrupts the running Z3 query too
-  run.open_lines(reports::Json{{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}});
+  run.open_lines({{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}});
   std::vector<RuleResult> results;
   const auto rules = run.rules();
   for (const CatalogRule* e : rules) {

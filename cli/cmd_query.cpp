@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "analysis/query_sources.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/input_run.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "reports/querymodify_report.hpp"
@@ -40,16 +40,16 @@ int query(const QueryOptions& o) {
   for (const auto& q : queries) run.names.push_back(q.name), run.query_darts.push_back(q.word.darts);
   const int status = found.all.distinct.empty() ? violation : ok;
   // jsonl: one run of a campaign over many maps (docs/scale.md), which merge gathers.
-  campaign::print_input_run(o.format, "query", o.map,
-                            reports::Json{{"queries", o.queries},
-                                          {"hex", o.hex},
-                                          {"model", o.model},
-                                          {"catalog", o.catalog},
-                                          {"free", o.free},
-                                          {"strategy", o.strategy},
-                                          {"start", o.start},
-                                          {"limit", o.limit}},
-                            reports::query_document(run), reports::query_text(run), status);
+  campaign::print_input_run(o.format, o.map,
+                            {{"queries", o.queries},
+                             {"hex", o.hex},
+                             {"model", o.model},
+                             {"catalog", o.catalog},
+                             {"free", o.free},
+                             {"strategy", o.strategy},
+                             {"start", o.start},
+                             {"limit", o.limit}},
+                            run, status);
   return status;
 }
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "campaign/shard_stream.hpp"
+#include "campaign/input_run.hpp"
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
@@ -25,8 +25,7 @@ int recombine(const RecombineOptions& o) {
   }
   const int status = run.sound() ? ok : soundness_bug;
   // jsonl: one run of a campaign over many meshes (docs/scale.md), which merge gathers.
-  campaign::print_input_run(o.format, "recombine", o.mesh, reports::Json{{"strategy", o.strategy}, {"min_quality", o.min_quality}},
-                            reports::recombine_document(run), reports::recombine_text(run), status);
+  campaign::print_input_run(o.format, o.mesh, {{"strategy", o.strategy}, {"min_quality", o.min_quality}}, run, status);
   if (status != ok)
     fmt::print(stderr, "BUG: the recombined map is {} ({} darts, {} expected)\n", run.valid ? "valid" : "invalid", run.darts, run.expected_darts);
   return status;

@@ -19,7 +19,6 @@
 #include "analysis/rule_result.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/commands.hpp"
-#include "campaign/shard_stream.hpp"
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
@@ -68,10 +67,10 @@ int report(const ReportOptions& o) {
     prove_all(rows, stages.prove_darts, stages.scheme_darts, cx_dir, o.catalog);
   }
   // A shard's lines come after every stage (the fuzz budget is shared by the rules).
-  run.open_lines(reports::Json{{"fuzz", o.fuzz},
-                               {"seed", stages.fuzz_seconds ? reports::Json(stages.seed) : reports::Json(nullptr)},  // drawn only to fuzz
-                               {"prove_darts", stages.prove_darts},
-                               {"scheme_darts", stages.scheme_darts}});
+  run.open_lines({{"fuzz", o.fuzz},
+                  {"seed", stages.fuzz_seconds ? std::optional(stages.seed) : std::nullopt},  // drawn only to fuzz
+                  {"prove_darts", stages.prove_darts},
+                  {"scheme_darts", stages.scheme_darts}});
   for (const auto& r : rows) run.finished(r);
   if (!run.writes_lines()) write_report(o.output, o.engine, o.catalog, run.catalog(), rows, run.baseline_mismatches(), stages);
   return run.finish(rows, selected);

@@ -14,7 +14,7 @@
 
 namespace dartcheck::cli {
 
-/// A check of an option's text for CLI11's Validator (built in main.cpp,
+/// A check of an option's text for CLI11's Validator (built in command_line.cpp,
 /// the one file that includes CLI11): `check` returns the error or "" and
 /// may rewrite the text; `name` is the type shown in --help.
 struct NumberCheck {

@@ -1,6 +1,6 @@
 // What the argument parser's errors become: one "error:" line, with the
 // closest command or option when the user mistyped one, and `help [CMD]`.
-// Free of CLI11 (main.cpp, its one includer, fills the table), so these
+// Free of CLI11 (command_line.cpp, its one includer, fills the table), so these
 // messages are plain functions of names.
 #pragma once
 

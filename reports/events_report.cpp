@@ -1,4 +1,5 @@
 #include "reports/events_report.hpp"
+#include "reports/json_document.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/rule_events.hpp"
-#include "reports/json_document.hpp"
+#include "reports/json_fwd.hpp"
 
 namespace dartcheck::reports {
 

@@ -1,4 +1,5 @@
 #include "reports/infer_report.hpp"
+#include "reports/json_document.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -89,7 +90,7 @@ std::string infer_text(const InferRun& run, const std::vector<Attempt>& attempts
   return out;
 }
 
-Json infer_document(const InferRun& run, const KappaGraph& graph, const std::vector<Attempt>& attempts) {
+std::string infer_json(const InferRun& run, const KappaGraph& graph, const std::vector<Attempt>& attempts) {
   Json rows = Json::array();
   std::size_t inferred = 0;
   for (const auto& a : attempts) {
@@ -137,7 +138,7 @@ Json infer_document(const InferRun& run, const KappaGraph& graph, const std::vec
   doc["preserved_darts"] = run.preserved;
   doc["inferred"] = inferred;
   doc["attempts"] = std::move(rows);
-  return doc;
+  return json_text(std::move(doc));
 }
 
 }  // namespace dartcheck::reports

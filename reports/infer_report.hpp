@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "inference/infer.hpp"
-#include "reports/json_document.hpp"
 
 namespace dartcheck::reports {
 
@@ -21,6 +20,7 @@ struct InferRun {
 std::string attempt_outcome(const inference::Attempt& a);
 
 std::string infer_text(const InferRun& run, const std::vector<inference::Attempt>& attempts);
-Json infer_document(const InferRun& run, const inference::KappaGraph& graph, const std::vector<inference::Attempt>& attempts);
+/// The JSON document (docs/schema/infer), as text.
+std::string infer_json(const InferRun& run, const inference::KappaGraph& graph, const std::vector<inference::Attempt>& attempts);
 
 }  // namespace dartcheck::reports

@@ -7,10 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace dartcheck::reports {
+#include "reports/json_fwd.hpp"
 
-/// Objects keep the order their keys were added in (readable output).
-using Json = nlohmann::ordered_json;
+namespace dartcheck::reports {
 
 /// The version of dartcheck's JSON and JSONL formats: documents carry it
 /// as "format_version"; docs/schema/ holds one JSON Schema per document.

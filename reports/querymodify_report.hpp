@@ -8,7 +8,7 @@
 
 #include "querymodify/overlap.hpp"
 #include "querymodify/recombined_mesh.hpp"
-#include "reports/json_document.hpp"
+#include "reports/json_fwd.hpp"
 
 namespace dartcheck::reports {
 

@@ -1,4 +1,5 @@
 #include "reports/rule_result_json.hpp"
+#include "reports/json_document.hpp"
 
 #include <map>
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "analysis/rule_result.hpp"
-#include "reports/json_document.hpp"
+#include "reports/json_fwd.hpp"
 #include "reports/rule_result_text.hpp"
 
 namespace dartcheck::reports {

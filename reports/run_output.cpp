@@ -11,6 +11,7 @@
 #include "core/wording.hpp"
 #include "reports/ci_formats.hpp"
 #include "reports/html_page.hpp"
+#include "reports/json_document.hpp"
 #include "reports/report_page.hpp"
 #include "reports/rule_result_json.hpp"
 #include "reports/rule_result_text.hpp"

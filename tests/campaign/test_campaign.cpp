@@ -9,6 +9,7 @@
 #include "analysis/rule_result.hpp"
 #include "campaign/result_record.hpp"
 #include "campaign/shard.hpp"
+#include "campaign/shard_stream.hpp"
 #include "core/input_error.hpp"
 #include "io/catalog.hpp"
 #include "reports/rule_result_json.hpp"
@@ -67,6 +68,24 @@ void expect_round_trip(const Catalog& catalog, const RuleResult& original) {
   campaign::restore_record(back, Json::parse(text));
   EXPECT_EQ(reports::rule_result_json(back), reports::rule_result_json(original)) << original.name();
   EXPECT_EQ(reports::json_text(campaign::result_record(back)), text) << original.name();
+}
+
+// A header records each option with the JSON type of its value (shards
+// merge only when these are equal): the largest seed stays unsigned, an
+// unset optional is null, a name with a quote is escaped, the order kept.
+TEST(RunHeader, ParametersKeepTheirTypesAndOrder) {
+  const std::optional<std::uint64_t> unset;
+  const auto h = campaign::make_header("fuzz", "no-such-catalog.yaml", "", "", Shard{},
+                                       {{"seed", std::numeric_limits<std::uint64_t>::max()},
+                                        {"runs", unset},
+                                        {"offset", -3},
+                                        {"min_quality", 0.5},
+                                        {"event_checks", true},
+                                        {"maps", std::vector<std::string>{"a", "b\"c"}},
+                                        {"time", "30s"}});
+  EXPECT_EQ(h.parameters.dump(),
+            R"({"seed":18446744073709551615,"runs":null,"offset":-3,"min_quality":0.5,"event_checks":true,"maps":["a","b\"c"],"time":"30s"})");
+  EXPECT_EQ(h.catalog_digest, "");  // no such file
 }
 
 TEST(ResultRecord, CheckFuzzAndProofResultsReadBackUnchanged) {

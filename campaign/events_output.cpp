@@ -1,0 +1,58 @@
+#include "campaign/events_output.hpp"
+
+#include <fmt/format.h>
+
+#include "campaign/shard_stream.hpp"
+#include "reports/events_report.hpp"
+#include "reports/json_document.hpp"
+
+namespace dartcheck::campaign {
+
+using reports::Json;
+
+struct EventsOutput::Rules {
+  Json array = Json::array();
+};
+
+EventsOutput::EventsOutput(std::string format, std::string catalog, const std::string& rule, const Shard& shard, const Parameters& parameters)
+    : format_(std::move(format)), catalog_(std::move(catalog)), rules_(std::make_unique<Rules>()) {
+  if (format_ == "jsonl") lines_.emplace(make_header("events", catalog_, "", rule, shard, parameters));
+}
+
+EventsOutput::~EventsOutput() = default;
+
+void EventsOutput::analysed(const analysis::RuleEvents& r) {
+  const Json json = reports::events_json(r);
+  rule(*r.rule, &json, reports::events_text(r));
+}
+
+void EventsOutput::not_analysed(const CatalogRule& rule, const std::string& why) {
+  const Json json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", why}};
+  this->rule(rule, &json, fmt::format("rule {} ({}): not analysed: {}\n", rule.rule.name(), rule.rule.model().name, why));
+}
+
+void EventsOutput::skipped(const CatalogRule& rule, const std::string& why) {
+  this->rule(rule, nullptr, fmt::format("rule {} ({}): skipped: {}\n", rule.rule.name(), rule.rule.model().name, why));
+}
+
+void EventsOutput::rule(const CatalogRule& rule, const Json* json, const std::string& text) {
+  if (lines_)
+    lines_->fragment(rule.rule.name(), json ? *json : Json(nullptr), text);
+  else if (format_ == "json" && json)
+    rules_->array.push_back(*json);
+  else if (format_ != "json")
+    fmt::print("{}", text);
+}
+
+void EventsOutput::finish(int status, std::size_t analysed, bool interrupted) {
+  if (lines_) {
+    lines_->summary(Json{{"status", status}, {"analysed", analysed}, {"interrupted", interrupted}});
+  } else if (format_ == "json") {
+    Json doc = reports::json_document("events");
+    doc["catalog"] = catalog_;
+    doc["rules"] = std::move(rules_->array);
+    fmt::print("{}\n", reports::json_text(std::move(doc)));
+  }
+}
+
+}  // namespace dartcheck::campaign
