@@ -29,10 +29,11 @@ int draw(const DrawOptions& o) {
   auto witnesses = reports::failed_witnesses(verdict);
   const auto embedded = reports::embedding_picture(*entry, embedding_checks(catalog, *entry));
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
-  fmt::print(
-      "wrote {} ({} bytes)\n", o.output,
-      reports::write_picture(reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms),
-                             o.output, o.engine));
+  auto captions = reports::failure_captions(verdict);
+  captions.insert(captions.end(), embedded.captions.begin(), embedded.captions.end());
+  const std::string dot =
+      reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms, captions);
+  fmt::print("wrote {} ({} bytes)\n", o.output, reports::write_picture(dot, o.output, o.engine));
   return ok;
 }
 

@@ -45,11 +45,13 @@ std::string counterexample_dot(const Rule& rule, const ArcWords& words, const st
     for (const auto& n : panels[k]) body += fmt::format("  {} -> {} [style=invis, weight=0];\n", quote(n), quote(sep));
     for (const auto& n : panels[k + 1]) body += fmt::format("  {} -> {} [style=invis, weight=0];\n", quote(sep), quote(n));
   }
+  std::string caption = fmt::format("<tr><td><b>{}</b></td></tr>", html_text(p.title));
+  for (const auto& line : p.captions) caption += fmt::format(R"(<tr><td><font color="{}">{}</font></td></tr>)", deleted_color, html_text(line));
   return fmt::format(
       "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; labelloc=t;\n"
-      "  label=<<table border=\"0\"><tr><td>{}</td></tr><tr><td>{}</td></tr></table>>;\n"
+      "  label=<<table border=\"0\" cellspacing=\"1\">{}<tr><td>{}</td></tr></table>>;\n"
       "  node [shape=circle, fontname=\"Helvetica\", fontsize=10, width=0.3]; edge [fontname=\"Helvetica\", fontsize=9];\n{}}}\n",
-      quote(p.title), html_text(p.title), dimension_legend(p.host->model()), body);
+      quote(p.title), caption, rule_legend(rule.model(), !witnesses.empty(), {}), body);
 }
 
 }  // namespace dartcheck::reports

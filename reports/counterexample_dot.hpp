@@ -25,6 +25,7 @@ struct CounterexamplePicture {
   std::vector<std::string> result_tags;  // per dart of H: e.g. its value in a conflicting orbit, may be empty
   std::string broken_label;              // which constraints, for the panel's title
   std::string no_result;                 // why H is not drawn, when result is null
+  std::vector<std::string> captions;     // under the title: what H breaks, where; the failing conditions
 };
 
 /// G, H and the rule, left to right, with one legend of the dimensions.

@@ -11,10 +11,12 @@ namespace dartcheck::reports {
 
 /// What a rule picture shows of the checks (reports/rule_dot): the
 /// witnesses of the checks that fail (required or not), the rule's terms,
-/// and the embeddings of the failing checks ("pos" for "A(pos)").
+/// the embeddings of the failing checks ("pos" for "A(pos)"), and one
+/// caption line per failing check (rule_dot's `captions`).
 struct EmbeddingPicture {
   std::vector<RuleWitness> witnesses;
   TermLines terms;
+  std::vector<std::string> captions;
 };
 EmbeddingPicture embedding_picture(const Operation& entry, const std::vector<analysis::EmbeddingCheck>& checks);
 

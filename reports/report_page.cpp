@@ -42,6 +42,27 @@ namespace {
 
 const JerboaLabels* labels_of(const CatalogRule& e) { return e.jerboa ? &*e.jerboa : nullptr; }
 
+// "H breaks C(0,2) at darts 3, 7; I(1) at dart 5": each broken constraint
+// and its first darts, for the picture's caption.
+std::string broken_caption(const Counterexample& cx) {
+  std::vector<std::pair<std::string, std::vector<std::uint32_t>>> broken;
+  for (const auto& viol : cx.violations) {
+    const std::string name = constraint_name(viol);
+    auto it = std::find_if(broken.begin(), broken.end(), [&](const auto& b) { return b.first == name; });
+    if (it == broken.end()) it = broken.insert(broken.end(), {name, {}});
+    if (std::find(it->second.begin(), it->second.end(), viol.element) == it->second.end()) it->second.push_back(viol.element);
+  }
+  std::vector<std::string> parts;
+  for (const auto& [name, darts] : broken) {
+    constexpr std::size_t shown = 6;
+    const std::vector<std::uint32_t> first(darts.begin(), darts.begin() + static_cast<std::ptrdiff_t>(std::min(darts.size(), shown)));
+    parts.push_back(
+        fmt::format("{} at dart{} {}{}", name, darts.size() == 1 ? "" : "s", fmt::join(first, ", "), darts.size() > shown ? ", ..." : ""));
+  }
+  for (const auto& e : cx.broken_embeddings) parts.push_back(e);
+  return parts.empty() ? fmt::format("H breaks {}", fmt::join(cx.broken(), ", ")) : fmt::format("H breaks {}", fmt::join(parts, "; "));
+}
+
 // The three panels of a counterexample: the match (DPO: L's node names on
 // their darts; schemes: every dart of each hook's pattern P_v, named by its
 // hook's node), the darts H breaks, and the rule.
@@ -75,9 +96,13 @@ std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const
       if (!cx.orbit_values[d].empty()) p.broken[d] = true;
     p.result_tags = cx.orbit_values;
     p.broken_label = fmt::format("filled: breaks {}", fmt::join(cx.broken(), ", "));
+    p.captions.push_back(broken_caption(cx));
   } else {
     p.no_result = cx.unrepresentable;
   }
+  if (!cx.result) p.captions.push_back("H has no dense form");
+  const auto conditions = failure_captions(v);
+  p.captions.insert(p.captions.end(), conditions.begin(), conditions.end());
   return counterexample_dot(e.rule, e.words, failed_witnesses(v), p, labels_of(e));
 }
 
@@ -131,6 +156,25 @@ std::string fuzz_cells(const FuzzReport& f) {
   return cell;
 }
 
+// The embedding checks of a rule: "-" without any, "ok", or the failing
+// ones (a check not required is named but does not fail the cell), the
+// first linked to its entry under "Conditions that fail".
+std::string embedding_cell(const std::string& rule, const std::vector<EmbeddingCheck>& checks) {
+  if (checks.empty()) return "<td class=\"none\">-</td>";
+  std::vector<std::string> failing;
+  bool required = false;
+  std::string target;
+  for (const auto& c : checks) {
+    if (c.holds) continue;
+    failing.push_back(c.required ? c.name : c.name + " (not required)");
+    required = required || c.required;
+    if (target.empty()) target = html_id(rule + "." + c.name);
+  }
+  if (failing.empty()) return "<td class=\"ok\">ok</td>";
+  return fmt::format("<td class=\"{}\"><a href=\"#{}\">{}</a></td>", required ? "fails" : "skipped", target,
+                     html_text(fmt::format("{}", fmt::join(failing, ", "))));
+}
+
 std::string prove_cell(const proofs::RuleProof& p) {
   if (!p.out_of_scope.empty()) return "<td class=\"none\">out of scope</td>";
   using proofs::Agreement;
@@ -147,8 +191,12 @@ std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed,
                                                                     {RuleCondition::non_orientation, "O"},
                                                                     {RuleCondition::cycle, "C"},
                                                                     {RuleCondition::no_loop, "no-loop"}};
+  // Embedded rules get a column of their own, so that a rule failing
+  // only an embedding condition does not read "ok" in every cell.
+  const bool embedded = std::any_of(rows.begin(), rows.end(), [](const RuleResult& r) { return !r.embedding.empty(); });
   std::string out = "<table class=\"verdicts\">\n<tr><th>rule</th><th>model</th>";
   for (const auto& [kind, name] : kinds) out += fmt::format("<th>{}</th>", name);
+  if (embedded) out += "<th>embedding</th>";
   out += "<th>static verdict</th><th>recorded</th>";
   if (fuzzed) out += "<th>fuzz</th>";
   if (proved) out += "<th>prove</th>";
@@ -167,6 +215,7 @@ std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed,
       out += target.empty() ? fmt::format("<td class=\"{}\">{}</td>", cls, html_text(text))
                             : fmt::format("<td class=\"{}\"><a href=\"#{}\">{}</a></td>", cls, target, html_text(text));
     }
+    if (embedded) out += embedding_cell(e.rule.name(), r.embedding);
     out += fmt::format(
         "<td>{}</td><td class=\"{}\">{}</td>", html_text(r.verdict_text()), r.matches_record() ? "ok" : "fails",
         html_text(r.matches_record() ? std::string("matches") : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
@@ -221,7 +270,9 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
   auto embedded = embedding_picture(e, r.embedding);
   auto witnesses = failed_witnesses(r.verdict);
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
-  out += pictures.add(rule_dot(e.rule, e.words, witnesses, labels_of(e), embedded.terms), "rules/" + stem + ".svg");
+  auto captions = failure_captions(r.verdict);
+  captions.insert(captions.end(), embedded.captions.begin(), embedded.captions.end());
+  out += pictures.add(rule_dot(e.rule, e.words, witnesses, labels_of(e), embedded.terms, captions), "rules/" + stem + ".svg");
 
   // Every failing condition with its witnesses; skipped ones with the reason.
   std::string failing;

@@ -50,8 +50,12 @@ std::string node_label(const std::string& name, const std::string& type, const T
     html += fmt::format("<br/><font point-size=\"9\" color=\"{}\">{}{}: {}{}</font>", hot ? highlight_line : term_color, hot ? "<b>" : "",
                         html_text(t->embedding), html_text(t->term.str()), hot ? "</b>" : "");
   }
-  return fmt::format("label=<{}>, shape=box, style=\"rounded{}\"", html, lit ? ",filled" : "");
+  return fmt::format("label=<{}>, shape=box", html);
 }
+
+// What happens to an element, as its line style; the colour is left to
+// the dimension (arcs) so that one visual channel means one thing.
+std::string_view change_style(bool kept, bool left) { return kept ? "solid" : left ? "dashed" : "bold"; }
 
 std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
                          const JerboaLabels* labels, const TermLines& terms) {
@@ -84,15 +88,16 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     const bool kept = left ? rule.to_right(v) != no_node : rule.to_left(v) != no_node;
     const NodeId in_left = left ? v : rule.to_left(v);
     const bool hook = in_left != no_node && std::find(rule.hooks().begin(), rule.hooks().end(), in_left) != rule.hooks().end();
-    const auto color = kept ? preserved_color : left ? deleted_color : added_color;
     const bool lit = contains(lit_nodes, g.name(v));
     const auto* types = labels ? (left ? &labels->left : &labels->right) : nullptr;
     const std::string type = types && v < types->size() ? orbit_type_str((*types)[v]) : "";
     const std::string label = node_label(g.name(v), type, terms, left, lit);
-    const bool boxed = label.find("shape=box") != std::string::npos;  // the style is in the label's attributes
-    out += fmt::format("      {} [{}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), label, color, color,
-                       hook ? ", peripheries=2" : "",
-                       lit ? fmt::format("{}, fillcolor=\"{}\", penwidth=2, witness=\"true\"", boxed ? "" : ", style=filled", highlight_fill) : "");
+    const bool boxed = label.find("shape=box") != std::string::npos;
+    std::string style(change_style(kept, left));
+    if (boxed) style = "rounded," + style;
+    if (lit) style += ",filled";
+    out += fmt::format("      {} [{}, style=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), label, style, hook ? ", peripheries=2" : "",
+                       lit ? fmt::format(", fillcolor=\"{}\", witness=\"true\"", highlight_fill) : "");
   }
   std::vector<bool> drawn(g.arc_count(), false);
   for (ArcId e = 0; e < g.arc_count(); ++e) {
@@ -112,15 +117,15 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
           drawn[f] = pair = true, partner = f;
       }
     }
-    const auto color = kept ? preserved_color : left ? deleted_color : added_color;
+    const auto color = dimension_color(a.label);
     const bool lit = lit_arc(e) || lit_arc(partner);
     // A Jerboa node's orbit type already says what its implicit loops say.
     if (labels && a.source == a.target && !w.empty() && !lit) continue;
-    out += fmt::format("      {} -> {} [label={}, color=\"{}\", fontcolor=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(a.source)),
+    out += fmt::format("      {} -> {} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", quote(prefix + side + ":" + g.name(a.source)),
                        quote(prefix + side + ":" + g.name(a.target)),
                        quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
-                       lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, pair ? ", dir=none" : "",
-                       lit ? ", penwidth=2, witness=\"true\"" : "");
+                       lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, change_style(kept, left),
+                       pair ? ", dir=none" : "", lit ? ", witness=\"true\"" : "");
   }
   return out + "    }\n";
 }
@@ -135,8 +140,9 @@ std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v) {
 }
 
 std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
-                         const JerboaLabels* labels, const TermLines& terms) {
-  std::string out = fmt::format("  subgraph {} {{\n    label={}; color=\"white\";\n", quote("cluster_" + prefix + "rule"), quote(rule.name()));
+                         const JerboaLabels* labels, const TermLines& terms, bool titled) {
+  std::string out =
+      fmt::format("  subgraph {} {{\n    label={}; color=\"white\";\n", quote("cluster_" + prefix + "rule"), quote(titled ? rule.name() : ""));
   out += side_cluster(rule, words, true, witnesses, prefix, labels, terms);
   out += side_cluster(rule, words, false, witnesses, prefix, labels, terms);
   // R right of L: an invisible node ranked after every node of L and
@@ -156,19 +162,42 @@ std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vec
   return out + "  }\n";
 }
 
-std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,
-                     const TermLines& terms) {
-  std::string legend = fmt::format(
-      R"(<font color="{}">preserved</font>  <font color="{}">deleted</font>  <font color="{}">added</font>  )"
-      R"(double border: hook{}{})",
-      preserved_color, deleted_color, added_color, witnesses.empty() ? "" : "  filled: witness",
-      terms.terms ? fmt::format(R"(  embedding: term{})",
-                                terms.failing.empty() ? "" : fmt::format(R"(, <font color="{}"><b>bold</b></font>: failing)", highlight_line))
-                  : "");
+std::string failure_caption(const std::string& head, const std::vector<RuleWitness>& witnesses) {
+  if (witnesses.empty()) return head;
+  constexpr std::size_t width = 90;  // a caption line, not a paragraph
+  std::string text = witnesses.front().text;
+  if (text.size() > width) text = text.substr(0, width - 3) + "...";
+  return fmt::format("{}: {}{}", head, text, witnesses.size() > 1 ? fmt::format(" (and {} more)", witnesses.size() - 1) : "");
+}
+
+std::vector<std::string> failure_captions(const RuleVerdict& v) {
+  std::vector<std::string> out;
+  for (const auto& c : v.conditions)
+    if (!c.holds) out.push_back(failure_caption("fails " + c.name(), c.witnesses));
+  return out;
+}
+
+std::string rule_legend(const Model& model, bool witnesses, const TermLines& terms) {
   return fmt::format(
-      "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; label=<{}>; labelloc=b;\n"
+      R"(<table border="0" cellspacing="2"><tr><td>lines: solid preserved, dashed deleted, bold added; double border: hook{}{}</td></tr>)"
+      R"(<tr><td>{}</td></tr></table>)",
+      witnesses ? fmt::format(R"(; <font color="{}">filled</font>: witness)", highlight_line) : "",
+      terms.terms ? fmt::format(R"(; embedding: term{})",
+                                terms.failing.empty() ? "" : fmt::format(R"(, <font color="{}"><b>bold</b></font>: failing)", highlight_line))
+                  : "",
+      dimension_legend(model));
+}
+
+std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,
+                     const TermLines& terms, const std::vector<std::string>& captions) {
+  std::string caption = fmt::format("<tr><td><b>{}</b></td></tr>", html_text(rule.name()));
+  for (const auto& line : captions) caption += fmt::format(R"(<tr><td><font color="{}">{}</font></td></tr>)", deleted_color, html_text(line));
+  return fmt::format(
+      "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; labelloc=t;\n"
+      "  label=<<table border=\"0\" cellspacing=\"1\">{}<tr><td>{}</td></tr></table>>;\n"
       "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n{}}}\n",
-      quote(rule.name()), legend, rule_cluster(rule, words, witnesses, "", labels, terms));
+      quote(rule.name()), caption, rule_legend(rule.model(), !witnesses.empty(), terms),
+      rule_cluster(rule, words, witnesses, "", labels, terms, false));
 }
 
 }  // namespace dartcheck::reports

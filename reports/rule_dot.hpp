@@ -1,6 +1,10 @@
-// A rule or rule scheme as DOT: L and R side by side, preserved elements
-// black, deleted red, added green, hooks drawn with a double border; arc
-// labels are dimensions, or (word, dimension) pairs for schemes; a
+// A rule or rule scheme as DOT: L and R side by side. What happens to an
+// element is its line style (preserved solid, deleted dashed, added bold),
+// an arc's colour is its dimension (the papers' 0 black, 1 red, 2 blue,
+// 3 green), hooks have a double border, and a legend says all of it. The
+// caption names the rule and each failing condition with its first
+// witness ("fails I(1): ..."). Arc labels are dimensions, or (word,
+// dimension) pairs for schemes; a
 // non-oriented pair of arcs (reverse arcs with one label and conjugate
 // words) is one undirected edge. Each preserved node of R sits level with
 // its node in L. The witnesses of failed conditions are highlighted and
@@ -32,13 +36,26 @@ struct TermLines {
 /// The witnesses of every condition of `v` that fails.
 std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v);
 
-/// A cluster holding L and R (to embed in a larger picture); node ids are
-/// prefix + "L:" + name and prefix + "R:" + name.
-std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
-                         const JerboaLabels* labels = nullptr, const TermLines& terms = {});
+/// A caption line: `head` ("fails I(1)") and the first witness's sentence,
+/// shortened to a line, with how many witnesses follow.
+std::string failure_caption(const std::string& head, const std::vector<RuleWitness>& witnesses);
 
-/// A whole picture of the rule, titled with its name.
+/// One caption line per condition of `v` that fails, in the verdict's order.
+std::vector<std::string> failure_captions(const RuleVerdict& v);
+
+/// A cluster holding L and R (to embed in a larger picture), titled with
+/// the rule's name unless `titled` is false; node ids are prefix + "L:" +
+/// name and prefix + "R:" + name.
+std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
+                         const JerboaLabels* labels = nullptr, const TermLines& terms = {}, bool titled = true);
+
+/// A whole picture of the rule, titled with its name and `captions` (what
+/// fails: failure_captions, EmbeddingPicture::captions).
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {}, const JerboaLabels* labels = nullptr,
-                     const TermLines& terms = {});
+                     const TermLines& terms = {}, const std::vector<std::string>& captions = {});
+
+/// The legend of rule pictures: the line styles, the hooks, the witnesses
+/// and the model's dimension colours, as an HTML-like label cell.
+std::string rule_legend(const Model& model, bool witnesses, const TermLines& terms);
 
 }  // namespace dartcheck::reports

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <set>
 
+#include "checkers/rule_conditions.hpp"
 #include "cli/commands.hpp"
 #include "io/catalog.hpp"
 #include "core/input_error.hpp"
@@ -88,6 +89,31 @@ TEST(ReportHtml, EveryRuleHasASectionAPictureAndResolvedLinks) {
   }
   // Each rule's row links to its section; each failing cell to its condition.
   EXPECT_GE(links, catalog.rules.size() + 50);
+}
+
+// The screenshot's words, read from the DOM (issue 39): every rule's
+// figure names each condition the checker says fails ("fails I(1): ..."),
+// so a reader of the picture alone knows what is wrong.
+TEST(ReportHtml, EveryFailingRulesFigureNamesItsConditions) {
+  const fs::path index = fuzzed_report() / "index.html";
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file(index.c_str()));
+  std::size_t named = 0;
+  for (const auto& e : read_catalog(seed_catalog).rules) {
+    const auto h2 = doc.select_node(fmt::format("//h2[@id='{}']", reports::html_id(e.rule.name())).c_str());
+    ASSERT_TRUE(h2) << e.rule.name();
+    pugi::xml_node pic = h2.node().next_sibling();
+    while (pic && !has_class(pic, "picture")) pic = pic.next_sibling();
+    ASSERT_TRUE(pic) << e.rule.name();
+    std::string words;
+    for (const auto& t : pic.select_nodes(".//*[local-name()='text']")) words += std::string(t.node().child_value()) + "\n";
+    for (const auto& c : check_rule(e.rule, e.words).conditions)
+      if (!c.holds) {
+        EXPECT_NE(words.find("fails " + c.name()), std::string::npos) << e.rule.name() << "'s figure does not name " << c.name();
+        ++named;
+      }
+  }
+  EXPECT_GT(named, 40u);
 }
 
 // A rule the fuzzer confirms gets its counterexample drawn as three

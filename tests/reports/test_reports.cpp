@@ -99,6 +99,54 @@ TEST(RuleDot, BrokenVariantsHighlightTheirWitnesses) {
   EXPECT_GE(with_arcs, 20);
 }
 
+// One visual channel per meaning (issue 39): a node's or arc's line style
+// says what the rule does to it (deleted: in L only, dashed; added: in R
+// only, bold; preserved: solid), an arc's colour is its dimension, and the
+// caption names every failing condition. Read back from the DOT with
+// cgraph, against the rule's own node and arc sets.
+TEST(RuleDot, StyleSaysWhatHappensColourSaysTheDimensionCaptionSaysWhatFails) {
+  int edges = 0, captions = 0;
+  for (const auto& e : seed_catalog().rules) {
+    const RuleVerdict v = check_rule(e.rule, e.words);
+    const Graph g = parse(reports::rule_dot(e.rule, e.words, reports::failed_witnesses(v), nullptr, {}, reports::failure_captions(v)));
+    ASSERT_TRUE(g) << e.rule.name();
+    for (const bool left : {true, false}) {
+      const TopoGraph& side = left ? e.rule.left() : e.rule.right();
+      const std::string prefix = left ? "L:" : "R:";
+      for (NodeId n = 0; n < side.node_count(); ++n) {
+        Agnode_t* node = agnode(g.get(), const_cast<char*>((prefix + side.name(n)).c_str()), 0);
+        ASSERT_NE(node, nullptr) << e.rule.name() << " " << prefix << side.name(n);
+        const bool kept = left ? e.rule.to_right(n) != no_node : e.rule.to_left(n) != no_node;
+        const std::string style = agget(node, const_cast<char*>("style"));
+        EXPECT_EQ(style.find("dashed") != std::string::npos, left && !kept) << e.rule.name() << " " << prefix << side.name(n) << " " << style;
+        EXPECT_EQ(style.find("bold") != std::string::npos, !left && !kept) << e.rule.name() << " " << prefix << side.name(n) << " " << style;
+        for (Agedge_t* x = agfstout(g.get(), node); x; x = agnxtout(g.get(), x)) {
+          const std::string head = agnameof(aghead(x));
+          if (!head.starts_with(prefix) || head == "L|R") continue;  // the invisible L|R separator
+          const std::string color = agget(x, const_cast<char*>("color"));
+          bool dimension = false;
+          for (ArcId a = 0; a < side.arc_count(); ++a) {
+            const auto& arc = side.arc(a);
+            const bool ends = (side.name(arc.source) == side.name(n) && prefix + side.name(arc.target) == head) ||
+                              (side.name(arc.target) == side.name(n) && prefix + side.name(arc.source) == head);
+            dimension = dimension || (ends && color.starts_with(std::string(reports::dimension_color(arc.label))));
+          }
+          EXPECT_TRUE(dimension) << e.rule.name() << ": edge " << prefix << side.name(n) << " -> " << head << " coloured " << color;
+          ++edges;
+        }
+      }
+    }
+    const std::string label = agget(g.get(), const_cast<char*>("label"));
+    for (const auto& c : v.conditions)
+      if (!c.holds) {
+        EXPECT_NE(label.find("fails " + c.name()), std::string::npos) << e.rule.name() << ": caption does not name " << c.name();
+        ++captions;
+      }
+  }
+  EXPECT_GT(edges, 300);
+  EXPECT_GT(captions, 40);
+}
+
 // Embedded rules (issue 8): each node's label lists its terms, one line
 // "pi: term" per embedding; the witness nodes of a failing embedding
 // condition are highlighted and their lines of that embedding are bold.
