@@ -2,6 +2,9 @@
 
 #include "analysis/fuzz_targets.hpp"
 #include "analysis/interrupt.hpp"
+#include "analysis/stage_progress.hpp"
+
+#include <fmt/format.h>
 
 namespace dartcheck::analysis {
 
@@ -17,14 +20,16 @@ void fuzz_all(std::vector<RuleResult>& rows, const Catalog& catalog, const std::
 }
 
 void prove_all(std::vector<RuleResult>& rows, std::size_t max_darts, std::size_t scheme_darts, const std::string& out_dir,
-               const std::string& catalog_file) {
+               const std::string& catalog_file, bool terminal) {
   proofs::ProveOptions options;
   options.max_darts = max_darts;
   options.scheme_darts = scheme_darts;
   options.stop = [] { return interrupted(); };
-  for (auto& r : rows) {
-    if (interrupted()) break;
-    run_proof(r, options, out_dir, catalog_file, ".prove");
+  StageProgress progress(rows.size(), terminal);
+  for (std::size_t k = 0; k < rows.size() && !interrupted(); ++k) {
+    progress.start(k, fmt::format("{}: asking Z3 for a host", rows[k].name()));
+    run_proof(rows[k], options, out_dir, catalog_file, ".prove");
+    if (rows[k].proof) progress.finished(k, proof_line(*rows[k].proof));
   }
 }
 

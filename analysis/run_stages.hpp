@@ -22,8 +22,9 @@ void fuzz_all(std::vector<RuleResult>& rows, const Catalog& catalog, const std::
 /// Proves every rule of `rows` on hosts of up to `max_darts` darts
 /// (`scheme_darts` for schemes) until a signal, which also stops the
 /// running solver query, and writes the counterexamples under `out_dir`
-/// (rule plus ".prove").
+/// (rule plus ".prove"); progress on stderr (analysis/stage_progress.hpp),
+/// as a status line when `terminal`.
 void prove_all(std::vector<RuleResult>& rows, std::size_t max_darts, std::size_t scheme_darts, const std::string& out_dir,
-               const std::string& catalog_file);
+               const std::string& catalog_file, bool terminal);
 
 }  // namespace dartcheck::analysis

@@ -4,11 +4,15 @@
 // plus check_map), the third opinion, and written as the same files that
 // `dartcheck fuzz` writes.
 #include <chrono>
+#include <cstdio>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "analysis/interrupt.hpp"
+#include "analysis/stage_progress.hpp"
 #include "analysis/verdict_record.hpp"
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
@@ -44,10 +48,13 @@ int prove(const ProveCommand& c) {
   run.open_lines({{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}});
   std::vector<RuleResult> results;
   const auto rules = run.rules();
-  for (const CatalogRule* e : rules) {
-    if (interrupted()) break;  // a rule's queries finish; the next ones do not start
-    results.push_back(analyse_static(run.catalog(), *e, 0, {}, run.source()));
+  StageProgress progress(rules.size(), isatty(fileno(stderr)) != 0);
+  for (std::size_t k = 0; k < rules.size() && !interrupted(); ++k) {  // a rule's queries finish; the next ones do not start
+    progress.start(
+        k, fmt::format("{}: asking Z3 for a host up to {} darts", rules[k]->rule.name(), rules[k]->words.scheme ? o.scheme_darts : o.max_darts));
+    results.push_back(analyse_static(run.catalog(), *rules[k], 0, {}, run.source()));
     run_proof(results.back(), o, c.out, c.catalog);
+    if (results.back().proof) progress.finished(k, proof_line(*results.back().proof));
     run.finished(results.back());
   }
   if (!results.empty() && results.back().proof && results.back().proof->interrupted)

@@ -64,7 +64,7 @@ int report(const ReportOptions& o) {
   if (stages.prove_darts > 0) {
     fmt::print(stderr, "dartcheck report: proving {} up to {} darts (schemes {})\n", counted(rows.size(), "rule"), stages.prove_darts,
                stages.scheme_darts);
-    prove_all(rows, stages.prove_darts, stages.scheme_darts, cx_dir, o.catalog);
+    prove_all(rows, stages.prove_darts, stages.scheme_darts, cx_dir, o.catalog, isatty(fileno(stderr)) != 0);
   }
   // A shard's lines come after every stage (the fuzz budget is shared by the rules).
   run.open_lines({{"fuzz", o.fuzz},

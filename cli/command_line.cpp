@@ -53,12 +53,14 @@ void add_validate(CLI::App& app, Commands& commands) {
 
 void add_apply(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<ApplyOptions>();
-  auto* a = app.add_subcommand("apply", "Apply a DPO rule at hook darts, validate and write the result");
+  auto* a = app.add_subcommand("apply", "Apply a rule or rule scheme at hook darts, validate and write the result");
   a->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   a->add_option("--rule", o->rule, "rule name")->required();
   a->add_option("--map", o->map, "catalog map name, map file, mesh or shape")->required();
   a->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->transform(darts());
-  a->add_option("-o,--output", o->output, "write the result map (YAML) here");
+  a->add_option("-o,--output", o->output,
+                "write the result map here, in the format its extension names: .yaml, .jba (n-G-maps; embeddings carried from a .jba "
+                "input), .off or .obj (an embedded rule on a mesh with positions)");
   a->add_option(
       "--kappa-out", o->kappa_out,
       "write the dart correspondence G -> H of the preserved darts here (the κ file `infer --kappa` reads; ids move when darts are deleted)");
@@ -362,7 +364,9 @@ CommandTable command_table(const CLI::App& app) {
     long_names(app, names);
     long_names(*sub, names);
   }
-  table.help = [&app](std::string_view command) { return command.empty() ? app.help() : app.get_subcommand(std::string(command))->help(); };
+  table.help = [&app](std::string_view command) {
+    return command.empty() ? app.help() : app.get_subcommand(std::string(command))->help(app.get_name());
+  };
   return table;
 }
 
@@ -370,7 +374,7 @@ CommandTable command_table(const CLI::App& app) {
 
 int run_command_line(int argc, char** argv, const std::string& version) {
   campaign::set_command_line(argc, argv);  // --jobs runs it again as shards
-  CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps"};
+  CLI::App app{"dartcheck: verifies modeling operations on generalized and oriented maps", "dartcheck"};
   app.require_subcommand(1);
   app.set_version_flag("-V,--version", [&version] {
     std::string text = fmt::format("dartcheck {}\nbuilt with", version);

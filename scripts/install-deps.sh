@@ -15,6 +15,8 @@ packages=(
   # reads the screenshot.
   chromium libpng-dev
   libbenchmark-dev
+  # The man page that `cmake --install` installs, made from --help.
+  help2man
   # Exact rationals for the orientation predicate of the recombination
   # (querymodify/orientation.cpp), when its floating-point filter is unsure.
   libgmp-dev
