@@ -2,7 +2,9 @@
 // hex search written for this benchmark (the approach of HXT, Pellerin et
 // al. 2018, whose code is not in Debian: 8 nested loops over mesh vertices
 // joined by edges, then a look-up of the tetrahedra inside as a labeled
-// subdivision of the hexahedron).
+// subdivision of the hexahedron). dartcheck runs both of its searches: the
+// word search of 001 (every query word from every dart, the definition)
+// and its vertex search (hex_search.hpp, the default).
 //
 // Inputs: the paper's synthetic set-up (hexes cut into 5 tetrahedra, no new
 // points), a 31^3 grid of 148,955 tetrahedra, the size of 001's Armadillo
@@ -12,7 +14,8 @@
 // Every row is checked: each finds what an untimed reference finds, every
 // peer hex is a dartcheck match and every other dartcheck match is
 // explained (a further tetrahedron on its 8 vertices, or fewer than 8
-// vertices), the recombined map has 36 darts per hex and 12 per
+// vertices), the vertex search finds exactly the word matches on 8
+// distinct vertices, the recombined map has 36 darts per hex and 12 per
 // tetrahedron, and the grid's recombination gives back every hex and no
 // tetrahedron.
 //
@@ -28,6 +31,7 @@
 #include "io/tet_mesh_io.hpp"
 #include "peer_bench.hpp"
 #include "querymodify/hex_queries.hpp"
+#include "querymodify/hex_search.hpp"
 #include "querymodify/hex_subdivisions.hpp"
 #include "querymodify/overlap.hpp"
 #include "querymodify/recombination.hpp"
@@ -163,9 +167,32 @@ QueryTrie hex_trie() {
 }
 
 struct Check {
-  std::size_t ours = 0, peer = 0, extra_tet = 0, wrapped = 0, unexplained = 0;
-  bool peer_in_ours = false;
+  std::size_t ours = 0, peer = 0, extra_tet = 0, wrapped = 0, unexplained = 0, on_8 = 0, vertex_search = 0;
+  bool peer_in_ours = false, searches_agree = false;
 };
+
+// The word matches whose query corners are 8 distinct mesh vertices.
+HexSet on_8_vertices(const TetMap& t, const std::vector<QueryMatch>& matches) {
+  std::vector<std::vector<std::uint32_t>> corners;
+  for (const auto& q : hex_queries()) corners.push_back(query_corners(q));
+  std::vector<QueryMatch> kept;
+  for (const auto& m : matches) {
+    const auto& q = hex_queries()[static_cast<std::size_t>(m.query)];
+    const auto c = match_corners(q, corners[static_cast<std::size_t>(m.query)], m, t.vertex);
+    if (std::set<std::uint32_t>(c.begin(), c.end()).size() == 8) kept.push_back(m);
+  }
+  return as_tet_sets(kept);
+}
+
+HexSet vertex_search_sets(const TetMesh& mesh) {
+  const HexCandidates c = find_hex_candidates(mesh.tets, &mesh.points);
+  HexSet out;
+  for (const auto& h : c.list) {
+    const auto t = c.tets_of(h);
+    out.insert({t.begin(), t.end()});
+  }
+  return out;
+}
 
 void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid) {
   const std::size_t tets = mesh.tets.size();
@@ -188,24 +215,34 @@ void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid)
     const char* name;
     std::function<Result()> run;
   };
+  // The whole recombination: map, search, global selection, merge.
+  auto recombining = [&](Search search) {
+    bool ok = true;
+    Result r = measure(runs, [&](double& ms, std::size_t& out) {
+      const auto t0 = std::chrono::steady_clock::now();
+      TetMap t = build_tet_map(mesh.tets, &mesh.points);
+      const Recombination rec = recombine(t, hex_queries(), Strategy::global, &mesh.points, 0.0, search);
+      ms = since(t0);
+      out = rec.hexes;
+      ok = ok && t.map.size() == 36 * rec.hexes + 12 * rec.tets && (!is_grid || rec.tets == 0);
+      return true;
+    });
+    r.ok = ok;
+    return r;
+  };
   const std::vector<Row> rows{
-      {"dartcheck matching, 2 threads", [&] { return matching(2); }},
-      {"dartcheck matching, 1 thread", [&] { return matching(1); }},
-      {"dartcheck recombine (map, match, global, merge)",
+      {"dartcheck word matching, 1 thread", [&] { return matching(1); }},
+      {"dartcheck recombine, word search (map, match, global, merge)", [&] { return recombining(Search::words); }},
+      {"dartcheck vertex search alone, 1 thread",
        [&] {
-         bool ok = true;
-         Result r = measure(runs, [&](double& ms, std::size_t& out) {
+         return measure(runs, [&](double& ms, std::size_t& out) {
            const auto t0 = std::chrono::steady_clock::now();
-           TetMap t = build_tet_map(mesh.tets, &mesh.points);
-           const Recombination rec = recombine(t, hex_queries(), Strategy::global, &mesh.points);
+           out = find_hex_candidates(mesh.tets, &mesh.points).list.size();
            ms = since(t0);
-           out = rec.hexes;
-           ok = ok && t.map.size() == 36 * rec.hexes + 12 * rec.tets && (!is_grid || rec.tets == 0);
            return true;
          });
-         r.ok = ok;
-         return r;
        }},
+      {"dartcheck recombine, vertex search (map, search, global, merge), 1 thread", [&] { return recombining(Search::vertices); }},
       {"vertex-based peer (8 loops), 1 thread",
        [&] {
          std::size_t found = 0;
@@ -229,7 +266,12 @@ void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid)
     Check c;
     std::vector<std::uint32_t> counts;
     const ClassBound bound = vertex_bound(reference, counts);
-    const HexSet ours = as_tet_sets(all_matches(reference.map, trie, &bound).distinct);
+    const auto matches = all_matches(reference.map, trie, &bound).distinct;
+    const HexSet ours = as_tet_sets(matches);
+    const HexSet on_8 = on_8_vertices(reference, matches), searched = vertex_search_sets(mesh);
+    c.on_8 = on_8.size();
+    c.vertex_search = searched.size();
+    c.searches_agree = on_8 == searched;
     const HexSet peer = vertex_based_hexes(mesh);
     c.ours = ours.size();
     c.peer = peer.size();
@@ -261,15 +303,16 @@ void bench(const std::string& name, const TetMesh& mesh, int runs, bool is_grid)
     }
     return c;
   });
-  const bool agree = check.peer_in_ours && check.unexplained == 0;
+  const bool agree = check.peer_in_ours && check.unexplained == 0 && check.searches_agree;
   results[0].ok = results[0].ok && results[0].out_elements == check.ours;
-  results[1].ok = results[1].ok && results[1].out_elements == check.ours;
-  results[3].ok = results[3].ok && results[3].out_elements == check.peer;
+  results[2].ok = results[2].ok && results[2].out_elements == check.vertex_search;
+  results[4].ok = results[4].ok && results[4].out_elements == check.peer;
   std::printf(
       "\n%s: %zu tetrahedra, %zu points; candidate hexes: dartcheck %zu, peer %zu; every peer hex a dartcheck match: %s; "
-      "other dartcheck matches: %zu with a further tetrahedron on their 8 vertices, %zu on fewer than 8 vertices, %zu unexplained\n\n",
+      "other dartcheck matches: %zu with a further tetrahedron on their 8 vertices, %zu on fewer than 8 vertices, %zu unexplained; "
+      "word matches on 8 distinct vertices %zu, vertex-search candidates %zu, the same sets: %s\n\n",
       name.c_str(), tets, mesh.points.size(), check.ours, check.peer, check.peer_in_ours ? "yes" : "NO", check.extra_tet, check.wrapped,
-      check.unexplained);
+      check.unexplained, check.on_8, check.vertex_search, check.searches_agree ? "yes" : "NO");
   std::printf("| run | found | median ms | tets / s | peak MiB | ms / peer | checked |\n|---|---|---|---|---|---|---|\n");
   const Result& p = results.back();
   for (std::size_t k = 0; k < rows.size(); ++k) {

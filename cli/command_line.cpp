@@ -243,6 +243,10 @@ void add_recombine(CLI::App& app, Commands& commands) {
   auto* rc = app.add_subcommand("recombine", "Recombine a tetrahedral mesh into hexahedra by query-modify (001 Sec. 7.1) and check the result");
   rc->add_option("mesh", o->mesh, "tetrahedral mesh: TetGen .node/.ele or medit .mesh")->required();
   rc->add_option("--strategy", o->strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")->capture_default_str();
+  rc->add_option("--search", o->search,
+                 "vertices (hexes from mesh vertices and edges) or words (001's query words from every dart, the definition; slower); "
+                 "greedy always matches words")
+      ->capture_default_str();
   rc->add_option("--min-quality", o->min_quality, "smallest scaled Jacobian a hex must exceed (-1 keeps inverted ones)")
       ->capture_default_str()
       ->check(real_option(-1, 1));

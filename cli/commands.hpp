@@ -110,7 +110,7 @@ struct InferCommand {
 int infer(const InferCommand& o);
 
 struct RecombineOptions {
-  std::string mesh, strategy = "global", output, format = "text";
+  std::string mesh, strategy = "global", search = "vertices", output, format = "text";
   double min_quality = 0.0;  // hexes must have a scaled Jacobian above it
 };
 /// Tetrahedra -> hexahedra (001 Sec. 7.1); 3 if the result is not a valid

@@ -11,11 +11,19 @@
 #include <vector>
 
 #include "querymodify/annotation.hpp"
+#include "querymodify/hex_quality.hpp"
 #include "querymodify/hex_queries.hpp"
 
 namespace dartcheck::querymodify {
 
 enum class Strategy { greedy, global };
+
+/// How the global strategy finds its candidates: from mesh vertices
+/// (hex_search.hpp, the default) or by matching every query word from
+/// every dart (001 Sec. 5, the definition the vertex search is tested
+/// against). The greedy strategy is 001's dart-order walk of the word
+/// search: it always matches words.
+enum class Search { vertices, words };
 
 /// The cube corner (0..7, v = x + 2y + 4z) each dart of a query starts at.
 std::vector<std::uint32_t> query_corners(const HexQuery& q);
@@ -24,24 +32,21 @@ std::vector<std::uint32_t> query_corners(const HexQuery& q);
 std::array<std::uint32_t, 8> match_corners(const HexQuery& q, const std::vector<std::uint32_t>& corners, const QueryMatch& m,
                                            const std::vector<std::uint32_t>& vertex_of_dart);
 
-/// The scaled Jacobian of a hexahedron given by its 8 corner points
-/// (corner v = x + 2y + 4z): at each corner, the determinant of its three
-/// edge vectors (towards +x, +y, +z, reversed where the corner is on the
-/// high side) over the product of their lengths; the quality is the
-/// minimum over the corners, signed so that a hex of either handedness
-/// scores positive when every corner agrees (1 for a cube, <= 0 for an
-/// inverted or folded one). The value is floating point, its sign is
-/// exact: a quality computed positive is 0 when some corner's determinant
-/// is not of the hex's sign in exact arithmetic (orientation.hpp), so no
-/// hex accepted at a threshold >= 0 has a flat or inverted corner.
-double scaled_jacobian(const std::array<std::array<double, 3>, 8>& corner);
-
 struct Recombination {
-  std::size_t raw_matches = 0, distinct_matches = 0, hexes = 0, tets = 0;
-  /// Distinct matches that may be selected: 8 distinct corners, quality
-  /// above the threshold.
+  Search search = Search::vertices;  // the search that ran
+  /// The word search's matches (raw: from every start dart; distinct: by
+  /// query and darts), 0 when the vertex search ran.
+  std::size_t raw_matches = 0, distinct_matches = 0;
+  /// The vertex search's readings and candidates (hex_search.hpp), 0 when
+  /// the word search ran.
+  std::size_t readings = 0, candidates = 0;
+  std::size_t hexes = 0, tets = 0;
+  /// Candidates that may be selected: 8 distinct corners, quality above
+  /// the threshold (the same set from either search).
   std::size_t acceptable = 0;
-  std::vector<QueryMatch> selected;  // darts of the input map
+  /// The input tetrahedra (indices into mesh.tets, sorted) of each
+  /// selected hex.
+  std::vector<std::vector<std::uint32_t>> hex_tets;
   /// Per selected match: the mesh vertex at each cube corner (v = x + 2y +
   /// 4z) under its best reading, right-handed at corner 0 (mirrored in x
   /// if needed), and that reading's scaled Jacobian (NaN without points;
@@ -62,6 +67,6 @@ struct Recombination {
 /// (a pattern closed on itself: words see darts, not vertices) and, with
 /// points, one whose best scaled Jacobian is not above `min_quality`.
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
-                        const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0);
+                        const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0, Search search = Search::vertices);
 
 }  // namespace dartcheck::querymodify

@@ -38,6 +38,12 @@ Strategy parse_strategy(const std::string& s) {
   throw InputError("<command line>", 0, 0, fmt::format("--strategy: expected greedy or global, got '{}'", s));
 }
 
+Search parse_search(const std::string& s) {
+  if (s == "vertices") return Search::vertices;
+  if (s == "words") return Search::words;
+  throw InputError("<command line>", 0, 0, fmt::format("--search: expected vertices or words, got '{}'", s));
+}
+
 TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
   TetMesh out;
   out.points = input.points;
@@ -46,12 +52,14 @@ TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
   return out;
 }
 
-RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output) {
+RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
+                            const std::string& search) {
   RecombineRun run;
   run.mesh = mesh;
   run.strategy = strategy;
   run.min_quality = min_quality;
   const Strategy chosen = parse_strategy(strategy);
+  const Search searched = parse_search(search);
   const auto start = Clock::now();
   auto t = Clock::now();
   TetInput in = load_tet_input(mesh);
@@ -64,10 +72,13 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   run.input_check_seconds = since(t);
   if (!run.input_valid) return run;
   t = Clock::now();
-  const auto& queries = hex_queries();
+  // The queries only for the word search (greedy, or --search words).
+  static const std::vector<HexQuery> none;
+  const auto& queries = chosen == Strategy::greedy || searched == Search::words ? hex_queries() : none;
   run.queries = queries.size();
   run.query_seconds = since(t);
-  run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality);
+  run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality, searched);
+  run.search = run.result.search == Search::words ? "words" : "vertices";
   t = Clock::now();
   run.valid = check_3map(in.map.map).valid();
   run.output_check_seconds = since(t);

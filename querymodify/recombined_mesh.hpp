@@ -13,11 +13,13 @@ namespace dartcheck::querymodify {
 
 /// greedy or global (--strategy); InputError otherwise.
 Strategy parse_strategy(const std::string& text);
+/// vertices or words (--search); InputError otherwise.
+Search parse_search(const std::string& text);
 
 /// One recombination: its input, what the library returned, the checks
 /// and the times around it.
 struct RecombineRun {
-  std::string mesh, strategy, output;  // output: the written file, or empty
+  std::string mesh, strategy, search, output;  // output: the written file, or empty
   std::size_t points = 0, tets = 0, input_darts = 0, queries = 0;
   double min_quality = 0;
   bool input_valid = false;  // the input's map (build_tet_map makes valid maps of every mesh it accepts)
@@ -33,7 +35,8 @@ struct RecombineRun {
 /// Recombines the mesh in `mesh` (TetGen .node/.ele or medit .mesh) and
 /// writes the result to `output` unless it is empty. With an invalid input
 /// map (a defect of the reader) nothing is recombined.
-RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output);
+RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
+                            const std::string& search = "vertices");
 
 /// The hexes of `r` (medit's corner order) and the tetrahedra it left, on
 /// `input`'s points.

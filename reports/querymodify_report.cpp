@@ -33,9 +33,16 @@ std::string recombine_text(const RecombineRun& run) {
   std::string out;
   out += fmt::format("mesh        {}: {} points, {} tetrahedra ({:.3f} s)\n", run.mesh, run.points, run.tets, run.read_seconds);
   out += fmt::format("input map   {} darts (12 per tetrahedron), a valid open 3-O-map ({:.3f} s)\n", run.input_darts, run.input_check_seconds);
-  out += fmt::format("queries     {} hex patterns, both hands of the 174 classes ({:.3f} s)\n", run.queries, run.query_seconds);
-  out += fmt::format("matches     {} raw, {} distinct, {} with 8 distinct corners and scaled Jacobian above {} ({:.3f} s)\n", r.raw_matches,
-                     r.distinct_matches, r.acceptable, run.min_quality, r.match_seconds);
+  if (run.queries > 0)
+    out += fmt::format("queries     {} hex patterns, both hands of the 174 classes ({:.3f} s)\n", run.queries, run.query_seconds);
+  else
+    out += "queries     none built: the vertex search looks hexes up among the labeled subdivisions\n";
+  if (r.search == querymodify::Search::words)
+    out += fmt::format("matches     word search: {} raw, {} distinct, {} with 8 distinct corners and scaled Jacobian above {} ({:.3f} s)\n",
+                       r.raw_matches, r.distinct_matches, r.acceptable, run.min_quality, r.match_seconds);
+  else
+    out += fmt::format("candidates  vertex search: {} hexes on 8 distinct vertices ({} readings), {} with scaled Jacobian above {} ({:.3f} s)\n",
+                       r.candidates, r.readings, r.acceptable, run.min_quality, r.match_seconds);
   out += fmt::format("selection   {} hexes, {} ({:.3f} s)\n", r.hexes,
                      run.strategy == "greedy" ? "greedy: the first match from each dart in order" : "global: by scaled Jacobian, best first",
                      r.select_seconds);
@@ -59,8 +66,13 @@ Json recombine_document(const RecombineRun& run) {
   doc["input_darts"] = run.input_darts;
   doc["strategy"] = run.strategy;
   doc["queries"] = run.queries;
-  doc["raw_matches"] = r.raw_matches;
-  doc["distinct_matches"] = r.distinct_matches;
+  const bool words = r.search == querymodify::Search::words;
+  doc["search"] = words ? "words" : "vertices";
+  // Each search's own counts; null for the search that did not run.
+  doc["raw_matches"] = words ? Json(r.raw_matches) : Json(nullptr);
+  doc["distinct_matches"] = words ? Json(r.distinct_matches) : Json(nullptr);
+  doc["candidates"] = words ? Json(nullptr) : Json(r.candidates);
+  doc["readings"] = words ? Json(nullptr) : Json(r.readings);
   doc["acceptable_matches"] = r.acceptable;
   doc["min_quality"] = number_or_null(run.min_quality);
   doc["hexes"] = r.hexes;
