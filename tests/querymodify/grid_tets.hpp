@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -64,6 +65,49 @@ inline const std::map<int, std::vector<std::uint64_t>>& subdivisions_by_diagonal
     return out;
   }();
   return by;
+}
+
+// An n^3 grid of random labeled subdivisions fitting their faces'
+// diagonals (redrawn when two would put one triangle in more than two
+// tetrahedra); hex (0, 0, 0) is `member` if given, its faces' diagonals
+// fixed by it.
+inline HexGrid random_hexes(std::uint32_t n, std::mt19937& rng, std::optional<std::uint64_t> member = std::nullopt) {
+  const int d = member ? subdivision_diagonals(*member) : 0;
+  // hex_grid's faces of hex (0, 0, 0), in hex_faces() order.
+  const std::map<std::array<std::uint32_t, 4>, int> own{{{0, 0, 0, 0}, 0}, {{1, 0, 0, 0}, 1}, {{0, 0, 0, 1}, 2},
+                                                        {{0, 1, 0, 1}, 3}, {{0, 0, 0, 2}, 4}, {{0, 0, 1, 2}, 5}};
+  std::map<std::array<std::uint32_t, 4>, bool> diag;
+  std::map<std::array<std::uint32_t, 3>, int> uses;
+  return hex_grid(
+      n,
+      [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, int diagonals) {
+        const auto& options = subdivisions_by_diagonals().at(diagonals);
+        const bool fixed = member && i + j + k == 0;
+        for (int attempt = 0;; ++attempt) {
+          const std::uint64_t s = fixed ? *member : options[std::uniform_int_distribution<std::size_t>(0, options.size() - 1)(rng)];
+          std::map<std::array<std::uint32_t, 3>, int> adds;
+          for (const auto& t : subdivision_tets(s))
+            for (int skip = 0; skip < 4; ++skip) {
+              std::array<std::uint32_t, 3> tri{};
+              for (int a = 0, b = 0; a < 4; ++a)
+                if (a != skip) tri[static_cast<std::size_t>(b++)] = lattice(n, i, j, k, static_cast<int>(t[static_cast<std::size_t>(a)]));
+              std::sort(tri.begin(), tri.end());
+              ++adds[tri];
+            }
+          bool fits = true;
+          for (const auto& [tri, c] : adds) fits = fits && uses[tri] + c <= 2;
+          if (!fits && attempt < 200 && !fixed) continue;
+          for (const auto& [tri, c] : adds) uses[tri] += c;
+          return s;
+        }
+      },
+      [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, int axis) {
+        const std::array<std::uint32_t, 4> key{i, j, k, static_cast<std::uint32_t>(axis)};
+        if (const auto it = own.find(key); member && it != own.end()) return ((d >> it->second) & 1) != 0;
+        auto [it, fresh] = diag.emplace(key, false);
+        if (fresh) it->second = rng() & 1;
+        return it->second;
+      });
 }
 
 }  // namespace dartcheck::querymodify::test

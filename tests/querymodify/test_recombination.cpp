@@ -60,41 +60,11 @@ HexGrid kuhn_grid(std::uint32_t n) {
 }
 
 // A grid where every face gets a random diagonal and every hex a random
-// labeled subdivision with those diagonals, so that all classes appear.
-// A subdivision may use a face's other diagonal inside the hex; two
-// neighbours doing so on their shared face would put its triangles in four
-// tetrahedra, so such a choice is redrawn.
+// labeled subdivision with those diagonals, so that all classes appear
+// (grid_tets.hpp).
 HexGrid random_grid(std::uint32_t n, std::uint32_t seed) {
   std::mt19937 rng(seed);
-  std::map<std::array<std::uint32_t, 4>, bool> diag;
-  std::map<std::array<std::uint32_t, 3>, int> triangle_uses;
-  return hex_grid(
-      n,
-      [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, int diagonals) {
-        const auto& options = subdivisions_by_diagonals().at(diagonals);
-        for (int attempt = 0;; ++attempt) {
-          const std::uint64_t s = options[std::uniform_int_distribution<std::size_t>(0, options.size() - 1)(rng)];
-          std::map<std::array<std::uint32_t, 3>, int> adds;
-          for (const auto& t : subdivision_tets(s))
-            for (int skip = 0; skip < 4; ++skip) {
-              std::array<std::uint32_t, 3> tri{};
-              for (int a = 0, b = 0; a < 4; ++a)
-                if (a != skip) tri[static_cast<std::size_t>(b++)] = lattice(n, i, j, k, static_cast<int>(t[static_cast<std::size_t>(a)]));
-              std::sort(tri.begin(), tri.end());
-              ++adds[tri];
-            }
-          bool fits = true;
-          for (const auto& [tri, c] : adds) fits = fits && triangle_uses[tri] + c <= 2;
-          if (!fits && attempt < 200) continue;
-          for (const auto& [tri, c] : adds) triangle_uses[tri] += c;
-          return s;
-        }
-      },
-      [&](std::uint32_t i, std::uint32_t j, std::uint32_t k, int axis) {
-        auto [it, fresh] = diag.emplace(std::array<std::uint32_t, 4>{i, j, k, static_cast<std::uint32_t>(axis)}, false);
-        if (fresh) it->second = rng() & 1;
-        return it->second;
-      });
+  return random_hexes(n, rng);
 }
 
 TEST(TetMap, GridOfKuhnHexes) {
@@ -305,9 +275,12 @@ void every_hex_found(const HexGrid& g, const std::vector<HexQuery>& queries) {
     std::sort(darts.begin(), darts.end());
     EXPECT_TRUE(found.count(darts)) << "a hex of " << tets.size() << " tetrahedra was not found";
   }
-  for (Strategy s : {Strategy::greedy, Strategy::global}) {
+  // Greedy (the word search), global by the vertex search and by words.
+  for (const auto& [s, search] :
+       {std::pair{Strategy::greedy, Search::words}, std::pair{Strategy::global, Search::vertices}, std::pair{Strategy::global, Search::words}}) {
     TetMap copy = build_tet_map(g.tets);
-    const auto r = recombine(copy, queries, s, &g.points);
+    const auto r = recombine(copy, queries, s, &g.points, 0.0, search);
+    EXPECT_EQ(r.search, search);
     EXPECT_TRUE(check_3map(copy.map).valid());
     EXPECT_EQ(copy.map.size(), 36 * r.hexes + 12 * r.tets);
     EXPECT_EQ(volumes(copy.map), r.hexes + r.tets);
