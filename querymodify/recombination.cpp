@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <set>
+#include <tuple>
 
 #include "querymodify/hex_search.hpp"
 #include "querymodify/modify.hpp"
@@ -153,22 +153,18 @@ std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array
   r.candidates = found.found;
   r.match_seconds = since(t);
   t = Clock::now();
-  std::vector<std::uint32_t> order;
+  // The search keeps only acceptable candidates: 8 distinct corners by
+  // construction, and (with points) a quality above the threshold.
+  r.acceptable = found.list.size();
   std::vector<double> score;
-  for (std::uint32_t k = 0; k < found.list.size(); ++k) {
-    const HexCandidate& c = found.list[k];
-    if (!acceptable(c.corners, c.quality, points != nullptr, min_quality)) continue;
-    order.push_back(k);
-    score.push_back(points ? c.quality : -static_cast<double>(c.count));
-  }
-  r.acceptable = order.size();
-  std::vector<std::uint32_t> rank(order.size());
+  for (const HexCandidate& c : found.list) score.push_back(points ? c.quality : -static_cast<double>(c.count));
+  std::vector<std::uint32_t> rank(found.list.size());
   for (std::uint32_t k = 0; k < rank.size(); ++k) rank[k] = k;
   std::stable_sort(rank.begin(), rank.end(), [&](std::uint32_t a, std::uint32_t b) { return score[a] > score[b]; });
   std::vector<bool> used(mesh.tets.size(), false);
   std::vector<Chosen> out;
   for (std::uint32_t k : rank) {
-    const HexCandidate& c = found.list[order[k]];
+    const HexCandidate& c = found.list[k];
     const auto tets = found.tets_of(c);
     if (std::any_of(tets.begin(), tets.end(), [&](std::uint32_t x) { return used[x]; })) continue;
     for (auto x : tets) used[x] = true;
