@@ -1,0 +1,388 @@
+// Tet -> hex recombination, dartcheck against gmsh's recombinator side by
+// side on the same tetrahedral meshes at the same quality thresholds.
+//
+// The peer: gmsh's `Recombinator` (contrib/domhex/yamakawa.h, the patterns
+// of Yamakawa and Shimada 2003 that 001 compares with), from Debian's
+// libgmsh 4.8.4; its header is not packaged, scripts/install-gmsh-peer.sh
+// fetches it from the gmsh source package. It keeps the potential hexes
+// whose quality (the minimum over the 8 corners of the scaled Jacobian) is
+// at least its threshold and adds them greedily, best first, when their
+// tetrahedra are free and they conform to the hexes already chosen.
+// dartcheck runs its default (`dartcheck recombine`: the vertex search and
+// the global strategy) with the same threshold as `--min-quality` (which
+// keeps hexes strictly above it).
+//
+// Both outputs are measured by the same code here, not by either tool's
+// own report: hexes; tetrahedra and volume consumed (from the input
+// tetrahedra left over, as fractions of the input); min and mean scaled
+// Jacobian of the hexes (hex_quality.hpp's floating-point estimate over
+// the corners as each tool orders them); hexes with a corner whose exact
+// orientation (orientation.hpp) is flat or against the others; pairs of
+// hexes that meet in 3 vertices or in 4 that are not a face of both (a
+// non-conforming contact); and wall-clock seconds of the recombination
+// alone (gmsh from its region of tetrahedra, dartcheck from the mesh's
+// tetrahedra: the tet map, the search, the selection, the merges). Each
+// run is a child process: Debian builds gmsh with assertions, which abort
+// on some inputs (grids of 5-tet cubes); such a run is reported, not
+// hidden.
+//
+//   build/bench/bench_gmsh_recombination [--thresholds 0,0.3,0.6] MESH.ele|MESH.mesh...
+#include <GModel.h>
+#include <GRegion.h>
+#include <MHexahedron.h>
+#include <MTetrahedron.h>
+#include <fmt/format.h>
+#include <gmsh.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yamakawa.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "io/tet_mesh_io.hpp"
+#include "querymodify/hex_quality.hpp"
+#include "querymodify/orientation.hpp"
+#include "querymodify/recombination.hpp"
+#include "querymodify/tet_map.hpp"
+
+using namespace dartcheck;
+using namespace dartcheck::querymodify;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Corners = std::array<std::uint32_t, 8>;  // mesh vertex at cube corner x + 2y + 4z
+
+// What one tool produced: its hexes and the input tetrahedra it left.
+struct Output {
+  std::vector<Corners> hexes;
+  std::vector<std::uint32_t> remaining_tets;
+  double seconds = 0;
+  std::size_t skipped = 0;  // gmsh: hexes its assertion would abort on
+};
+
+// gmsh's recombinator with its threshold set (a protected member) and its
+// final step, Recombinator::merge, restated with one change. merge sorts
+// the potential hexes by quality, best first, and until the threshold
+// adds each whose tetrahedra (those on its 8 vertices, one set apart if
+// its 4 vertices are a hex face: a "sliver") are free, whose 6 faces are
+// each two triangles of them, and that conforms to the hexes added
+// (conformityA/B/C); it then asserts that 5 or 6 tetrahedra are left,
+// which Debian's build (assertions on) turns into an abort on hexes of
+// other counts, tetgen's meshes included. Here such a hex is skipped and
+// counted. Everything else (the patterns, the quality, the conformity
+// checks, the bookkeeping) is gmsh's own code.
+class BenchRecombinator : public Recombinator {
+ public:
+  explicit BenchRecombinator(double threshold) { hex_threshold_quality = threshold; }
+  std::size_t skipped = 0;  // hexes gmsh's assertion would abort on
+
+ protected:
+  void merge() override {
+    clear_hash_tables();
+    std::sort(potential.begin(), potential.end(), [](const Hex* a, const Hex* b) { return a->get_quality() > b->get_quality(); });
+    bool any = false;
+    for (const Hex* hex : potential) {
+      if (hex->get_quality() < hex_threshold_quality) break;
+      std::set<MElement*> tets, slivers;
+      for (MVertex* v : hex->vertices())
+        for (MElement* t : tet_mesh.tets_around_vertex(v))
+          if (hex->contains(t->getVertex(0)) && hex->contains(t->getVertex(1)) && hex->contains(t->getVertex(2)) && hex->contains(t->getVertex(3)))
+            tets.insert(t);
+      for (MElement* t : tets)
+        if (on_one_face(*hex, t)) {
+          slivers.insert(t);
+          tets.erase(t);
+          break;
+        }
+      if (tets.size() < 5 || tets.size() > 6) {
+        ++skipped;
+        continue;
+      }
+      if (are_all_tets_free(tets) && faces_of(*hex, tets) && is_potential_hex_conform(*hex)) {
+        current_region->addHexahedron(new MHexahedron(hex->vertices()));
+        mark_tets(tets);
+        mark_tets(slivers);
+        build_hash_tableA(*hex);
+        build_hash_tableB(*hex);
+        build_hash_tableC(*hex);
+        any = true;
+      }
+    }
+    if (any) delete_marked_tets_in_region();
+  }
+
+ private:
+  static bool on_one_face(const Hex& hex, const MElement* t) {
+    for (unsigned f = 0; f < 6; ++f) {
+      int in = 0;
+      for (int k = 0; k < 4; ++k)
+        for (unsigned c = 0; c < 4; ++c) in += t->getVertex(k) == hex.vertex_in_facet(f, c);
+      if (in == 4) return true;
+    }
+    return false;
+  }
+  // Some tetrahedron of `tets` has the 3 vertices.
+  static bool has_triangle(const std::set<MElement*>& tets, MVertex* a, MVertex* b, MVertex* c) {
+    for (const MElement* t : tets) {
+      int in = 0;
+      for (int k = 0; k < 4; ++k) in += t->getVertex(k) == a || t->getVertex(k) == b || t->getVertex(k) == c;
+      if (in == 3) return true;
+    }
+    return false;
+  }
+  // Each face is two triangles of `tets` along one of its diagonals.
+  static bool faces_of(const Hex& hex, const std::set<MElement*>& tets) {
+    for (unsigned f = 0; f < 6; ++f) {
+      MVertex* q[4];
+      for (unsigned c = 0; c < 4; ++c) q[c] = hex.vertex_in_facet(f, c);
+      const bool ok = (has_triangle(tets, q[0], q[1], q[2]) && has_triangle(tets, q[0], q[2], q[3])) ||
+                      (has_triangle(tets, q[0], q[1], q[3]) && has_triangle(tets, q[1], q[2], q[3]));
+      if (!ok) return false;
+    }
+    return true;
+  }
+};
+
+Output run_gmsh(const TetMesh& mesh, double threshold) {
+  gmsh::option::setNumber("General.Verbosity", 1);
+  gmsh::model::add("input");
+  const int region_tag = gmsh::model::addDiscreteEntity(3);
+  std::vector<std::size_t> node_tags(mesh.points.size());
+  std::vector<double> coords;
+  coords.reserve(3 * mesh.points.size());
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+    node_tags[v] = v + 1;
+    coords.insert(coords.end(), mesh.points[v].begin(), mesh.points[v].end());
+  }
+  gmsh::model::mesh::addNodes(3, region_tag, node_tags, coords);
+  std::vector<std::size_t> tet_tags(mesh.tets.size()), tet_nodes;
+  tet_nodes.reserve(4 * mesh.tets.size());
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    tet_tags[t] = t + 1;
+    for (std::uint32_t v : mesh.tets[t]) tet_nodes.push_back(v + 1);
+  }
+  gmsh::model::mesh::addElementsByType(region_tag, 4, tet_tags, tet_nodes);
+  GRegion* region = GModel::current()->getRegionByTag(region_tag);
+
+  Output out;
+  BenchRecombinator recombinator(threshold);
+  const auto start = Clock::now();
+  recombinator.execute(region);
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  // gmsh's order: the bottom quad, then the top quad vertex above vertex.
+  for (const MHexahedron* h : region->hexahedra) {
+    std::array<std::uint32_t, 8> ring{};
+    for (int k = 0; k < 8; ++k) ring[static_cast<std::size_t>(k)] = static_cast<std::uint32_t>(h->getVertex(k)->getNum() - 1);
+    out.hexes.push_back({ring[0], ring[1], ring[3], ring[2], ring[4], ring[5], ring[7], ring[6]});
+  }
+  for (const MTetrahedron* t : region->tetrahedra) out.remaining_tets.push_back(static_cast<std::uint32_t>(t->getNum() - 1));
+  out.skipped = recombinator.skipped;
+  return out;
+}
+
+Output run_dartcheck(const TetMesh& mesh, double threshold) {
+  Output out;
+  const auto start = Clock::now();
+  TetMap map = build_tet_map(mesh.tets, &mesh.points);
+  const Recombination r = recombine(map, {}, Strategy::global, &mesh.points, threshold, Search::vertices);
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  out.hexes = r.hex_corners;
+  for (std::size_t t : r.remaining_tets) out.remaining_tets.push_back(static_cast<std::uint32_t>(t));
+  return out;
+}
+
+double tet_volume(const TetMesh& m, const std::array<std::uint32_t, 4>& t) {
+  const auto& a = m.points[t[0]];
+  double e[3][3];
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c) e[k][c] = m.points[t[static_cast<std::size_t>(k + 1)]][static_cast<std::size_t>(c)] - a[static_cast<std::size_t>(c)];
+  return std::abs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                  e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+         6;
+}
+
+// The figures of one output, computed alike for both tools.
+struct Figures {
+  std::size_t hexes = 0;
+  double tet_share = 0, volume_share = 0;
+  double min_quality = 0, mean_quality = 0;  // scaled Jacobian (dartcheck's threshold)
+  double min_ige = 0, mean_ige = 0;          // gmsh's IGE measure (gmsh's threshold)
+  std::size_t skipped = 0;
+  std::size_t bad_corner_hexes = 0;  // a corner exactly flat or against the others
+  std::size_t nonconforming_pairs = 0;
+  double seconds = 0;
+};
+
+// The 6 faces of the cube, as corner sets.
+constexpr int kFaces[6][4] = {{0, 2, 4, 6}, {1, 3, 5, 7}, {0, 1, 4, 5}, {2, 3, 6, 7}, {0, 1, 2, 3}, {4, 5, 6, 7}};
+
+std::set<std::uint32_t> face_set(const Corners& h, int f) {
+  std::set<std::uint32_t> s;
+  for (int c : kFaces[f]) s.insert(h[static_cast<std::size_t>(c)]);
+  return s;
+}
+
+bool is_face(const Corners& h, const std::set<std::uint32_t>& shared) {
+  for (int f = 0; f < 6; ++f)
+    if (face_set(h, f) == shared) return true;
+  return false;
+}
+
+Figures measure(const TetMesh& mesh, const Output& out) {
+  Figures f;
+  f.hexes = out.hexes.size();
+  f.seconds = out.seconds;
+  f.skipped = out.skipped;
+  double total = 0, left = 0;
+  for (const auto& t : mesh.tets) total += tet_volume(mesh, t);
+  for (std::uint32_t t : out.remaining_tets) left += tet_volume(mesh, mesh.tets[t]);
+  f.tet_share = 1.0 - double(out.remaining_tets.size()) / double(mesh.tets.size());
+  f.volume_share = 1.0 - left / total;
+  f.min_quality = f.min_ige = out.hexes.empty() ? 0 : 1;
+  for (const Corners& h : out.hexes) {
+    const auto p = corner_points(h, mesh.points);
+    const double q = scaled_jacobian_estimate(p);
+    f.min_quality = std::min(f.min_quality, q);
+    f.mean_quality += q / double(out.hexes.size());
+    // gmsh's quality of a hex (yamakawa.h's Hex::compute_quality), on
+    // vertices of their own.
+    std::vector<MVertex> own;
+    own.reserve(8);
+    for (int c : {0, 1, 3, 2, 4, 5, 7, 6})
+      own.emplace_back(p[static_cast<std::size_t>(c)][0], p[static_cast<std::size_t>(c)][1], p[static_cast<std::size_t>(c)][2]);
+    std::vector<MVertex*> ring;
+    for (MVertex& v : own) ring.push_back(&v);
+    MHexahedron element(ring);
+    const double ige = jacobianBasedQuality::minIGEMeasure(&element, false, true);
+    f.min_ige = std::min(f.min_ige, ige);
+    f.mean_ige += ige / double(out.hexes.size());
+    // Corner v's edges towards +x, +y, +z, reversed on the high side: all 8
+    // signs equal in a valid hex of either handedness.
+    int first = 0;
+    bool bad = false;
+    for (int v = 0; v < 8 && !bad; ++v) {
+      int flip = 1;
+      for (int axis = 0; axis < 3; ++axis) flip *= (v >> axis) & 1 ? -1 : 1;
+      auto at = [&](int c) { return p[static_cast<std::size_t>(c)]; };
+      const int s = orientation_sign(at(v), at(v ^ 1), at(v ^ 2), at(v ^ 4)) * flip;
+      if (s == 0 || (first != 0 && s != first)) bad = true;
+      first = s;
+    }
+    f.bad_corner_hexes += bad;
+  }
+  // Contacts between hexes: through the hexes at each vertex.
+  std::vector<std::vector<std::uint32_t>> at(mesh.points.size());
+  for (std::uint32_t i = 0; i < out.hexes.size(); ++i)
+    for (std::uint32_t v : out.hexes[i]) at[v].push_back(i);
+  for (std::uint32_t i = 0; i < out.hexes.size(); ++i) {
+    std::map<std::uint32_t, std::set<std::uint32_t>> shared;  // other hex -> shared vertices
+    for (std::uint32_t v : out.hexes[i])
+      for (std::uint32_t j : at[v])
+        if (j > i) shared[j].insert(v);
+    for (const auto& [j, s] : shared)
+      if (s.size() == 3 || s.size() > 4 || (s.size() == 4 && !(is_face(out.hexes[i], s) && is_face(out.hexes[j], s)))) ++f.nonconforming_pairs;
+  }
+  return f;
+}
+
+// Runs `tool` in a child process; false with the reason if it did not
+// finish.
+bool in_child(const TetMesh& mesh, double threshold, Output (*tool)(const TetMesh&, double), Figures& figures, std::string& why) {
+  int fd[2];
+  if (pipe(fd) != 0) {
+    why = "no pipe";
+    return false;
+  }
+  const pid_t pid = fork();
+  if (pid == 0) {
+    close(fd[0]);
+    gmsh::initialize();
+    const Figures f = measure(mesh, tool(mesh, threshold));
+    const ssize_t n = write(fd[1], &f, sizeof f);
+    _exit(n == static_cast<ssize_t>(sizeof f) ? 0 : 3);
+  }
+  close(fd[1]);
+  Figures f;
+  const ssize_t n = read(fd[0], &f, sizeof f);
+  close(fd[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (WIFSIGNALED(status)) {
+    why = fmt::format("killed by signal {} ({})", WTERMSIG(status), strsignal(WTERMSIG(status)));
+    return false;
+  }
+  if (n != static_cast<ssize_t>(sizeof f) || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    why = "exited without a result";
+    return false;
+  }
+  figures = f;
+  return true;
+}
+
+const char* const kHeader = "  {:<10} {:>6} {:>7} {:>7} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>7} {:>8}\n";
+
+std::string row(const char* tool, const Figures& f) {
+  return fmt::format("  {:<10} {:>6} {:>6.1f}% {:>6.1f}% {:>6.3f} {:>6.3f} {:>6.3f} {:>6.3f} {:>6} {:>6} {:>7} {:>8.2f}", tool, f.hexes,
+                     100 * f.tet_share, 100 * f.volume_share, f.min_quality, f.mean_quality, f.min_ige, f.mean_ige, f.bad_corner_hexes,
+                     f.nonconforming_pairs, f.skipped, f.seconds);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<double> thresholds{0.0, 0.3, 0.6};
+  std::vector<std::string> meshes;
+  for (int k = 1; k < argc; ++k) {
+    if (!std::strcmp(argv[k], "--thresholds") && k + 1 < argc) {
+      thresholds.clear();
+      std::string list = argv[++k];
+      for (std::size_t at = 0; at <= list.size();) {
+        const std::size_t comma = std::min(list.find(',', at), list.size());
+        thresholds.push_back(std::stod(list.substr(at, comma - at)));
+        at = comma + 1;
+      }
+    } else
+      meshes.emplace_back(argv[k]);
+  }
+  if (meshes.empty()) {
+    fmt::print(stderr, "usage: {} [--thresholds 0,0.3,0.6] MESH.ele|MESH.mesh...\n", argv[0]);
+    return 2;
+  }
+  int status = 0;
+  for (const auto& file : meshes) {
+    TetMesh mesh;
+    try {
+      mesh = read_tet_mesh(file);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "{}\n", e.what());
+      return 1;
+    }
+    fmt::print("{}: {} points, {} tetrahedra\n", file, mesh.points.size(), mesh.tets.size());
+    for (double threshold : thresholds) {
+      fmt::print(" threshold {}\n", threshold);
+      fmt::print(fmt::runtime(kHeader), "tool", "hexes", "tets", "volume", "minSJ", "meanSJ", "minIGE", "mnIGE", "badcrn", "noncnf", "skipped",
+                 "seconds");
+      Figures ours, theirs;
+      std::string why;
+      const bool ok = in_child(mesh, threshold, run_dartcheck, ours, why);
+      fmt::print("{}\n", ok ? row("dartcheck", ours) : "  dartcheck  " + why);
+      if (!ok) status = 1;
+      const bool peer = in_child(mesh, threshold, run_gmsh, theirs, why);
+      fmt::print("{}\n", peer ? row("gmsh", theirs) : "  gmsh       " + why);
+      if (ok && peer)
+        fmt::print("  hexes dartcheck/gmsh {:.2f}, time gmsh/dartcheck {:.2f}\n", double(ours.hexes) / double(std::max<std::size_t>(theirs.hexes, 1)),
+                   theirs.seconds / ours.seconds);
+      std::fflush(stdout);
+    }
+  }
+  return status;
+}
