@@ -250,6 +250,9 @@ void add_recombine(CLI::App& app, Commands& commands) {
   rc->add_option("--min-quality", o->min_quality, "smallest scaled Jacobian a hex must exceed (-1 keeps inverted ones)")
       ->capture_default_str()
       ->check(real_option(-1, 1));
+  rc->add_flag("--conforming", o->conforming,
+               "select only hexes that meet the others in nothing, a vertex, an edge or a face of both (a conforming hex mesh; "
+               "the global strategy's vertex search)");
   rc->add_option("-o,--output", o->output, "write the hexes and the remaining tetrahedra as a medit .mesh");
   add_format(rc, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (one run of a campaign over many meshes, for merge)");
   commands.push_back({rc, [o] { return recombine(*o); }});

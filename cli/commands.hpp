@@ -112,6 +112,7 @@ int infer(const InferCommand& o);
 struct RecombineOptions {
   std::string mesh, strategy = "global", search = "vertices", output, format = "text";
   double min_quality = 0.0;  // hexes must have a scaled Jacobian above it
+  bool conforming = false;   // hexes meet only in a vertex, an edge or a face of both
 };
 /// Tetrahedra -> hexahedra (001 Sec. 7.1); 3 if the result is not a valid
 /// map of 36 darts per hex and 12 per tetrahedron.

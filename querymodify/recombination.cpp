@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <tuple>
 
+#include "querymodify/hex_contacts.hpp"
 #include "querymodify/hex_search.hpp"
 #include "querymodify/modify.hpp"
 #include "querymodify/overlap.hpp"
@@ -145,8 +147,11 @@ std::vector<Chosen> by_words(const TetMap& mesh, const std::vector<HexQuery>& qu
 
 // The vertex search (hex_search.hpp) and the global order: best quality
 // first (without points, fewer tetrahedra first), ties in the order found,
-// each taken unless it shares a tetrahedron with one taken before.
-std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array<double, 3>>* points, double min_quality, Recombination& r) {
+// each taken unless it shares a tetrahedron with one taken before (or,
+// with Contacts::conforming, meets one in more than a vertex, an edge or a
+// face of both).
+std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array<double, 3>>* points, double min_quality, Contacts contacts,
+                                Recombination& r) {
   auto t = Clock::now();
   HexCandidates found = find_hex_candidates(mesh.tets, points, min_quality);
   r.readings = found.readings;
@@ -163,10 +168,28 @@ std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array
   std::stable_sort(rank.begin(), rank.end(), [&](std::uint32_t a, std::uint32_t b) { return score[a] > score[b]; });
   std::vector<bool> used(mesh.tets.size(), false);
   std::vector<Chosen> out;
+  // The selected hexes (indices into out) at each mesh vertex.
+  std::uint32_t vertices = 0;
+  if (contacts == Contacts::conforming)
+    for (const auto& tet : mesh.tets) vertices = std::max(vertices, *std::max_element(tet.begin(), tet.end()) + 1);
+  std::vector<std::vector<std::uint32_t>> at_vertex(vertices);
+  auto conforms = [&](const HexCandidate& c) {
+    for (std::uint32_t v : c.corners)
+      for (std::uint32_t h : at_vertex[v])
+        if (!conforming_contact(c.corners, out[h].corners)) return false;
+    return true;
+  };
   for (std::uint32_t k : rank) {
     const HexCandidate& c = found.list[k];
     const auto tets = found.tets_of(c);
     if (std::any_of(tets.begin(), tets.end(), [&](std::uint32_t x) { return used[x]; })) continue;
+    if (contacts == Contacts::conforming) {
+      if (!conforms(c)) {
+        ++r.nonconforming;
+        continue;
+      }
+      for (std::uint32_t v : c.corners) at_vertex[v].push_back(static_cast<std::uint32_t>(out.size()));
+    }
     for (auto x : tets) used[x] = true;
     out.push_back({{tets.begin(), tets.end()}, c.corners, c.quality});
   }
@@ -177,11 +200,14 @@ std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array
 }  // namespace
 
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy, const std::vector<std::array<double, 3>>* points,
-                        double min_quality, Search search) {
+                        double min_quality, Search search, Contacts contacts) {
   Recombination r;
   r.search = strategy == Strategy::greedy ? Search::words : search;
+  r.contacts = contacts;
+  if (contacts == Contacts::conforming && r.search == Search::words)
+    throw std::invalid_argument("recombine: conforming contacts need the global strategy's vertex search");
   const std::vector<Chosen> chosen =
-      r.search == Search::words ? by_words(mesh, queries, strategy, points, min_quality, r) : by_vertices(mesh, points, min_quality, r);
+      r.search == Search::words ? by_words(mesh, queries, strategy, points, min_quality, r) : by_vertices(mesh, points, min_quality, contacts, r);
   std::vector<bool> used(mesh.tets.size(), false);
   for (const auto& h : chosen) {
     r.hex_tets.push_back(h.tets);

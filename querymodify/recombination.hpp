@@ -25,6 +25,12 @@ enum class Strategy { greedy, global };
 /// search: it always matches words.
 enum class Search { vertices, words };
 
+/// How the selected hexes may meet (hex_contacts.hpp): in any way their
+/// tetrahedra allow (001's recombination, the default), or only in
+/// nothing, a vertex, an edge or a face of both (a conforming hex mesh;
+/// the global strategy's vertex search only).
+enum class Contacts { any, conforming };
+
 /// The cube corner (0..7, v = x + 2y + 4z) each dart of a query starts at.
 std::vector<std::uint32_t> query_corners(const HexQuery& q);
 
@@ -34,6 +40,10 @@ std::array<std::uint32_t, 8> match_corners(const HexQuery& q, const std::vector<
 
 struct Recombination {
   Search search = Search::vertices;  // the search that ran
+  Contacts contacts = Contacts::any;
+  /// Acceptable candidates passed over because they would not conform to
+  /// a hex selected before (Contacts::conforming).
+  std::size_t nonconforming = 0;
   /// The word search's matches (raw: from every start dart; distinct: by
   /// query and darts), 0 when the vertex search ran.
   std::size_t raw_matches = 0, distinct_matches = 0;
@@ -66,7 +76,10 @@ struct Recombination {
 /// strategy skips a match whose corners are not 8 distinct mesh vertices
 /// (a pattern closed on itself: words see darts, not vertices) and, with
 /// points, one whose best scaled Jacobian is not above `min_quality`.
+/// Contacts::conforming with the greedy strategy or the word search is a
+/// std::invalid_argument.
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
-                        const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0, Search search = Search::vertices);
+                        const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0, Search search = Search::vertices,
+                        Contacts contacts = Contacts::any);
 
 }  // namespace dartcheck::querymodify

@@ -44,6 +44,11 @@ Search parse_search(const std::string& s) {
   throw InputError("<command line>", 0, 0, fmt::format("--search: expected vertices or words, got '{}'", s));
 }
 
+void check_contacts(Strategy strategy, Search search, bool conforming) {
+  if (conforming && (strategy == Strategy::greedy || search == Search::words))
+    throw InputError("<command line>", 0, 0, "--conforming: only with the global strategy's vertex search (--strategy global --search vertices)");
+}
+
 TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
   TetMesh out;
   out.points = input.points;
@@ -53,13 +58,15 @@ TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
 }
 
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
-                            const std::string& search) {
+                            const std::string& search, bool conforming) {
   RecombineRun run;
   run.mesh = mesh;
   run.strategy = strategy;
   run.min_quality = min_quality;
   const Strategy chosen = parse_strategy(strategy);
   const Search searched = parse_search(search);
+  check_contacts(chosen, searched, conforming);
+  run.conforming = conforming;
   const auto start = Clock::now();
   auto t = Clock::now();
   TetInput in = load_tet_input(mesh);
@@ -77,7 +84,7 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   const auto& queries = chosen == Strategy::greedy || searched == Search::words ? hex_queries() : none;
   run.queries = queries.size();
   run.query_seconds = since(t);
-  run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality, searched);
+  run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality, searched, conforming ? Contacts::conforming : Contacts::any);
   run.search = run.result.search == Search::words ? "words" : "vertices";
   t = Clock::now();
   run.valid = check_3map(in.map.map).valid();

@@ -15,6 +15,9 @@ namespace dartcheck::querymodify {
 Strategy parse_strategy(const std::string& text);
 /// vertices or words (--search); InputError otherwise.
 Search parse_search(const std::string& text);
+/// InputError when `conforming` is asked of the greedy strategy or the
+/// word search.
+void check_contacts(Strategy strategy, Search search, bool conforming);
 
 /// One recombination: its input, what the library returned, the checks
 /// and the times around it.
@@ -22,6 +25,7 @@ struct RecombineRun {
   std::string mesh, strategy, search, output;  // output: the written file, or empty
   std::size_t points = 0, tets = 0, input_darts = 0, queries = 0;
   double min_quality = 0;
+  bool conforming = false;   // --conforming: hexes meet only in a vertex, an edge or a face of both
   bool input_valid = false;  // the input's map (build_tet_map makes valid maps of every mesh it accepts)
   Recombination result;
   std::size_t darts = 0, expected_darts = 0;  // after the merges; 36 per hex + 12 per tetrahedron
@@ -35,8 +39,10 @@ struct RecombineRun {
 /// Recombines the mesh in `mesh` (TetGen .node/.ele or medit .mesh) and
 /// writes the result to `output` unless it is empty. With an invalid input
 /// map (a defect of the reader) nothing is recombined.
+/// `conforming` (hex_contacts.hpp) needs the global strategy's vertex
+/// search; InputError otherwise.
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
-                            const std::string& search = "vertices");
+                            const std::string& search = "vertices", bool conforming = false);
 
 /// The hexes of `r` (medit's corner order) and the tetrahedra it left, on
 /// `input`'s points.
