@@ -240,6 +240,24 @@ bool is_face(const Corners& h, const std::set<std::uint32_t>& shared) {
   return false;
 }
 
+// Two corners of the cube joined by an edge: they differ in one coordinate.
+bool is_edge(const Corners& h, const std::set<std::uint32_t>& shared) {
+  int mask = 0;
+  for (int c = 0; c < 8; ++c) mask |= shared.count(h[static_cast<std::size_t>(c)]) ? 1 << c : 0;
+  for (int c = 0; c < 8; ++c)
+    for (int axis = 1; axis <= 4; axis <<= 1)
+      if (mask == ((1 << c) | (1 << (c ^ axis)))) return true;
+  return false;
+}
+
+// Shared vertices allowed in a conforming mesh: none, one, an edge or a
+// face of both.
+bool conforming(const Corners& a, const Corners& b, const std::set<std::uint32_t>& shared) {
+  if (shared.size() <= 1) return true;
+  if (shared.size() == 2) return is_edge(a, shared) && is_edge(b, shared);
+  return shared.size() == 4 && is_face(a, shared) && is_face(b, shared);
+}
+
 Figures measure(const TetMesh& mesh, const Output& out) {
   Figures f;
   f.hexes = out.hexes.size();
@@ -291,8 +309,7 @@ Figures measure(const TetMesh& mesh, const Output& out) {
     for (std::uint32_t v : out.hexes[i])
       for (std::uint32_t j : at[v])
         if (j > i) shared[j].insert(v);
-    for (const auto& [j, s] : shared)
-      if (s.size() == 3 || s.size() > 4 || (s.size() == 4 && !(is_face(out.hexes[i], s) && is_face(out.hexes[j], s)))) ++f.nonconforming_pairs;
+    for (const auto& [j, s] : shared) f.nonconforming_pairs += !conforming(out.hexes[i], out.hexes[j], s);
   }
   return f;
 }
