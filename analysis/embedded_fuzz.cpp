@@ -16,6 +16,7 @@
 #include "rewriting/term_eval.hpp"
 #include "generators/random_embedding.hpp"
 #include "generators/random_maps.hpp"
+#include "core/wording.hpp"
 
 namespace dartcheck::analysis {
 
@@ -155,10 +156,8 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
   out.verdict = FuzzClass::unconfirmed;
   out.reason = out.applications == 0
                    ? fmt::format("never applied{}", refusals)
-                   : fmt::format(
-                         "no failure in {} applications on {} random embedded maps of up to {} darts: the static conditions are sufficient, "
-                         "not necessary{}",
-                         out.applications, out.hosts, out.largest_host, refusals);
+                   : fmt::format("no failure in {} on {} of up to {} darts: the static conditions are sufficient, not necessary{}",
+                                 counted(out.applications, "application"), counted(out.hosts, "random embedded map"), out.largest_host, refusals);
   if (out.out_of_time) out.reason += " (stopped by --time)";
   return out;
 }

@@ -416,7 +416,8 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
     out.reason = fmt::format("never applied: every attempt was refused ({})",
                              refused.empty() ? "L matched no host" : fmt::format("{}", fmt::join(refused, ", ")));
   else
-    out.reason = fmt::format("no failure in {} applications on {} maps of up to {} darts", out.applications, out.hosts, out.largest_host);
+    out.reason = fmt::format("no failure in {} on {} of up to {} darts", counted(out.applications, "application"), counted(out.hosts, "map"),
+                             out.largest_host);
   if (out.exhaustive_darts)
     out.reason += fmt::format("; every map of up to {} darts{} was tried", out.exhaustive_darts, entry.words.scheme ? "" : " containing L");
   if (entry.words.scheme && std::all_of(out.static_failures.begin(), out.static_failures.end(), [](const std::string& f) { return f[0] == 'C'; }))
@@ -428,9 +429,10 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
 std::string outcome_text(const FuzzReport& r) {
   switch (r.verdict) {
     case FuzzClass::consistent:
-      return r.reason.empty() ? fmt::format("consistent (checked {} applications on {} maps of up to {} darts{})", r.applications, r.hosts,
-                                            r.largest_host, r.event_checks ? fmt::format("; events of {} cross-checked", r.event_checks) : "")
-                              : fmt::format("consistent; {}", r.reason);
+      return r.reason.empty()
+                 ? fmt::format("consistent (checked {} on {} of up to {} darts{})", counted(r.applications, "application"), counted(r.hosts, "map"),
+                               r.largest_host, r.event_checks ? fmt::format("; events of {} cross-checked", r.event_checks) : "")
+                 : fmt::format("consistent; {}", r.reason);
     case FuzzClass::unconfirmed:
       return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
     case FuzzClass::confirmed:

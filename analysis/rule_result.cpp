@@ -10,6 +10,7 @@
 #include "analysis/embedded_fuzz.hpp"
 #include "analysis/prove_replay.hpp"
 #include "analysis/verdict_record.hpp"
+#include "core/wording.hpp"
 
 namespace dartcheck::analysis {
 
@@ -70,9 +71,9 @@ std::string RuleResult::confirmation_text() const {
                          unsound() ? "SOUNDNESS BUG: judged consistent, yet " : "", cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","),
                          cx.host.size(), model, fmt::join(cx.broken(), ", "));
     }
-    if (f.applications == 0) return fmt::format("never applicable on {} {} maps of up to {} darts", f.hosts, model, f.largest_host);
-    return fmt::format("no model-level counterexample in {} applications on {} {} maps of up to {} darts", f.applications, f.hosts, model,
-                       f.largest_host);
+    if (f.applications == 0) return fmt::format("never applicable on {} of up to {} darts", counted(f.hosts, model + " map"), f.largest_host);
+    return fmt::format("no model-level counterexample in {} on {} of up to {} darts", counted(f.applications, "application"),
+                       counted(f.hosts, model + " map"), f.largest_host);
   }
   if (!host_search) return "";
   const auto& s = *host_search;
