@@ -43,11 +43,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "hex_contacts_check.hpp"
 #include "io/tet_mesh_io.hpp"
 #include "querymodify/hex_quality.hpp"
 #include "querymodify/orientation.hpp"
@@ -225,39 +225,6 @@ struct Figures {
   double seconds = 0;
 };
 
-// The 6 faces of the cube, as corner sets.
-constexpr int kFaces[6][4] = {{0, 2, 4, 6}, {1, 3, 5, 7}, {0, 1, 4, 5}, {2, 3, 6, 7}, {0, 1, 2, 3}, {4, 5, 6, 7}};
-
-std::set<std::uint32_t> face_set(const Corners& h, int f) {
-  std::set<std::uint32_t> s;
-  for (int c : kFaces[f]) s.insert(h[static_cast<std::size_t>(c)]);
-  return s;
-}
-
-bool is_face(const Corners& h, const std::set<std::uint32_t>& shared) {
-  for (int f = 0; f < 6; ++f)
-    if (face_set(h, f) == shared) return true;
-  return false;
-}
-
-// Two corners of the cube joined by an edge: they differ in one coordinate.
-bool is_edge(const Corners& h, const std::set<std::uint32_t>& shared) {
-  int mask = 0;
-  for (int c = 0; c < 8; ++c) mask |= shared.count(h[static_cast<std::size_t>(c)]) ? 1 << c : 0;
-  for (int c = 0; c < 8; ++c)
-    for (int axis = 1; axis <= 4; axis <<= 1)
-      if (mask == ((1 << c) | (1 << (c ^ axis)))) return true;
-  return false;
-}
-
-// Shared vertices allowed in a conforming mesh: none, one, an edge or a
-// face of both.
-bool conforming(const Corners& a, const Corners& b, const std::set<std::uint32_t>& shared) {
-  if (shared.size() <= 1) return true;
-  if (shared.size() == 2) return is_edge(a, shared) && is_edge(b, shared);
-  return shared.size() == 4 && is_face(a, shared) && is_face(b, shared);
-}
-
 Figures measure(const TetMesh& mesh, const Output& out) {
   Figures f;
   f.hexes = out.hexes.size();
@@ -300,17 +267,10 @@ Figures measure(const TetMesh& mesh, const Output& out) {
     }
     f.bad_corner_hexes += bad;
   }
-  // Contacts between hexes: through the hexes at each vertex.
-  std::vector<std::vector<std::uint32_t>> at(mesh.points.size());
-  for (std::uint32_t i = 0; i < out.hexes.size(); ++i)
-    for (std::uint32_t v : out.hexes[i]) at[v].push_back(i);
-  for (std::uint32_t i = 0; i < out.hexes.size(); ++i) {
-    std::map<std::uint32_t, std::set<std::uint32_t>> shared;  // other hex -> shared vertices
-    for (std::uint32_t v : out.hexes[i])
-      for (std::uint32_t j : at[v])
-        if (j > i) shared[j].insert(v);
-    for (const auto& [j, s] : shared) f.nonconforming_pairs += !conforming(out.hexes[i], out.hexes[j], s);
-  }
+  // Contacts between hexes, by the check check_hex_corners uses.
+  std::vector<MeditHex> rings;
+  for (const Corners& h : out.hexes) rings.push_back({h[0], h[1], h[3], h[2], h[4], h[5], h[7], h[6]});
+  f.nonconforming_pairs = nonconforming_pairs(rings, mesh.points.size());
   return f;
 }
 

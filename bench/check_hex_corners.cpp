@@ -13,59 +13,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cstring>
 #include <exception>
-#include <set>
-#include <vector>
 
+#include "hex_contacts_check.hpp"
 #include "io/tet_mesh_io.hpp"
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-namespace {
-
-using Ring = std::array<std::uint32_t, 8>;  // medit's order: bottom quad, top quad above it
-
-// The vertex sets two hexes of a conforming mesh may share, for one hex:
-// none, each vertex, the two ends of each edge (consecutive on a face
-// cycle), each face.
-std::set<std::set<std::uint32_t>> contacts(const Ring& h) {
-  static const int faces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-  std::set<std::set<std::uint32_t>> out{{}};
-  for (std::uint32_t v : h) out.insert({v});
-  for (const auto& f : faces) {
-    std::set<std::uint32_t> face;
-    for (int k = 0; k < 4; ++k) {
-      face.insert(h[static_cast<std::size_t>(f[k])]);
-      out.insert({h[static_cast<std::size_t>(f[k])], h[static_cast<std::size_t>(f[(k + 1) % 4])]});
-    }
-    out.insert(face);
-  }
-  return out;
-}
-
-std::size_t nonconforming_pairs(const std::vector<Ring>& hexes, std::size_t points) {
-  std::vector<std::vector<std::size_t>> at(points);
-  for (std::size_t i = 0; i < hexes.size(); ++i)
-    for (std::uint32_t v : hexes[i]) at[v].push_back(i);
-  std::size_t bad = 0;
-  for (std::size_t i = 0; i < hexes.size(); ++i) {
-    std::set<std::size_t> near;
-    for (std::uint32_t v : hexes[i])
-      for (std::size_t j : at[v])
-        if (j > i) near.insert(j);
-    for (std::size_t j : near) {
-      std::set<std::uint32_t> shared;
-      for (std::uint32_t v : hexes[i])
-        if (std::find(hexes[j].begin(), hexes[j].end(), v) != hexes[j].end()) shared.insert(v);
-      bad += !(contacts(hexes[i]).count(shared) && contacts(hexes[j]).count(shared));
-    }
-  }
-  return bad;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const bool conforming = argc > 1 && !std::strcmp(argv[1], "--conforming");

@@ -14,8 +14,8 @@
 namespace dartcheck::cli {
 
 int recombine(const RecombineOptions& o) {
-  querymodify::check_contacts(querymodify::parse_strategy(o.strategy), querymodify::parse_search(o.search),
-                              o.conforming);  // before the work, as the output file
+  // Before the work, as the output file.
+  querymodify::check_contacts(querymodify::parse_strategy(o.strategy), querymodify::parse_search(o.search), o.conforming);
   if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".mesh")
     throw InputError("<command line>", 0, 0, fmt::format("-o: expected a medit .mesh file, got '{}'", o.output));
   if (!o.output.empty()) check_writable(o.output);

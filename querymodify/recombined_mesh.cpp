@@ -66,7 +66,6 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   const Strategy chosen = parse_strategy(strategy);
   const Search searched = parse_search(search);
   check_contacts(chosen, searched, conforming);
-  run.conforming = conforming;
   const auto start = Clock::now();
   auto t = Clock::now();
   TetInput in = load_tet_input(mesh);

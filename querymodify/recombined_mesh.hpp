@@ -25,7 +25,6 @@ struct RecombineRun {
   std::string mesh, strategy, search, output;  // output: the written file, or empty
   std::size_t points = 0, tets = 0, input_darts = 0, queries = 0;
   double min_quality = 0;
-  bool conforming = false;   // --conforming: hexes meet only in a vertex, an edge or a face of both
   bool input_valid = false;  // the input's map (build_tet_map makes valid maps of every mesh it accepts)
   Recombination result;
   std::size_t darts = 0, expected_darts = 0;  // after the merges; 36 per hex + 12 per tetrahedron

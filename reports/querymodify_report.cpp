@@ -46,7 +46,8 @@ std::string recombine_text(const RecombineRun& run) {
   out += fmt::format("selection   {} hexes, {} ({:.3f} s)\n", r.hexes,
                      run.strategy == "greedy" ? "greedy: the first match from each dart in order" : "global: by scaled Jacobian, best first",
                      r.select_seconds);
-  if (run.conforming)
+  const bool conforming = r.contacts == querymodify::Contacts::conforming;
+  if (conforming)
     out += fmt::format("conforming  hexes meet only in a vertex, an edge or a face of both; {} candidates passed over\n", r.nonconforming);
   if (!r.quality.empty()) out += fmt::format("quality     scaled Jacobian of the hexes: min {:.3f}, median {:.3f}\n", q.min, q.median);
   out += fmt::format("merge       {:.3f} s\n", r.merge_seconds);
@@ -77,9 +78,10 @@ Json recombine_document(const RecombineRun& run) {
   doc["readings"] = words ? Json(nullptr) : Json(r.readings);
   doc["acceptable_matches"] = r.acceptable;
   doc["min_quality"] = number_or_null(run.min_quality);
-  doc["conforming"] = run.conforming;
+  const bool conforming = r.contacts == querymodify::Contacts::conforming;
+  doc["conforming"] = conforming;
   // Candidates passed over for a non-conforming contact; null without --conforming.
-  doc["nonconforming_candidates"] = run.conforming ? Json(r.nonconforming) : Json(nullptr);
+  doc["nonconforming_candidates"] = conforming ? Json(r.nonconforming) : Json(nullptr);
   doc["hexes"] = r.hexes;
   doc["remaining_tetrahedra"] = r.tets;
   doc["darts"] = run.darts;
