@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 #include <pugixml.hpp>
 
+#include "reports/condition_help.hpp"
 #include "reports/json_document.hpp"
 
 namespace dartcheck::reports {
@@ -15,19 +16,6 @@ namespace dartcheck::reports {
 using namespace analysis;
 
 namespace {
-
-// What each family of SARIF rule ids means, and where the paper defines it.
-std::string describe_rule_id(const std::string& id) {
-  const auto starts = [&](const char* p) { return id.rfind(p, 0) == 0; };
-  if (id == "mismatch") return "the verdict this run finds differs from the verdict the catalog or baseline records";
-  if (id == "soundness") return "a rule judged consistent broke a map, or the solver contradicts a theorem: a defect of dartcheck";
-  if (starts("I(")) return "incident arcs (002 Def. 11): every node of R has one i-arc in and out where L's has";
-  if (starts("dangling(")) return "dangling (002 Def. 12): a deleted node has no i-arc to the rest of the host";
-  if (starts("O(")) return "non-orientation (002 Def. 13): the i-arcs of R come in opposite pairs";
-  if (starts("C(")) return "cycle (002 Def. 14-16, 25-27): ijij-paths stay cycles";
-  if (starts("no-loop(")) return "no loop: the model's maps have no i-loop";
-  return "an embedding condition of 003 (Theorems 2 and 4) or a Jerboa presence check";
-}
 
 Json sarif_location(const std::string& file, const SourceLocation& at) {
   const std::string path = at.file.empty() ? file : at.file;
@@ -104,7 +92,14 @@ std::string sarif_document(const std::string& catalog, const std::vector<RuleRes
       add(r.unsound() && m.rfind("SOUNDNESS", 0) == 0 ? "soundness" : "mismatch", true, fmt::format("rule {}: {}", r.name(), m), r);
   }
   Json rules = Json::array();
-  for (const auto& id : ids) rules.push_back(Json{{"id", id}, {"shortDescription", Json{{"text", describe_rule_id(id)}}}});
+  // One reportingDescriptor per condition met, linked to its definition.
+  for (const auto& id : ids) {
+    const ConditionHelp& help = condition_help(id);
+    rules.push_back(Json{{"id", id},
+                         {"shortDescription", Json{{"text", std::string(help.summary)}}},
+                         {"fullDescription", Json{{"text", fmt::format("{} ({})", help.summary, help.source)}}},
+                         {"helpUri", condition_help_uri(id)}});
+  }
   Json run{{"tool", Json{{"driver", Json{{"name", "dartcheck"}, {"version", version}, {"rules", std::move(rules)}}}}},
            {"originalUriBaseIds", Json{{"SRCROOT", Json{{"description", Json{{"text", "the directory dartcheck ran in"}}}}}}},
            {"results", std::move(sarif_results)}};

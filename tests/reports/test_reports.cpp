@@ -10,6 +10,7 @@
 #include <pugixml.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <set>
@@ -19,6 +20,7 @@
 #include "io/catalog.hpp"
 #include "rewriting/graph_derivation.hpp"
 #include "generators/shapes.hpp"
+#include "reports/condition_help.hpp"
 #include "reports/counterexample_dot.hpp"
 #include "reports/graph_dot.hpp"
 #include "reports/dot_text.hpp"
@@ -306,4 +308,33 @@ TEST(CounterexampleDot, ThreePanelsHighlightMatchAndBrokenDarts) {
   EXPECT_EQ(rule_nodes, e.rule.left().node_count() + e.rule.right().node_count());
   EXPECT_LT(g_max, h_min);
   EXPECT_LT(h_max, rule_min);
+}
+
+// SARIF's helpUri (issue 39): every condition the checkers name on the seed
+// and embedding catalogs links to a section docs/conditions.md has, and
+// the cycle condition C(i,j) is told from the embedding condition C(pi)
+// (the anchors below are read off the definitions the docs cite).
+TEST(ConditionHelp, EveryNamedConditionLinksToItsSectionOfTheDocs) {
+  std::ifstream in(std::string(DARTCHECK_SOURCE_DIR) + "/docs/conditions.md");
+  const std::string docs((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_FALSE(docs.empty());
+  std::set<std::string> names{"mismatch", "soundness", "defined(pos)", "merge(pos)", "one-value(pos)"};
+  for (const auto& e : seed_catalog().rules)
+    for (const auto& c : check_rule(e.rule, e.words).conditions) names.insert(c.name());
+  const Catalog embedded = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  for (const auto& e : embedded.rules)
+    for (const auto& c : check_term_conditions(e.rule, e.words, *e.terms)) names.insert(c.name());
+  for (const auto& name : names) {
+    const std::string uri = reports::condition_help_uri(name);
+    const auto hash = uri.find("conditions.md#");
+    ASSERT_NE(hash, std::string::npos) << name << ": " << uri;
+    const std::string anchor = uri.substr(hash + 14);
+    EXPECT_NE(docs.find("<a id=\"" + anchor + "\"></a>"), std::string::npos) << name << " links to #" << anchor << ", not in the docs";
+    EXPECT_NE(anchor, "jerboa-checks") << name << " has no section of its own";
+  }
+  const std::map<std::string, std::string> expected{{"I(1)", "incident-arcs"}, {"dangling(0)", "dangling"},   {"O(2)", "non-orientation"},
+                                                    {"C(0,2)", "cycle"},       {"C(pos)", "extended-orbits"}, {"A(pos)", "embedding-consistency"},
+                                                    {"B(col)", "full-match"},  {"label(pos)", "labeling"},    {"merge(pos)", "merge"}};
+  for (const auto& [name, anchor] : expected) EXPECT_EQ(reports::condition_help(name).anchor, anchor) << name;
+  EXPECT_TRUE(names.contains("C(0,2)") && names.contains("A(pos)")) << "the catalogs no longer exercise both C families";
 }
