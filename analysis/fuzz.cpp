@@ -44,6 +44,17 @@ std::vector<std::string> Counterexample::broken() const {
   return b;
 }
 
+std::string Counterexample::broken_predicate() const {
+  std::vector<std::string> constraints, clauses;
+  for (const auto& name : broken())
+    if (name != "not-representable" && name != "events") constraints.push_back(name);
+  if (!constraints.empty()) clauses.push_back(fmt::format("breaks {}", fmt::join(constraints, ", ")));
+  if (!unrepresentable.empty()) clauses.push_back("has no dense form (not-representable)");
+  if (!event_contradictions.empty()) clauses.push_back("contradicts the static event log (events)");
+  if (clauses.empty()) return "breaks nothing";
+  return fmt::format("{}", fmt::join(clauses, " and "));
+}
+
 // A stable per-rule stream: the same rule gets the same hosts whether it is
 // fuzzed alone (--rule) or with its whole catalog.
 std::uint64_t rule_seed(std::uint64_t seed, const std::string& name) {
@@ -438,8 +449,8 @@ std::string outcome_text(const FuzzReport& r) {
     case FuzzClass::confirmed:
     case FuzzClass::soundness_bug: {
       const auto& cx = *r.counterexample;
-      return fmt::format("{}: at hook{} {} of a {}-dart map, H breaks {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
-                         fmt::join(cx.hooks, ","), cx.host.size(), fmt::join(cx.broken(), ", "), cx.minimal ? " (minimal)" : "");
+      return fmt::format("{}: at hook{} {} of a {}-dart map, H {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
+                         fmt::join(cx.hooks, ","), cx.host.size(), cx.broken_predicate(), cx.minimal ? " (minimal)" : "");
     }
   }
   return "";

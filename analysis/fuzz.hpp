@@ -52,6 +52,10 @@ struct Counterexample {
   std::string origin;                               // which phase found it, and how it was shrunk
   bool minimal = false;                             // every smaller host of the exhaustive class was tried
   std::vector<std::string> broken() const;          // "I(1)", "C(0,2)", ... sorted, unique
+  /// What H does wrong as a sentence's predicate: "breaks I(1), O(1)",
+  /// "breaks C(0,2) and has no dense form (not-representable)",
+  /// "contradicts the static event log (events)".
+  std::string broken_predicate() const;
   /// Embedded rules: H's orbits with two values or unlabeled darts, and
   /// the extended rule's conflicts (003 Def. 6, 13), as sentences, and
   /// the embeddings they concern ("embedding(pos)").

@@ -67,9 +67,8 @@ std::string RuleResult::confirmation_text() const {
     const auto& f = *scheme_search;
     if (f.counterexample) {
       const auto& cx = *f.counterexample;
-      return fmt::format("{}confirmed: applied at dart{} {} of a {}-dart {}, it breaks ({})",
-                         unsound() ? "SOUNDNESS BUG: judged consistent, yet " : "", cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","),
-                         cx.host.size(), model, fmt::join(cx.broken(), ", "));
+      return fmt::format("{}confirmed: applied at dart{} {} of a {}-dart {}, it {}", unsound() ? "SOUNDNESS BUG: judged consistent, yet " : "",
+                         cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), model, cx.broken_predicate());
     }
     if (f.applications == 0) return fmt::format("never applicable on {} of up to {} darts", counted(f.hosts, model + " map"), f.largest_host);
     return fmt::format("no model-level counterexample in {} on {} of up to {} darts", counted(f.applications, "application"),
@@ -82,7 +81,7 @@ std::string RuleResult::confirmation_text() const {
     for (const auto& v : s.violations) what.push_back(constraint_name(v));
     std::sort(what.begin(), what.end());
     what.erase(std::unique(what.begin(), what.end()), what.end());
-    return fmt::format("confirmed: a {}-dart {} breaks ({})", s.host->node_count(), model, fmt::join(what, ", "));
+    return fmt::format("confirmed: a {}-dart {} breaks {}", s.host->node_count(), model, fmt::join(what, ", "));
   }
   if (!s.matched) return fmt::format("L matches no {} of up to {} darts", model, s.largest_host);
   return fmt::format("no model-level counterexample up to {} darts{}", s.largest_host, s.exhausted ? "" : " (search budget reached)");

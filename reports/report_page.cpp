@@ -60,7 +60,11 @@ std::string broken_caption(const Counterexample& cx) {
         fmt::format("{} at dart{} {}{}", name, darts.size() == 1 ? "" : "s", fmt::join(first, ", "), darts.size() > shown ? ", ..." : ""));
   }
   for (const auto& e : cx.broken_embeddings) parts.push_back(e);
-  return parts.empty() ? fmt::format("H breaks {}", fmt::join(cx.broken(), ", ")) : fmt::format("H breaks {}", fmt::join(parts, "; "));
+  if (parts.empty()) return fmt::format("H {}", cx.broken_predicate());
+  std::string out = fmt::format("H breaks {}", fmt::join(parts, "; "));
+  if (!cx.unrepresentable.empty()) out += " and has no dense form (not-representable)";
+  if (!cx.event_contradictions.empty()) out += " and contradicts the static event log (events)";
+  return out;
 }
 
 // The three panels of a counterexample: the match (DPO: L's node names on
@@ -95,7 +99,7 @@ std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const
     for (std::size_t d = 0; d < cx.orbit_values.size() && d < p.broken.size(); ++d)
       if (!cx.orbit_values[d].empty()) p.broken[d] = true;
     p.result_tags = cx.orbit_values;
-    p.broken_label = fmt::format("filled: breaks {}", fmt::join(cx.broken(), ", "));
+    p.broken_label = fmt::format("filled: {}", cx.broken_predicate());
     p.captions.push_back(broken_caption(cx));
   } else {
     p.no_result = cx.unrepresentable;
@@ -119,11 +123,10 @@ std::string violations_html(const Counterexample& cx) {
 std::string counterexample_html(const RuleResult& r, const Counterexample& cx, const std::string& heading, const std::string& replay,
                                 Pictures& pictures, const std::string& file) {
   const auto& e = *r.entry;
-  std::string out =
-      fmt::format("<h3>{}</h3>\n<p>{} Found by {}{}.</p>\n", html_text(heading),
-                  html_text(fmt::format("A valid {} of {} darts; applied at hook{} {}, H breaks {}.", e.rule.model().name, cx.host.size(),
-                                        cx.hooks.size() == 1 ? "" : "s", fmt::join(cx.hooks, ","), fmt::join(cx.broken(), ", "))),
-                  html_text(cx.origin), cx.minimal ? " (minimal: no smaller host breaks it)" : "");
+  std::string out = fmt::format("<h3>{}</h3>\n<p>{} Found by {}{}.</p>\n", html_text(heading),
+                                html_text(fmt::format("A valid {} of {} darts; applied at hook{} {}, H {}.", e.rule.model().name, cx.host.size(),
+                                                      cx.hooks.size() == 1 ? "" : "s", fmt::join(cx.hooks, ","), cx.broken_predicate())),
+                                html_text(cx.origin), cx.minimal ? " (minimal: no smaller host breaks it)" : "");
   out += pictures.add(counterexample_dot(e, r.verdict, cx, fmt::format("{}: {}", e.rule.name(), heading)), file);
   out += violations_html(cx);
   if (!replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(replay));

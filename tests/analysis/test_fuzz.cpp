@@ -196,3 +196,16 @@ TEST(Fuzz, ShrinkingKeepsTheFailure) {
   EXPECT_LE(f.counterexample->host.size(), 16U);
   expect_replays(r, *f.counterexample);
 }
+
+// The sentence a counterexample's verdict line ends with (issue 39): a
+// result with no dense form is not said to "break not-representable".
+TEST(Fuzz, BrokenPredicateReadsAsASentence) {
+  Counterexample cx{Map(Model::gmap(2)), {}, {}, std::nullopt, {}, {}, {}, false, {}, {}, {}, {}};
+  cx.unrepresentable = "dart 0 has two 1-links";
+  EXPECT_EQ(cx.broken_predicate(), "has no dense form (not-representable)");
+  cx.broken_embeddings = {"pos"};
+  EXPECT_EQ(cx.broken_predicate(), "breaks embedding(pos) and has no dense form (not-representable)");
+  cx.unrepresentable.clear();
+  cx.event_contradictions = {"<0,1> split"};
+  EXPECT_EQ(cx.broken_predicate(), "breaks embedding(pos) and contradicts the static event log (events)");
+}
