@@ -1,4 +1,5 @@
 #include "analysis/fuzz.hpp"
+#include "core/terminal.hpp"
 #include "core/wording.hpp"
 #include "analysis/event_checks.hpp"
 #include "analysis/interrupt.hpp"
@@ -469,6 +470,7 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
   const auto start = std::chrono::steady_clock::now();
   std::vector<FuzzReport> reports;
   std::size_t failures = 0;
+  const bool quiet = terminal().quiet;  // --quiet: no progress at all
   for (std::size_t k = 0; k < rules.size() && !interrupted(); ++k) {
     if (seconds) {
       // An equal share of what is left for each remaining rule.
@@ -476,7 +478,7 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
       o.deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                           std::chrono::duration<double>(std::max(0.0, left) / double(rules.size() - k)));
     }
-    if (progress)
+    if (progress && !quiet)
       o.progress = [&, k](const FuzzProgress& p) {
         fmt::print(stderr, "\r\033[K[{}/{}] {}: {} applications ({:.0f}/s), {} failure{}", k + 1, rules.size(), *p.rule, p.applications,
                    p.seconds > 0 ? double(p.applications) / p.seconds : 0.0, failures, failures == 1 ? "" : "s");
@@ -489,12 +491,12 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
     if (reports.back().counterexample) ++failures;
     const auto& r = reports.back();
     // Without a terminal (CI logs), a line per finished rule instead.
-    if (!progress)
+    if (!progress && !quiet)
       fmt::print(stderr, "[{}/{}] {}: {}, {}, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict),
                  counted(r.applications, "application"), r.seconds);
     if (finished) finished(k, r);
   }
-  if (progress) fmt::print(stderr, "\r\033[K");
+  if (progress && !quiet) fmt::print(stderr, "\r\033[K");
   return reports;
 }
 

@@ -2,20 +2,22 @@
 
 #include <fmt/format.h>
 
+#include "core/terminal.hpp"
+
 namespace dartcheck::analysis {
 
 StageProgress::StageProgress(std::size_t units, bool terminal) : units_(units), terminal_(terminal) {}
 
 StageProgress::~StageProgress() {
-  if (terminal_) fmt::print(stderr, "\r\033[K");
+  if (terminal_ && !terminal().quiet) fmt::print(stderr, "\r\033[K");
 }
 
 void StageProgress::start(std::size_t k, const std::string& what) {
-  if (terminal_) fmt::print(stderr, "\r\033[K[{}/{}] {}", k + 1, units_, what);
+  if (terminal_ && !terminal().quiet) fmt::print(stderr, "\r\033[K[{}/{}] {}", k + 1, units_, what);
 }
 
 void StageProgress::finished(std::size_t k, const std::string& line) {
-  if (!terminal_) fmt::print(stderr, "[{}/{}] {}\n", k + 1, units_, line);
+  if (!terminal_ && !terminal().quiet) fmt::print(stderr, "[{}/{}] {}\n", k + 1, units_, line);
 }
 
 std::string proof_line(const proofs::RuleProof& p) {

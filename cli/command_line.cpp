@@ -21,6 +21,7 @@
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "core/limits.hpp"
+#include "core/terminal.hpp"
 #include "generators/shapes.hpp"
 
 namespace dartcheck::cli {
@@ -334,6 +335,20 @@ void add_limits(CLI::App& app) {
   app.add_option("--limit-rule-nodes", lim.rule_nodes, "most nodes in one side of a rule")->capture_default_str()->transform(count_option(1));
 }
 
+// The global output options (core/terminal.hpp); like the limits they may
+// also follow the command's name.
+struct OutputOptions {
+  std::string color = "auto";
+  bool quiet = false;
+};
+
+void add_output_options(CLI::App& app, OutputOptions& o) {
+  app.add_option("--color", o.color, "colour the text on a terminal: auto (not under NO_COLOR or TERM=dumb), always, never")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_flag("-q,--quiet", o.quiet, "no tables, summaries or progress: only errors, failures and MISMATCH lines (stderr) and the exit status");
+}
+
 // Runs the parsed command; the one place where each kind of error becomes
 // its exit status (commands.hpp): input 2, output 4, anything else 2 with
 // its message.
@@ -342,16 +357,16 @@ int run_command(const Commands& commands) {
     for (const auto& [sub, run] : commands)
       if (*sub) return run();
   } catch (const InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    fmt::print(stderr, "{}\n", painted_diagnostic(fmt::format("error: {}", e.what())));
     return bad_input;
   } catch (const OutputError& e) {
-    fmt::print(stderr, "error: {}\n", printable(e.what()));
+    fmt::print(stderr, "{}\n", painted_diagnostic("error: " + printable(e.what())));
     return output_error;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "error: out of memory (the input is larger than this machine can hold; see --limit-darts)\n");
     return bad_input;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", printable(e.what()));
+    fmt::print(stderr, "{}\n", painted_diagnostic("error: " + printable(e.what())));
     return bad_input;
   }
   return bad_input;
@@ -391,6 +406,8 @@ int run_command_line(int argc, char** argv, const std::string& version) {
   });
   app.fallthrough();  // the global options (limits) also after the command's name
   add_limits(app);
+  OutputOptions output;
+  add_output_options(app, output);
 
   Commands commands;
   add_validate(app, commands);
@@ -423,6 +440,7 @@ int run_command_line(int argc, char** argv, const std::string& version) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     return report_parse_error(table, e.what(), argc, argv);
   }
+  set_terminal(output.color == "always" ? ColorChoice::always : output.color == "never" ? ColorChoice::never : ColorChoice::automatic, output.quiet);
   return run_command(commands);
 }
 

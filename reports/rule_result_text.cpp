@@ -1,7 +1,9 @@
+#include "core/terminal.hpp"
 #include "core/wording.hpp"
 #include "reports/rule_result_text.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 #include <fmt/format.h>
@@ -142,70 +144,157 @@ std::string condition_cell(const RuleVerdict& v, RuleCondition kind) {
   return skipped ? "skipped" : "ok";
 }
 
+namespace {
+
+// The rows of check's table and their column widths, fitted to the
+// terminal (core/terminal.hpp): each column as wide as its longest cell;
+// when a row would overflow, the rule column narrows and a longer name
+// gets a line of its own above its row. Lines under a row wrap at the
+// width, indented under the cells.
+struct CheckColumns {
+  std::vector<std::string> names, models, verdicts;
+  std::vector<std::array<std::string, 5>> cells;  // I, dangling, O, C, embeddings
+  std::size_t name = 4, model = 5, verdict = 7;
+  std::array<std::size_t, 5> cell{1, 8, 1, 1, 10};
+  bool embedded = false;
+  bool compact = false;  // too narrow for the condition columns: the verdict names the failures
+
+  std::size_t fixed() const {
+    if (compact) return 2 + model + 1 + 7 + 2;
+    std::size_t w = 2 + model + 1 + cell[0] + 1 + cell[1] + 1 + cell[2] + 1 + cell[3] + 1 + 7 + 2;
+    return embedded ? w + cell[4] + 1 : w;
+  }
+};
+
+std::string padded(const std::string& text, std::size_t width) {
+  const std::size_t n = columns(text);
+  return n >= width ? text : text + std::string(width - n, ' ');
+}
+
+// A cell's text padded, then coloured by what it says (colour codes take no
+// columns, so they go on after the padding).
+std::string cell_text(const std::string& text, std::size_t width, bool colour) {
+  const bool failing = text.rfind("fails", 0) == 0;
+  return failing ? paint(padded(text, width), Tone::warning, colour) : padded(text, width);
+}
+
+// `text` under a row: wrapped at the terminal's width, indented by `indent`.
+std::string row_note(std::size_t indent, const std::string& text) {
+  const std::size_t width = terminal().width;
+  const std::size_t room = width > indent + 20 ? width - indent : 20;
+  std::string out;
+  for (const auto& line : wrap_words(text, room)) out += std::string(indent, ' ') + line + "\n";
+  return out;
+}
+
+}  // namespace
+
 std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& results, std::size_t baseline_mismatches, const TableOptions& o) {
   std::string out;
-  std::size_t width = 4;
-  for (const auto& r : results) width = std::max(width, printable(r.name()).size());
-  const bool embedded = !catalog.embeddings.empty();
-  std::vector<std::string> ebd_cells;
-  std::size_t ebd_width = 10;
+  const bool colour = terminal().color_stdout;
+  CheckColumns t;
+  t.embedded = !catalog.embeddings.empty();
   for (const auto& r : results) {
     const auto bad = failing_names(r.embedding);
-    ebd_cells.push_back(bad.empty() ? "ok" : fmt::format("fails {}", fmt::join(bad, ",")));
-    ebd_width = std::max(ebd_width, ebd_cells.back().size());
+    t.names.push_back(printable(r.name()));
+    t.models.push_back(printable(r.entry->rule.model().name));
+    t.verdicts.push_back(r.verdict_text());
+    t.cells.push_back({condition_cell(r.verdict, RuleCondition::incident_arcs), condition_cell(r.verdict, RuleCondition::dangling),
+                       condition_cell(r.verdict, RuleCondition::non_orientation), condition_cell(r.verdict, RuleCondition::cycle),
+                       bad.empty() ? "ok" : fmt::format("fails {}", fmt::join(bad, ","))});
+    t.name = std::max(t.name, columns(t.names.back()));
+    t.model = std::max(t.model, columns(t.models.back()));
+    t.verdict = std::max(t.verdict, columns(t.verdicts.back()));
+    for (std::size_t c = 0; c < 5; ++c) t.cell[c] = std::max(t.cell[c], columns(t.cells.back()[c]));
   }
+  const std::size_t width = terminal().width;
+  // The verdict column keeps at least 20 columns (a longer verdict wraps
+  // under itself); the names give up the rest.
+  const std::size_t verdict_room = std::min<std::size_t>(t.verdict, 20);
+  t.compact = 12 + t.fixed() + verdict_room > width;
+  if (t.name + t.fixed() + verdict_room > width)
+    t.name = std::max<std::size_t>(12, width > t.fixed() + verdict_room ? width - t.fixed() - verdict_room : 0);
+  const std::size_t indent = t.name + 2;
   if (!catalog.modeler.empty()) {
     std::vector<std::string> e;
     for (const auto& d : catalog.embeddings) e.push_back(fmt::format("{} <{}>", d.name, fmt::join(d.orbit, ",")));
-    out +=
-        printable(fmt::format("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}", catalog.modeler, o.catalog, catalog.rules.size(),
-                              catalog.skipped.size(), e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", ")))) +
-        "\n\n";
+    for (const auto& line : wrap_words(printable(fmt::format("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}", catalog.modeler,
+                                                             o.catalog, catalog.rules.size(), catalog.skipped.size(),
+                                                             e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", ")))),
+                                       width))
+      out += line + "\n";
+    out += "\n";
   }
-  out += fmt::format("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7}  {}\n", "rule", width, "model", "I", "dangling", "O", "C",
-                     embedded ? fmt::format("{:<{}} ", "embeddings", ebd_width) : "", "ms", "verdict");
-  for (std::size_t row = 0; row < results.size(); ++row) {
-    const auto& r = results[row];
+  const auto row = [&](const std::string& name, const std::string& model, const std::array<std::string, 5>& cells, const std::string& ms,
+                       const std::string& verdict, bool paint_cells) {
+    std::string line = padded(name, t.name) + "  " + padded(model, t.model) + " ";
+    for (std::size_t c = 0; c < 4 && !t.compact; ++c) line += cell_text(cells[c], t.cell[c], paint_cells && colour) + " ";
+    if (t.embedded && !t.compact) line += cell_text(cells[4], t.cell[4], paint_cells && colour) + " ";
+    return line + fmt::format("{:>7}  ", ms) + verdict + "\n";
+  };
+  // The verdict's lines: one when it fits after the cells, else wrapped
+  // under its own column.
+  const auto verdict_lines = [&](const std::string& text, Tone tone) {
+    const std::size_t start = t.name + t.fixed();
+    std::vector<std::string> lines = wrap_words(text, std::max<std::size_t>(width > start ? width - start : 0, 16));
+    for (auto& line : lines) line = paint(line, tone, colour);
+    return lines;
+  };
+  out += row("rule", "model", {"I", "dangling", "O", "C", "embeddings"}, "ms", "verdict", false);
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const auto& r = results[k];
     const auto& v = r.verdict;
-    out += fmt::format("{:<{}}  {:<13} {:<10} {:<10} {:<10} {:<12} {}{:>7.2f}  {}{}\n", printable(r.name()), width,
-                       printable(r.entry->rule.model().name), condition_cell(v, RuleCondition::incident_arcs),
-                       condition_cell(v, RuleCondition::dangling), condition_cell(v, RuleCondition::non_orientation),
-                       condition_cell(v, RuleCondition::cycle), embedded ? fmt::format("{:<{}} ", ebd_cells[row], ebd_width) : "", r.static_ms,
-                       r.verdict_text(), r.matches_record() ? "" : fmt::format("   (differs from the {}: see stderr)", r.record_source_name()));
-    for (const auto& caveat : r.entry->caveats) out += fmt::format("{:<{}}  note: {}\n", "", width, printable(caveat));
-    if (r.host_search || r.scheme_search) out += fmt::format("{:<{}}  {}\n", "", width, r.confirmation_text());
+    const std::vector<std::string> verdict = verdict_lines(t.verdicts[k], r.failures.empty() ? Tone::good : Tone::warning);
+    const bool own_line = columns(t.names[k]) > t.name;
+    if (own_line) out += t.names[k] + "\n";
+    out += row(own_line ? "" : t.names[k], t.models[k], t.cells[k], fmt::format("{:.2f}", r.static_ms), verdict.front(), true);
+    for (std::size_t l = 1; l < verdict.size(); ++l) out += std::string(t.name + t.fixed(), ' ') + verdict[l] + "\n";
+    if (!r.matches_record())
+      out += paint(row_note(indent, fmt::format("differs from the {}: see stderr", r.record_source_name())), Tone::error, colour);
+    for (const auto& caveat : r.entry->caveats) out += row_note(indent, "note: " + printable(caveat));
+    if (r.host_search || r.scheme_search) out += row_note(indent, r.confirmation_text());
     if (o.explain && !r.failures.empty()) {
       for (const auto& cond : v.conditions) {
         if (cond.holds) continue;
         for (const auto& w : cond.witnesses)
-          out += fmt::format("{:<{}}    {}{}: {}\n", "", width, cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
-                             printable(w.text));
+          out += row_note(indent + 2, fmt::format("{}{}: {}", cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
+                                                  printable(w.text)));
       }
       for (const auto& e : r.embedding)
         for (const auto& w : e.witnesses)
-          out += fmt::format("{:<{}}    {}{}: {}\n", "", width, e.name, e.required ? "" : " (not required)", printable(w.text));
+          out += row_note(indent + 2, fmt::format("{}{}: {}", e.name, e.required ? "" : " (not required)", printable(w.text)));
       if (r.scheme_search && r.scheme_search->counterexample)
-        out += fmt::format("{:<{}}    host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)\n", "", width,
-                           r.scheme_search->counterexample->origin, printable(r.name()));
-      if (r.host_search && r.host_search->host)
-        out += fmt::format("{:<{}}    host G: {}\n{:<{}}    result H: {}\n", "", width, printable(arcs_text(*r.host_search->host)), "", width,
-                           printable(arcs_text(*r.host_search->result)));
+        out += row_note(indent + 2, fmt::format("host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)",
+                                                r.scheme_search->counterexample->origin, printable(r.name())));
+      if (r.host_search && r.host_search->host) {
+        out += row_note(indent + 2, "host G: " + printable(arcs_text(*r.host_search->host)));
+        out += row_note(indent + 2, "result H: " + printable(arcs_text(*r.host_search->result)));
+      }
     }
   }
   const bool whole_catalog = results.size() == catalog.rules.size();
   if (whole_catalog)
     for (const auto& sk : catalog.skipped)
-      out += printable(fmt::format("{:<{}}  not checked ({}): {}", sk.name, width, sk.location.str(), sk.why)) + "\n";
-  if (embedded)
-    out += fmt::format("\nembeddings: {}{}\n", sufficiency_note,
-                       catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated");
+      out += printable(fmt::format("{}  not checked ({}): {}", padded(sk.name, t.name), sk.location.str(), sk.why)) + "\n";
+  if (t.embedded) {
+    out += "\n";
+    for (const auto& line : wrap_words(
+             fmt::format("embeddings: {}{}", sufficiency_note,
+                         catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated"),
+             width))
+      out += line + "\n";
+  }
   const auto counts = count_results(results);
   const std::size_t mismatches = counts.mismatches + baseline_mismatches;
   const std::string_view source = results.empty() ? "catalog" : results.front().record_source_name();
-  out += fmt::format("\n{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}\n", plural(counts.rules, "rule", "rules"),
-                     counts.consistent, counts.failing,
-                     catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
-                     plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source);
+  out += "\n";
+  for (const auto& line :
+       wrap_words(fmt::format("{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}", plural(counts.rules, "rule", "rules"),
+                              counts.consistent, counts.failing,
+                              catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
+                              plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source),
+                  width))
+    out += line + "\n";
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include "analysis/interrupt.hpp"
 #include "analysis/verdict_record.hpp"
 #include "core/output_file.hpp"
+#include "core/terminal.hpp"
 #include "core/wording.hpp"
 #include "reports/ci_formats.hpp"
 #include "reports/html_page.hpp"
@@ -28,7 +29,7 @@ void print_check(const std::string& format, const std::string& catalog_file, con
   } else if (format == "json") {
     const auto doc = results_document("check", catalog_file, catalog, results, baseline_mismatches);
     fmt::print("{}\n", json_text(doc));
-  } else {
+  } else if (!terminal().quiet) {
     fmt::print("{}", check_table(catalog, results, baseline_mismatches.size(), {explain, catalog_file}));
   }
 }
@@ -49,7 +50,7 @@ void print_fuzz(const std::string& format, const FuzzRun& run, const Results& re
     doc["rules"] = std::move(rows);
     doc["summary"] = fuzz_summary_json(run, results);
     fmt::print("{}\n", json_text(std::move(doc)));
-  } else {
+  } else if (!terminal().quiet) {
     fmt::print("{}", fuzz_table(run, results));
   }
 }
@@ -57,7 +58,7 @@ void print_fuzz(const std::string& format, const FuzzRun& run, const Results& re
 void print_prove(const std::string& format, const ProveRun& run, const Results& results) {
   if (format == "json")
     fmt::print("{}\n", json_text(prove_document(run, results)));
-  else
+  else if (!terminal().quiet)
     fmt::print("{}", prove_text(run, results));
 }
 
@@ -95,8 +96,9 @@ void write_report(const std::string& dir_name, const std::string& engine, const 
   Pictures pictures(dir.string(), engine);
   std::string body = fmt::format("<h1>dartcheck report: {}</h1>\n", html_text(catalog_file)) + summary_html(rows, catalog, stages);
   body +=
-      "<p class=\"note\">Pictures: L and R side by side; preserved black, deleted red, added green; hooks with a double border; "
-      "filled nodes and doubled arcs are the witnesses of a failed condition. Links: 0 black, 1 red, 2 blue, 3 green.</p>\n";
+      "<p class=\"note\">Pictures: L and R side by side; lines say what the rule does (solid preserved, dashed deleted, bold added), "
+      "an arc's colour its dimension (0 black, 1 red, 2 blue, 3 green), each picture's legend says both; hooks with a double border; "
+      "filled nodes and doubled arcs are the witnesses of a failed condition, named in the caption.</p>\n";
   body += verdict_table_html(rows, stages.fuzz_seconds.has_value(), stages.prove_darts > 0);
   for (const auto& r : rows) body += rule_section_html(r, pictures);
   const std::string index = (dir / "index.html").string(), data = (dir / "results.json").string();
@@ -104,12 +106,13 @@ void write_report(const std::string& dir_name, const std::string& engine, const 
   write_file(index, page);
   // The same results as data, in check's JSON form, beside the page.
   write_file(data, json_text(results_document("report", catalog_file, catalog, rows, baseline_mismatches)) + "\n");
-  fmt::print("wrote {} ({}, {} pictures, {} bytes) and {}\n", index, counted(rows.size(), "rule"), pictures.count(), page.size(), data);
+  if (!terminal().quiet)
+    fmt::print("wrote {} ({}, {} pictures, {} bytes) and {}\n", index, counted(rows.size(), "rule"), pictures.count(), page.size(), data);
 }
 
 int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected) {
   for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", printable(m));
-  for (const auto& line : mismatch_lines(results)) fmt::print(stderr, "{}\n", line);
+  for (const auto& line : mismatch_lines(results)) fmt::print(stderr, "{}\n", painted_diagnostic(line));
   const auto counts = analysis::count_results(results);
   if (analysis::interrupted())
     fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), selected, selected == 1 ? "" : "s");
