@@ -122,7 +122,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
         continue;
       }
       ++out.applications;
-      Counterexample cx{planted.map, hooks, {}, h.map, {}, {}, {}, false, {}, {}, {}, {}};
+      Counterexample cx{planted.map, hooks, {}, h.map, {}, {}, {}, false, {}, {}, {}, {}, {}};
       cx.violations = check_map(h.map).violations;
       for (const auto& c : d.value->conflicts) cx.embedding_failures.push_back(c);
       for (const Embedding& e : h.embeddings) {

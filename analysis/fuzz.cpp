@@ -123,14 +123,16 @@ std::optional<Counterexample> apply_and_check(const Operation& entry, const Map&
   auto r = applier->apply(scratch, hooks);
   refusal = r.refusal;
   std::string why = std::move(r.why);
-  std::vector<std::pair<std::string, Dart>> match;
+  std::vector<std::pair<std::string, Dart>> match, comatch;
   if (r.ok()) {
     if (!r.value->pattern)  // a DPO rule: L's nodes on their darts
       for (NodeId v = 0; v < rule.left().node_count(); ++v) match.emplace_back(rule.left().name(v), r.value->match[v][0]);
+    for (NodeId v = 0; v < rule.right().node_count() && v < r.value->comatch.size(); ++v)
+      for (Dart d : r.value->comatch[v]) comatch.emplace_back(rule.right().name(v), d);
     applier->recycle(std::move(*r.value));
   }
   if (refusal != Refusal::none && refusal != Refusal::not_representable) return std::nullopt;
-  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}, {}, {}};
+  Counterexample cx{g, {hooks.begin(), hooks.end()}, std::move(match), std::nullopt, {}, {}, {}, false, {}, {}, {}, {}, {}};
   if (refusal == Refusal::not_representable) {
     cx.unrepresentable = std::move(why);
     return cx;
@@ -139,6 +141,7 @@ std::optional<Counterexample> apply_and_check(const Operation& entry, const Map&
   if (report.valid()) return std::nullopt;
   cx.result = scratch;
   cx.violations = std::move(report.violations);
+  cx.comatch = std::move(comatch);
   return cx;
 }
 
@@ -237,7 +240,7 @@ class Fuzzer {
       Map h{rule_.model()};
       auto contradictions = events_.contradictions(g, hooks, h);
       if (!contradictions.empty()) {
-        Counterexample e{g, {hooks.begin(), hooks.end()}, {}, std::move(h), {}, {}, phase_, false, {}, {}, {}, {}};
+        Counterexample e{g, {hooks.begin(), hooks.end()}, {}, std::move(h), {}, {}, phase_, false, {}, {}, {}, {}, {}};
         e.event_contradictions = std::move(contradictions);
         out_.event_contradiction = std::move(e);
       }

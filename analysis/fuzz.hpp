@@ -69,6 +69,9 @@ struct Counterexample {
   /// (analysis/event_checks): one sentence each. Only in
   /// FuzzReport::event_contradiction.
   std::vector<std::string> event_contradictions;
+  /// R node -> dart of H (every position of a scheme's node): the rule
+  /// nodes H's darts come from, for its picture as the match is for G's.
+  std::vector<std::pair<std::string, Dart>> comatch;
 };
 
 struct FuzzReport {

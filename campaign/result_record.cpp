@@ -59,6 +59,8 @@ Json optional_json(const std::optional<T>& v, F&& f) {
 Json counterexample_json(const Counterexample& cx) {
   Json match = Json::array();
   for (const auto& [node, dart] : cx.match) match.push_back(Json::array({node, dart}));
+  Json comatch = Json::array();
+  for (const auto& [node, dart] : cx.comatch) comatch.push_back(Json::array({node, dart}));
   return Json{{"host", map_json(cx.host)},
               {"hooks", cx.hooks},
               {"match", std::move(match)},
@@ -70,7 +72,8 @@ Json counterexample_json(const Counterexample& cx) {
               {"embedding_failures", cx.embedding_failures},
               {"broken_embeddings", cx.broken_embeddings},
               {"orbit_values", cx.orbit_values},
-              {"event_contradictions", cx.event_contradictions}};
+              {"event_contradictions", cx.event_contradictions},
+              {"comatch", std::move(comatch)}};
 }
 
 Json fuzz_record(const FuzzReport& f) {
@@ -271,7 +274,7 @@ std::vector<Violation> read_violations(const In& in) {
 }
 
 Counterexample read_counterexample(const In& in) {
-  Counterexample cx{read_map(in["host"]), {}, {}, std::nullopt, {}, {}, {}, false, {}, {}, {}, {}};
+  Counterexample cx{read_map(in["host"]), {}, {}, std::nullopt, {}, {}, {}, false, {}, {}, {}, {}, {}};
   const In hooks = in["hooks"];
   for (std::size_t k = 0; k < hooks.size(); ++k) cx.hooks.push_back(static_cast<Dart>(hooks[k].count(cx.host.size())));
   const In match = in["match"];
@@ -288,6 +291,12 @@ Counterexample read_counterexample(const In& in) {
   cx.broken_embeddings = in["broken_embeddings"].strings();
   cx.orbit_values = in["orbit_values"].strings();
   cx.event_contradictions = in["event_contradictions"].strings();
+  const In comatch = in["comatch"];
+  const std::size_t h_size = cx.result ? cx.result->size() : 0;
+  for (std::size_t k = 0; k < comatch.size(); ++k) {
+    if (comatch[k].size() != 2) comatch[k].fail("[node, dart]");
+    cx.comatch.emplace_back(comatch[k][0].str(), static_cast<Dart>(comatch[k][1].count(h_size)));
+  }
   return cx;
 }
 

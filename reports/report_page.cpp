@@ -98,7 +98,13 @@ std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const
     // each dart tagged with its value.
     for (std::size_t d = 0; d < cx.orbit_values.size() && d < p.broken.size(); ++d)
       if (!cx.orbit_values[d].empty()) p.broken[d] = true;
-    p.result_tags = cx.orbit_values;
+    // Each dart of H named by the rule node it comes from (as G's by the
+    // match), then the values of the orbits that broke.
+    p.result_tags.assign(cx.result->size(), "");
+    for (const auto& [node, d] : cx.comatch)
+      if (d < p.result_tags.size()) p.result_tags[d] = node;
+    for (std::size_t d = 0; d < cx.orbit_values.size() && d < p.result_tags.size(); ++d)
+      if (!cx.orbit_values[d].empty()) p.result_tags[d] += (p.result_tags[d].empty() ? "" : "\n") + cx.orbit_values[d];
     p.broken_label = fmt::format("filled: {}", cx.broken_predicate());
     p.captions.push_back(broken_caption(cx));
   } else {

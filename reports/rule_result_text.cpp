@@ -85,6 +85,51 @@ std::string mismatch_summary(const std::vector<RuleResult>& results) {
   return fmt::format("{} differ{} from the {}", plural(n, "verdict", "verdicts"), n == 1 ? "s" : "", results.front().record_source_name());
 }
 
+namespace {
+
+// The rows of check's table and their column widths, fitted to the
+// terminal (core/terminal.hpp): each column as wide as its longest cell;
+// when a row would overflow, the rule column narrows and a longer name
+// gets a line of its own above its row. Lines under a row wrap at the
+// width, indented under the cells.
+struct CheckColumns {
+  std::vector<std::string> names, models, verdicts;
+  std::vector<std::array<std::string, 5>> cells;  // I, dangling, O, C, embeddings
+  std::size_t name = 4, model = 5, verdict = 7;
+  std::array<std::size_t, 5> cell{1, 8, 1, 1, 10};
+  bool embedded = false;
+  bool compact = false;  // too narrow for the condition columns: the verdict names the failures
+
+  std::size_t fixed() const {
+    if (compact) return 2 + model + 1 + 7 + 2;
+    std::size_t w = 2 + model + 1 + cell[0] + 1 + cell[1] + 1 + cell[2] + 1 + cell[3] + 1 + 7 + 2;
+    return embedded ? w + cell[4] + 1 : w;
+  }
+};
+
+std::string padded(const std::string& text, std::size_t width) {
+  const std::size_t n = columns(text);
+  return n >= width ? text : text + std::string(width - n, ' ');
+}
+
+// A cell's text padded, then coloured by what it says (colour codes take no
+// columns, so they go on after the padding).
+std::string cell_text(const std::string& text, std::size_t width, bool colour) {
+  const bool failing = text.rfind("fails", 0) == 0;
+  return failing ? paint(padded(text, width), Tone::warning, colour) : padded(text, width);
+}
+
+// `text` under a row: wrapped at the terminal's width, indented by `indent`.
+std::string row_note(std::size_t indent, const std::string& text) {
+  const std::size_t width = terminal().width;
+  const std::size_t room = width > indent + 20 ? width - indent : 20;
+  std::string out;
+  for (const auto& line : wrap_words(text, room)) out += std::string(indent, ' ') + line + "\n";
+  return out;
+}
+
+}  // namespace
+
 std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& results) {
   std::string out;
   std::size_t width = 4, applications = 0;
@@ -143,51 +188,6 @@ std::string condition_cell(const RuleVerdict& v, RuleCondition kind) {
   if (!bad.empty()) return "fails " + fmt::format("{}", fmt::join(bad, ","));
   return skipped ? "skipped" : "ok";
 }
-
-namespace {
-
-// The rows of check's table and their column widths, fitted to the
-// terminal (core/terminal.hpp): each column as wide as its longest cell;
-// when a row would overflow, the rule column narrows and a longer name
-// gets a line of its own above its row. Lines under a row wrap at the
-// width, indented under the cells.
-struct CheckColumns {
-  std::vector<std::string> names, models, verdicts;
-  std::vector<std::array<std::string, 5>> cells;  // I, dangling, O, C, embeddings
-  std::size_t name = 4, model = 5, verdict = 7;
-  std::array<std::size_t, 5> cell{1, 8, 1, 1, 10};
-  bool embedded = false;
-  bool compact = false;  // too narrow for the condition columns: the verdict names the failures
-
-  std::size_t fixed() const {
-    if (compact) return 2 + model + 1 + 7 + 2;
-    std::size_t w = 2 + model + 1 + cell[0] + 1 + cell[1] + 1 + cell[2] + 1 + cell[3] + 1 + 7 + 2;
-    return embedded ? w + cell[4] + 1 : w;
-  }
-};
-
-std::string padded(const std::string& text, std::size_t width) {
-  const std::size_t n = columns(text);
-  return n >= width ? text : text + std::string(width - n, ' ');
-}
-
-// A cell's text padded, then coloured by what it says (colour codes take no
-// columns, so they go on after the padding).
-std::string cell_text(const std::string& text, std::size_t width, bool colour) {
-  const bool failing = text.rfind("fails", 0) == 0;
-  return failing ? paint(padded(text, width), Tone::warning, colour) : padded(text, width);
-}
-
-// `text` under a row: wrapped at the terminal's width, indented by `indent`.
-std::string row_note(std::size_t indent, const std::string& text) {
-  const std::size_t width = terminal().width;
-  const std::size_t room = width > indent + 20 ? width - indent : 20;
-  std::string out;
-  for (const auto& line : wrap_words(text, room)) out += std::string(indent, ' ') + line + "\n";
-  return out;
-}
-
-}  // namespace
 
 std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& results, std::size_t baseline_mismatches, const TableOptions& o) {
   std::string out;
@@ -287,14 +287,11 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
   const auto counts = count_results(results);
   const std::size_t mismatches = counts.mismatches + baseline_mismatches;
   const std::string_view source = results.empty() ? "catalog" : results.front().record_source_name();
-  out += "\n";
-  for (const auto& line :
-       wrap_words(fmt::format("{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}", plural(counts.rules, "rule", "rules"),
-                              counts.consistent, counts.failing,
-                              catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
-                              plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source),
-                  width))
-    out += line + "\n";
+  // The summary stays on one line, for the logs that grep it.
+  out += fmt::format("\n{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}\n", plural(counts.rules, "rule", "rules"),
+                     counts.consistent, counts.failing,
+                     catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
+                     plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source);
   return out;
 }
 

@@ -10,11 +10,13 @@ Statements tested:
   wins over NO_COLOR (no-color.org: the user's explicit choice).
 - check's table fits the width: COLUMNS, else the terminal's (a pty of 72
   columns), else 100; a line may pass it only when it is one unbreakable word
-  or a diagnostic (file:line:column: error: ..., one line for its parsers).
+  or a diagnostic (file:line:column: error: ..., one line for its parsers)
+  or a replay command (one line to copy) or the closing summary line.
 
 usage: terminal_output.py DARTCHECK REPO
 """
 import fcntl
+import re
 import os
 import pty
 import struct
@@ -71,8 +73,11 @@ def fits(text, width, what):
         while ESC in plain:  # drop colour codes: they take no columns
             k = plain.index(ESC)
             plain = plain[:k] + plain[plain.index("m", k) + 1:]
-        # A diagnostic stays on one line for the tools that parse it.
-        if len(plain) > width and len(plain.split()) > 1 and ": error: " not in plain:
+        # A diagnostic stays on one line for the tools that parse it, a
+        # replay command for the mouse that copies it.
+        # The closing summary ("82 rules, ...") is one line for the logs that grep it.
+        summary = re.match(r"\d+ rules?[,:] ", plain)
+        if len(plain) > width and len(plain.split()) > 1 and ": error: " not in plain and "replay: " not in plain and not summary:
             problems.append(f"{what}: line of {len(plain)} columns over {width}: {plain!r}")
 
 
