@@ -46,10 +46,15 @@ std::vector<std::string> Counterexample::broken() const {
 }
 
 std::string Counterexample::broken_predicate() const {
-  std::vector<std::string> constraints, clauses;
+  std::vector<std::string> constraints;
   for (const auto& name : broken())
     if (name != "not-representable" && name != "events") constraints.push_back(name);
-  if (!constraints.empty()) clauses.push_back(fmt::format("breaks {}", fmt::join(constraints, ", ")));
+  return broken_predicate(fmt::format("{}", fmt::join(constraints, ", ")));
+}
+
+std::string Counterexample::broken_predicate(std::string_view constraints) const {
+  std::vector<std::string> clauses;
+  if (!constraints.empty()) clauses.push_back(fmt::format("breaks {}", constraints));
   if (!unrepresentable.empty()) clauses.push_back("has no dense form (not-representable)");
   if (!event_contradictions.empty()) clauses.push_back("contradicts the static event log (events)");
   if (clauses.empty()) return "breaks nothing";

@@ -22,6 +22,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "checkers/rule_conditions.hpp"
@@ -56,6 +57,9 @@ struct Counterexample {
   /// "breaks C(0,2) and has no dense form (not-representable)",
   /// "contradicts the static event log (events)".
   std::string broken_predicate() const;
+  /// The same with the broken constraints as the caller writes them (a
+  /// picture's "I(2) at darts 0, 4; C(0,2) at dart 3"), empty if none.
+  std::string broken_predicate(std::string_view constraints) const;
   /// Embedded rules: H's orbits with two values or unlabeled darts, and
   /// the extended rule's conflicts (003 Def. 6, 13), as sentences, and
   /// the embeddings they concern ("embedding(pos)").

@@ -80,7 +80,10 @@ std::vector<std::string> wrap_words(std::string_view text, std::size_t width) {
     const std::string_view word = text.substr(k, space == std::string_view::npos ? std::string_view::npos : space - k);
     k = space == std::string_view::npos ? text.size() : space + 1;
     if (word.empty()) continue;
-    if (!line.empty() && columns(line) + 1 + columns(word) > width) lines.push_back(std::move(line)), line.clear();
+    if (!line.empty() && columns(line) + 1 + columns(word) > width) {
+      lines.push_back(line);
+      line.clear();
+    }
     if (!line.empty()) line += ' ';
     line += word;
   }

@@ -60,11 +60,7 @@ std::string broken_caption(const Counterexample& cx) {
         fmt::format("{} at dart{} {}{}", name, darts.size() == 1 ? "" : "s", fmt::join(first, ", "), darts.size() > shown ? ", ..." : ""));
   }
   for (const auto& e : cx.broken_embeddings) parts.push_back(e);
-  if (parts.empty()) return fmt::format("H {}", cx.broken_predicate());
-  std::string out = fmt::format("H breaks {}", fmt::join(parts, "; "));
-  if (!cx.unrepresentable.empty()) out += " and has no dense form (not-representable)";
-  if (!cx.event_contradictions.empty()) out += " and contradicts the static event log (events)";
-  return out;
+  return "H " + (parts.empty() ? cx.broken_predicate() : cx.broken_predicate(fmt::format("{}", fmt::join(parts, "; "))));
 }
 
 // The three panels of a counterexample: the match (DPO: L's node names on

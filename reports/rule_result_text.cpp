@@ -119,7 +119,8 @@ std::string cell_text(const std::string& text, std::size_t width, bool colour) {
   return failing ? paint(padded(text, width), Tone::warning, colour) : padded(text, width);
 }
 
-// `text` under a row: wrapped at the terminal's width, indented by `indent`.
+// `text` under a row (or, at indent 0, a paragraph of its own): wrapped at
+// the terminal's width, indented by `indent`.
 std::string row_note(std::size_t indent, const std::string& text) {
   const std::size_t width = terminal().width;
   const std::size_t room = width > indent + 20 ? width - indent : 20;
@@ -218,12 +219,10 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
   if (!catalog.modeler.empty()) {
     std::vector<std::string> e;
     for (const auto& d : catalog.embeddings) e.push_back(fmt::format("{} <{}>", d.name, fmt::join(d.orbit, ",")));
-    for (const auto& line : wrap_words(printable(fmt::format("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}", catalog.modeler,
-                                                             o.catalog, catalog.rules.size(), catalog.skipped.size(),
-                                                             e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", ")))),
-                                       width))
-      out += line + "\n";
-    out += "\n";
+    out += row_note(0, printable(fmt::format("Jerboa modeler {} ({}): {} rules read, {} skipped; embeddings: {}", catalog.modeler, o.catalog,
+                                             catalog.rules.size(), catalog.skipped.size(),
+                                             e.empty() ? std::string("none") : fmt::format("{}", fmt::join(e, ", "))))) +
+           "\n";
   }
   const auto row = [&](const std::string& name, const std::string& model, const std::array<std::string, 5>& cells, const std::string& ms,
                        const std::string& verdict, bool paint_cells) {
@@ -277,12 +276,10 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
     for (const auto& sk : catalog.skipped)
       out += printable(fmt::format("{}  not checked ({}): {}", padded(sk.name, t.name), sk.location.str(), sk.why)) + "\n";
   if (t.embedded) {
-    out += "\n";
-    for (const auto& line : wrap_words(
-             fmt::format("embeddings: {}{}", sufficiency_note,
-                         catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated"),
-             width))
-      out += line + "\n";
+    out += '\n';
+    out += row_note(
+        0, fmt::format("embeddings: {}{}", sufficiency_note,
+                       catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated"));
   }
   const auto counts = count_results(results);
   const std::size_t mismatches = counts.mismatches + baseline_mismatches;

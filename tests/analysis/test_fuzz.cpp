@@ -206,6 +206,7 @@ TEST(Fuzz, BrokenPredicateReadsAsASentence) {
   EXPECT_EQ(cx.broken_predicate(), "has no dense form (not-representable)");
   cx.broken_embeddings = {"pos"};
   EXPECT_EQ(cx.broken_predicate(), "breaks embedding(pos) and has no dense form (not-representable)");
+  EXPECT_EQ(cx.broken_predicate("I(2) at darts 0, 4"), "breaks I(2) at darts 0, 4 and has no dense form (not-representable)");
   cx.unrepresentable.clear();
   cx.event_contradictions = {"<0,1> split"};
   EXPECT_EQ(cx.broken_predicate(), "breaks embedding(pos) and contradicts the static event log (events)");
