@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "core/terminal.hpp"
 #include "analysis/exit_status.hpp"
 #include "analysis/interrupt.hpp"
 #include "core/input_error.hpp"
@@ -88,8 +89,9 @@ int run_jobs(const JobsRun& run) {
   // Four shards per job, started as jobs finish: a rule hashes to a shard
   // whatever its cost, so finer shards even out the processes' loads.
   const std::size_t shards = run.jobs * 4;
-  fmt::print(stderr, "dartcheck: {} shards on {} processes{}\n", shards, run.jobs,
-             run.seed ? fmt::format(", seed {} (replay with --seed {})", *run.seed, *run.seed) : "");
+  if (!terminal().quiet)
+    fmt::print(stderr, "dartcheck: {} shards on {} processes{}\n", shards, run.jobs,
+               run.seed ? fmt::format(", seed {} (replay with --seed {})", *run.seed, *run.seed) : "");
   MergeRequest merge = run.merge;
   std::map<pid_t, std::size_t> running;
   int failed = 0;

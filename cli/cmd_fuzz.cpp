@@ -19,6 +19,7 @@
 #include "analysis/verdict_record.hpp"
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
+#include "core/terminal.hpp"
 #include "core/wording.hpp"
 #include "cli/options.hpp"
 #include "reports/run_output.hpp"
@@ -68,9 +69,10 @@ int fuzz(const FuzzCommand& c) {
   const FuzzOptions o = fuzz_options(c, seconds);
   const FuzzTargets targets = fuzz_targets(run.catalog(), c.rule, c.maps);
   const std::size_t selected = targets.rules.size();
-  fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {}, {}\n", o.seed, o.seed, counted(selected, "rule"),
-             seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
-                     : fmt::format("{} applications per rule", o.runs));
+  if (!terminal().quiet)
+    fmt::print(stderr, "dartcheck fuzz: seed {} (replay with --seed {}), {}, {}\n", o.seed, o.seed, counted(selected, "rule"),
+               seconds ? fmt::format("{} s{}", *seconds, c.runs ? fmt::format(" or {} applications per rule", *c.runs) : "")
+                       : fmt::format("{} applications per rule", o.runs));
   // The options that change results go in the header: shards merge only
   // when they agree (a --time run merges, but is not deterministic).
   run.open_lines(
@@ -83,7 +85,7 @@ int fuzz(const FuzzCommand& c) {
     add_fuzz(results.back(), r, o.seed, c.out, c.catalog);
     run.finished(results.back());
   };
-  fuzz_rules(targets.rules, targets.seeds, o, seconds, isatty(fileno(stderr)) != 0, finished);
+  fuzz_rules(targets.rules, targets.seeds, o, seconds, isatty(fileno(stderr)) != 0 && !terminal().quiet, finished);
   const reports::FuzzRun fuzz_run{c.catalog, o.seed, run.seconds(), selected, interrupted(), run.baseline_mismatches()};
   const int status = run.finish(results, selected, &fuzz_run);
   if (!run.writes_lines()) print_fuzz(c.format, fuzz_run, results);

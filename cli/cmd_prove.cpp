@@ -20,6 +20,7 @@
 #include "reports/run_output.hpp"
 #include "analysis/rule_result.hpp"
 #include "reports/rule_result_text.hpp"
+#include "core/terminal.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "proofs/rule_prover.hpp"
@@ -48,7 +49,7 @@ int prove(const ProveCommand& c) {
   run.open_lines({{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}});
   std::vector<RuleResult> results;
   const auto rules = run.rules();
-  StageProgress progress(rules.size(), isatty(fileno(stderr)) != 0);
+  StageProgress progress(rules.size(), isatty(fileno(stderr)) != 0 && !terminal().quiet);
   for (std::size_t k = 0; k < rules.size() && !interrupted(); ++k) {  // a rule's queries finish; the next ones do not start
     progress.start(
         k, fmt::format("{}: asking Z3 for a host up to {} darts", rules[k]->rule.name(), rules[k]->words.scheme ? o.scheme_darts : o.max_darts));

@@ -23,6 +23,7 @@
 #include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
 #include "reports/run_output.hpp"
+#include "core/terminal.hpp"
 #include "core/wording.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
@@ -58,13 +59,15 @@ int report(const ReportOptions& o) {
   for (const CatalogRule* e : run.rules()) rows.push_back(analyse_static(run.catalog(), *e, 0, {}, run.source()));
   const std::size_t selected = rows.size();
   if (stages.fuzz_seconds) {
-    fmt::print(stderr, "dartcheck report: fuzzing {} for {} s, seed {}\n", counted(rows.size(), "rule"), *stages.fuzz_seconds, stages.seed);
-    fuzz_all(rows, run.catalog(), o.rule, *stages.fuzz_seconds, stages.seed, cx_dir, o.catalog, isatty(fileno(stderr)) != 0);
+    if (!terminal().quiet)
+      fmt::print(stderr, "dartcheck report: fuzzing {} for {} s, seed {}\n", counted(rows.size(), "rule"), *stages.fuzz_seconds, stages.seed);
+    fuzz_all(rows, run.catalog(), o.rule, *stages.fuzz_seconds, stages.seed, cx_dir, o.catalog, isatty(fileno(stderr)) != 0 && !terminal().quiet);
   }
   if (stages.prove_darts > 0) {
-    fmt::print(stderr, "dartcheck report: proving {} up to {} darts (schemes {})\n", counted(rows.size(), "rule"), stages.prove_darts,
-               stages.scheme_darts);
-    prove_all(rows, stages.prove_darts, stages.scheme_darts, cx_dir, o.catalog, isatty(fileno(stderr)) != 0);
+    if (!terminal().quiet)
+      fmt::print(stderr, "dartcheck report: proving {} up to {} darts (schemes {})\n", counted(rows.size(), "rule"), stages.prove_darts,
+                 stages.scheme_darts);
+    prove_all(rows, stages.prove_darts, stages.scheme_darts, cx_dir, o.catalog, isatty(fileno(stderr)) != 0 && !terminal().quiet);
   }
   // A shard's lines come after every stage (the fuzz budget is shared by the rules).
   run.open_lines({{"fuzz", o.fuzz},

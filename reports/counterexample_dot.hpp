@@ -1,7 +1,10 @@
-// A counterexample as one picture of three panels (issue "report"): the
-// host map G with the match highlighted, the derived graph H with the darts
+// A counterexample as a figure of three panels (issue "report"): the host
+// map G with the match highlighted, the derived graph H with the darts
 // that break a constraint highlighted, and the rule with the witnesses of
-// its failed conditions. Links are colored by dimension with a legend.
+// its failed conditions; above them a head with the title, what fails and
+// one legend. Each panel is its own picture (issue 39), so that they are
+// laid out top-aligned side by side (svg_figure, or a page's flex row)
+// at their natural sizes.
 #pragma once
 
 #include <optional>
@@ -28,8 +31,16 @@ struct CounterexamplePicture {
   std::vector<std::string> captions;     // under the title: what H breaks, where; the failing conditions
 };
 
-/// G, H and the rule, left to right, with one legend of the dimensions.
-std::string counterexample_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const CounterexamplePicture& p,
-                               const JerboaLabels* labels = nullptr);
+/// The figure's four DOT pictures. Node ids: "G:" + dart, "H:" + dart,
+/// "rule:L:" / "rule:R:" + node name.
+struct CounterexampleFigure {
+  std::string head;  // title, captions and legend; no nodes
+  std::string host;
+  std::string result;
+  std::string rule;
+};
+
+CounterexampleFigure counterexample_figure(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses,
+                                           const CounterexamplePicture& p, const JerboaLabels* labels = nullptr);
 
 }  // namespace dartcheck::reports

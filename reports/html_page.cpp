@@ -72,6 +72,8 @@ td.ok { background: #e8f5e9; } td.fails { background: #ffebee; } td.skipped, td.
 td.bug { background: #d50000; color: #ffffff; font-weight: bold; }
 a { color: #1565c0; text-decoration: none; } a:hover { text-decoration: underline; }
 .picture { overflow-x: auto; margin: 0.6em 0; } .picture svg { max-width: 100%; height: auto; }
+.figure { margin: 0.6em 0; } .figure svg { max-width: 100%; height: auto; }
+.panels { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 0.5em 1.5em; }
 .note { color: #616161; font-style: italic; } code { font-size: 0.9em; background: #f5f5f5; padding: 0 0.2em; }
 ul.witnesses li { margin: 0.2em 0; } .mismatch { color: #b71c1c; font-weight: bold; }
 )";

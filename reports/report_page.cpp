@@ -18,6 +18,7 @@
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
 #include "reports/rule_result_text.hpp"
+#include "reports/svg_figure.hpp"
 #include "rewriting/scheme_application.hpp"
 
 namespace dartcheck::reports {
@@ -36,6 +37,21 @@ std::string Pictures::add(const std::string& dot, const std::string& file) {
   ++count_;
   return fmt::format("<div class=\"picture\">{}</div>\n<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n",
                      inline_svg(svg, fmt::format("p{}_", count_)), html_text(file), html_text(file));
+}
+
+std::string Pictures::add(const CounterexampleFigure& figure, const std::string& file) {
+  const std::string head = render(figure.head, "svg", engine_);
+  const std::vector<std::string> panels = {render(figure.host, "svg", engine_), render(figure.result, "svg", engine_),
+                                           render(figure.rule, "svg", engine_)};
+  const fs::path path = fs::path(dir_) / file;
+  ensure_directory(path.parent_path().string());
+  write_file(path.string(), svg_figure(head, panels));
+  ++count_;
+  std::string out =
+      fmt::format("<div class=\"figure\">\n<div class=\"head\">{}</div>\n<div class=\"panels\">\n", inline_svg(head, fmt::format("p{}h_", count_)));
+  for (std::size_t k = 0; k < panels.size(); ++k)
+    out += fmt::format("<div class=\"panel\">{}</div>\n", inline_svg(panels[k], fmt::format("p{}_{}_", count_, k)));
+  return out + fmt::format("</div>\n</div>\n<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n", html_text(file), html_text(file));
 }
 
 namespace {
@@ -66,7 +82,7 @@ std::string broken_caption(const Counterexample& cx) {
 // The three panels of a counterexample: the match (DPO: L's node names on
 // their darts; schemes: every dart of each hook's pattern P_v, named by its
 // hook's node), the darts H breaks, and the rule.
-std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const Counterexample& cx, const std::string& title) {
+CounterexampleFigure counterexample_figure(const CatalogRule& e, const RuleVerdict& v, const Counterexample& cx, const std::string& title) {
   CounterexamplePicture p;
   p.title = title;
   p.host = &cx.host;
@@ -109,7 +125,7 @@ std::string counterexample_dot(const CatalogRule& e, const RuleVerdict& v, const
   if (!cx.result) p.captions.push_back("H has no dense form");
   const auto conditions = failure_captions(v);
   p.captions.insert(p.captions.end(), conditions.begin(), conditions.end());
-  return counterexample_dot(e.rule, e.words, failed_witnesses(v), p, labels_of(e));
+  return counterexample_figure(e.rule, e.words, failed_witnesses(v), p, labels_of(e));
 }
 
 // What a counterexample breaks, one sentence per violation (up to 12).
@@ -129,7 +145,7 @@ std::string counterexample_html(const RuleResult& r, const Counterexample& cx, c
                                 html_text(fmt::format("A valid {} of {} darts; applied at hook{} {}, H {}.", e.rule.model().name, cx.host.size(),
                                                       cx.hooks.size() == 1 ? "" : "s", fmt::join(cx.hooks, ","), cx.broken_predicate())),
                                 html_text(cx.origin), cx.minimal ? " (minimal: no smaller host breaks it)" : "");
-  out += pictures.add(counterexample_dot(e, r.verdict, cx, fmt::format("{}: {}", e.rule.name(), heading)), file);
+  out += pictures.add(counterexample_figure(e, r.verdict, cx, fmt::format("{}: {}", e.rule.name(), heading)), file);
   out += violations_html(cx);
   if (!replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(replay));
   return out;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/rule_result.hpp"
+#include "reports/counterexample_dot.hpp"
 
 namespace dartcheck::reports {
 
@@ -19,6 +20,10 @@ class Pictures {
   /// Renders `dot`, writes it to dir/file (OutputError if it cannot) and
   /// returns the HTML that shows it.
   std::string add(const std::string& dot, const std::string& file);
+  /// A counterexample: its head and panels rendered, written to dir/file
+  /// as one SVG (svg_figure), and shown as the head above a row of panels
+  /// that wraps when the page is narrow.
+  std::string add(const CounterexampleFigure& figure, const std::string& file);
   std::size_t count() const { return count_; }
 
  private:

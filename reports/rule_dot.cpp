@@ -178,14 +178,18 @@ std::vector<std::string> failure_captions(const RuleVerdict& v) {
 }
 
 std::string rule_legend(const Model& model, bool witnesses, const TermLines& terms) {
-  return fmt::format(
-      R"(<table border="0" cellspacing="2"><tr><td>lines: solid preserved, dashed deleted, bold added; double border: hook{}{}</td></tr>)"
-      R"(<tr><td>{}</td></tr></table>)",
-      witnesses ? fmt::format(R"(; <font color="{}">filled</font>: witness)", highlight_line) : "",
-      terms.terms ? fmt::format(R"(; embedding: term{})",
-                                terms.failing.empty() ? "" : fmt::format(R"(, <font color="{}"><b>bold</b></font>: failing)", highlight_line))
-                  : "",
-      dimension_legend(model));
+  // One cell per clause: Graphviz spaces the pieces of a line by its own
+  // font metrics, which a browser's font does not match, so pieces of
+  // different colours in one cell can touch.
+  std::string clauses = "<td>lines: solid preserved, dashed deleted, bold added;</td><td>double border: hook</td>";
+  if (witnesses) clauses += fmt::format(R"(<td><font color="{}">filled: witness</font></td>)", highlight_line);
+  if (terms.terms) {
+    clauses += "<td>embedding: term</td>";
+    if (!terms.failing.empty()) clauses += fmt::format(R"(<td><font color="{}"><b>bold: failing</b></font></td>)", highlight_line);
+  }
+  return fmt::format(R"(<table border="0" cellspacing="2"><tr><td><table border="0" cellspacing="4" cellpadding="0"><tr>{}</tr></table></td></tr>)"
+                     R"(<tr><td>{}</td></tr></table>)",
+                     clauses, dimension_legend(model));
 }
 
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,

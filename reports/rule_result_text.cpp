@@ -133,37 +133,50 @@ std::string row_note(std::size_t indent, const std::string& text) {
 
 std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& results) {
   std::string out;
-  std::size_t width = 4, applications = 0;
+  std::size_t name = 4, verdict = 6, applications = 0;
   std::map<FuzzClass, std::size_t> classes;
   for (const auto& r : results) {
-    width = std::max(width, printable(r.name()).size());
+    name = std::max(name, columns(printable(r.name())));
+    verdict = std::max(verdict, columns(r.verdict_text()));
     ++classes[r.fuzz->verdict];
     applications += r.fuzz->applications;
   }
-  out += fmt::format("{:<{}}  {:<18} {}\n", "rule", width, "static", "dynamic");
+  // Fitted like check's table: the dynamic column keeps at least 40
+  // columns and wraps under itself; the names give up the rest, a longer
+  // name getting a line of its own. Replay commands are never wrapped.
+  const std::size_t width = terminal().width, dynamic_room = 40;
+  if (name + 2 + verdict + 1 + dynamic_room > width)
+    name = std::max<std::size_t>(12, width > verdict + 3 + dynamic_room ? width - verdict - 3 - dynamic_room : 0);
+  const std::size_t dynamic_at = name + 2 + verdict + 1, indent = name + 2;
+  const std::string under(indent, ' ');
+  out += fmt::format("{}  {} dynamic\n", padded("rule", name), padded("static", verdict));
   for (const auto& result : results) {
     const auto& r = *result.fuzz;
-    out += fmt::format("{:<{}}  {:<18} {}\n", printable(result.name()), width, result.verdict_text(), outcome_text(r));
+    const std::string rule = printable(result.name());
+    if (columns(rule) > name) out += rule + "\n";
+    const auto lines = wrap_words(outcome_text(r), width > dynamic_at + 20 ? width - dynamic_at : 20);
+    for (std::size_t k = 0; k < lines.size(); ++k)
+      out += k == 0 ? fmt::format("{}  {} {}\n", padded(columns(rule) > name ? "" : rule, name), padded(result.verdict_text(), verdict), lines[k])
+                    : std::string(dynamic_at, ' ') + lines[k] + "\n";
     if (r.event_contradiction) {
       const auto& ev = *r.event_contradiction;
-      out += fmt::format("{:<{}}  {} (found in {}; a defect of dartcheck's event analysis, not of the rule)\n", "", width,
-                         printable(event_outcome_text(r)), ev.origin);
+      out += row_note(indent, fmt::format("{} (found in {}; a defect of dartcheck's event analysis, not of the rule)",
+                                          printable(event_outcome_text(r)), ev.origin));
       for (std::size_t e = 1; e < ev.event_contradictions.size() && e < 4; ++e)
-        out += fmt::format("{:<{}}  and: {}\n", "", width, printable(ev.event_contradictions[e]));
-      if (ev.event_contradictions.size() > 4) out += fmt::format("{:<{}}  and {} more\n", "", width, ev.event_contradictions.size() - 4);
-      if (!result.events_replay.empty()) out += fmt::format("{:<{}}  replay: {}\n", "", width, printable(result.events_replay));
+        out += row_note(indent, "and: " + printable(ev.event_contradictions[e]));
+      if (ev.event_contradictions.size() > 4) out += fmt::format("{}and {} more\n", under, ev.event_contradictions.size() - 4);
+      if (!result.events_replay.empty()) out += fmt::format("{}replay: {}\n", under, printable(result.events_replay));
     }
     if (!r.counterexample) continue;
     const auto& cx = *r.counterexample;
-    out += fmt::format("{:<{}}  found in {}\n", "", width, cx.origin);
-    if (!cx.unrepresentable.empty()) out += fmt::format("{:<{}}  H has no dense form: {}\n", "", width, cx.unrepresentable);
-    for (std::size_t e = 0; e < cx.embedding_failures.size() && e < 4; ++e)
-      out += fmt::format("{:<{}}  H: {}\n", "", width, cx.embedding_failures[e]);
-    if (cx.embedding_failures.size() > 4) out += fmt::format("{:<{}}  H: ... {} more\n", "", width, cx.embedding_failures.size() - 4);
+    out += row_note(indent, "found in " + cx.origin);
+    if (!cx.unrepresentable.empty()) out += row_note(indent, "H has no dense form: " + cx.unrepresentable);
+    for (std::size_t e = 0; e < cx.embedding_failures.size() && e < 4; ++e) out += row_note(indent, "H: " + cx.embedding_failures[e]);
+    if (cx.embedding_failures.size() > 4) out += fmt::format("{}H: ... {} more\n", under, cx.embedding_failures.size() - 4);
     if (!result.fuzz_replay.empty())
-      out += fmt::format("{:<{}}  replay: {}\n", "", width, printable(result.fuzz_replay));
+      out += fmt::format("{}replay: {}\n", under, printable(result.fuzz_replay));
     else if (!result.entry->terms)
-      out += fmt::format("{:<{}}  (--out DIR writes the host, the match and H, with a replay command)\n", "", width);
+      out += row_note(indent, "(--out DIR writes the host, the match and H, with a replay command)");
   }
   const std::size_t bugs = classes[FuzzClass::soundness_bug], contradicted = count_results(results).events_contradicted;
   out += fmt::format(

@@ -10,6 +10,7 @@
 #include <pugixml.hpp>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -26,6 +27,7 @@
 #include "reports/dot_text.hpp"
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
+#include "reports/svg_figure.hpp"
 
 using namespace dartcheck;
 
@@ -255,15 +257,21 @@ TEST(RuleDot, JerboaNodesShowTheirOrbitTypes) {
 
 namespace {
 
-// Centers of the SVG's nodes by title (Graphviz writes <title>id</title>
-// then the node's ellipse or polygon).
-std::map<std::string, double> node_x(const std::string& svg) {
+// The parts of an svg_figure: each nested <svg> of the root with its
+// place, its size and the titles of its nodes.
+struct Part {
+  double x, y, width, height;
+  std::vector<std::string> nodes;
+};
+
+std::vector<Part> figure_parts(const std::string& svg) {
   pugi::xml_document doc;
   EXPECT_TRUE(doc.load_string(svg.c_str()));
-  std::map<std::string, double> out;
-  for (const auto& n : doc.select_nodes("//g[@class='node']")) {
-    const auto e = n.node().child("ellipse");
-    if (e) out[n.node().child_value("title")] = e.attribute("cx").as_double();
+  std::vector<Part> out;
+  for (const auto& n : doc.child("svg").children("svg")) {
+    Part p{n.attribute("x").as_double(), n.attribute("y").as_double(), n.attribute("width").as_double(), n.attribute("height").as_double(), {}};
+    for (const auto& t : n.select_nodes(".//g[@class='node']/title")) p.nodes.push_back(t.node().child_value());
+    out.push_back(std::move(p));
   }
   return out;
 }
@@ -271,8 +279,11 @@ std::map<std::string, double> node_x(const std::string& svg) {
 }  // namespace
 
 // The three panels: G with exactly the matched darts filled, H with
-// exactly the broken darts filled, the rule; laid out G, H, rule from left
-// to right; one SVG node per dart of G and H and per rule node.
+// exactly the broken darts filled, the rule with its witnesses; composed
+// as one SVG with the head above and G, H, rule left to right, each at its
+// natural size, top-aligned and not overlapping (issue 39: the single dot
+// layout put the panels at different heights); one SVG node per dart of G
+// and H and per rule node, each in its own panel.
 TEST(CounterexampleDot, ThreePanelsHighlightMatchAndBrokenDarts) {
   const Map cube = build_shape(Model::gmap(2), parse_shape("cube"));
   const CatalogRule& e = *seed_catalog().find_rule("insert-vertex-sewn-edge/missing-1");
@@ -286,28 +297,52 @@ TEST(CounterexampleDot, ThreePanelsHighlightMatchAndBrokenDarts) {
   p.broken.assign(cube.size(), false);
   p.broken[2] = p.broken[5] = true;
   const RuleVerdict v = check_rule(e.rule, e.words);
-  const std::string dot = reports::counterexample_dot(e.rule, e.words, reports::failed_witnesses(v), p);
-  const Graph g = parse(dot);
-  ASSERT_TRUE(g);
-  EXPECT_EQ(marked(g.get(), "highlight"), (std::set<std::string>{"G:0", "G:7", "H:2", "H:5"}));
-  EXPECT_FALSE(marked(g.get(), "witness").empty());
-  for (const char* cluster : {"cluster_G:", "cluster_H:"}) {
-    Agraph_t* sub = agsubg(g.get(), const_cast<char*>(cluster), 0);
-    ASSERT_NE(sub, nullptr) << cluster;
-    EXPECT_EQ(static_cast<std::size_t>(agnnodes(sub)), cube.size()) << cluster;
+  const auto f = reports::counterexample_figure(e.rule, e.words, reports::failed_witnesses(v), p);
+  const Graph host = parse(f.host), result = parse(f.result), rule = parse(f.rule), head = parse(f.head);
+  ASSERT_TRUE(host && result && rule && head);
+  EXPECT_EQ(marked(host.get(), "highlight"), (std::set<std::string>{"G:0", "G:7"}));
+  EXPECT_EQ(marked(result.get(), "highlight"), (std::set<std::string>{"H:2", "H:5"}));
+  EXPECT_FALSE(marked(rule.get(), "witness").empty());
+  EXPECT_EQ(agnnodes(head.get()), 0);
+  EXPECT_EQ(static_cast<std::size_t>(agnnodes(host.get())), cube.size());
+  EXPECT_EQ(static_cast<std::size_t>(agnnodes(result.get())), cube.size());
+
+  const std::vector<std::string> panels = {reports::render(f.host, "svg"), reports::render(f.result, "svg"), reports::render(f.rule, "svg")};
+  const std::string head_svg = reports::render(f.head, "svg");
+  const auto parts = figure_parts(reports::svg_figure(head_svg, panels, 1e6));
+  ASSERT_EQ(parts.size(), 4u);
+  EXPECT_EQ(parts[0].y, 0);
+  EXPECT_TRUE(parts[0].nodes.empty());
+  const std::size_t rule_nodes = e.rule.left().node_count() + e.rule.right().node_count();
+  const std::array<std::pair<std::string, std::size_t>, 3> expected = {{{"G:", cube.size()}, {"H:", cube.size()}, {"rule:", rule_nodes}}};
+  for (std::size_t k = 1; k < 4; ++k) {
+    EXPECT_EQ(parts[k].nodes.size(), expected[k - 1].second) << k;
+    for (const auto& n : parts[k].nodes) EXPECT_TRUE(n.starts_with(expected[k - 1].first)) << n;
+    EXPECT_EQ(parts[k].y, parts[1].y) << "panel " << k << " is not top-aligned";
+    EXPECT_GE(parts[k].y, parts[0].height);
+    EXPECT_EQ(parts[k].width, reports::svg_size(panels[k - 1]).width);
+    if (k > 1) {
+      EXPECT_LT(parts[k - 1].x + parts[k - 1].width, parts[k].x);
+    }
   }
-  const auto x = node_x(reports::render(dot, "svg"));
-  double g_max = -1e9, h_min = 1e9, h_max = -1e9, rule_min = 1e9;
-  std::size_t darts = 0, rule_nodes = 0;
-  for (const auto& [id, cx] : x) {
-    if (id.starts_with("G:")) g_max = std::max(g_max, cx), ++darts;
-    if (id.starts_with("H:")) h_min = std::min(h_min, cx), h_max = std::max(h_max, cx), ++darts;
-    if (id.starts_with("rule:")) rule_min = std::min(rule_min, cx), ++rule_nodes;
+}
+
+// svg_figure wraps: with rows narrower than two panels, each panel starts
+// a row of its own below the previous one, at the left edge.
+TEST(SvgFigure, PanelsWiderThanTheRowWrapBelow) {
+  const std::string small = reports::render("digraph { a -> b; }", "svg");
+  const std::string head = reports::render("digraph { label=\"head\"; }", "svg");
+  const double w = reports::svg_size(small).width;
+  const auto parts = figure_parts(reports::svg_figure(head, {small, small, small}, 1.5 * w));
+  ASSERT_EQ(parts.size(), 4u);
+  for (std::size_t k = 1; k < 4; ++k) {
+    EXPECT_EQ(parts[k].x, 0) << k;
+    EXPECT_EQ(parts[k].nodes.size(), 2u);
+    if (k > 1) {
+      EXPECT_GT(parts[k].y, parts[k - 1].y + parts[k - 1].height);
+    }
   }
-  EXPECT_EQ(darts, 2 * cube.size());
-  EXPECT_EQ(rule_nodes, e.rule.left().node_count() + e.rule.right().node_count());
-  EXPECT_LT(g_max, h_min);
-  EXPECT_LT(h_max, rule_min);
+  EXPECT_THROW(reports::svg_size("<p>not svg</p>"), std::runtime_error);
 }
 
 // SARIF's helpUri (issue 39): every condition the checkers name on the seed
