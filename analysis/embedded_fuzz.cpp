@@ -135,6 +135,16 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
       }
       if (cx.violations.empty() && cx.embedding_failures.empty()) continue;
       cx.origin = fmt::format("random {}-dart {} with random values (host {} of the run)", planted.map.size(), model.name, out.hosts);
+      // The match and the comatch, for the pictures: the application
+      // again (it is deterministic), recorded this time; schemes show
+      // their match as P_v from the hooks.
+      if (!entry.words.scheme)
+        if (const auto m = match_darts(entry, planted.map, hooks); !m.empty())
+          for (NodeId v = 0; v < entry.rule.left().node_count(); ++v) cx.match.emplace_back(entry.rule.left().name(v), m[v][0]);
+      EmbeddedMap again = planted;
+      if (const auto r = apply_embedded(entry.rule, entry.words, terms, again, hooks, true); r.ok())
+        for (NodeId y = 0; y < entry.rule.right().node_count() && y < r.value->comatch.size(); ++y)
+          for (Dart dart : r.value->comatch[y]) cx.comatch.emplace_back(entry.rule.right().name(y), dart);
       out.counterexample = std::move(cx);
       break;
     }

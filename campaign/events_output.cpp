@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "core/terminal.hpp"
 #include "campaign/shard_stream.hpp"
 #include "reports/events_report.hpp"
 #include "reports/json_document.hpp"
@@ -28,11 +29,11 @@ void EventsOutput::analysed(const analysis::RuleEvents& r) {
 
 void EventsOutput::not_analysed(const CatalogRule& rule, const std::string& why) {
   const Json json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", why}};
-  this->rule(rule, &json, fmt::format("rule {} ({}): not analysed: {}\n", rule.rule.name(), rule.rule.model().name, why));
+  this->rule(rule, &json, hanging(fmt::format("rule {} ({}): not analysed:", rule.rule.name(), rule.rule.model().name), why, 2));
 }
 
 void EventsOutput::skipped(const CatalogRule& rule, const std::string& why) {
-  this->rule(rule, nullptr, fmt::format("rule {} ({}): skipped: {}\n", rule.rule.name(), rule.rule.model().name, why));
+  this->rule(rule, nullptr, hanging(fmt::format("rule {} ({}): skipped:", rule.rule.name(), rule.rule.model().name), why, 2));
 }
 
 void EventsOutput::rule(const CatalogRule& rule, const Json* json, const std::string& text) {

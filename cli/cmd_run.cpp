@@ -1,7 +1,10 @@
 // `dartcheck run`: builds every map of a catalog, applies every rule to its
 // worked examples and compares each outcome with the recorded expectation.
+#include <algorithm>
+
 #include <fmt/format.h>
 
+#include "core/terminal.hpp"
 #include "core/wording.hpp"
 #include "checkers/map_validity.hpp"
 #include "analysis/interrupt.hpp"
@@ -18,10 +21,12 @@ int run(const RunOptions& o) {
   const Catalog catalog = read_catalog(o.catalog);
   fmt::print("catalog {}: {}, {}\n\nmaps\n", o.catalog, counted(catalog.maps.size(), "map"), counted(catalog.rules.size(), "rule"));
   std::vector<Map> built;
+  std::size_t name = 4, model = 5;  // columns as wide as their cells
+  for (const auto& s : catalog.maps) name = std::max(name, columns(s.name)), model = std::max(model, columns(s.model.name));
   for (const auto& s : catalog.maps) {
     built.push_back(build_source(s));
     const auto report = check_map(built.back());
-    fmt::print("  {:<24} {:<14} {:>8} darts  {}\n", s.name, s.model.name, built.back().size(),
+    fmt::print("  {:<{}} {:<{}} {:>8} darts  {}\n", s.name, name, s.model.name, model, built.back().size(),
                report.valid() ? "valid" : fmt::format("INVALID ({} violations)", report.violations.size()));
   }
   int failures = 0, examples = 0;
@@ -29,15 +34,20 @@ int run(const RunOptions& o) {
   analysis::catch_interrupts();  // Ctrl-C: the examples run so far, their summary, exit 130
   for (const auto& r : catalog.rules) {
     if (analysis::interrupted()) break;
-    fmt::print("  {} ({}): L {} / {}, R {} / {}\n", r.rule.name(), r.rule.model().name, counted(r.rule.left().node_count(), "node"),
-               counted(r.rule.left().arc_count(), "arc"), counted(r.rule.right().node_count(), "node"), counted(r.rule.right().arc_count(), "arc"));
+    fmt::print("{}", hanging("  ",
+                             fmt::format("{} ({}): L {} / {}, R {} / {}", r.rule.name(), r.rule.model().name,
+                                         counted(r.rule.left().node_count(), "node"), counted(r.rule.left().arc_count(), "arc"),
+                                         counted(r.rule.right().node_count(), "node"), counted(r.rule.right().arc_count(), "arc")),
+                             2));
     for (const auto& e : r.examples) {
       ++examples;
       const ExampleOutcome got = run_example(catalog, built, r, e);
       const bool pass = got.got == e.expect;
       failures += !pass;
-      fmt::print("    {} {} at {}: {} -> {}  ({}){}\n", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got.got, got.detail,
-                 pass ? "" : "  at " + e.location.str());
+      // The detail goes under the row when the row would pass the width.
+      const std::string row = fmt::format("    {} {} at {}: {} -> {}", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got.got);
+      const std::string detail = fmt::format("({}){}", got.detail, pass ? "" : "  at " + e.location.str());
+      fmt::print("{}", columns(row) + 2 + columns(detail) <= terminal().width ? row + "  " + detail + "\n" : row + "\n" + hanging("", detail, 9));
     }
   }
   fmt::print("\n{}, {} passed, {} failed\n", counted(static_cast<std::size_t>(examples), "example"), examples - failures, failures);

@@ -91,4 +91,41 @@ std::vector<std::string> wrap_words(std::string_view text, std::size_t width) {
   return lines;
 }
 
+std::string hanging(std::string_view head, std::string_view text, std::size_t indent) {
+  const std::size_t width = terminal().width, room = width > indent + 20 ? width - indent : 20;
+  const std::string pad(indent, ' ');
+  std::string out;
+  std::vector<std::string> lines;
+  if (columns(head) > indent) {
+    // A head longer than the indent: head and text wrap as one paragraph
+    // from column 0 (its first line may be as wide as the terminal).
+    std::string all(head);
+    all += ' ';
+    all += text;
+    lines = wrap_words(all, width);
+    if (lines.size() > 1) {
+      std::string rest;
+      for (std::size_t k = 1; k < lines.size(); ++k) rest += (k > 1 ? " " : "") + lines[k];
+      auto wrapped = wrap_words(rest, room);
+      lines.resize(1);
+      lines.insert(lines.end(), wrapped.begin(), wrapped.end());
+    }
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      if (k > 0) out += pad;
+      out += lines[k];
+      out += '\n';
+    }
+    return out;
+  }
+  out = head;
+  out.append(indent - columns(head), ' ');
+  lines = wrap_words(text, room);
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    if (k > 0) out += pad;
+    out += lines[k];
+    out += '\n';
+  }
+  return out;
+}
+
 }  // namespace dartcheck

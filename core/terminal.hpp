@@ -44,6 +44,13 @@ std::string painted_diagnostic(std::string_view line);
 /// longer word gets a line of its own); UTF-8 sequences count as one.
 std::vector<std::string> wrap_words(std::string_view text, std::size_t width);
 
+/// A row whose last cell wraps: `head` padded to `indent` columns, then
+/// `text` wrapped at the terminal's width with its continuation lines
+/// indented to `indent` (at least 20 columns are kept for the text). A
+/// head longer than `indent` wraps with the text as one paragraph from
+/// column 0, continued at `indent`. Ends with a newline.
+std::string hanging(std::string_view head, std::string_view text, std::size_t indent);
+
 /// Display columns of UTF-8 text (one per code point).
 std::size_t columns(std::string_view text);
 

@@ -1,4 +1,6 @@
 #include "reports/events_report.hpp"
+
+#include "core/terminal.hpp"
 #include "reports/json_document.hpp"
 
 #include <fmt/format.h>
@@ -11,8 +13,10 @@ using namespace events;
 namespace {
 
 std::string header(const RuleEvents& r) {
-  return fmt::format("rule {} ({}{})\n", r.rule->rule.name(), r.rule->rule.model().name,
-                     r.view->is_scheme() ? fmt::format(", scheme on <{}>", fmt::join(r.view->parameter, ",")) : ", DPO rule");
+  return hanging("",
+                 fmt::format("rule {} ({}{})", r.rule->rule.name(), r.rule->rule.model().name,
+                             r.view->is_scheme() ? fmt::format(", scheme on <{}>", fmt::join(r.view->parameter, ",")) : ", DPO rule"),
+                 0);
 }
 
 std::string where(const EventsApplication& a) { return fmt::format("hook {} of {}", fmt::join(a.hooks, ","), a.host); }
@@ -56,20 +60,21 @@ std::string events_text(const RuleEvents& r) {
           if (c.orbit == o && (c.event == Event::creation) == (side == 1)) claims.push_back(claim_summary(*r.view, k, c));
         if (side == 1 && claims.empty()) continue;  // right orbits matter for creations only
         const RuleOrbit& ro = so.orbits[static_cast<std::size_t>(o)];
-        out += fmt::format("    {:<22} {:<10} {}\n", rule_orbit_name(*r.view, k, side == 0, o), ro.complete ? "complete" : "incomplete",
-                           claims.empty() ? "-" : fmt::format("{}", fmt::join(claims, "; ")));
-        if (!ro.complete) out += fmt::format("    {:<22} {:<10} ({})\n", "", "", fmt::join(ro.missing, "; "));
+        // The claims and what is missing wrap under their column (38).
+        out += hanging(fmt::format("    {:<22} {:<10} ", rule_orbit_name(*r.view, k, side == 0, o), ro.complete ? "complete" : "incomplete"),
+                       claims.empty() ? "-" : fmt::format("{}", fmt::join(claims, "; ")), 38);
+        if (!ro.complete) out += hanging("", fmt::format("({})", fmt::join(ro.missing, "; ")), 38);
       }
     }
     if (!kr.instantiated) continue;
     out += fmt::format("    event log at {} -> {} darts:\n", where(*app), app->after.size());
-    for (const LoggedEvent& e : kr.instantiated->events) out += fmt::format("      {}\n", event_line(k.kind, e));
+    for (const LoggedEvent& e : kr.instantiated->events) out += hanging("      ", event_line(k.kind, e), 6);
     if (kr.instantiated->events.empty()) out += "      (nothing matched changes)\n";
     if (!kr.check) continue;
     out += fmt::format("    dynamic detection: {}\n", kr.dynamic->events == kr.instantiated->events ? "the same log" : "DIFFERS");
     // Contradictions first: a resolution never follows a contradiction of the same claim.
     for (const auto& s : kr.check->contradictions) out += fmt::format("      EVENT ANALYSIS CONTRADICTED: {}\n", s);
-    for (const auto& s : kr.check->resolutions) out += fmt::format("      resolved: {}\n", s);
+    for (const auto& s : kr.check->resolutions) out += hanging("      resolved: ", s, 16);
   }
   return out;
 }

@@ -28,6 +28,41 @@ std::string arcs_text(const TopoGraph& g) {
   return s;
 }
 
+namespace {
+
+// `fields` after `head`, two spaces apart, a field that would pass the
+// terminal's width starting a line of its own under the first (and
+// wrapping at spaces when it is wider than that line).
+std::string fields_under(const std::string& head, const std::vector<std::string>& fields) {
+  const std::size_t indent = columns(head), width = terminal().width;
+  std::string out = head;
+  std::size_t at = indent;
+  for (std::size_t k = 0; k < fields.size(); ++k) {
+    if (k > 0 && at + 2 + columns(fields[k]) <= width) {
+      out += "  ";
+      out += fields[k];
+      at += 2 + columns(fields[k]);
+      continue;
+    }
+    if (k > 0) {
+      out += '\n';
+      out.append(indent, ' ');
+    }
+    const auto lines = wrap_words(fields[k], std::max<std::size_t>(20, width > indent ? width - indent : 0));
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      if (l > 0) {
+        out += '\n';
+        out.append(indent, ' ');
+      }
+      out += lines[l];
+    }
+    at = indent + columns(lines.back());
+  }
+  return out + "\n";
+}
+
+}  // namespace
+
 std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& results) {
   using proofs::Agreement;
   std::string out;
@@ -36,25 +71,32 @@ std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& resul
     const auto& p = *result.proof;
     scoped += p.out_of_scope.empty();
     for (auto a : {Agreement::agree, Agreement::disagree, Agreement::unresolved, Agreement::not_compared}) counts[static_cast<int>(a)] += p.count(a);
-    out += fmt::format("{} ({}): ", printable(p.rule), printable(p.model));
+    const std::string name = fmt::format("{} ({}):", printable(p.rule), printable(p.model));
     if (!p.out_of_scope.empty()) {
-      out += fmt::format("out of the solver's scope: {}\n", p.out_of_scope);
+      out += hanging(name, fmt::format("out of the solver's scope: {}", p.out_of_scope), 2);
       continue;
     }
-    out += fmt::format("static {}; {:.2f} s\n", p.static_failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(p.static_failures, " ")),
-                       p.seconds);
+    out += hanging(name,
+                   fmt::format("static {}; {:.2f} s",
+                               p.static_failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(p.static_failures, " ")), p.seconds),
+                   2);
     for (std::size_t i = 0; i < p.constraints.size(); ++i) {
       const auto& cp = p.constraints[i];
-      out += fmt::format("  {:<11} static {:<5}  theorem: {:<36}  maps: {:<32}  {}\n", cp.constraint.name(),
-                         cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-",
-                         cp.theorem ? answer_text(*cp.theorem)
-                         : p.scheme ? "(scheme: maps only)"
-                                    : "(no theorem)",
-                         answer_text(cp.model), proofs::agreement_name(cp.agreement));
-      if (!cp.note.empty()) out += fmt::format("  {:<11} {}\n", "", cp.note);
+      // The theorem's answer, the maps' answer and the agreement: padded
+      // columns when the row fits the terminal, else each field where it
+      // fits, the next lines indented under the first field.
+      const std::string theorem = cp.theorem ? answer_text(*cp.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)";
+      const std::string head =
+          fmt::format("  {:<11} static {:<5}  ", cp.constraint.name(), cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-");
+      const std::string row = fmt::format("theorem: {:<36}  maps: {:<32}  {}", theorem, answer_text(cp.model), proofs::agreement_name(cp.agreement));
+      out += columns(head) + columns(row) <= terminal().width
+                 ? head + row + "\n"
+                 : fields_under(head, {fmt::format("theorem: {}", theorem), fmt::format("maps: {}", answer_text(cp.model)),
+                                       std::string(proofs::agreement_name(cp.agreement))});
+      if (!cp.note.empty()) out += hanging("", cp.note, 14);
       if (cp.theorem && cp.theorem->status == proofs::Status::counterexample && run.explain)
-        out += fmt::format("  {:<11} theorem host: {}\n  {:<11} H: {}\n", "", arcs_text(cp.theorem->host_graph), "",
-                           arcs_text(cp.theorem->result_graph));
+        out += hanging(fmt::format("  {:<11} theorem host: ", ""), arcs_text(cp.theorem->host_graph), 28) +
+               hanging(fmt::format("  {:<11} H: ", ""), arcs_text(cp.theorem->result_graph), 17);
       if (!result.proof_replays[i].empty()) out += fmt::format("  {:<11} replay: {}\n", "", printable(result.proof_replays[i]));
     }
   }

@@ -399,6 +399,7 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       for (auto [d, idx] : second_values) e->set_index(d, idx);
     }
   }
+  if (record) out.comatch = comatch;  // a copy: the tables go back to the scheme's pool
   return {std::move(out), Refusal::none, {}};
 }
 

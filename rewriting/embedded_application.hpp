@@ -45,6 +45,9 @@ struct EmbeddedDerivation {
   std::vector<std::pair<Dart, Dart>> moved;  // renumbered darts of H
   std::vector<WrittenValue> written;         // in R's node order (with `record`)
   std::vector<std::string> conflicts;        // orbits given two values (Def. 13 undefined)
+  /// With `record`: R -> H, comatch[y][p] the dart of H of node y (of
+  /// pattern dart p for a scheme), in H's numbering.
+  std::vector<std::vector<Dart>> comatch;
 };
 
 /// How the terms of R are evaluated under `extended` instantiation.

@@ -8,7 +8,7 @@ Statements tested:
 - --color always colours stdout and stderr's "error:", never and auto off a
   terminal do not; on a terminal auto colours unless NO_COLOR is set; always
   wins over NO_COLOR (no-color.org: the user's explicit choice).
-- check's and fuzz's tables fit the width: COLUMNS, else the terminal's (a pty of 72
+- check's, fuzz's, events', prove's and run's text fits the width: COLUMNS, else the terminal's (a pty of 72
   columns), else 100; a line may pass it only when it is one unbreakable word
   or a diagnostic (file:line:column: error: ..., one line for its parsers)
   or a replay command (one line to copy) or the closing summary line.
@@ -76,7 +76,7 @@ def fits(text, width, what):
         # A diagnostic stays on one line for the tools that parse it, a
         # replay command for the mouse that copies it.
         # The closing summary ("82 rules, ...") is one line for the logs that grep it.
-        summary = re.match(r"\d+ rules?[,:] ", plain)
+        summary = re.match(r"\d+ rules?([,:] | \()", plain)
         if len(plain) > width and len(plain.split()) > 1 and ": error: " not in plain and "replay: " not in plain and not summary:
             problems.append(f"{what}: line of {len(plain)} columns over {width}: {plain!r}")
 
@@ -115,7 +115,8 @@ expect(ESC in out, "an empty NO_COLOR does not count (no-color.org)")
 for cols, env in [(100, {}), (60, {"COLUMNS": "60"}), (140, {"COLUMNS": "140"})]:
     for args in [["check", SEED], ["check", SEED, "--explain"], ["check", "catalogs/embedding-operations.yaml", "--explain"],
                  ["check", "../shared/jerboa-samples/JerboaRebuilt2.jme"], ["fuzz", SEED, "--runs", "100", "--seed", "1"],
-                 ["fuzz", "catalogs/embedding-operations.yaml", "--runs", "100", "--seed", "1"]]:
+                 ["fuzz", "catalogs/embedding-operations.yaml", "--runs", "100", "--seed", "1"], ["events", SEED], ["run", SEED],
+                 ["prove", SEED, "--rule", "insert-vertex-free-edge/oriented-1", "--explain"]]:
         r = run(args, env)
         expect(r.stdout.count("\n") > 5, f"{args}: no table")
         fits(r.stdout, cols, f"{' '.join(args)} with {env or 'no terminal'}")
