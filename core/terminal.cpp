@@ -97,8 +97,8 @@ std::string hanging(std::string_view head, std::string_view text, std::size_t in
   std::string out;
   std::vector<std::string> lines;
   if (columns(head) > indent) {
-    // A head longer than the indent: head and text wrap as one paragraph
-    // from column 0 (its first line may be as wide as the terminal).
+    // A head longer than the indent: head and text wrap as one paragraph,
+    // its first line from column 0 as wide as the terminal.
     std::string all(head);
     all += ' ';
     all += text;
@@ -106,20 +106,14 @@ std::string hanging(std::string_view head, std::string_view text, std::size_t in
     if (lines.size() > 1) {
       std::string rest;
       for (std::size_t k = 1; k < lines.size(); ++k) rest += (k > 1 ? " " : "") + lines[k];
-      auto wrapped = wrap_words(rest, room);
       lines.resize(1);
-      lines.insert(lines.end(), wrapped.begin(), wrapped.end());
+      for (auto& line : wrap_words(rest, room)) lines.push_back(std::move(line));
     }
-    for (std::size_t k = 0; k < lines.size(); ++k) {
-      if (k > 0) out += pad;
-      out += lines[k];
-      out += '\n';
-    }
-    return out;
+  } else {
+    out = head;
+    out.append(indent - columns(head), ' ');
+    lines = wrap_words(text, room);
   }
-  out = head;
-  out.append(indent - columns(head), ' ');
-  lines = wrap_words(text, room);
   for (std::size_t k = 0; k < lines.size(); ++k) {
     if (k > 0) out += pad;
     out += lines[k];

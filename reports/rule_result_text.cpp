@@ -163,13 +163,7 @@ std::string cell_text(const std::string& text, std::size_t width, bool colour) {
 
 // `text` under a row (or, at indent 0, a paragraph of its own): wrapped at
 // the terminal's width, indented by `indent`.
-std::string row_note(std::size_t indent, const std::string& text) {
-  const std::size_t width = terminal().width;
-  const std::size_t room = width > indent + 20 ? width - indent : 20;
-  std::string out;
-  for (const auto& line : wrap_words(text, room)) out += std::string(indent, ' ') + line + "\n";
-  return out;
-}
+std::string row_note(std::size_t indent, const std::string& text) { return hanging("", text, indent); }
 
 }  // namespace
 
