@@ -7,7 +7,6 @@
 // at their natural sizes.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 

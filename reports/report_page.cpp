@@ -29,29 +29,33 @@ namespace fs = std::filesystem;
 
 Pictures::Pictures(std::string dir, std::string engine) : dir_(std::move(dir)), engine_(std::move(engine)) {}
 
-std::string Pictures::add(const std::string& dot, const std::string& file) {
-  const std::string svg = render(dot, "svg", engine_);
+void Pictures::write(const std::string& svg, const std::string& file) {
   const fs::path path = fs::path(dir_) / file;
   ensure_directory(path.parent_path().string());
   write_file(path.string(), svg);
   ++count_;
-  return fmt::format("<div class=\"picture\">{}</div>\n<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n",
-                     inline_svg(svg, fmt::format("p{}_", count_)), html_text(file), html_text(file));
+}
+
+std::string Pictures::link(const std::string& file) {
+  return fmt::format("<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n", html_text(file), html_text(file));
+}
+
+std::string Pictures::add(const std::string& dot, const std::string& file) {
+  const std::string svg = render(dot, "svg", engine_);
+  write(svg, file);
+  return fmt::format("<div class=\"picture\">{}</div>\n", inline_svg(svg, fmt::format("p{}_", count_))) + link(file);
 }
 
 std::string Pictures::add(const CounterexampleFigure& figure, const std::string& file) {
   const std::string head = render(figure.head, "svg", engine_);
   const std::vector<std::string> panels = {render(figure.host, "svg", engine_), render(figure.result, "svg", engine_),
                                            render(figure.rule, "svg", engine_)};
-  const fs::path path = fs::path(dir_) / file;
-  ensure_directory(path.parent_path().string());
-  write_file(path.string(), svg_figure(head, panels));
-  ++count_;
+  write(svg_figure(head, panels), file);
   std::string out =
       fmt::format("<div class=\"figure\">\n<div class=\"head\">{}</div>\n<div class=\"panels\">\n", inline_svg(head, fmt::format("p{}h_", count_)));
   for (std::size_t k = 0; k < panels.size(); ++k)
     out += fmt::format("<div class=\"panel\">{}</div>\n", inline_svg(panels[k], fmt::format("p{}_{}_", count_, k)));
-  return out + fmt::format("</div>\n</div>\n<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n", html_text(file), html_text(file));
+  return out + "</div>\n</div>\n" + link(file);
 }
 
 namespace {

@@ -27,6 +27,8 @@ class Pictures {
   std::size_t count() const { return count_; }
 
  private:
+  void write(const std::string& svg, const std::string& file);  // below dir_; counts the picture
+  static std::string link(const std::string& file);             // the note that links the file
   std::string dir_;
   std::string engine_;
   std::size_t count_ = 0;

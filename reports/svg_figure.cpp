@@ -14,7 +14,8 @@ namespace {
 
 constexpr double gap = 18;  // points between panels and below the head
 
-// The value of attribute `name` in the tag text `tag`, or npos position.
+// The value of attribute `name` in the tag text `tag` (empty when it has
+// none), and in `at` where the attribute starts.
 std::string_view attribute(std::string_view tag, std::string_view name, std::size_t* at = nullptr) {
   const std::string key = fmt::format(" {}=\"", name);
   const auto start = tag.find(key);
@@ -43,9 +44,8 @@ std::string_view root_tag(std::string_view svg) {
 // `svg` (ids prefixed) as a nested <svg> placed at (x, y) of the figure:
 // its root's width and height in points become user units, which the
 // figure's viewBox maps to points.
-std::string placed(std::string_view svg, std::string_view prefix, double x, double y) {
+std::string placed(std::string_view svg, SvgSize size, std::string_view prefix, double x, double y) {
   std::string body = inline_svg(svg, prefix);
-  const SvgSize size = svg_size(body);
   const auto tag_end = body.find('>');
   std::string tag = body.substr(0, tag_end);
   for (const char* name : {"width", "height"}) {
@@ -69,7 +69,7 @@ SvgSize svg_size(std::string_view svg) {
 
 std::string svg_figure(std::string_view head, const std::vector<std::string>& panels, double max_width) {
   const SvgSize head_size = svg_size(head);
-  std::string parts = placed(head, "head_", 0, 0);
+  std::string parts = placed(head, head_size, "head_", 0, 0);
   // Rows of panels: left to right, a new row when the next would overflow.
   double x = 0, y = head_size.height + gap / 2, row_height = 0, width = head_size.width;
   for (std::size_t k = 0; k < panels.size(); ++k) {
@@ -79,7 +79,7 @@ std::string svg_figure(std::string_view head, const std::vector<std::string>& pa
       y += row_height + gap;
       row_height = 0;
     }
-    parts += placed(panels[k], fmt::format("panel{}_", k), x, y);
+    parts += placed(panels[k], s, fmt::format("panel{}_", k), x, y);
     width = std::max(width, x + s.width);
     row_height = std::max(row_height, s.height);
     x += s.width + gap;
