@@ -1,4 +1,5 @@
-// An independent check of recombined hexahedra: for each hex of a medit
+// An independent check of recombined hexahedra (and of prisms and pyramids,
+// `recombine --cells`, below): for each hex of a medit
 // mesh written by `dartcheck recombine -o` (bottom quad, then the top quad
 // vertex above vertex), the orientation of its 8
 // corners by CGAL's exact predicates (Epick), corner v = x + 2y + 4z with
@@ -13,6 +14,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <fmt/format.h>
 
+#include <array>
 #include <cstring>
 #include <exception>
 
@@ -52,6 +54,28 @@ int main(int argc, char** argv) {
       }
       fmt::print("{}: {} hexes, {} with a corner not positive by exact predicate ({} with a flat corner)\n", argv[a], mesh.hexes.size(), bad, flat);
       if (bad) status = 1;
+      // Prisms and pyramids (recombine --cells): every corner with its
+      // two edges along its triangle or base and its third edge, medit's
+      // right-handed order (a prism's triangle 0 1 2 turns
+      // counterclockwise seen from the other; a pyramid's base seen from
+      // its apex).
+      auto check = [&](const char* name, const auto& cells, const auto& corners) {
+        if (cells.empty()) return;
+        std::size_t not_positive = 0;
+        for (const auto& c : cells) {
+          auto point = [&](int k) {
+            const auto& p = mesh.points[c[static_cast<std::size_t>(k)]];
+            return K::Point_3(p[0], p[1], p[2]);
+          };
+          bool ok = true;
+          for (const auto& [v, x, y, z] : corners) ok &= CGAL::orientation(point(v), point(x), point(y), point(z)) == CGAL::POSITIVE;
+          not_positive += !ok;
+        }
+        fmt::print("{}: {} {}, {} with a corner not positive by exact predicate\n", argv[a], cells.size(), name, not_positive);
+        if (not_positive) status = 1;
+      };
+      check("prisms", mesh.prisms, std::array<std::array<int, 4>, 6>{{{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5}, {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}}});
+      check("pyramids", mesh.pyramids, std::array<std::array<int, 4>, 4>{{{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}}});
       if (conforming) {
         const std::size_t pairs = nonconforming_pairs({mesh.hexes.begin(), mesh.hexes.end()}, mesh.points.size());
         fmt::print("{}: {} pairs of hexes meeting in more than a vertex, an edge or a face of both\n", argv[a], pairs);

@@ -248,7 +248,11 @@ void add_recombine(CLI::App& app, Commands& commands) {
                  "vertices (hexes from mesh vertices and edges) or words (001's query words from every dart, the definition; slower); "
                  "greedy always matches words")
       ->capture_default_str();
-  rc->add_option("--min-quality", o->min_quality, "smallest scaled Jacobian a hex must exceed (-1 keeps inverted ones)")
+  rc->add_option("--cells", o->cells,
+                 "the cells to make: hex, or hex with prism and/or pyramid (comma-separated): prisms from the tetrahedra the hexes leave, "
+                 "then pyramids on the quads of hexes and prisms that face two tetrahedra")
+      ->capture_default_str();
+  rc->add_option("--min-quality", o->min_quality, "smallest scaled Jacobian a cell must exceed (-1 keeps inverted ones)")
       ->capture_default_str()
       ->check(real_option(-1, 1));
   rc->add_flag("--conforming", o->conforming,

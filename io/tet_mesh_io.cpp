@@ -100,6 +100,13 @@ TetMesh read_medit(const std::string& file) {
   TetMesh m;
   m.file = file;
   bool vertices = false;
+  // A cell of N vertices (hexahedron, prism, pyramid), 1-based.
+  auto cell = [&]<std::size_t N>(const Line& e, std::vector<std::array<std::uint32_t, N>>& into) {
+    if (!vertices) r.fail(e.number, 1, "cells before Vertices");
+    std::array<std::uint32_t, N> c{};
+    for (std::size_t j = 0; j < N; ++j) c[j] = vertex_index(r, e, j, 1, m.points.size());
+    into.push_back(c);
+  };
   while (auto l = r.next()) {
     const std::string key(l->tokens[0].first);  // a copy: the next line overwrites the reader's buffer
     if (key == "End") break;
@@ -127,15 +134,17 @@ TetMesh read_medit(const std::string& file) {
         m.tets.push_back(t);
         m.tet_lines.push_back(e.number);
       } else if (key == "Hexahedra") {
-        if (!vertices) r.fail(e.number, 1, "Hexahedra before Vertices");
-        std::array<std::uint32_t, 8> h{};
-        for (std::size_t j = 0; j < 8; ++j) h[j] = vertex_index(r, e, j, 1, m.points.size());
-        m.hexes.push_back(h);
+        cell(e, m.hexes);
+      } else if (key == "Prisms") {
+        cell(e, m.prisms);
+      } else if (key == "Pyramids") {
+        cell(e, m.pyramids);
       }
     }
     if (key == "Vertices") vertices = true;
   }
-  if (m.tets.empty() && m.hexes.empty()) r.fail(r.line(), 0, "no Tetrahedra or Hexahedra section");
+  if (m.tets.empty() && m.hexes.empty() && m.prisms.empty() && m.pyramids.empty())
+    r.fail(r.line(), 0, "no Tetrahedra, Hexahedra, Prisms or Pyramids section");
   return m;
 }
 
@@ -147,11 +156,18 @@ void write_medit(std::ostream& out, const TetMesh& m) {
     out << fmt::format("Tetrahedra\n{}\n", m.tets.size());
     for (const auto& t : m.tets) out << fmt::format("{} {} {} {} 0\n", t[0] + 1, t[1] + 1, t[2] + 1, t[3] + 1);
   }
-  if (!m.hexes.empty()) {
-    out << fmt::format("Hexahedra\n{}\n", m.hexes.size());
-    for (const auto& h : m.hexes)
-      out << fmt::format("{} {} {} {} {} {} {} {} 0\n", h[0] + 1, h[1] + 1, h[2] + 1, h[3] + 1, h[4] + 1, h[5] + 1, h[6] + 1, h[7] + 1);
-  }
+  // Each cell's vertices 1-based, then the reference 0.
+  auto section = [&](const char* name, const auto& cells) {
+    if (cells.empty()) return;
+    out << fmt::format("{}\n{}\n", name, cells.size());
+    for (const auto& c : cells) {
+      for (auto v : c) out << v + 1 << ' ';
+      out << "0\n";
+    }
+  };
+  section("Hexahedra", m.hexes);
+  section("Prisms", m.prisms);
+  section("Pyramids", m.pyramids);
   out << "End\n";
 }
 

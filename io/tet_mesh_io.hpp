@@ -22,17 +22,23 @@ struct TetMesh {
   /// quad above it vertex by vertex). Read, not used by the tet readers'
   /// callers; written by the recombination.
   std::vector<std::array<std::uint32_t, 8>> hexes;
+  /// medit's Prisms (a triangle, then the triangle above it vertex by
+  /// vertex) and Pyramids (the base quad as a cycle, then the apex), the
+  /// other cells of a hex-dominant recombination.
+  std::vector<std::array<std::uint32_t, 6>> prisms;
+  std::vector<std::array<std::uint32_t, 5>> pyramids;
 };
 
 /// TetGen: `file` is the .node or the .ele file; the other one has the
 /// same base name. Indices may start at 0 or 1 (the first point's index
 /// says which). Only the first 4 nodes of 10-node elements are read.
 TetMesh read_tetgen(const std::string& file);
-/// medit .mesh (ASCII): Vertices and Tetrahedra sections, 1-based;
-/// other sections are skipped by their counts.
+/// medit .mesh (ASCII): Vertices, Tetrahedra, Hexahedra, Prisms and
+/// Pyramids sections, 1-based; other sections are skipped by their counts.
 TetMesh read_medit(const std::string& file);
-/// medit .mesh (ASCII, MeshVersionFormatted 1): Vertices, Tetrahedra and
-/// Hexahedra (each written only when not empty), reference 0 everywhere.
+/// medit .mesh (ASCII, MeshVersionFormatted 1): Vertices, Tetrahedra,
+/// Hexahedra, Prisms and Pyramids (each written only when not empty),
+/// reference 0 everywhere.
 void write_medit(std::ostream& out, const TetMesh& m);
 /// By extension: .node, .ele, .mesh.
 TetMesh read_tet_mesh(const std::string& file);

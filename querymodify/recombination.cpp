@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <span>
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
 
+#include "querymodify/cell_quality.hpp"
+#include "querymodify/cell_subdivisions.hpp"
 #include "querymodify/hex_contacts.hpp"
 #include "querymodify/hex_search.hpp"
+#include "querymodify/hex_subdivisions.hpp"
 #include "querymodify/modify.hpp"
 #include "querymodify/overlap.hpp"
 
@@ -199,8 +203,40 @@ std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array
 
 }  // namespace
 
+namespace {
+
+// The global order on prism or pyramid candidates: best quality first
+// (ties, and every candidate without points, in the order found), each
+// taken unless it shares a tetrahedron with a cell taken before.
+void select_cells(CellCandidates found, std::vector<bool>& used, const std::vector<std::array<double, 3>>* points, CellSelection& out) {
+  out.candidates = found.found;
+  out.acceptable = found.list.size();
+  if (points)
+    std::stable_sort(found.list.begin(), found.list.end(), [](const CellCandidate& a, const CellCandidate& b) { return a.quality > b.quality; });
+  for (const CellCandidate& c : found.list) {
+    const auto tets = c.tets_of();
+    if (std::any_of(tets.begin(), tets.end(), [&](std::uint32_t x) { return used[x]; })) continue;
+    for (auto x : tets) used[x] = true;
+    out.cells.push_back(c);
+  }
+}
+
+// The quad faces of the selected hexes and prisms (and pyramids) as
+// cycles of mesh vertices.
+void add_quads(const std::vector<std::array<std::uint32_t, 8>>& hexes, std::vector<std::array<std::uint32_t, 4>>& quads) {
+  for (const auto& h : hexes)
+    for (const auto& f : hex_faces()) quads.push_back({h[static_cast<std::size_t>(f[0])], h[static_cast<std::size_t>(f[1])], h[static_cast<std::size_t>(f[2])], h[static_cast<std::size_t>(f[3])]});
+}
+void add_quads(const CellShape& shape, const std::vector<CellCandidate>& cells, std::vector<std::array<std::uint32_t, 4>>& quads) {
+  for (const auto& c : cells)
+    for (const auto& f : shape.faces)
+      if (f.size() == 4) quads.push_back({c.corners[static_cast<std::size_t>(f[0])], c.corners[static_cast<std::size_t>(f[1])], c.corners[static_cast<std::size_t>(f[2])], c.corners[static_cast<std::size_t>(f[3])]});
+}
+
+}  // namespace
+
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy, const std::vector<std::array<double, 3>>* points,
-                        double min_quality, Search search, Contacts contacts) {
+                        double min_quality, Search search, Contacts contacts, Cells cells) {
   Recombination r;
   r.search = strategy == Strategy::greedy ? Search::words : search;
   r.contacts = contacts;
@@ -215,6 +251,36 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
     r.quality.push_back(h.quality);
     for (auto x : h.tets) used[x] = true;
   }
+  // Prisms, then pyramids, on the tetrahedra still free; the quads of the
+  // cells say where the mesh is not conforming.
+  const TetFaces faces(mesh.tets);
+  std::vector<std::array<std::uint32_t, 4>> quads;
+  add_quads(r.hex_corners, quads);
+  if (cells.prisms) {
+    const auto t = Clock::now();
+    select_cells(find_prism_candidates(mesh.tets, faces, used, points, min_quality), used, points, r.prisms);
+    if (points)
+      for (auto& c : r.prisms.cells) {
+        const std::array<std::uint32_t, 6> corners = c.corners;
+        c.corners = right_handed_prism(corners, *points);
+      }
+    add_quads(prism_shape(), r.prisms.cells, quads);
+    r.prisms.seconds = since(t);
+  }
+  r.quads_facing_triangles_before_pyramids = quads_facing_triangles(quads, faces);
+  if (cells.pyramids) {
+    const auto t = Clock::now();
+    select_cells(find_pyramid_candidates(mesh.tets, faces, used, quads, points, min_quality), used, points, r.pyramids);
+    for (auto& c : r.pyramids.cells) {
+      if (points) {
+        const auto p = right_handed_pyramid({c.corners[0], c.corners[1], c.corners[2], c.corners[3], c.corners[4]}, *points);
+        std::copy(p.begin(), p.end(), c.corners.begin());
+      }
+    }
+    add_quads(pyramid_shape(), r.pyramids.cells, quads);
+    r.pyramids.seconds = since(t);
+  }
+  r.quads_facing_triangles = quads_facing_triangles(quads, faces);
   for (std::size_t k = 0; k < used.size(); ++k)
     if (!used[k]) r.remaining_tets.push_back(k);
   const auto t = Clock::now();
@@ -223,9 +289,13 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   for (Dart d = 0; d < where.size(); ++d) where[d] = d;
   std::vector<Dart> at(mesh.map.size());  // current dart -> original
   for (Dart d = 0; d < at.size(); ++d) at[d] = d;
-  for (const auto& h : chosen) {
+  std::vector<std::span<const std::uint32_t>> merged;
+  for (const auto& h : chosen) merged.push_back(h.tets);
+  for (const auto& c : r.prisms.cells) merged.push_back(c.tets_of());
+  for (const auto& c : r.pyramids.cells) merged.push_back(c.tets_of());
+  for (const auto tets : merged) {
     std::vector<Dart> darts;
-    for (auto x : h.tets)
+    for (auto x : tets)
       for (Dart d = 12 * x; d < 12 * x + 12; ++d) darts.push_back(where[d]);
     const auto moved = merge_volumes(mesh.map, darts);
     for (const auto& [from, to] : moved) {

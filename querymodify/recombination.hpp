@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "querymodify/annotation.hpp"
+#include "querymodify/cell_search.hpp"
 #include "querymodify/hex_quality.hpp"
 #include "querymodify/hex_queries.hpp"
 
@@ -30,6 +31,22 @@ enum class Search { vertices, words };
 /// nothing, a vertex, an edge or a face of both (a conforming hex mesh;
 /// the global strategy's vertex search only).
 enum class Contacts { any, conforming };
+
+/// The cells besides hexes that the recombination makes (--cells): prisms
+/// from the tetrahedra the hexes left, then pyramids on the quad faces of
+/// hexes and prisms that face two tetrahedra (cell_search.hpp).
+struct Cells {
+  bool prisms = false, pyramids = false;
+};
+
+/// The prisms or pyramids of a recombination.
+struct CellSelection {
+  /// Candidates found, and those acceptable (quality above the threshold).
+  std::size_t candidates = 0, acceptable = 0;
+  /// The selected ones, corners right-handed (cell_quality.hpp) with points.
+  std::vector<CellCandidate> cells;
+  double seconds = 0;  // search and selection
+};
 
 /// The cube corner (0..7, v = x + 2y + 4z) each dart of a query starts at.
 std::vector<std::uint32_t> query_corners(const HexQuery& q);
@@ -63,6 +80,12 @@ struct Recombination {
   /// then the first reading, as it comes).
   std::vector<std::array<std::uint32_t, 8>> hex_corners;
   std::vector<double> quality;
+  /// The prisms and pyramids, empty unless asked for (Cells).
+  CellSelection prisms, pyramids;
+  /// Quad faces of the cells (hexes, prisms, pyramids) that face neither
+  /// the boundary nor the same quad of another cell (cell_search.hpp), at
+  /// the end and before the pyramids.
+  std::size_t quads_facing_triangles = 0, quads_facing_triangles_before_pyramids = 0;
   /// The input tetrahedra (indices into mesh.tets) left as tetrahedra.
   std::vector<std::size_t> remaining_tets;
   /// Wall-clock seconds: every match (raw and distinct), the selection,
@@ -77,9 +100,11 @@ struct Recombination {
 /// (a pattern closed on itself: words see darts, not vertices) and, with
 /// points, one whose best scaled Jacobian is not above `min_quality`.
 /// Contacts::conforming with the greedy strategy or the word search is a
-/// std::invalid_argument.
+/// std::invalid_argument (it constrains the hexes only). `cells` adds
+/// prisms and pyramids after the hexes, each by the global order (best
+/// quality first, above `min_quality`) on the tetrahedra still free.
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
                         const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0, Search search = Search::vertices,
-                        Contacts contacts = Contacts::any);
+                        Contacts contacts = Contacts::any, Cells cells = {});
 
 }  // namespace dartcheck::querymodify

@@ -44,6 +44,27 @@ Search parse_search(const std::string& s) {
   throw InputError("<command line>", 0, 0, fmt::format("--search: expected vertices or words, got '{}'", s));
 }
 
+Cells parse_cells(const std::string& text) {
+  Cells c;
+  bool hex = false;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string word = text.substr(start, end - start);
+    if (word == "hex")
+      hex = true;
+    else if (word == "prism")
+      c.prisms = true;
+    else if (word == "pyramid")
+      c.pyramids = true;
+    else
+      throw InputError("<command line>", 0, 0, fmt::format("--cells: expected a comma-separated list of hex, prism and pyramid, got '{}' in '{}'", word, text));
+    start = end + 1;
+  }
+  if (!hex) throw InputError("<command line>", 0, 0, fmt::format("--cells: the list must name hex (prisms and pyramids fill in around hexes), got '{}'", text));
+  return c;
+}
+
 void check_contacts(Strategy strategy, Search search, bool conforming) {
   if (conforming && (strategy == Strategy::greedy || search == Search::words))
     throw InputError("<command line>", 0, 0, "--conforming: only with the global strategy's vertex search (--strategy global --search vertices)");
@@ -54,11 +75,14 @@ TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
   out.points = input.points;
   for (std::size_t k : r.remaining_tets) out.tets.push_back(input.tets[k]);
   for (const auto& c : r.hex_corners) out.hexes.push_back(medit_order(c));
+  // cell_subdivisions.hpp's corners are medit's orders already.
+  for (const auto& c : r.prisms.cells) out.prisms.push_back({c.corners[0], c.corners[1], c.corners[2], c.corners[3], c.corners[4], c.corners[5]});
+  for (const auto& c : r.pyramids.cells) out.pyramids.push_back({c.corners[0], c.corners[1], c.corners[2], c.corners[3], c.corners[4]});
   return out;
 }
 
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
-                            const std::string& search, bool conforming) {
+                            const std::string& search, bool conforming, const std::string& cells) {
   RecombineRun run;
   run.mesh = mesh;
   run.strategy = strategy;
@@ -66,6 +90,8 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   const Strategy chosen = parse_strategy(strategy);
   const Search searched = parse_search(search);
   check_contacts(chosen, searched, conforming);
+  const Cells made = parse_cells(cells);
+  run.cells = cells;
   const auto start = Clock::now();
   auto t = Clock::now();
   TetInput in = load_tet_input(mesh);
@@ -83,13 +109,14 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   const auto& queries = chosen == Strategy::greedy || searched == Search::words ? hex_queries() : none;
   run.queries = queries.size();
   run.query_seconds = since(t);
-  run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality, searched, conforming ? Contacts::conforming : Contacts::any);
+  run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality, searched, conforming ? Contacts::conforming : Contacts::any,
+                         made);
   run.search = run.result.search == Search::words ? "words" : "vertices";
   t = Clock::now();
   run.valid = check_3map(in.map.map).valid();
   run.output_check_seconds = since(t);
   run.darts = in.map.map.size();
-  run.expected_darts = 36 * run.result.hexes + 12 * run.result.tets;
+  run.expected_darts = 36 * run.result.hexes + 24 * run.result.prisms.cells.size() + 18 * run.result.pyramids.cells.size() + 12 * run.result.tets;
   if (!output.empty()) {
     std::ostringstream text;
     write_medit(text, recombined_mesh(in.mesh, run.result));

@@ -15,6 +15,9 @@ namespace dartcheck::querymodify {
 Strategy parse_strategy(const std::string& text);
 /// vertices or words (--search); InputError otherwise.
 Search parse_search(const std::string& text);
+/// A comma-separated list of hex, prism, pyramid that names hex (--cells);
+/// InputError otherwise.
+Cells parse_cells(const std::string& text);
 /// InputError when `conforming` is asked of the greedy strategy or the
 /// word search.
 void check_contacts(Strategy strategy, Search search, bool conforming);
@@ -27,11 +30,14 @@ struct RecombineRun {
   double min_quality = 0;
   bool input_valid = false;  // the input's map (build_tet_map makes valid maps of every mesh it accepts)
   Recombination result;
-  std::size_t darts = 0, expected_darts = 0;  // after the merges; 36 per hex + 12 per tetrahedron
+  std::string cells = "hex";                  // --cells as given
+  std::size_t darts = 0, expected_darts = 0;  // after the merges; 36 per hex, 24 per prism, 18 per pyramid, 12 per tetrahedron
   bool valid = false;
   double read_seconds = 0, input_check_seconds = 0, query_seconds = 0, output_check_seconds = 0, total_seconds = 0;
   double peak_mib = 0;  // the process's peak resident memory
-  /// The result is a valid map of 36 darts per hex and 12 per tetrahedron.
+  /// The result is a valid map of 36 darts per hex (its 12 boundary
+  /// triangles), 24 per prism (8), 18 per pyramid (6) and 12 per
+  /// tetrahedron.
   bool sound() const { return input_valid && valid && darts == expected_darts; }
 };
 
@@ -40,11 +46,12 @@ struct RecombineRun {
 /// map (a defect of the reader) nothing is recombined.
 /// `conforming` (hex_contacts.hpp) needs the global strategy's vertex
 /// search; InputError otherwise.
+/// `cells` (parse_cells) adds prisms and pyramids after the hexes.
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
-                            const std::string& search = "vertices", bool conforming = false);
+                            const std::string& search = "vertices", bool conforming = false, const std::string& cells = "hex");
 
-/// The hexes of `r` (medit's corner order) and the tetrahedra it left, on
-/// `input`'s points.
+/// The hexes, prisms and pyramids of `r` (medit's corner orders) and the
+/// tetrahedra it left, on `input`'s points.
 TetMesh recombined_mesh(const TetMesh& input, const Recombination& r);
 
 }  // namespace dartcheck::querymodify

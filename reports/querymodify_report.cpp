@@ -14,11 +14,28 @@ namespace {
 struct Quality {
   double min = NAN, median = NAN;
 };
-Quality quality_of(const querymodify::Recombination& r) {
-  std::vector<double> q = r.quality;
+Quality quality_of(std::vector<double> q) {
   std::sort(q.begin(), q.end());
   if (q.empty()) return {};
   return {q.front(), q[q.size() / 2]};
+}
+
+std::vector<double> qualities(const querymodify::CellSelection& s) {
+  std::vector<double> q;
+  for (const auto& c : s.cells) q.push_back(c.quality);
+  return q;
+}
+
+bool with_prisms(const RecombineRun& run) { return run.cells.find("prism") != std::string::npos; }
+bool with_pyramids(const RecombineRun& run) { return run.cells.find("pyramid") != std::string::npos; }
+
+// A line of the prisms or pyramids found and selected.
+std::string cells_line(const char* heading, const char* where, const querymodify::CellSelection& s, double min_quality) {
+  std::string out = fmt::format("{:<12}{} candidates {}, {} with scaled Jacobian above {}; {} selected", heading, s.candidates, where, s.acceptable,
+                                min_quality, s.cells.size());
+  const Quality q = quality_of(qualities(s));
+  if (std::isfinite(q.min)) out += fmt::format(", quality min {:.3f}, median {:.3f}", q.min, q.median);
+  return out + fmt::format(" ({:.3f} s)\n", s.seconds);
 }
 
 double tets_per_second(const RecombineRun& run) { return run.total_seconds > 0 ? static_cast<double>(run.tets) / run.total_seconds : 0; }
@@ -29,7 +46,7 @@ Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr
 
 std::string recombine_text(const RecombineRun& run) {
   const auto& r = run.result;
-  const Quality q = quality_of(r);
+  const Quality q = quality_of(r.quality);
   std::string out;
   out += fmt::format("mesh        {}: {} points, {} tetrahedra ({:.3f} s)\n", run.mesh, run.points, run.tets, run.read_seconds);
   out += fmt::format("input map   {} darts (12 per tetrahedron), a valid open 3-O-map ({:.3f} s)\n", run.input_darts, run.input_check_seconds);
@@ -50,9 +67,21 @@ std::string recombine_text(const RecombineRun& run) {
   if (conforming)
     out += fmt::format("conforming  hexes meet only in a vertex, an edge or a face of both; {} candidates passed over\n", r.nonconforming);
   if (!r.quality.empty()) out += fmt::format("quality     scaled Jacobian of the hexes: min {:.3f}, median {:.3f}\n", q.min, q.median);
+  if (with_prisms(run)) out += cells_line("prisms", "among the tetrahedra left", r.prisms, run.min_quality);
+  if (with_pyramids(run)) out += cells_line("pyramids", "on quads facing two tetrahedra", r.pyramids, run.min_quality);
+  out += fmt::format("conformity  {} quad faces of cells face triangles", r.quads_facing_triangles);
+  if (with_pyramids(run)) out += fmt::format(" ({} before the pyramids)", r.quads_facing_triangles_before_pyramids);
+  out += "\n";
   out += fmt::format("merge       {:.3f} s\n", r.merge_seconds);
-  out += fmt::format("result      {} hexes, {} tetrahedra; {} darts ({} expected: 36 per hex + 12 per tetrahedron), {} ({:.3f} s)\n", r.hexes, r.tets,
-                     run.darts, run.expected_darts, run.valid ? "valid" : "INVALID", run.output_check_seconds);
+  if (with_prisms(run) || with_pyramids(run))
+    out += fmt::format(
+        "result      {} hexes, {} prisms, {} pyramids, {} tetrahedra; {} darts ({} expected: 36 per hex + 24 per prism + 18 per pyramid + 12 per "
+        "tetrahedron), {} ({:.3f} s)\n",
+        r.hexes, r.prisms.cells.size(), r.pyramids.cells.size(), r.tets, run.darts, run.expected_darts, run.valid ? "valid" : "INVALID",
+        run.output_check_seconds);
+  else
+    out += fmt::format("result      {} hexes, {} tetrahedra; {} darts ({} expected: 36 per hex + 12 per tetrahedron), {} ({:.3f} s)\n", r.hexes, r.tets,
+                       run.darts, run.expected_darts, run.valid ? "valid" : "INVALID", run.output_check_seconds);
   out += fmt::format("time        {:.3f} s, {:.0f} tetrahedra per second; peak memory {:.1f} MiB\n", run.total_seconds, tets_per_second(run),
                      run.peak_mib);
   if (!run.output.empty()) out += fmt::format("written     {}\n", run.output);
@@ -61,7 +90,7 @@ std::string recombine_text(const RecombineRun& run) {
 
 Json recombine_document(const RecombineRun& run) {
   const auto& r = run.result;
-  const Quality q = quality_of(r);
+  const Quality q = quality_of(r.quality);
   Json doc = json_document("recombine");
   doc["mesh"] = run.mesh;
   doc["points"] = run.points;
@@ -83,6 +112,18 @@ Json recombine_document(const RecombineRun& run) {
   // Candidates passed over for a non-conforming contact; null without --conforming.
   doc["nonconforming_candidates"] = conforming ? Json(r.nonconforming) : Json(nullptr);
   doc["hexes"] = r.hexes;
+  doc["cells"] = run.cells;
+  // The prisms' and pyramids' counts; null when --cells did not ask for them.
+  auto cells = [&](bool asked, const querymodify::CellSelection& c) {
+    if (!asked) return Json(nullptr);
+    const Quality cq = quality_of(qualities(c));
+    return Json{{"candidates", c.candidates}, {"acceptable", c.acceptable},     {"selected", c.cells.size()},
+                {"quality_min", number_or_null(cq.min)}, {"quality_median", number_or_null(cq.median)}, {"seconds", c.seconds}};
+  };
+  doc["prisms"] = cells(with_prisms(run), r.prisms);
+  doc["pyramids"] = cells(with_pyramids(run), r.pyramids);
+  doc["quads_facing_triangles"] = r.quads_facing_triangles;
+  doc["quads_facing_triangles_before_pyramids"] = with_pyramids(run) ? Json(r.quads_facing_triangles_before_pyramids) : Json(nullptr);
   doc["remaining_tetrahedra"] = r.tets;
   doc["darts"] = run.darts;
   doc["expected_darts"] = run.expected_darts;

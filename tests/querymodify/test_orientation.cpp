@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "querymodify/cell_quality.hpp"
 #include "querymodify/orientation.hpp"
 #include "querymodify/recombination.hpp"
 
@@ -96,6 +97,55 @@ TEST(Orientation, NearlyFlatHexIsNotAccepted) {
   std::array<Point3, 8> lifted = p;
   for (std::size_t c = 0; c < 3; ++c) lifted[4][c] += 0.5 * (p[5][c] - p[1][c]);
   EXPECT_GT(scaled_jacobian(lifted), 0.0);
+}
+
+// A prism and a pyramid exactly flat at corner 0 but positive there (and
+// everywhere) in floating point: base vectors 8u and 8v from corner 0, and
+// the point u + v behind corner 0 in their plane as the prism's corner 3
+// (above corner 0) or the pyramid's apex; the prism's top is 8u + w and 8v
+// + w, the pyramid's far base corner 8u + 8v + w. Found by a search over
+// random lattice frames; lattice_sign shows the flat corner exactly.
+// Floating point alone would accept both.
+TEST(Orientation, NearlyFlatPrismAndPyramidAreNotAccepted) {
+  const Lattice p0{949767, 651482, -69038}, u{13993978, -4803273, -4145898}, v{7412493, 11534855, -2103646}, w{-3675900, 1581371, 33236927};
+  auto at = [&](long long a, long long b, long long c) {
+    Lattice q{};
+    for (std::size_t k = 0; k < 3; ++k) q[k] = p0[k] + a * u[k] + b * v[k] + c * w[k];
+    return q;
+  };
+  const Lattice c0 = at(0, 0, 0), c1 = at(8, 0, 0), c2 = at(0, 8, 0), behind = at(-1, -1, 0);
+  ASSERT_EQ(lattice_sign(c1, c2, behind, c0), 0);
+  // det[e1, e2, e3] in floating point, as both qualities compute it.
+  auto det = [](const Point3& x, const Point3& a, const Point3& b, const Point3& c) {
+    double e[3][3];
+    for (std::size_t k = 0; k < 3; ++k) e[0][k] = a[k] - x[k], e[1][k] = b[k] - x[k], e[2][k] = c[k] - x[k];
+    return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+           e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  };
+  auto least = [&](const auto& p, const auto& corners) {
+    double lo = 1e300;
+    for (const auto& c : corners)
+      lo = std::min(lo, det(p[static_cast<std::size_t>(c[0])], p[static_cast<std::size_t>(c[1])], p[static_cast<std::size_t>(c[2])],
+                            p[static_cast<std::size_t>(c[3])]));
+    return lo;
+  };
+  // Each corner with its two edges in its triangle (base) and its third
+  // edge, as cell_quality orders them.
+  const std::array<std::array<int, 4>, 6> prism_corners{{{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5}, {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}}};
+  const std::array<std::array<int, 4>, 4> pyramid_corners{{{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}}};
+  const std::array<Point3, 6> prism{point(c0), point(c1), point(c2), point(behind), point(at(8, 0, 1)), point(at(0, 8, 1))};
+  EXPECT_GT(least(prism, prism_corners), 0);  // every corner positive in floating point
+  EXPECT_EQ(prism_quality(prism), 0.0);
+  const std::array<Point3, 5> pyramid{point(c0), point(c1), point(at(8, 8, 1)), point(c2), point(behind)};
+  EXPECT_GT(least(pyramid, pyramid_corners), 0);
+  EXPECT_EQ(pyramid_quality(pyramid), 0.0);
+  // Corner 3 lifted along w, and the apex too: both are accepted.
+  std::array<Point3, 6> lifted = prism;
+  lifted[3] = point(at(-1, -1, 1));
+  EXPECT_GT(prism_quality(lifted), 0.0);
+  std::array<Point3, 5> raised = pyramid;
+  raised[4] = point(at(-1, -1, 1));
+  EXPECT_GT(pyramid_quality(raised), 0.0);
 }
 
 }  // namespace
