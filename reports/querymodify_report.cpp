@@ -112,6 +112,10 @@ Json recombine_document(const RecombineRun& run) {
   // Candidates passed over for a non-conforming contact; null without --conforming.
   doc["nonconforming_candidates"] = conforming ? Json(r.nonconforming) : Json(nullptr);
   doc["hexes"] = r.hexes;
+  doc["remaining_tetrahedra"] = r.tets;
+  doc["darts"] = run.darts;
+  doc["expected_darts"] = run.expected_darts;
+  doc["valid"] = run.valid;
   doc["cells"] = run.cells;
   // The prisms' and pyramids' counts; null when --cells did not ask for them.
   auto cells = [&](bool asked, const querymodify::CellSelection& c) {
@@ -124,10 +128,6 @@ Json recombine_document(const RecombineRun& run) {
   doc["pyramids"] = cells(with_pyramids(run), r.pyramids);
   doc["quads_facing_triangles"] = r.quads_facing_triangles;
   doc["quads_facing_triangles_before_pyramids"] = with_pyramids(run) ? Json(r.quads_facing_triangles_before_pyramids) : Json(nullptr);
-  doc["remaining_tetrahedra"] = r.tets;
-  doc["darts"] = run.darts;
-  doc["expected_darts"] = run.expected_darts;
-  doc["valid"] = run.valid;
   doc["quality_min"] = number_or_null(q.min);
   doc["quality_median"] = number_or_null(q.median);
   doc["seconds"] = Json{{"read", run.read_seconds},

@@ -170,6 +170,7 @@ check_json(["events", "catalogs/seed-operations.yaml", "--rule", "insert-vertex-
            "https://dartcheck.invalid/schema/events.schema.json")
 check_json(["query", "tests/data/cube-5-tets.mesh", "--hex", "--format", "json"], 0, "https://dartcheck.invalid/schema/query.schema.json")
 check_json(["recombine", "tests/data/cube-5-tets.mesh", "--strategy", "greedy", "--format", "json"], 0, "https://dartcheck.invalid/schema/recombine.schema.json")
+check_json(["recombine", "tests/data/prism-3-tets.mesh", "--cells", "hex,prism,pyramid", "--format", "json"], 0, "https://dartcheck.invalid/schema/recombine.schema.json")
 check_json(["infer", "--before", "polygon:3", "--after", "polygon:6", "--orbit", "<0,1,2>", "--kappa", "tests/data/kappa-edge-split.yaml",
             "--format", "json"], 0, "https://dartcheck.invalid/schema/infer.schema.json")
 # An example that changes nothing: no rule, exit 1, still a valid document.
