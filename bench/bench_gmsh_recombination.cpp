@@ -27,10 +27,22 @@
 // on some inputs (grids of 5-tet cubes); such a run is reported, not
 // hidden.
 //
-//   build/bench/bench_gmsh_recombination [--thresholds 0,0.3,0.6] MESH.ele|MESH.mesh...
+// With --cells, the hex-dominant modes side by side instead: gmsh's
+// Recombinator, then its Supplementary (prisms; its threshold is fixed at
+// 0.6 of its own prism quality) and PostOp at level 2 without its
+// conformity steps (pyramids1: a pyramid on a hex or prism quad whose two
+// tetrahedra share their fourth vertex), against `dartcheck recombine
+// --cells hex,prism,pyramid`; measured alike: cells of each kind, the
+// tetrahedra and volume in cells, cells with a corner that is flat or
+// against the others by the exact predicate, quads of cells facing
+// triangles, seconds.
+//
+//   build/bench/bench_gmsh_recombination [--thresholds 0,0.3,0.6] [--cells] MESH.ele|MESH.mesh...
 #include <GModel.h>
 #include <GRegion.h>
 #include <MHexahedron.h>
+#include <MPrism.h>
+#include <MPyramid.h>
 #include <MTetrahedron.h>
 #include <fmt/format.h>
 #include <gmsh.h>
@@ -48,6 +60,9 @@
 #include <vector>
 
 #include "hex_contacts_check.hpp"
+#include "querymodify/cell_search.hpp"
+#include "querymodify/cell_subdivisions.hpp"
+#include "querymodify/hex_subdivisions.hpp"
 #include "io/tet_mesh_io.hpp"
 #include "querymodify/hex_quality.hpp"
 #include "querymodify/orientation.hpp"
@@ -65,6 +80,8 @@ using Corners = std::array<std::uint32_t, 8>;  // mesh vertex at cube corner x +
 // What one tool produced: its hexes and the input tetrahedra it left.
 struct Output {
   std::vector<Corners> hexes;
+  std::vector<std::array<std::uint32_t, 6>> prisms;  // --cells: a triangle, then the one above it
+  std::vector<std::array<std::uint32_t, 5>> pyramids;  // --cells: the base cycle, then the apex
   std::vector<std::uint32_t> remaining_tets;
   double seconds = 0;
   std::size_t skipped = 0;  // gmsh: hexes its assertion would abort on
@@ -153,7 +170,7 @@ class BenchRecombinator : public Recombinator {
   }
 };
 
-Output run_gmsh(const TetMesh& mesh, double threshold) {
+Output run_gmsh_with(const TetMesh& mesh, double threshold, bool cells) {
   gmsh::option::setNumber("General.Verbosity", 1);
   gmsh::model::add("input");
   const int region_tag = gmsh::model::addDiscreteEntity(3);
@@ -178,7 +195,16 @@ Output run_gmsh(const TetMesh& mesh, double threshold) {
   BenchRecombinator recombinator(threshold);
   const auto start = Clock::now();
   recombinator.execute(region);
+  if (cells) {
+    Supplementary prisms;
+    prisms.execute(region);
+    PostOp pyramids;
+    pyramids.execute(region, 2, 0);  // level 2: pyramids1; conformity 0: no trihedra, no splits
+  }
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  auto index = [](const MElement* e, int k) { return static_cast<std::uint32_t>(e->getVertex(k)->getNum() - 1); };
+  for (const MPrism* p : region->prisms) out.prisms.push_back({index(p, 0), index(p, 1), index(p, 2), index(p, 3), index(p, 4), index(p, 5)});
+  for (const MPyramid* p : region->pyramids) out.pyramids.push_back({index(p, 0), index(p, 1), index(p, 2), index(p, 3), index(p, 4)});
   // gmsh's order: the bottom quad, then the top quad vertex above vertex.
   for (const MHexahedron* h : region->hexahedra) {
     std::array<std::uint32_t, 8> ring{};
@@ -189,19 +215,27 @@ Output run_gmsh(const TetMesh& mesh, double threshold) {
   out.skipped = recombinator.skipped;
   return out;
 }
+Output run_gmsh(const TetMesh& mesh, double threshold) { return run_gmsh_with(mesh, threshold, false); }
+Output run_gmsh_cells(const TetMesh& mesh, double threshold) { return run_gmsh_with(mesh, threshold, true); }
 
-Output run_dartcheck(const TetMesh& mesh, double threshold, Contacts contacts) {
+Output run_dartcheck(const TetMesh& mesh, double threshold, Contacts contacts, Cells cells = {}) {
   Output out;
   const auto start = Clock::now();
   TetMap map = build_tet_map(mesh.tets, &mesh.points);
-  const Recombination r = recombine(map, {}, Strategy::global, &mesh.points, threshold, Search::vertices, contacts);
+  const Recombination r = recombine(map, {}, Strategy::global, &mesh.points, threshold, Search::vertices, contacts, cells);
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   out.hexes = r.hex_corners;
+  for (const auto& c : r.prisms.cells) out.prisms.push_back(c.corners);
+  for (const auto& c : r.pyramids.cells) out.pyramids.push_back({c.corners[0], c.corners[1], c.corners[2], c.corners[3], c.corners[4]});
   for (std::size_t t : r.remaining_tets) out.remaining_tets.push_back(static_cast<std::uint32_t>(t));
   return out;
 }
 Output run_dartcheck_any(const TetMesh& mesh, double threshold) { return run_dartcheck(mesh, threshold, Contacts::any); }
 Output run_dartcheck_conforming(const TetMesh& mesh, double threshold) { return run_dartcheck(mesh, threshold, Contacts::conforming); }
+Output run_dartcheck_cells(const TetMesh& mesh, double threshold) { return run_dartcheck(mesh, threshold, Contacts::any, Cells{true, true}); }
+Output run_dartcheck_cells_conforming(const TetMesh& mesh, double threshold) {
+  return run_dartcheck(mesh, threshold, Contacts::conforming, Cells{true, true});
+}
 
 double tet_volume(const TetMesh& m, const std::array<std::uint32_t, 4>& t) {
   const auto& a = m.points[t[0]];
@@ -223,7 +257,26 @@ struct Figures {
   std::size_t bad_corner_hexes = 0;  // a corner exactly flat or against the others
   std::size_t nonconforming_pairs = 0;
   double seconds = 0;
+  // --cells
+  std::size_t prisms = 0, pyramids = 0;
+  std::size_t bad_corner_prisms = 0, bad_corner_pyramids = 0;
+  std::size_t quads_facing_triangles = 0;
+  std::size_t nonconforming_cell_pairs = 0;  // among all cells
 };
+
+// A cell whose corners (each with its three edges, `corners`) are not all
+// of one exact sign, or has one flat: either handedness passes.
+template <std::size_t N, std::size_t M>
+bool bad_corners(const TetMesh& mesh, const std::array<std::uint32_t, N>& cell, const std::array<std::array<int, 4>, M>& corners) {
+  int first = 0;
+  for (const auto& [v, a, b, c] : corners) {
+    auto at = [&](int k) { return mesh.points[cell[static_cast<std::size_t>(k)]]; };
+    const int s = orientation_sign(at(v), at(a), at(b), at(c));
+    if (s == 0 || (first != 0 && s != first)) return true;
+    first = s;
+  }
+  return false;
+}
 
 Figures measure(const TetMesh& mesh, const Output& out) {
   Figures f;
@@ -271,6 +324,30 @@ Figures measure(const TetMesh& mesh, const Output& out) {
   std::vector<MeditHex> rings;
   for (const Corners& h : out.hexes) rings.push_back({h[0], h[1], h[3], h[2], h[4], h[5], h[7], h[6]});
   f.nonconforming_pairs = nonconforming_pairs(rings, mesh.points.size());
+  f.prisms = out.prisms.size();
+  f.pyramids = out.pyramids.size();
+  // Each corner with its two edges along its triangle (base) and its third
+  // edge, as medit orders prisms and pyramids.
+  const std::array<std::array<int, 4>, 6> prism_corners{{{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5}, {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}}};
+  const std::array<std::array<int, 4>, 4> pyramid_corners{{{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}}};
+  for (const auto& p : out.prisms) f.bad_corner_prisms += bad_corners(mesh, p, prism_corners);
+  for (const auto& p : out.pyramids) f.bad_corner_pyramids += bad_corners(mesh, p, pyramid_corners);
+  // Quads of cells that face neither the boundary nor another cell's quad
+  // (the cells are unions of input tetrahedra, so the input's triangles
+  // tell the boundary).
+  if (!out.prisms.empty() || !out.pyramids.empty()) {
+    std::vector<std::array<std::uint32_t, 4>> quads;
+    for (const Corners& h : out.hexes)
+      for (const auto& q : hex_faces()) quads.push_back({h[static_cast<std::size_t>(q[0])], h[static_cast<std::size_t>(q[1])], h[static_cast<std::size_t>(q[2])], h[static_cast<std::size_t>(q[3])]});
+    for (const auto& p : out.prisms) quads.insert(quads.end(), {{p[0], p[1], p[4], p[3]}, {p[1], p[2], p[5], p[4]}, {p[2], p[0], p[3], p[5]}});
+    for (const auto& p : out.pyramids) quads.push_back({p[0], p[1], p[2], p[3]});
+    f.quads_facing_triangles = querymodify::quads_facing_triangles(quads, TetFaces(mesh.tets));
+    std::vector<MeditCell> all;
+    for (const auto& r : rings) all.emplace_back(r.begin(), r.end());
+    for (const auto& p : out.prisms) all.emplace_back(p.begin(), p.end());
+    for (const auto& p : out.pyramids) all.emplace_back(p.begin(), p.end());
+    f.nonconforming_cell_pairs = nonconforming_pairs(all, mesh.points.size());
+  }
   return f;
 }
 
@@ -316,13 +393,24 @@ std::string row(const char* tool, const Figures& f) {
                      f.nonconforming_pairs, f.skipped, f.seconds);
 }
 
+const char* const kCellsHeader = "  {:<10} {:>6} {:>6} {:>6} {:>7} {:>7} {:>6} {:>6} {:>9} {:>8}\n";
+
+std::string cells_row(const char* tool, const Figures& f) {
+  return fmt::format("  {:<10} {:>6} {:>6} {:>6} {:>6.1f}% {:>6.1f}% {:>6} {:>6} {:>9} {:>8.2f}", tool, f.hexes, f.prisms, f.pyramids,
+                     100 * f.tet_share, 100 * f.volume_share, f.bad_corner_hexes + f.bad_corner_prisms + f.bad_corner_pyramids,
+                     f.nonconforming_cell_pairs, f.quads_facing_triangles, f.seconds);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<double> thresholds{0.0, 0.3, 0.6};
   std::vector<std::string> meshes;
+  bool cells = false;
   for (int k = 1; k < argc; ++k) {
-    if (!std::strcmp(argv[k], "--thresholds") && k + 1 < argc) {
+    if (!std::strcmp(argv[k], "--cells")) {
+      cells = true;
+    } else if (!std::strcmp(argv[k], "--thresholds") && k + 1 < argc) {
       thresholds.clear();
       std::string list = argv[++k];
       for (std::size_t at = 0; at <= list.size();) {
@@ -334,7 +422,7 @@ int main(int argc, char** argv) {
       meshes.emplace_back(argv[k]);
   }
   if (meshes.empty()) {
-    fmt::print(stderr, "usage: {} [--thresholds 0,0.3,0.6] MESH.ele|MESH.mesh...\n", argv[0]);
+    fmt::print(stderr, "usage: {} [--thresholds 0,0.3,0.6] [--cells] MESH.ele|MESH.mesh...\n", argv[0]);
     return 2;
   }
   int status = 0;
@@ -349,6 +437,25 @@ int main(int argc, char** argv) {
     fmt::print("{}: {} points, {} tetrahedra\n", file, mesh.points.size(), mesh.tets.size());
     for (double threshold : thresholds) {
       fmt::print(" threshold {}\n", threshold);
+      if (cells) {
+        fmt::print(fmt::runtime(kCellsHeader), "tool", "hexes", "prisms", "pyrs", "tets", "volume", "badcrn", "noncnf", "quads/tri", "seconds");
+        Figures ours, conforming, theirs;
+        std::string why;
+        const bool ok = in_child(mesh, threshold, run_dartcheck_cells, ours, why);
+        fmt::print("{}\n", ok ? cells_row("dartcheck", ours) : "  dartcheck  " + why);
+        const bool ok_conforming = in_child(mesh, threshold, run_dartcheck_cells_conforming, conforming, why);
+        fmt::print("{}\n", ok_conforming ? cells_row("conforming", conforming) : "  conforming " + why);
+        if (!ok || !ok_conforming) status = 1;
+        const bool peer = in_child(mesh, threshold, run_gmsh_cells, theirs, why);
+        fmt::print("{}\n", peer ? cells_row("gmsh", theirs) : "  gmsh       " + why);
+        auto cells_of = [](const Figures& f) { return double(f.hexes + f.prisms + f.pyramids); };
+        if (ok && ok_conforming && peer)
+          fmt::print("  cells dartcheck/gmsh {:.2f}, conforming/gmsh {:.2f}; time gmsh/dartcheck {:.1f}, gmsh/conforming {:.1f}\n",
+                     cells_of(ours) / std::max(cells_of(theirs), 1.0), cells_of(conforming) / std::max(cells_of(theirs), 1.0),
+                     theirs.seconds / ours.seconds, theirs.seconds / conforming.seconds);
+        std::fflush(stdout);
+        continue;
+      }
       fmt::print(fmt::runtime(kHeader), "tool", "hexes", "tets", "volume", "minSJ", "meanSJ", "minIGE", "mnIGE", "badcrn", "noncnf", "skipped",
                  "seconds");
       Figures ours, conforming, theirs;

@@ -6,9 +6,10 @@
 // its edges towards +x, +y, +z (reversed on the high side), as 001's
 // scaled Jacobian reads them. dartcheck writes hexes right-handed, so every
 // corner must be POSITIVE; a hex with a corner that is not is counted.
-// With --conforming, also the pairs of hexes whose shared vertices are not
-// none, one, an edge or a face of both (as `recombine --conforming`
-// promises), read from medit's face cycles.
+// With --conforming, also the pairs of hexes (and of all cells, with
+// prisms and pyramids) whose shared vertices are not none, one, an edge or
+// a face of both (as `recombine --conforming` promises), read from medit's
+// face cycles.
 //
 //   build/bench/check_hex_corners [--conforming] OUT.mesh...
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -77,8 +78,17 @@ int main(int argc, char** argv) {
       check("prisms", mesh.prisms, std::array<std::array<int, 4>, 6>{{{0, 1, 2, 3}, {1, 2, 0, 4}, {2, 0, 1, 5}, {3, 5, 4, 0}, {4, 3, 5, 1}, {5, 4, 3, 2}}});
       check("pyramids", mesh.pyramids, std::array<std::array<int, 4>, 4>{{{0, 1, 3, 4}, {1, 2, 0, 4}, {2, 3, 1, 4}, {3, 0, 2, 4}}});
       if (conforming) {
-        const std::size_t pairs = nonconforming_pairs({mesh.hexes.begin(), mesh.hexes.end()}, mesh.points.size());
+        const std::size_t pairs = nonconforming_pairs(std::vector<MeditHex>(mesh.hexes.begin(), mesh.hexes.end()), mesh.points.size());
         fmt::print("{}: {} pairs of hexes meeting in more than a vertex, an edge or a face of both\n", argv[a], pairs);
+        if (!mesh.prisms.empty() || !mesh.pyramids.empty()) {
+          std::vector<MeditCell> cells;
+          for (const auto& c : mesh.hexes) cells.emplace_back(c.begin(), c.end());
+          for (const auto& c : mesh.prisms) cells.emplace_back(c.begin(), c.end());
+          for (const auto& c : mesh.pyramids) cells.emplace_back(c.begin(), c.end());
+          const std::size_t all = nonconforming_pairs(cells, mesh.points.size());
+          fmt::print("{}: {} pairs of cells (hexes, prisms, pyramids) meeting in more than a vertex, an edge or a face of both\n", argv[a], all);
+          if (all) status = 1;
+        }
         if (pairs) status = 1;
       }
     } catch (const std::exception& e) {

@@ -256,7 +256,7 @@ void add_recombine(CLI::App& app, Commands& commands) {
       ->capture_default_str()
       ->check(real_option(-1, 1));
   rc->add_flag("--conforming", o->conforming,
-               "select only hexes that meet the others in nothing, a vertex, an edge or a face of both (a conforming hex mesh; "
+               "select only cells that meet the others in nothing, a vertex, an edge or a face of both (a conforming mesh; "
                "the global strategy's vertex search)");
   rc->add_option("-o,--output", o->output, "write the hexes and the remaining tetrahedra as a medit .mesh");
   add_format(rc, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (one run of a campaign over many meshes, for merge)");

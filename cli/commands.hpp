@@ -112,7 +112,7 @@ int infer(const InferCommand& o);
 struct RecombineOptions {
   std::string mesh, strategy = "global", search = "vertices", output, format = "text", cells = "hex";
   double min_quality = 0.0;  // cells must have a scaled Jacobian above it
-  bool conforming = false;   // hexes meet only in a vertex, an edge or a face of both
+  bool conforming = false;   // cells meet only in a vertex, an edge or a face of both
 };
 /// Tetrahedra -> hexahedra (001 Sec. 7.1), and prisms and pyramids with
 /// --cells; 3 if the result is not a valid map of 36 darts per hex, 24 per

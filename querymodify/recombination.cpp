@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
-#include <span>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <tuple>
 
+#include "querymodify/cell_contacts.hpp"
 #include "querymodify/cell_quality.hpp"
 #include "querymodify/cell_subdivisions.hpp"
 #include "querymodify/hex_contacts.hpp"
@@ -201,36 +203,73 @@ std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array
   return out;
 }
 
-}  // namespace
+// The cells selected so far at each mesh vertex (Contacts::conforming):
+// a new cell must meet each of them in nothing, a vertex, an edge of both
+// or a face of both (cell_contacts.hpp).
+class Placed {
+ public:
+  explicit Placed(std::size_t vertices) : at_(vertices) {}
+  void add(std::span<const std::uint32_t> corners, const CellShape& shape) {
+    Cell c{{}, corners.size(), &shape};
+    std::copy(corners.begin(), corners.end(), c.corners.begin());
+    for (std::uint32_t v : corners) at_[v].push_back(static_cast<std::uint32_t>(cells_.size()));
+    cells_.push_back(c);
+  }
+  bool conforms(std::span<const std::uint32_t> corners, const CellShape& shape) const {
+    for (std::uint32_t v : corners)
+      for (std::uint32_t k : at_[v]) {
+        const Cell& c = cells_[k];
+        if (!conforming_contact(corners, shape, {c.corners.data(), c.count}, *c.shape)) return false;
+      }
+    return true;
+  }
 
-namespace {
+ private:
+  struct Cell {
+    std::array<std::uint32_t, 8> corners;
+    std::size_t count;
+    const CellShape* shape;
+  };
+  std::vector<Cell> cells_;
+  std::vector<std::vector<std::uint32_t>> at_;
+};
 
 // The global order on prism or pyramid candidates: best quality first
 // (ties, and every candidate without points, in the order found), each
-// taken unless it shares a tetrahedron with a cell taken before.
-void select_cells(CellCandidates found, std::vector<bool>& used, const std::vector<std::array<double, 3>>* points, CellSelection& out) {
+// taken unless it shares a tetrahedron with a cell taken before or (with
+// `placed`) does not conform to one.
+void select_cells(CellCandidates found, const CellShape& shape, std::vector<bool>& used, const std::vector<std::array<double, 3>>* points,
+                  Placed* placed, CellSelection& out) {
   out.candidates = found.found;
   out.acceptable = found.list.size();
   if (points)
     std::stable_sort(found.list.begin(), found.list.end(), [](const CellCandidate& a, const CellCandidate& b) { return a.quality > b.quality; });
+  const auto n = static_cast<std::size_t>(shape.corners);
   for (const CellCandidate& c : found.list) {
     const auto tets = c.tets_of();
     if (std::any_of(tets.begin(), tets.end(), [&](std::uint32_t x) { return used[x]; })) continue;
+    if (placed) {
+      if (!placed->conforms({c.corners.data(), n}, shape)) {
+        ++out.nonconforming;
+        continue;
+      }
+      placed->add({c.corners.data(), n}, shape);
+    }
     for (auto x : tets) used[x] = true;
     out.cells.push_back(c);
   }
 }
 
-// The quad faces of the selected hexes and prisms (and pyramids) as
-// cycles of mesh vertices.
-void add_quads(const std::vector<std::array<std::uint32_t, 8>>& hexes, std::vector<std::array<std::uint32_t, 4>>& quads) {
-  for (const auto& h : hexes)
-    for (const auto& f : hex_faces()) quads.push_back({h[static_cast<std::size_t>(f[0])], h[static_cast<std::size_t>(f[1])], h[static_cast<std::size_t>(f[2])], h[static_cast<std::size_t>(f[3])]});
-}
-void add_quads(const CellShape& shape, const std::vector<CellCandidate>& cells, std::vector<std::array<std::uint32_t, 4>>& quads) {
-  for (const auto& c : cells)
-    for (const auto& f : shape.faces)
-      if (f.size() == 4) quads.push_back({c.corners[static_cast<std::size_t>(f[0])], c.corners[static_cast<std::size_t>(f[1])], c.corners[static_cast<std::size_t>(f[2])], c.corners[static_cast<std::size_t>(f[3])]});
+// The quad faces (cycles of corners among `faces`) of a cell as cycles of
+// mesh vertices.
+template <class Corners, class Faces>
+void add_quads(const Corners& c, const Faces& faces, std::vector<std::array<std::uint32_t, 4>>& quads) {
+  for (const auto& f : faces)
+    if (f.size() == 4) {
+      std::array<std::uint32_t, 4> q{};
+      for (std::size_t k = 0; k < 4; ++k) q[k] = c[static_cast<std::size_t>(f[k])];
+      quads.push_back(q);
+    }
 }
 
 }  // namespace
@@ -255,29 +294,36 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   // cells say where the mesh is not conforming.
   const TetFaces faces(mesh.tets);
   std::vector<std::array<std::uint32_t, 4>> quads;
-  add_quads(r.hex_corners, quads);
+  for (const auto& h : r.hex_corners) add_quads(h, hex_faces(), quads);
+  std::optional<Placed> placed;
+  if (contacts == Contacts::conforming && (cells.prisms || cells.pyramids)) {
+    std::uint32_t vertices = 0;
+    for (const auto& tet : mesh.tets) vertices = std::max(vertices, *std::max_element(tet.begin(), tet.end()) + 1);
+    placed.emplace(vertices);
+    for (const auto& h : r.hex_corners) placed->add(h, hex_shape());
+  }
+  Placed* const conforming = placed ? &*placed : nullptr;
   if (cells.prisms) {
     const auto t = Clock::now();
-    select_cells(find_prism_candidates(mesh.tets, faces, used, points, min_quality), used, points, r.prisms);
-    if (points)
-      for (auto& c : r.prisms.cells) {
-        const std::array<std::uint32_t, 6> corners = c.corners;
-        c.corners = right_handed_prism(corners, *points);
-      }
-    add_quads(prism_shape(), r.prisms.cells, quads);
+    select_cells(find_prism_candidates(mesh.tets, faces, used, points, min_quality), prism_shape(), used, points, conforming, r.prisms);
+    for (auto& c : r.prisms.cells) {
+      if (points) c.corners = right_handed_prism(c.corners, *points);
+      add_quads(c.corners, prism_shape().faces, quads);
+    }
     r.prisms.seconds = since(t);
   }
-  r.quads_facing_triangles_before_pyramids = quads_facing_triangles(quads, faces);
   if (cells.pyramids) {
+    r.quads_facing_triangles_before_pyramids = quads_facing_triangles(quads, faces);
     const auto t = Clock::now();
-    select_cells(find_pyramid_candidates(mesh.tets, faces, used, quads, points, min_quality), used, points, r.pyramids);
+    select_cells(find_pyramid_candidates(mesh.tets, faces, used, quads, points, min_quality), pyramid_shape(), used, points, conforming,
+                 r.pyramids);
     for (auto& c : r.pyramids.cells) {
       if (points) {
         const auto p = right_handed_pyramid({c.corners[0], c.corners[1], c.corners[2], c.corners[3], c.corners[4]}, *points);
         std::copy(p.begin(), p.end(), c.corners.begin());
       }
+      add_quads(c.corners, pyramid_shape().faces, quads);
     }
-    add_quads(pyramid_shape(), r.pyramids.cells, quads);
     r.pyramids.seconds = since(t);
   }
   r.quads_facing_triangles = quads_facing_triangles(quads, faces);

@@ -26,10 +26,10 @@ enum class Strategy { greedy, global };
 /// search: it always matches words.
 enum class Search { vertices, words };
 
-/// How the selected hexes may meet (hex_contacts.hpp): in any way their
-/// tetrahedra allow (001's recombination, the default), or only in
-/// nothing, a vertex, an edge or a face of both (a conforming hex mesh;
-/// the global strategy's vertex search only).
+/// How the selected cells may meet (hex_contacts.hpp, cell_contacts.hpp):
+/// in any way their tetrahedra allow (001's recombination, the default), or
+/// only in nothing, a vertex, an edge or a face of both (a conforming
+/// mesh; the global strategy's vertex search only).
 enum class Contacts { any, conforming };
 
 /// The cells besides hexes that the recombination makes (--cells): prisms
@@ -41,8 +41,10 @@ struct Cells {
 
 /// The prisms or pyramids of a recombination.
 struct CellSelection {
-  /// Candidates found, and those acceptable (quality above the threshold).
-  std::size_t candidates = 0, acceptable = 0;
+  /// Candidates found, those acceptable (quality above the threshold),
+  /// and acceptable ones passed over as not conforming to a cell selected
+  /// before (Contacts::conforming).
+  std::size_t candidates = 0, acceptable = 0, nonconforming = 0;
   /// The selected ones, corners right-handed (cell_quality.hpp) with points.
   std::vector<CellCandidate> cells;
   double seconds = 0;  // search and selection
@@ -84,7 +86,7 @@ struct Recombination {
   CellSelection prisms, pyramids;
   /// Quad faces of the cells (hexes, prisms, pyramids) that face neither
   /// the boundary nor the same quad of another cell (cell_search.hpp), at
-  /// the end and before the pyramids.
+  /// the end and (when pyramids are made) before the pyramids.
   std::size_t quads_facing_triangles = 0, quads_facing_triangles_before_pyramids = 0;
   /// The input tetrahedra (indices into mesh.tets) left as tetrahedra.
   std::vector<std::size_t> remaining_tets;
@@ -100,9 +102,10 @@ struct Recombination {
 /// (a pattern closed on itself: words see darts, not vertices) and, with
 /// points, one whose best scaled Jacobian is not above `min_quality`.
 /// Contacts::conforming with the greedy strategy or the word search is a
-/// std::invalid_argument (it constrains the hexes only). `cells` adds
-/// prisms and pyramids after the hexes, each by the global order (best
-/// quality first, above `min_quality`) on the tetrahedra still free.
+/// std::invalid_argument. `cells` adds prisms and pyramids after the
+/// hexes, each by the global order (best quality first, above
+/// `min_quality`) on the tetrahedra still free; with Contacts::conforming
+/// each conforms to every cell selected before.
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
                         const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0, Search search = Search::vertices,
                         Contacts contacts = Contacts::any, Cells cells = {});

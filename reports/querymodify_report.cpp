@@ -30,9 +30,10 @@ bool with_prisms(const RecombineRun& run) { return run.cells.find("prism") != st
 bool with_pyramids(const RecombineRun& run) { return run.cells.find("pyramid") != std::string::npos; }
 
 // A line of the prisms or pyramids found and selected.
-std::string cells_line(const char* heading, const char* where, const querymodify::CellSelection& s, double min_quality) {
-  std::string out = fmt::format("{:<12}{} candidates {}, {} with scaled Jacobian above {}; {} selected", heading, s.candidates, where, s.acceptable,
-                                min_quality, s.cells.size());
+std::string cells_line(const char* heading, const char* where, const querymodify::CellSelection& s, double min_quality, bool conforming) {
+  std::string out = fmt::format("{:<12}{} candidates {}, {} with scaled Jacobian above {}; ", heading, s.candidates, where, s.acceptable, min_quality);
+  if (conforming) out += fmt::format("{} passed over as not conforming, ", s.nonconforming);
+  out += fmt::format("{} selected", s.cells.size());
   const Quality q = quality_of(qualities(s));
   if (std::isfinite(q.min)) out += fmt::format(", quality min {:.3f}, median {:.3f}", q.min, q.median);
   return out + fmt::format(" ({:.3f} s)\n", s.seconds);
@@ -67,8 +68,8 @@ std::string recombine_text(const RecombineRun& run) {
   if (conforming)
     out += fmt::format("conforming  hexes meet only in a vertex, an edge or a face of both; {} candidates passed over\n", r.nonconforming);
   if (!r.quality.empty()) out += fmt::format("quality     scaled Jacobian of the hexes: min {:.3f}, median {:.3f}\n", q.min, q.median);
-  if (with_prisms(run)) out += cells_line("prisms", "among the tetrahedra left", r.prisms, run.min_quality);
-  if (with_pyramids(run)) out += cells_line("pyramids", "on quads facing two tetrahedra", r.pyramids, run.min_quality);
+  if (with_prisms(run)) out += cells_line("prisms", "among the tetrahedra left", r.prisms, run.min_quality, conforming);
+  if (with_pyramids(run)) out += cells_line("pyramids", "on quads facing two tetrahedra", r.pyramids, run.min_quality, conforming);
   out += fmt::format("conformity  {} quad faces of cells face triangles", r.quads_facing_triangles);
   if (with_pyramids(run)) out += fmt::format(" ({} before the pyramids)", r.quads_facing_triangles_before_pyramids);
   out += "\n";
@@ -121,8 +122,13 @@ Json recombine_document(const RecombineRun& run) {
   auto cells = [&](bool asked, const querymodify::CellSelection& c) {
     if (!asked) return Json(nullptr);
     const Quality cq = quality_of(qualities(c));
-    return Json{{"candidates", c.candidates}, {"acceptable", c.acceptable},     {"selected", c.cells.size()},
-                {"quality_min", number_or_null(cq.min)}, {"quality_median", number_or_null(cq.median)}, {"seconds", c.seconds}};
+    return Json{{"candidates", c.candidates},
+                {"acceptable", c.acceptable},
+                {"nonconforming", conforming ? Json(c.nonconforming) : Json(nullptr)},
+                {"selected", c.cells.size()},
+                {"quality_min", number_or_null(cq.min)},
+                {"quality_median", number_or_null(cq.median)},
+                {"seconds", c.seconds}};
   };
   doc["prisms"] = cells(with_prisms(run), r.prisms);
   doc["pyramids"] = cells(with_pyramids(run), r.pyramids);

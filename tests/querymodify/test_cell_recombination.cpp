@@ -15,6 +15,7 @@
 #include <set>
 
 #include "grid_tets.hpp"
+#include "querymodify/cell_contacts.hpp"
 #include "querymodify/cell_quality.hpp"
 #include "querymodify/cell_search.hpp"
 #include "querymodify/cell_subdivisions.hpp"
@@ -395,6 +396,106 @@ TEST(CellRecombination, HexesOnlyByDefault) {
   EXPECT_TRUE(r.prisms.cells.empty());
   EXPECT_EQ(r.prisms.candidates, 0u);
   EXPECT_EQ(r.remaining_tets.size(), g.tets.size());
+}
+
+// How cells meet, by hand: a hex of the unit cube (vertex = corner v = x +
+// 2y + 4z), a prism on its top face's triangle 4 5 6 and its quads, a
+// pyramid on its top face.
+TEST(CellContacts, FacesOfBothConformHalfQuadsDoNot) {
+  const std::array<std::uint32_t, 8> hex{0, 1, 2, 3, 4, 5, 6, 7};
+  const auto& h = hex_shape();
+  const auto& prism = prism_shape();
+  const auto& pyramid = pyramid_shape();
+  auto meets = [](std::span<const std::uint32_t> a, const CellShape& as, std::span<const std::uint32_t> b, const CellShape& bs) {
+    const bool one = conforming_contact(a, as, b, bs), other = conforming_contact(b, bs, a, as);
+    EXPECT_EQ(one, other);  // symmetric
+    return one;
+  };
+  // A prism whose quad (0 1 4 3 of the prism) is the hex's side x = 1 (1 3
+  // 7 5): it shares a face of both.
+  const std::array<std::uint32_t, 6> on_side{1, 3, 8, 5, 7, 9};
+  EXPECT_TRUE(meets(hex, h, on_side, prism));
+  // A prism standing on the triangle 4 5 6 of the top face: half a quad of
+  // the hex against a triangle of the prism.
+  const std::array<std::uint32_t, 6> on_half{4, 5, 6, 10, 11, 12};
+  EXPECT_FALSE(meets(hex, h, on_half, prism));
+  // A pyramid on the top face (base cycle 4 5 7 6): a face of both.
+  const std::array<std::uint32_t, 5> on_top{4, 5, 7, 6, 13};
+  EXPECT_TRUE(meets(hex, h, on_top, pyramid));
+  // The same pyramid with its base cycle crossed (4 5 6 7): the hex's top
+  // face's vertices, but 5-6 is a diagonal of the hex, an edge of the
+  // pyramid's base; still the 4 vertices of a face of both as sets.
+  // Contacts are vertex sets, as the written mesh shows them.
+  const std::array<std::uint32_t, 5> crossed{4, 5, 6, 7, 13};
+  EXPECT_TRUE(meets(hex, h, crossed, pyramid));
+  // An edge of both, a vertex, nothing.
+  const std::array<std::uint32_t, 5> on_edge{6, 7, 14, 15, 16};  // base edge 6-7 = the hex's edge 6-7
+  EXPECT_TRUE(meets(hex, h, on_edge, pyramid));
+  const std::array<std::uint32_t, 5> on_diagonal{4, 7, 14, 15, 16};  // 4-7: a diagonal of the hex's top face
+  EXPECT_FALSE(meets(hex, h, on_diagonal, pyramid));
+  const std::array<std::uint32_t, 5> at_vertex{7, 14, 15, 16, 17};
+  EXPECT_TRUE(meets(hex, h, at_vertex, pyramid));
+  // Two prisms on one triangle (a face of both); on one quad diagonal (an
+  // edge of one only: the prism's quad 0 1 4 3 has diagonal 0-4).
+  const std::array<std::uint32_t, 6> a{20, 21, 22, 23, 24, 25};
+  EXPECT_TRUE(meets(a, prism, std::array<std::uint32_t, 6>{20, 21, 22, 26, 27, 28}, prism));
+  EXPECT_FALSE(meets(a, prism, std::array<std::uint32_t, 6>{20, 24, 29, 30, 31, 32}, prism));
+}
+
+// With Contacts::conforming the prisms of the layer stack, which meet
+// face to face, are all kept; a jittered stack keeps only cells that pass
+// the test's own check of shared vertex sets (built from the face cycles
+// written here, not cell_contacts).
+TEST(CellRecombination, ConformingCellsMeetInFacesOfBoth) {
+  PrismMesh g = prism_mesh(3, 2);
+  {
+    TetMap t = build_tet_map(g.tets, &g.points);
+    const Recombination r = recombine(t, {}, Strategy::global, &g.points, 0.9, Search::vertices, Contacts::conforming, Cells{true, true});
+    EXPECT_EQ(r.prisms.cells.size(), g.prism_tets.size());
+    EXPECT_EQ(r.prisms.nonconforming, 0u);
+  }
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  std::size_t passed_over = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    PrismMesh j = prism_mesh(4, 3);
+    for (auto& p : j.points)
+      for (auto& x : p) x += jitter(rng);
+    TetMap t = build_tet_map(j.tets, &j.points);
+    const Recombination r = recombine(t, {}, Strategy::global, &j.points, 0.0, Search::vertices, Contacts::conforming, Cells{true, true});
+    passed_over += r.prisms.nonconforming + r.pyramids.nonconforming;
+    // Every selected cell's allowed contacts: nothing, a vertex, an edge or
+    // a face of its own (as vertex sets).
+    std::vector<std::vector<std::uint32_t>> cells;
+    std::vector<std::vector<std::vector<int>>> faces;
+    const std::vector<std::vector<int>> hex_f{{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    const std::vector<std::vector<int>> prism_f{{0, 1, 2}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}};
+    const std::vector<std::vector<int>> pyramid_f{{0, 1, 2, 3}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+    for (const auto& h : r.hex_corners) cells.emplace_back(h.begin(), h.end()), faces.push_back(hex_f);
+    for (const auto& c : r.prisms.cells) cells.emplace_back(c.corners.begin(), c.corners.end()), faces.push_back(prism_f);
+    for (const auto& c : r.pyramids.cells) cells.emplace_back(c.corners.begin(), c.corners.begin() + 5), faces.push_back(pyramid_f);
+    auto allowed = [&](std::size_t k, const std::set<std::uint32_t>& shared) {
+      if (shared.size() <= 1) return true;
+      for (const auto& f : faces[k]) {
+        std::set<std::uint32_t> face;
+        for (std::size_t i = 0; i < f.size(); ++i) {
+          face.insert(cells[k][static_cast<std::size_t>(f[i])]);
+          if (shared == std::set<std::uint32_t>{cells[k][static_cast<std::size_t>(f[i])], cells[k][static_cast<std::size_t>(f[(i + 1) % f.size()])]}) return true;
+        }
+        if (shared == face) return true;
+      }
+      return false;
+    };
+    for (std::size_t a = 0; a < cells.size(); ++a)
+      for (std::size_t b = a + 1; b < cells.size(); ++b) {
+        std::set<std::uint32_t> shared;
+        for (auto v : cells[a])
+          if (std::find(cells[b].begin(), cells[b].end(), v) != cells[b].end()) shared.insert(v);
+        EXPECT_TRUE(allowed(a, shared) && allowed(b, shared)) << "cells " << a << " and " << b;
+      }
+    EXPECT_TRUE(check_3map(t.map).valid());
+  }
+  EXPECT_GT(passed_over, 0u);  // not vacuous: some candidates did not conform
 }
 
 }  // namespace
