@@ -385,7 +385,7 @@ bool in_child(const TetMesh& mesh, double threshold, Output (*tool)(const TetMes
   return true;
 }
 
-const char* const kHeader = "  {:<10} {:>6} {:>7} {:>7} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>7} {:>8}\n";
+const char* const kHeader = "  {:<10} {:>6} {:>7} {:>7} {:>6} {:>6} {:>6} {:>6} {:>6} {:>6} {:>7} {:>8}";
 
 std::string row(const char* tool, const Figures& f) {
   return fmt::format("  {:<10} {:>6} {:>6.1f}% {:>6.1f}% {:>6.3f} {:>6.3f} {:>6.3f} {:>6.3f} {:>6} {:>6} {:>7} {:>8.2f}", tool, f.hexes,
@@ -393,13 +393,40 @@ std::string row(const char* tool, const Figures& f) {
                      f.nonconforming_pairs, f.skipped, f.seconds);
 }
 
-const char* const kCellsHeader = "  {:<10} {:>6} {:>6} {:>6} {:>7} {:>7} {:>6} {:>6} {:>9} {:>8}\n";
+const char* const kCellsHeader = "  {:<10} {:>6} {:>6} {:>6} {:>7} {:>7} {:>6} {:>6} {:>9} {:>8}";
 
 std::string cells_row(const char* tool, const Figures& f) {
   return fmt::format("  {:<10} {:>6} {:>6} {:>6} {:>6.1f}% {:>6.1f}% {:>6} {:>6} {:>9} {:>8.2f}", tool, f.hexes, f.prisms, f.pyramids,
                      100 * f.tet_share, 100 * f.volume_share, f.bad_corner_hexes + f.bad_corner_prisms + f.bad_corner_pyramids,
                      f.nonconforming_cell_pairs, f.quads_facing_triangles, f.seconds);
 }
+
+// What a run of the benchmark compares: hexes alone, or all cells.
+struct Mode {
+  std::string header;
+  Output (*ours)(const TetMesh&, double);
+  Output (*conforming)(const TetMesh&, double);
+  Output (*peer)(const TetMesh&, double);
+  std::string (*row)(const char*, const Figures&);
+  const char* counted;
+  double (*count)(const Figures&);
+};
+const Mode hex_mode{fmt::format(fmt::runtime(kHeader), "tool", "hexes", "tets", "volume", "minSJ", "meanSJ", "minIGE", "mnIGE", "badcrn", "noncnf",
+                                "skipped", "seconds"),
+                    run_dartcheck_any,
+                    run_dartcheck_conforming,
+                    run_gmsh,
+                    row,
+                    "hexes",
+                    [](const Figures& f) { return double(f.hexes); }};
+const Mode cell_mode{fmt::format(fmt::runtime(kCellsHeader), "tool", "hexes", "prisms", "pyrs", "tets", "volume", "badcrn", "noncnf", "quads/tri",
+                                 "seconds"),
+                     run_dartcheck_cells,
+                     run_dartcheck_cells_conforming,
+                     run_gmsh_cells,
+                     cells_row,
+                     "cells",
+                     [](const Figures& f) { return double(f.hexes + f.prisms + f.pyramids); }};
 
 }  // namespace
 
@@ -437,40 +464,21 @@ int main(int argc, char** argv) {
     fmt::print("{}: {} points, {} tetrahedra\n", file, mesh.points.size(), mesh.tets.size());
     for (double threshold : thresholds) {
       fmt::print(" threshold {}\n", threshold);
-      if (cells) {
-        fmt::print(fmt::runtime(kCellsHeader), "tool", "hexes", "prisms", "pyrs", "tets", "volume", "badcrn", "noncnf", "quads/tri", "seconds");
-        Figures ours, conforming, theirs;
-        std::string why;
-        const bool ok = in_child(mesh, threshold, run_dartcheck_cells, ours, why);
-        fmt::print("{}\n", ok ? cells_row("dartcheck", ours) : "  dartcheck  " + why);
-        const bool ok_conforming = in_child(mesh, threshold, run_dartcheck_cells_conforming, conforming, why);
-        fmt::print("{}\n", ok_conforming ? cells_row("conforming", conforming) : "  conforming " + why);
-        if (!ok || !ok_conforming) status = 1;
-        const bool peer = in_child(mesh, threshold, run_gmsh_cells, theirs, why);
-        fmt::print("{}\n", peer ? cells_row("gmsh", theirs) : "  gmsh       " + why);
-        auto cells_of = [](const Figures& f) { return double(f.hexes + f.prisms + f.pyramids); };
-        if (ok && ok_conforming && peer)
-          fmt::print("  cells dartcheck/gmsh {:.2f}, conforming/gmsh {:.2f}; time gmsh/dartcheck {:.1f}, gmsh/conforming {:.1f}\n",
-                     cells_of(ours) / std::max(cells_of(theirs), 1.0), cells_of(conforming) / std::max(cells_of(theirs), 1.0),
-                     theirs.seconds / ours.seconds, theirs.seconds / conforming.seconds);
-        std::fflush(stdout);
-        continue;
-      }
-      fmt::print(fmt::runtime(kHeader), "tool", "hexes", "tets", "volume", "minSJ", "meanSJ", "minIGE", "mnIGE", "badcrn", "noncnf", "skipped",
-                 "seconds");
+      // The three runs of a mode: dartcheck, dartcheck --conforming, gmsh.
+      const auto& m = cells ? cell_mode : hex_mode;
+      fmt::print("{}\n", m.header);
       Figures ours, conforming, theirs;
       std::string why;
-      const bool ok = in_child(mesh, threshold, run_dartcheck_any, ours, why);
-      fmt::print("{}\n", ok ? row("dartcheck", ours) : "  dartcheck  " + why);
-      const bool ok_conforming = in_child(mesh, threshold, run_dartcheck_conforming, conforming, why);
-      fmt::print("{}\n", ok_conforming ? row("conforming", conforming) : "  conforming " + why);
+      const bool ok = in_child(mesh, threshold, m.ours, ours, why);
+      fmt::print("{}\n", ok ? m.row("dartcheck", ours) : "  dartcheck  " + why);
+      const bool ok_conforming = in_child(mesh, threshold, m.conforming, conforming, why);
+      fmt::print("{}\n", ok_conforming ? m.row("conforming", conforming) : "  conforming " + why);
       if (!ok || !ok_conforming) status = 1;
-      const bool peer = in_child(mesh, threshold, run_gmsh, theirs, why);
-      fmt::print("{}\n", peer ? row("gmsh", theirs) : "  gmsh       " + why);
+      const bool peer = in_child(mesh, threshold, m.peer, theirs, why);
+      fmt::print("{}\n", peer ? m.row("gmsh", theirs) : "  gmsh       " + why);
       if (ok && ok_conforming && peer)
-        fmt::print("  hexes dartcheck/gmsh {:.2f}, conforming/gmsh {:.2f}; time gmsh/dartcheck {:.1f}, gmsh/conforming {:.1f}\n",
-                   double(ours.hexes) / double(std::max<std::size_t>(theirs.hexes, 1)),
-                   double(conforming.hexes) / double(std::max<std::size_t>(theirs.hexes, 1)), theirs.seconds / ours.seconds,
+        fmt::print("  {} dartcheck/gmsh {:.2f}, conforming/gmsh {:.2f}; time gmsh/dartcheck {:.1f}, gmsh/conforming {:.1f}\n", m.counted,
+                   m.count(ours) / std::max(m.count(theirs), 1.0), m.count(conforming) / std::max(m.count(theirs), 1.0), theirs.seconds / ours.seconds,
                    theirs.seconds / conforming.seconds);
       std::fflush(stdout);
     }

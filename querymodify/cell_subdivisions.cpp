@@ -74,6 +74,21 @@ unsigned quads_of(const CellShape& cell) {
   return static_cast<unsigned>(std::count_if(cell.faces.begin(), cell.faces.end(), [](const auto& f) { return f.size() == 4; }));
 }
 
+// Every mask reached from the first by steps between masks that share
+// `shared` bits (triangles sharing an edge, tetrahedra sharing a face).
+template <class Mask>
+bool connected(const std::vector<Mask>& masks, int shared) {
+  std::vector<bool> reached(masks.size(), false);
+  reached[0] = true;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t a = 0; a < masks.size(); ++a)
+      for (std::size_t b = 0; b < masks.size(); ++b)
+        if (reached[a] && !reached[b] && std::popcount(static_cast<unsigned>(masks[a] & masks[b])) == shared) reached[b] = grew = true;
+  }
+  return std::find(reached.begin(), reached.end(), false) == reached.end();
+}
+
 // Each corner's link (the triangles opposite it in its tetrahedra) is a
 // disk: connected, every edge in one or two of its triangles, Euler
 // characteristic 1. With the boundary the cell's surface, the complex is
@@ -96,16 +111,7 @@ bool links_are_disks(const CellShape& cell, const std::vector<CellTet>& tets) {
       edges += uses > 0;
     }
     if (std::popcount(vertices) - edges + static_cast<int>(triangles.size()) != 1) return false;
-    // Connected: grow from the first triangle across shared edges.
-    std::vector<bool> reached(triangles.size(), false);
-    reached[0] = true;
-    for (bool grew = true; grew;) {
-      grew = false;
-      for (std::size_t a = 0; a < triangles.size(); ++a)
-        for (std::size_t b = 0; b < triangles.size(); ++b)
-          if (reached[a] && !reached[b] && std::popcount(triangles[a] & triangles[b]) == 2) reached[b] = grew = true;
-    }
-    if (std::find(reached.begin(), reached.end(), false) != reached.end()) return false;
+    if (!connected(triangles, 2)) return false;  // across shared edges
   }
   return true;
 }
@@ -125,17 +131,7 @@ bool is_subdivision(const CellShape& cell, const std::vector<CellTet>& tets) {
     for (unsigned t = 0; t < 64 && fits; ++t) fits = boundary[t] ? uses[t] == 1 : uses[t] != 1 && uses[t] <= 2;
   }
   if (!fits) return false;
-  // Connected across shared triangles.
-  std::vector<bool> reached(tets.size(), false);
-  reached[0] = true;
-  for (bool grew = true; grew;) {
-    grew = false;
-    for (std::size_t a = 0; a < tets.size(); ++a)
-      for (std::size_t b = 0; b < tets.size(); ++b)
-        if (reached[a] && !reached[b] && std::popcount(static_cast<unsigned>(tets[a] & tets[b])) == 3) reached[b] = grew = true;
-  }
-  if (std::find(reached.begin(), reached.end(), false) != reached.end()) return false;
-  return links_are_disks(cell, tets);
+  return connected(tets, 3) && links_are_disks(cell, tets);  // connected across shared triangles
 }
 
 }  // namespace

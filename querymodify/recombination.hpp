@@ -32,9 +32,10 @@ enum class Search { vertices, words };
 /// mesh; the global strategy's vertex search only).
 enum class Contacts { any, conforming };
 
-/// The cells besides hexes that the recombination makes (--cells): prisms
-/// from the tetrahedra the hexes left, then pyramids on the quad faces of
-/// hexes and prisms that face two tetrahedra (cell_search.hpp).
+/// The cells besides hexes that the recombination makes (--cells): after
+/// the hexes, pyramids on their quad faces that face two tetrahedra with
+/// one apex, then prisms from the tetrahedra left, then pyramids on the
+/// prisms' quads (cell_search.hpp).
 struct Cells {
   bool prisms = false, pyramids = false;
 };
@@ -86,7 +87,8 @@ struct Recombination {
   CellSelection prisms, pyramids;
   /// Quad faces of the cells (hexes, prisms, pyramids) that face neither
   /// the boundary nor the same quad of another cell (cell_search.hpp), at
-  /// the end and (when pyramids are made) before the pyramids.
+  /// the end and (when pyramids are made) as if the pyramids were left as
+  /// tetrahedra.
   std::size_t quads_facing_triangles = 0, quads_facing_triangles_before_pyramids = 0;
   /// The input tetrahedra (indices into mesh.tets) left as tetrahedra.
   std::vector<std::size_t> remaining_tets;
@@ -102,10 +104,10 @@ struct Recombination {
 /// (a pattern closed on itself: words see darts, not vertices) and, with
 /// points, one whose best scaled Jacobian is not above `min_quality`.
 /// Contacts::conforming with the greedy strategy or the word search is a
-/// std::invalid_argument. `cells` adds prisms and pyramids after the
-/// hexes, each by the global order (best quality first, above
-/// `min_quality`) on the tetrahedra still free; with Contacts::conforming
-/// each conforms to every cell selected before.
+/// std::invalid_argument. `cells` adds pyramids, prisms and pyramids
+/// after the hexes (Cells), each pass by the global order (best quality
+/// first, above `min_quality`) on the tetrahedra still free; with
+/// Contacts::conforming each cell conforms to every cell selected before.
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
                         const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0, Search search = Search::vertices,
                         Contacts contacts = Contacts::any, Cells cells = {});

@@ -71,7 +71,7 @@ std::string recombine_text(const RecombineRun& run) {
   if (with_prisms(run)) out += cells_line("prisms", "among the tetrahedra left", r.prisms, run.min_quality, conforming);
   if (with_pyramids(run)) out += cells_line("pyramids", "on quads facing two tetrahedra", r.pyramids, run.min_quality, conforming);
   out += fmt::format("conformity  {} quad faces of cells face triangles", r.quads_facing_triangles);
-  if (with_pyramids(run)) out += fmt::format(" ({} before the pyramids)", r.quads_facing_triangles_before_pyramids);
+  if (with_pyramids(run)) out += fmt::format(" ({} with the pyramids left as tetrahedra)", r.quads_facing_triangles_before_pyramids);
   out += "\n";
   out += fmt::format("merge       {:.3f} s\n", r.merge_seconds);
   if (with_prisms(run) || with_pyramids(run))
