@@ -249,8 +249,8 @@ void add_recombine(CLI::App& app, Commands& commands) {
                  "greedy always matches words")
       ->capture_default_str();
   rc->add_option("--cells", o->cells,
-                 "the cells to make: hex, or hex with prism and/or pyramid (comma-separated): prisms from the tetrahedra the hexes leave, "
-                 "then pyramids on the quads of hexes and prisms that face two tetrahedra")
+                 "the cells to make: hex, or hex with prism and/or pyramid (comma-separated): after the hexes, pyramids on their quads "
+                 "that face two tetrahedra with one apex, prisms from the tetrahedra left, pyramids on the prisms' quads")
       ->capture_default_str();
   rc->add_option("--min-quality", o->min_quality, "smallest scaled Jacobian a cell must exceed (-1 keeps inverted ones)")
       ->capture_default_str()

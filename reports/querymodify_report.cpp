@@ -66,7 +66,9 @@ std::string recombine_text(const RecombineRun& run) {
                      r.select_seconds);
   const bool conforming = r.contacts == querymodify::Contacts::conforming;
   if (conforming)
-    out += fmt::format("conforming  hexes meet only in a vertex, an edge or a face of both; {} candidates passed over\n", r.nonconforming);
+    out += with_prisms(run) || with_pyramids(run)
+               ? fmt::format("conforming  cells meet only in a vertex, an edge or a face of both; {} hex candidates passed over\n", r.nonconforming)
+               : fmt::format("conforming  hexes meet only in a vertex, an edge or a face of both; {} candidates passed over\n", r.nonconforming);
   if (!r.quality.empty()) out += fmt::format("quality     scaled Jacobian of the hexes: min {:.3f}, median {:.3f}\n", q.min, q.median);
   if (with_prisms(run)) out += cells_line("prisms", "among the tetrahedra left", r.prisms, run.min_quality, conforming);
   if (with_pyramids(run)) out += cells_line("pyramids", "on quads facing two tetrahedra", r.pyramids, run.min_quality, conforming);
