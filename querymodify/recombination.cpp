@@ -306,11 +306,10 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   std::vector<std::array<std::uint32_t, 4>> bases;  // the pyramids' bases (each also a quad of a hex or prism)
   // Pyramids on the quads so far that face two free tetrahedra with one
   // apex.
-  auto pyramids_on_quads = [&] {
+  auto pyramids_on_quads = [&](const std::vector<std::array<std::uint32_t, 4>>& on) {
     const auto t = Clock::now();
     const std::size_t before = r.pyramids.cells.size();
-    select_cells(find_pyramid_candidates(mesh.tets, faces, used, quads, points, min_quality), pyramid_shape(), used, points, conforming,
-                 r.pyramids);
+    select_cells(find_pyramid_candidates(mesh.tets, faces, used, on, points, min_quality), pyramid_shape(), used, points, conforming, r.pyramids);
     for (std::size_t k = before; k < r.pyramids.cells.size(); ++k) {
       auto& c = r.pyramids.cells[k];
       if (points) {
@@ -325,18 +324,23 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   // then on the prisms' quads: on tetgen's elephant (-pqQ) that leaves
   // 11,907 quads against triangles instead of 13,245 with prisms first
   // (gmsh's order), and makes 5,682 cells instead of 5,397.
-  if (cells.pyramids) pyramids_on_quads();
+  // The second pass looks at the prisms' quads only: the hexes' quads
+  // lost free tetrahedra since the first, and gained none (each candidate
+  // is counted once).
+  if (cells.pyramids) pyramids_on_quads(quads);
+  std::vector<std::array<std::uint32_t, 4>> prism_quads;
   if (cells.prisms) {
     const auto t = Clock::now();
     select_cells(find_prism_candidates(mesh.tets, faces, used, points, min_quality), prism_shape(), used, points, conforming, r.prisms);
     for (auto& c : r.prisms.cells) {
       if (points) c.corners = right_handed_prism(c.corners, *points);
-      add_quads(c.corners, prism_shape().faces, quads);
+      add_quads(c.corners, prism_shape().faces, prism_quads);
     }
     r.prisms.seconds = since(t);
   }
+  if (cells.pyramids && !prism_quads.empty()) pyramids_on_quads(prism_quads);
+  quads.insert(quads.end(), prism_quads.begin(), prism_quads.end());
   if (cells.pyramids) {
-    pyramids_on_quads();
     // Without the pyramids their bases would face two tetrahedra.
     r.quads_facing_triangles_before_pyramids = quads_facing_triangles(quads, faces);
   }
