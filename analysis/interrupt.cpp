@@ -3,6 +3,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 
 namespace dartcheck::analysis {
@@ -10,6 +11,11 @@ namespace {
 
 volatile std::sig_atomic_t flag = 0;
 volatile std::sig_atomic_t first_second = 0;  // CLOCK_MONOTONIC seconds of the first signal
+
+// say_on_early_interrupt's line: written before the handler that reads it
+// can run (both signals are blocked while it is copied).
+char note[1024];
+volatile std::sig_atomic_t note_size = 0;
 
 long monotonic_seconds() {
   timespec now{};
@@ -20,7 +26,8 @@ long monotonic_seconds() {
 // write and _exit are async-signal-safe; no destructor or buffered output runs.
 [[noreturn]] void exit_now() {
   constexpr char message[] = "interrupted (SIGINT or SIGTERM)\n";
-  [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
+  [[maybe_unused]] auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
+  if (note_size > 0) written = ::write(STDERR_FILENO, note, static_cast<std::size_t>(note_size));
   ::_exit(interrupted_exit);
 }
 
@@ -53,6 +60,19 @@ void install(void (*handler)(int)) {
 }
 
 }  // namespace
+
+void say_on_early_interrupt(std::string_view line) {
+  sigset_t both, previous;
+  sigemptyset(&both);
+  sigaddset(&both, SIGINT);
+  sigaddset(&both, SIGTERM);
+  ::sigprocmask(SIG_BLOCK, &both, &previous);
+  const std::size_t size = std::min(line.size(), sizeof note - 1);
+  std::copy_n(line.data(), size, note);
+  note[size] = '\n';
+  note_size = static_cast<std::sig_atomic_t>(size + 1);
+  ::sigprocmask(SIG_SETMASK, &previous, nullptr);
+}
 
 void exit_on_interrupt() { install(on_signal_exit); }
 

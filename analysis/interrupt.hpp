@@ -5,6 +5,8 @@
 // ends the process at once (timeout(1) delivers one request twice).
 #pragma once
 
+#include <string_view>
+
 namespace dartcheck::analysis {
 
 inline constexpr int interrupted_exit = 130;  // 128 + SIGINT, as shells report it
@@ -18,6 +20,12 @@ void catch_interrupts();
 /// where the signal was inherited as ignored (a background job of a
 /// script); catch_interrupts() replaces it.
 void exit_on_interrupt();
+
+/// A line that exit_on_interrupt()'s handler prints after "interrupted",
+/// for an output the command promised and will not write (a baseline
+/// interrupted while its catalog is read). Copied into a fixed buffer, so
+/// that the handler stays async-signal-safe; cut at 1,023 bytes.
+void say_on_early_interrupt(std::string_view line);
 
 /// Whether SIGINT or SIGTERM arrived since catch_interrupts().
 bool interrupted();

@@ -54,6 +54,8 @@ int check(const CheckOptions& o) {
       throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl or --write-baseline (run the shards, then merge)");
     return campaign::run_jobs({o.jobs, o.shard, {.format = o.format, .explain = o.explain}, std::nullopt});
   }
+  const std::string not_written = fmt::format("not written: {} (interrupted: a baseline records every rule)", o.write_baseline);
+  if (!o.write_baseline.empty()) say_on_early_interrupt(not_written);  // Ctrl-C while the catalog is read
   campaign::RuleRun run("check", {o.catalog, o.rule, o.shard, o.baseline, o.format == "jsonl"});
   if (!o.write_baseline.empty()) check_writable(o.write_baseline);  // before the work, not after it
   if (!o.write_baseline.empty() && !run.shard().whole())
@@ -71,7 +73,7 @@ int check(const CheckOptions& o) {
   }
   const int status = run.finish(results, rules.size());
   if (!o.write_baseline.empty() && interrupted())
-    fmt::print(stderr, "not written: {} (interrupted: a baseline records every rule)\n", o.write_baseline);
+    fmt::print(stderr, "{}\n", not_written);
   else if (!o.write_baseline.empty())
     write_baseline_file(o.write_baseline, o.catalog, catalog, results);
   if (!run.writes_lines()) print_check(o.format, o.catalog, catalog, results, run.baseline_mismatches(), o.explain);
