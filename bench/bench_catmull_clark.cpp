@@ -203,7 +203,7 @@ Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck
 
 // The two schemes compiled by `dartcheck compile` (issue 41): one
 // evaluation per class, the same checks as the interpreter's rows.
-Row run_compiled(const std::string& off, int runs, std::size_t quads, const Points& ref, double tol) {
+Row run_compiled(const std::string& off, int runs, std::size_t quads, const Points& ref, double tol, bool everywhere) {
   using namespace dartcheck;
   const EmbeddedMap input = subdivision_input(off);
   const std::vector<Dart> hooks = orbit_hooks(input.map, {0, 1, 2});
@@ -214,8 +214,13 @@ Row run_compiled(const std::string& off, int runs, std::size_t quads, const Poin
     const auto t0 = std::chrono::steady_clock::now();
     {
       compiled::Workspace ws;
-      for (Dart h : hooks) ok &= compiled_subdivision_operations::catmull_clark_points(g, std::span(&h, 1), ws) == Refusal::none;
-      for (Dart h : hooks) ok &= compiled_subdivision_operations::catmull_clark(g, std::span(&h, 1), ws) == Refusal::none;
+      if (everywhere) {  // positions are darts: no P_v walk, no hooks
+        ok &= compiled_subdivision_operations::catmull_clark_points_everywhere(g, ws) == Refusal::none;
+        ok &= compiled_subdivision_operations::catmull_clark_everywhere(g, ws) == Refusal::none;
+      } else {
+        for (Dart h : hooks) ok &= compiled_subdivision_operations::catmull_clark_points(g, std::span(&h, 1), ws) == Refusal::none;
+        for (Dart h : hooks) ok &= compiled_subdivision_operations::catmull_clark(g, std::span(&h, 1), ws) == Refusal::none;
+      }
     }
     ms = since(t0);
     out = g.map.size();
@@ -342,7 +347,8 @@ int main(int argc, char** argv) {
       {"dartcheck catmull-clark-points + catmull-clark, one evaluation per orbit", "darts",
        [&] { return run_dartcheck(off, runs, sides, Evaluation::one_per_orbit, ref, tol); }},
       {"dartcheck catmull-clark, topology only (SchemeRewriter, no terms)", "darts", [&] { return run_topology(off, runs, sides); }},
-      {"dartcheck compiled catmull-clark-points + catmull-clark", "darts", [&] { return run_compiled(off, runs, sides, ref, tol); }},
+      {"dartcheck compiled catmull-clark-points + catmull-clark", "darts", [&] { return run_compiled(off, runs, sides, ref, tol, false); }},
+      {"dartcheck compiled, everywhere (positions are darts)", "darts", [&] { return run_compiled(off, runs, sides, ref, tol, true); }},
       {"OpenMesh CatmullClarkT, PolyMesh with double points", "halfedges", [&] { return run_openmesh(off, runs, sides, ref, tol); }},
       {"CGAL Subdivision_method_3::CatmullClark_subdivision, Surface_mesh", "halfedges", [&] { return run_cgal(off, runs, sides, ref, tol); }},
   };

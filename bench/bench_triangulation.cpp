@@ -76,7 +76,7 @@ bool centres_are_barycenters(const dartcheck::EmbeddedMap& input, const dartchec
   return true;
 }
 
-enum class Scope { per_face, all_faces };
+enum class Scope { per_face, all_faces, everywhere };
 
 Result run_dartcheck(const std::string& off, int runs, std::size_t triangles, Scope scope, dartcheck::Evaluation evaluation) {
   using namespace dartcheck;
@@ -120,7 +120,10 @@ Result run_compiled(const std::string& off, int runs, std::size_t triangles, Sco
     const auto t0 = std::chrono::steady_clock::now();
     {
       compiled::Workspace ws;
-      for (Dart h : hooks) ok &= rule(g, std::span(&h, 1), ws) == Refusal::none;
+      if (scope == Scope::everywhere)  // positions are darts: no P_v walk, no hooks
+        ok = compiled_embedding_operations::triangulation_all_faces_pos_everywhere(g, ws) == Refusal::none;
+      else
+        for (Dart h : hooks) ok &= rule(g, std::span(&h, 1), ws) == Refusal::none;
     }
     ms = since(t0);
     out = g.map.size();
@@ -415,6 +418,8 @@ int main(int argc, char** argv) {
       {"dartcheck triangulation-all-faces-pos, topology only (apply_scheme, no terms)", [&] { return run_topology(off, runs, sides); }},
       {"dartcheck compiled triangulation-jerboa-pos, per face", [&] { return run_compiled(off, runs, sides, Scope::per_face); }},
       {"dartcheck compiled triangulation-all-faces-pos, once", [&] { return run_compiled(off, runs, sides, Scope::all_faces); }},
+      {"dartcheck compiled triangulation-all-faces-pos, everywhere (positions are darts)",
+       [&] { return run_compiled(off, runs, sides, Scope::everywhere); }},
       {"generic scheme floor by hand, per face (P_v, Lemma 3 and Def. 12 walks)",
        [&] { return run_generic_floor(off, runs, sides, Scope::per_face); }},
       {"generic scheme floor by hand, all faces (P_v, classes over P_v)", [&] { return run_generic_floor(off, runs, sides, Scope::all_faces); }},

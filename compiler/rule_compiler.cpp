@@ -287,6 +287,90 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f) {
   if (deleted > 0) fmt::format_to(out, "  fill_holes(g, ws, {});\n", added > 0 ? "reused" : "0");
 }
 
+// Whether a scheme can also be applied at every component at once with
+// positions as darts (compiled/whole_map_patterns): one hook, L the hook
+// with a loop per letter of W, and a single-letter generator for every
+// dimension of the model, so that P_v is the hook's connected component.
+bool everywhere_applies(const Operation& op, const RuleFacts& f) {
+  if (!op.words.scheme || op.rule.hooks().size() != 1 || !f.identity_match) return false;
+  for (const Dim i : op.rule.model().dims)
+    if (std::none_of(f.gens.begin(), f.gens.end(), [i](const ConjWord& w) { return w.size() == 1 && w.dim(0) == i; })) return false;
+  return true;
+}
+
+// One function: at the hook darts, or (`everywhere`) at every component.
+void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::optional<TermCode>& terms, const std::string& function,
+                   bool everywhere) {
+  const Rule& core = op.rule;
+  const char* const map_parameter = terms ? "EmbeddedMap& em" : "Map& g";
+  if (everywhere) {
+    fmt::format_to(out,
+                   "// {} at every connected component at once (Jerboa's application to the whole\n"
+                   "// map): W's letters name every dimension, so P_v is a component and the P of\n"
+                   "// all components is the map itself, position p being dart p. The result is\n"
+                   "// isomorphic to applying {} at one hook per component, with the new\n"
+                   "// darts numbered in dart order; refused, with the map unchanged, when any\n"
+                   "// component would refuse.\n",
+                   function, function);
+    fmt::format_to(out, "inline Refusal {}_everywhere({}, Workspace& ws) {{\n", function, map_parameter);
+  } else {
+    fmt::format_to(out, "inline Refusal {}({}, std::span<const Dart> hooks, Workspace& ws) {{\n", function, map_parameter);
+  }
+  if (terms) terms->lookups(out);
+  if (!everywhere)
+    fmt::format_to(out,
+                   "  if (hooks.size() != {})\n"
+                   "    return ws.refuse(Refusal::bad_hooks, \"the rule needs {} hook dart{}, one per component of L\");\n"
+                   "  for (const Dart h : hooks)\n"
+                   "    if (h >= g.size()) return ws.refuse(Refusal::bad_hooks, \"hook dart \" + std::to_string(h) + \" is not below \" + "
+                   "std::to_string(g.size()));\n",
+                   core.hooks().size(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
+  if (!op.words.scheme) {
+    fmt::format_to(
+        out, "  if (g.model().name != {})\n    return ws.refuse(Refusal::bad_hooks, \"the rule is for \" {} \", the map is a \" + g.model().name);\n",
+        cpp_literal(core.model().name), cpp_literal(core.model().name));
+    emit_dpo_match(out, op);
+    // The interpreter checks a DPO rule's terms on the match, then applies
+    // the rule (dangling, representability).
+    if (terms) terms->before_rewrite(out);
+  } else {
+    // P_v (002 Def. 20).
+    if (everywhere)
+      fmt::format_to(out,
+                     "  // P (002 Def. 20 at every component): position p is dart p, shift k the\n"
+                     "  // dart along W's k-th generator.\n  static const char* const generator_names[] = {{");
+    else
+      fmt::format_to(out,
+                     "  // P_v (002 Def. 20): the darts reached from the hook along W's generators.\n"
+                     "  static const char* const generator_names[] = {{");
+    for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, "{}{}", k == 0 ? "" : ", ", cpp_literal(f.gens[k].str()));
+    fmt::format_to(out, "}};\n  const auto follow = [&g](std::size_t k, Dart d) -> Dart {{\n    switch (k) {{\n");
+    for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, "      case {}: {}\n", k, follow_case(f.gens[k]));
+    fmt::format_to(out, "      default: return no_dart;\n    }}\n  }};\n");
+    if (everywhere)
+      fmt::format_to(out, "  if (const Refusal r = whole_map_patterns<{}>(g, ws, follow, generator_names); r != Refusal::none) return r;\n",
+                     f.gens.size());
+    else
+      fmt::format_to(out, "  if (const Refusal r = walk_patterns<{}>(g, hooks, ws, follow, generator_names); r != Refusal::none) return r;\n",
+                     f.gens.size());
+    fmt::format_to(out, "  const std::size_t np = ws.np;\n  ws.match.assign({} * np, no_dart);\n", core.left().node_count());
+    if (f.identity_match)
+      fmt::format_to(out,
+                     "  // L is the hook with a loop per letter of W: product node (p, hook) is the p-th dart of P_v.\n"
+                     "  std::copy(ws.pattern.begin(), ws.pattern.end(), ws.match.begin());\n");
+    else
+      emit_propagation(out, op, f);
+  }
+  if (emit_conditions(out, op, f)) {
+    // A scheme's match includes its conditions (match_scheme), then terms.
+    if (terms && op.words.scheme) terms->before_rewrite(out);
+    emit_rewrite(out, op, f);
+    if (terms) terms->after_rewrite(out);
+    fmt::format_to(out, "  return Refusal::none;\n");
+  }
+  fmt::format_to(out, "}}\n");
+}
+
 }  // namespace
 
 std::optional<std::string> not_compilable(const Operation& op) { return terms_not_compilable(op); }
@@ -299,6 +383,8 @@ std::string function_name(std::string_view rule_name, const std::vector<std::str
   for (int k = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++k) name = fmt::format("{}_{}", base, k);
   return name;
 }
+
+bool has_everywhere(const Operation& op) { return everywhere_applies(op, scheme_facts(op.rule, op.words)); }
 
 std::string compile_operation(const CompileUnit& unit, const std::string& function) {
   const Operation& op = *unit.operation;
@@ -327,50 +413,8 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
       for (const NodeTerm& t : side == 'L' ? op.terms->left : op.terms->right)
         fmt::format_to(out, "//   {} {}: {} = {}\n", side, comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()));
   }
-  fmt::format_to(out, "inline Refusal {}({}, std::span<const Dart> hooks, Workspace& ws) {{\n", function, terms ? "EmbeddedMap& em" : "Map& g");
-  if (terms) terms->lookups(out);
-  fmt::format_to(out,
-                 "  if (hooks.size() != {})\n"
-                 "    return ws.refuse(Refusal::bad_hooks, \"the rule needs {} hook dart{}, one per component of L\");\n"
-                 "  for (const Dart h : hooks)\n"
-                 "    if (h >= g.size()) return ws.refuse(Refusal::bad_hooks, \"hook dart \" + std::to_string(h) + \" is not below \" + "
-                 "std::to_string(g.size()));\n",
-                 core.hooks().size(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
-  if (!op.words.scheme) {
-    fmt::format_to(
-        out, "  if (g.model().name != {})\n    return ws.refuse(Refusal::bad_hooks, \"the rule is for \" {} \", the map is a \" + g.model().name);\n",
-        cpp_literal(core.model().name), cpp_literal(core.model().name));
-    emit_dpo_match(out, op);
-    // The interpreter checks a DPO rule's terms on the match, then applies
-    // the rule (dangling, representability).
-    if (terms) terms->before_rewrite(out);
-  } else {
-    // P_v (002 Def. 20).
-    fmt::format_to(
-        out, "  // P_v (002 Def. 20): the darts reached from the hook along W's generators.\n  static const char* const generator_names[] = {{");
-    for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, "{}{}", k == 0 ? "" : ", ", cpp_literal(f.gens[k].str()));
-    fmt::format_to(out, "}};\n  const auto follow = [&g](std::size_t k, Dart d) -> Dart {{\n    switch (k) {{\n");
-    for (std::size_t k = 0; k < f.gens.size(); ++k) fmt::format_to(out, "      case {}: {}\n", k, follow_case(f.gens[k]));
-    fmt::format_to(out,
-                   "      default: return no_dart;\n    }}\n  }};\n"
-                   "  if (const Refusal r = walk_patterns<{}>(g, hooks, ws, follow, generator_names); r != Refusal::none) return r;\n",
-                   f.gens.size());
-    fmt::format_to(out, "  const std::size_t np = ws.np;\n  ws.match.assign({} * np, no_dart);\n", core.left().node_count());
-    if (f.identity_match)
-      fmt::format_to(out,
-                     "  // L is the hook with a loop per letter of W: product node (p, hook) is the p-th dart of P_v.\n"
-                     "  std::copy(ws.pattern.begin(), ws.pattern.end(), ws.match.begin());\n");
-    else
-      emit_propagation(out, op, f);
-  }
-  if (emit_conditions(out, op, f)) {
-    // A scheme's match includes its conditions (match_scheme), then terms.
-    if (terms && op.words.scheme) terms->before_rewrite(out);
-    emit_rewrite(out, op, f);
-    if (terms) terms->after_rewrite(out);
-    fmt::format_to(out, "  return Refusal::none;\n");
-  }
-  fmt::format_to(out, "}}\n");
+  emit_function(out, op, f, terms, function, false);
+  if (everywhere_applies(op, f)) emit_function(out, op, f, terms, function, true);
   return code;
 }
 
@@ -387,7 +431,7 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
                  "using dartcheck::Dart;\nusing dartcheck::Map;\nusing dartcheck::no_dart;\nusing dartcheck::Refusal;\n"
                  "using dartcheck::compiled::check_match;\nusing dartcheck::combinatorial_violation;\nusing dartcheck::compiled::fill_holes;\nusing "
                  "dartcheck::compiled::propagate;\n"
-                 "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::Workspace;\n"
+                 "using dartcheck::compiled::walk_patterns;\nusing dartcheck::compiled::whole_map_patterns;\nusing dartcheck::compiled::Workspace;\n"
                  "// Terms (rewriting/compiled_terms.hpp).\n"
                  "using dartcheck::dims_generators;\nusing dartcheck::EmbeddedMap;\nusing dartcheck::Embedding;\nusing dartcheck::EvaluationError;\n"
                  "using dartcheck::Value;\nusing dartcheck::ValueType;\nusing dartcheck::OrbitWord;\nusing dartcheck::compiled::CollectSite;\n"
@@ -406,16 +450,21 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
   for (const CompileUnit& u : units) topological += !u.operation->terms;
   fmt::format_to(
       out,
-      "/// A compiled operation: the rule's name and its function.\n"
-      "struct CompiledOperation {{\n  const char* name;\n  Refusal (*apply)(Map&, std::span<const Dart>, Workspace&);\n}};\n"
+      "/// A compiled operation: the rule's name, its function at hook darts, and\n"
+      "/// its function at every connected component (nullptr unless the rule is\n"
+      "/// a scheme whose P_v is the hook's component).\n"
+      "struct CompiledOperation {{\n  const char* name;\n  Refusal (*apply)(Map&, std::span<const Dart>, Workspace&);\n"
+      "  Refusal (*everywhere)(Map&, Workspace&);\n}};\n"
       "/// A compiled operation with embedding terms.\n"
-      "struct CompiledEmbeddedOperation {{\n  const char* name;\n  Refusal (*apply)(EmbeddedMap&, std::span<const Dart>, Workspace&);\n}};\n\n");
+      "struct CompiledEmbeddedOperation {{\n  const char* name;\n  Refusal (*apply)(EmbeddedMap&, std::span<const Dart>, Workspace&);\n"
+      "  Refusal (*everywhere)(EmbeddedMap&, Workspace&);\n}};\n\n");
   for (const bool embedded : {false, true}) {
     fmt::format_to(out, "inline constexpr std::array<{}, {}> {}{{{{\n", embedded ? "CompiledEmbeddedOperation" : "CompiledOperation",
                    embedded ? units.size() - topological : topological, embedded ? "embedded_operations" : "operations");
     for (std::size_t k = 0; k < units.size(); ++k)
       if (units[k].operation->terms.has_value() == embedded)
-        fmt::format_to(out, "    {{{}, &{}}},\n", cpp_literal(units[k].operation->rule.name()), names[k]);
+        fmt::format_to(out, "    {{{}, &{}, {}}},\n", cpp_literal(units[k].operation->rule.name()), names[k],
+                       has_everywhere(*units[k].operation) ? fmt::format("&{}_everywhere", names[k]) : std::string("nullptr"));
     fmt::format_to(out, "}}}};\n");
   }
   fmt::format_to(out, "\n}}  // namespace {}\n", ns);

@@ -38,7 +38,14 @@ std::string function_name(std::string_view rule_name, const std::vector<std::str
 /// The generated function for one compilable operation, named `function`:
 /// a comment with the rule's nodes and arcs, then an inline function
 ///   dartcheck::Refusal function(dartcheck::Map&, std::span<const dartcheck::Dart>, dartcheck::compiled::Workspace&)
+/// and, when has_everywhere(op), function_everywhere(Map&, Workspace&).
 std::string compile_operation(const CompileUnit& unit, const std::string& function);
+
+/// Whether compile_operation also writes NAME_everywhere, the scheme at
+/// every connected component at once (rewriting/compiled_runtime.hpp,
+/// whole_map_patterns): one hook, L the hook with a loop per letter of W,
+/// and W's single letters name every dimension.
+bool has_everywhere(const Operation& op);
 
 /// A whole header: the includes, the functions of `units` (each compilable)
 /// in namespace `ns`, and a table `operations` of {rule name, function} in

@@ -136,6 +136,39 @@ Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, 
   return Refusal::none;
 }
 
+/// P for a scheme applied at every connected component at once (the
+/// generated NAME_everywhere functions): when W's single-letter generators
+/// name every dimension of the model, the P_v of any dart is its connected
+/// component, so P over all components is the whole map. Position p is dart
+/// p and shift[k][p] = follow(k, p): no walk and no dart -> position table.
+/// The instantiation over this P is the disjoint union of the instantiations
+/// at one hook per component, so applying it is applying the scheme at each
+/// component (in any order: their darts are disjoint and no term reads
+/// beyond a component); the new darts are numbered in dart order, not in a
+/// BFS order from a hook, so the result is isomorphic to the sequential
+/// applications', not equal. Refused when some dart has no path along a
+/// generator, as walk_patterns refuses at the first such dart of P_v.
+template <std::size_t Generators, class Follow>
+Refusal whole_map_patterns(const Map& g, Workspace& ws, Follow follow, const char* const* generator_names) {
+  ws.prepare(g.size(), Generators);
+  const auto n = static_cast<Dart>(g.size());
+  ws.pattern.resize(n);
+  for (Dart d = 0; d < n; ++d) ws.pattern[d] = d;
+  for (std::size_t w = 0; w < Generators; ++w) {
+    std::vector<std::uint32_t>& shift = ws.shift[w];
+    shift.resize(n);
+    for (Dart d = 0; d < n; ++d) {
+      const Dart t = follow(w, d);
+      if (t == no_dart)
+        return ws.refuse(Refusal::not_combinatorial,
+                         "dart " + std::to_string(d) + " has no " + generator_names[w] + "-path: the host is not combinatorial");
+      shift[d] = t;
+    }
+  }
+  ws.np = n;
+  return Refusal::none;
+}
+
 /// The match's propagation along one instantiated arc of L: product node
 /// (q, x) is dart `there`. False when it is already another dart (the
 /// instantiated L would send one node to two darts).
