@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <type_traits>
 #include <bit>
 #include <filesystem>
 #include <numeric>
@@ -125,8 +127,223 @@ std::vector<Map> hosts_for(const Rule& rule, const Catalog& catalog, std::mt1993
   return hosts;
 }
 
+// Every embedding's value at every dart, as bits (Value's == would call
+// 0.0 and -0.0 equal).
+std::vector<std::vector<std::optional<std::array<std::uint64_t, 5>>>> bits_of(const EmbeddedMap& g) {
+  std::vector<std::vector<std::optional<std::array<std::uint64_t, 5>>>> out;
+  for (const Embedding& e : g.embeddings) {
+    out.emplace_back();
+    for (Dart d = 0; d < g.map.size(); ++d) {
+      const Value* v = e.value(d);
+      if (!v) {
+        out.back().push_back(std::nullopt);
+        continue;
+      }
+      out.back().push_back(std::array<std::uint64_t, 5>{static_cast<std::uint64_t>(v->type), std::bit_cast<std::uint64_t>(v->x[0]),
+                                                        std::bit_cast<std::uint64_t>(v->x[1]), std::bit_cast<std::uint64_t>(v->x[2]),
+                                                        static_cast<std::uint64_t>(v->i)});
+    }
+  }
+  return out;
+}
+
+// NAME_everywhere (the scheme at every connected component at once, with
+// positions as darts) against the interpreter applied at one hook per
+// component. Property: split the host into its connected components, each
+// a map of its own (darts in increasing order), and apply the interpreter
+// at its dart 0 (its P_v is the whole component, so the hook's choice only
+// renumbers), then split its result into components. If some component
+// is refused, the everywhere function
+// refuses with the refusal of one of them (it checks each condition over
+// all positions before the next, in the interpreter's order) and leaves
+// the map and values unchanged; otherwise the components of its result
+// are, one for one, isomorphic to the interpreter's results, with the
+// same value of every embedding at corresponding darts. Values: equal bit
+// for bit, or within 1e-9 of the host's largest coordinate magnitude (a
+// class's term is evaluated at its first position, which is the class's
+// smallest dart here and its first in the hook's BFS order there: a
+// collect starts at another dart of the orbit and a sum adds the same
+// terms in another order); the tally counts both.
+
+struct EverywhereTally {
+  std::size_t hosts = 0, several_components = 0, applied = 0, refused = 0, values_bit_equal = 0, values_within_tolerance = 0;
+};
+
+// Connected components (links and inverse links), each in increasing order.
+std::vector<std::vector<Dart>> components_of(const Map& m) {
+  std::vector<bool> seen(m.size(), false);
+  std::vector<std::vector<Dart>> out;
+  for (Dart d = 0; d < m.size(); ++d) {
+    if (seen[d]) continue;
+    std::vector<Dart> comp{d};
+    seen[d] = true;
+    for (std::size_t k = 0; k < comp.size(); ++k)
+      for (const Dim i : m.model().dims)
+        for (const Dart e : {m.link(i, comp[k]), m.inverse_link(i, comp[k])})
+          if (e != no_dart && !seen[e]) {
+            seen[e] = true;
+            comp.push_back(e);
+          }
+    std::sort(comp.begin(), comp.end());
+    out.push_back(std::move(comp));
+  }
+  return out;
+}
+
+// One component as a map of its own: darts[k] becomes dart k; the
+// embeddings keep their order and values.
+EmbeddedMap extract(const EmbeddedMap& g, const std::vector<Dart>& darts) {
+  std::vector<Dart> index(g.map.size(), no_dart);
+  for (std::size_t k = 0; k < darts.size(); ++k) index[darts[k]] = static_cast<Dart>(k);
+  Map m(g.map.model(), darts.size());
+  for (const Dim i : g.map.model().dims)
+    for (std::size_t k = 0; k < darts.size(); ++k)
+      if (const Dart e = g.map.link(i, darts[k]); e != no_dart) m.set_link(i, static_cast<Dart>(k), index[e]);
+  EmbeddedMap out(std::move(m));
+  for (const Embedding& e : g.embeddings) {
+    const std::size_t k = out.add_embedding(e.signature);
+    for (std::size_t j = 0; j < darts.size(); ++j)
+      if (const Value* v = e.value(darts[j])) out.embeddings[k].set(static_cast<Dart>(j), *v);
+  }
+  return out;
+}
+
+// The isomorphism of a's component of a0 onto b's component of b0 that
+// sends a0 to b0 (a connected map's isomorphism is fixed by one dart's
+// image), or nullopt: phi[x] for x in that component, no_dart elsewhere.
+std::optional<std::vector<Dart>> anchored_isomorphism(const Map& a, Dart a0, const Map& b, Dart b0) {
+  std::vector<Dart> phi(a.size(), no_dart), inverse(b.size(), no_dart);
+  std::vector<Dart> queue{a0};
+  phi[a0] = b0;
+  inverse[b0] = a0;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const Dart x = queue[k];
+    for (const Dim i : a.model().dims)
+      for (const bool forward : {true, false}) {
+        const Dart ax = forward ? a.link(i, x) : a.inverse_link(i, x);
+        const Dart bx = forward ? b.link(i, phi[x]) : b.inverse_link(i, phi[x]);
+        if ((ax == no_dart) != (bx == no_dart)) return std::nullopt;
+        if (ax == no_dart) continue;
+        if (phi[ax] == no_dart && inverse[bx] == no_dart) {
+          phi[ax] = bx;
+          inverse[bx] = ax;
+          queue.push_back(ax);
+        } else if (phi[ax] != bx) {
+          return std::nullopt;
+        }
+      }
+  }
+  return phi;
+}
+
+// Every embedding's value at x in a and at phi(x) in b: both absent, or of
+// one type and integer and with coordinates equal or within `tolerance`.
+bool same_values(const EmbeddedMap& a, const EmbeddedMap& b, const std::vector<Dart>& phi, double tolerance, EverywhereTally& tally) {
+  std::size_t bit_equal = 0, close = 0;
+  for (std::size_t e = 0; e < a.embeddings.size(); ++e)
+    for (Dart x = 0; x < a.map.size(); ++x) {
+      if (phi[x] == no_dart) continue;
+      const Value *va = a.embeddings[e].value(x), *vb = b.embeddings[e].value(phi[x]);
+      if (!va || !vb) {
+        if (va != vb) return false;
+        continue;
+      }
+      if (va->type != vb->type || va->i != vb->i) return false;
+      bool exact = true;
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (std::bit_cast<std::uint64_t>(va->x[k]) == std::bit_cast<std::uint64_t>(vb->x[k])) continue;
+        exact = false;
+        if (!(std::abs(va->x[k] - vb->x[k]) <= tolerance)) return false;
+      }
+      (exact ? bit_equal : close) += 1;
+    }
+  tally.values_bit_equal += bit_equal;
+  tally.values_within_tolerance += close;
+  return true;
+}
+
+double coordinate_scale(const EmbeddedMap& g) {
+  double largest = 1;
+  for (const Embedding& e : g.embeddings)
+    for (const Value& v : e.pool)
+      for (const double x : v.x)
+        if (std::isfinite(x)) largest = std::max(largest, std::abs(x));
+  return largest;
+}
+
+template <class Everywhere>
+void compare_everywhere(const Operation& op, const char* name, Everywhere everywhere, const EmbeddedMap& host, compiled::Workspace& ws,
+                        EverywhereTally& tally) {
+  ++tally.hosts;
+  std::vector<EmbeddedMap> expected;
+  std::vector<std::string_view> refusals;
+  const std::vector<std::vector<Dart>> components = components_of(host.map);
+  tally.several_components += components.size() > 1;
+  for (const std::vector<Dart>& comp : components) {
+    EmbeddedMap sub = extract(host, comp);
+    const std::vector<Dart> hook{0};
+    if (op.terms) {
+      EmbeddedRewriter rewriter(op.rule, op.words, *op.terms, sub, Evaluation::one_per_orbit);
+      if (const auto r = rewriter.apply(hook, false); !r.ok()) refusals.push_back(refusal_name(r.refusal));
+    } else if (const auto r = apply(op, sub.map, hook); !r.ok()) {
+      refusals.push_back(refusal_name(r.refusal));
+    }
+    // The result may have no dart left, or several components.
+    for (const std::vector<Dart>& part : components_of(sub.map)) expected.push_back(extract(sub, part));
+  }
+  EmbeddedMap generated = host;
+  Refusal got = Refusal::none;
+  if constexpr (std::is_invocable_v<Everywhere, EmbeddedMap&, compiled::Workspace&>)
+    got = everywhere(generated, ws);
+  else
+    got = everywhere(generated.map, ws);
+  const std::string where = fmt::format("rule '{}' everywhere on a {}-dart {} ({} components after the interpreter)", name, host.map.size(),
+                                        host.map.model().name, expected.size());
+  if (!refusals.empty()) {
+    ++tally.refused;
+    ASSERT_NE(got, Refusal::none) << where << ": the interpreter refuses a component (" << refusals.front() << ")";
+    ASSERT_NE(std::find(refusals.begin(), refusals.end(), refusal_name(got)), refusals.end())
+        << where << ": refused as " << refusal_name(got) << ", no component is (first: " << refusals.front() << "); " << ws.why;
+    ASSERT_TRUE(generated.map == host.map) << where << ": a refusal changed the map";
+    ASSERT_EQ(bits_of(generated), bits_of(host)) << where << ": a refusal changed a value";
+    return;
+  }
+  ++tally.applied;
+  ASSERT_EQ(got, Refusal::none) << where << ": " << ws.why;
+  ASSERT_EQ(ws.terms.conflicts, 0U) << where;
+  const double tolerance = 1e-9 * coordinate_scale(host);
+  std::vector<std::vector<Dart>> parts = components_of(generated.map);
+  ASSERT_EQ(parts.size(), expected.size()) << where << ": components";
+  std::vector<bool> used(parts.size(), false);
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    const EmbeddedMap& want = expected[k];
+    bool found = false;
+    for (std::size_t j = 0; j < parts.size() && !found; ++j) {
+      if (used[j] || parts[j].size() != want.map.size()) continue;
+      for (const Dart b0 : parts[j]) {
+        EverywhereTally values;
+        const auto phi = anchored_isomorphism(want.map, 0, generated.map, b0);
+        if (phi && same_values(want, generated, *phi, tolerance, values)) {
+          used[j] = found = true;
+          tally.values_bit_equal += values.values_bit_equal;
+          tally.values_within_tolerance += values.values_within_tolerance;
+          break;
+        }
+      }
+    }
+    ASSERT_TRUE(found) << where << ": the interpreter's component " << k << " (" << want.map.size()
+                       << " darts) has no isomorphic component with equal values";
+  }
+}
+
+void report_everywhere(const char* catalog, const EverywhereTally& t) {
+  std::printf("%severywhere: %zu hosts (%zu of several components), %zu applied, %zu refused; values %zu bit for bit, %zu within tolerance\n",
+              catalog, t.hosts, t.several_components, t.applied, t.refused, t.values_bit_equal, t.values_within_tolerance);
+}
+
 struct Tally {
   std::size_t rules = 0, applied = 0, refused = 0;
+  EverywhereTally everywhere;
 };
 
 // One application both ways on copies of `host`; true if they agree.
@@ -189,6 +406,11 @@ Tally compare_catalog(const std::string& file, const std::array<Compiled, N>& op
         }
       }
     }
+    if (c.everywhere)
+      for (const Map& host : hosts_for(rule->rule, catalog, rng)) {
+        compare_everywhere(*rule, c.name, c.everywhere, EmbeddedMap(host), ws, tally.everywhere);
+        if (::testing::Test::HasFatalFailure()) return tally;
+      }
     // Out-of-range and wrongly counted hooks are refused alike.
     const std::vector<Map> some = hosts_for(rule->rule, catalog, rng);
     if (some.empty()) {
@@ -219,6 +441,7 @@ void expect_agreement(const Tally& t, std::size_t compiled_rules) {
   ::testing::Test::RecordProperty("applications", static_cast<int>(t.applied));
   ::testing::Test::RecordProperty("refusals", static_cast<int>(t.refused));
   std::printf("%zu rules, %zu applications and %zu refusals agree\n", t.rules, t.applied, t.refused);
+  if (t.everywhere.hosts > 0) report_everywhere("", t.everywhere);
 }
 
 TEST(CompiledOperations, SeedCatalogAgreesWithTheInterpreter) {
@@ -263,26 +486,6 @@ TEST(CompiledOperations, HostileNamesCompileAndAgree) {
 // small pool (so that neighbouring orbits often share one), the catalog's
 // maps with such values, the catalog's meshes with their positions, and, for the subdivision catalog, the
 // meshes after the first step (the second step needs its labels).
-
-// Every embedding's value at every dart, as bits (Value's == would call
-// 0.0 and -0.0 equal).
-std::vector<std::vector<std::optional<std::array<std::uint64_t, 5>>>> bits_of(const EmbeddedMap& g) {
-  std::vector<std::vector<std::optional<std::array<std::uint64_t, 5>>>> out;
-  for (const Embedding& e : g.embeddings) {
-    out.emplace_back();
-    for (Dart d = 0; d < g.map.size(); ++d) {
-      const Value* v = e.value(d);
-      if (!v) {
-        out.back().push_back(std::nullopt);
-        continue;
-      }
-      out.back().push_back(std::array<std::uint64_t, 5>{static_cast<std::uint64_t>(v->type), std::bit_cast<std::uint64_t>(v->x[0]),
-                                                        std::bit_cast<std::uint64_t>(v->x[1]), std::bit_cast<std::uint64_t>(v->x[2]),
-                                                        static_cast<std::uint64_t>(v->i)});
-    }
-  }
-  return out;
-}
 
 template <class Compiled>
 void compare_embedded_at(const Operation& op, const Compiled& compiled, const EmbeddedMap& host, const std::vector<Dart>& hooks,
@@ -374,6 +577,11 @@ Tally compare_embedded_catalog(const std::string& file, const std::array<Compile
         }
       }
     }
+    if (c.everywhere)
+      for (const EmbeddedMap& host : hosts) {
+        compare_everywhere(*rule, c.name, c.everywhere, host, ws, tally.everywhere);
+        if (::testing::Test::HasFatalFailure()) return tally;
+      }
     // A map without an embedding the rule labels is refused alike.
     EmbeddedMap bare(hosts.front().map);
     compare_embedded_at(*rule, c, bare, std::vector<Dart>(hook_count, 0), ws, tally);
