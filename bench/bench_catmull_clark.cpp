@@ -330,6 +330,7 @@ int main(int argc, char** argv) {
   cgal_catmull_clark(reference_mesh);
   const Points ref = points_of(reference_mesh);
   reference_mesh.clear();
+  print_machine_line();
   std::printf(
       "input: %s: V=%zu, F=%zu, %zu G-map darts, %zu halfedges; output: %zu interior points compared with CGAL's (tolerance %.3g), "
       "%zu boundary points counted; median of %d runs\n\n",

@@ -399,6 +399,7 @@ int main(int argc, char** argv) {
   std::size_t sides = 0;
   const dartcheck::Mesh mesh = dartcheck::read_mesh(off);
   for (const auto& f : mesh.faces) sides += f.size();
+  print_machine_line();
   std::printf("input: %s: V=%zu, F=%zu, %zu G-map darts, %zu CGAL darts; median of %d runs\n\n", off.c_str(), mesh.positions.size(),
               mesh.faces.size(), 2 * sides, sides, runs);
   using dartcheck::Evaluation;

@@ -4,6 +4,7 @@
 // so that each peak RSS is its own.
 #pragma once
 
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -107,6 +108,36 @@ long peak_kib() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return u.ru_maxrss;
+}
+
+// The cost of a first touch of a page (a fault that maps a zeroed page),
+// in microseconds: the median of 5 probes of 64 MiB. It varies by a factor
+// of 40 between the VMs these benches ran on (0.25 to 11 us), and peers
+// that take fresh memory on every run (CGAL's Compact_container, OpenMesh's
+// vectors, growing tables) pay it per page, so every run prints it beside
+// whether glibc keeps freed memory in the process (GLIBC_TUNABLES, see
+// BENCHMARKS.md).
+inline double page_fault_us() {
+  constexpr std::size_t bytes = std::size_t{64} << 20;
+  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  std::vector<double> probes;
+  for (int k = 0; k < 5; ++k) {
+    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) return 0;
+    volatile char* c = static_cast<char*>(p);
+    const auto t0 = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < bytes; i += page) c[i] = 1;
+    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    munmap(p, bytes);
+    probes.push_back(us / static_cast<double>(bytes / page));
+  }
+  std::sort(probes.begin(), probes.end());
+  return probes[probes.size() / 2];
+}
+
+inline void print_machine_line() {
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  std::printf("machine: a page's first touch costs %.2f us; GLIBC_TUNABLES=%s\n", page_fault_us(), tunables ? tunables : "(unset)");
 }
 
 struct Result {

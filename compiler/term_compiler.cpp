@@ -69,6 +69,7 @@ struct TermCode::Plan {
   std::map<const Term*, std::size_t> site;  // collect -> CollectSite number (and bag)
   std::vector<const Term*> sites;
   std::vector<Grouping> right_groups;  // per used embedding
+  std::vector<std::vector<NodeId>> kept_at;  // per used embedding and group: kept_groups
 
   Plan(const Operation& o, const SchemeFacts& f) : op(o), facts(f), terms(*o.terms), tf(term_facts(o.rule, *o.terms)) {
     for (const EmbeddingSignature* e : used) embedding(e->name);
@@ -83,6 +84,40 @@ struct TermCode::Plan {
     for (const NodeTerm& x : terms.left) number(x.term, number);
     for (const NodeTerm& x : terms.right) number(x.term, number);
     for (const EmbeddingSignature* sig : used) right_groups.push_back(grouping(op.rule.right(), op.words.right, sig->orbit));
+    for (std::size_t u = 0; u < used.size(); ++u) kept_at.push_back(kept_groups(u));
+  }
+
+  // The groups of R for embedding u whose classes need no walk when G's
+  // labels agree along the group's loops (the kept-label shortcut): per
+  // group, the L node whose matched darts' stored value is the group's
+  // only term, or no_node. Conditions, all known from the rule:
+  //   - extended instantiation, R closes the orbit (a class is written per
+  //     instance), the classes found by groups, the group has loop words;
+  //   - the group holds one term of u, and it is kept from G (stored_at);
+  //   - no node of L is deleted, so no dart of G is renumbered.
+  // Why the result is the walk's, bit for bit: if at every copy p the
+  // pool index i(p) of the kept node's matched dart is defined and equals
+  // i(p.w) for each loop word w of the group, then i is constant on each
+  // class (a class is connected by those shifts), and the class's source,
+  // i at its first copy, is i(p) at each of its copies. The generated code
+  // checks that at run time, in one pass without marks, and walks the
+  // classes as before when it fails (G inconsistent, or equal values kept
+  // as distinct pool entries, or a missing value, which the walk reports).
+  std::vector<NodeId> kept_groups(std::size_t u) const {
+    const Grouping& gr = right_groups[u];
+    std::vector<NodeId> out(gr.words.size(), no_node);
+    if (!extended() || !closed[u] || !gr.grouped) return out;
+    for (NodeId x = 0; x < op.rule.left().node_count(); ++x)
+      if (op.rule.to_right(x) == no_node) return out;
+    std::vector<std::size_t> terms_in(gr.words.size(), 0);
+    for (std::size_t k = 0; k < terms.right.size(); ++k)
+      if (terms.right[k].embedding == used[u]->name) ++terms_in[gr.group_of[right_node[k]]];
+    for (std::size_t k = 0; k < terms.right.size(); ++k) {
+      if (terms.right[k].embedding != used[u]->name) continue;
+      const std::size_t g = gr.group_of[right_node[k]];
+      if (terms_in[g] == 1 && stored_at[k] != no_node && !gr.words[g].empty()) out[g] = stored_at[k];
+    }
+    return out;
   }
 
   std::size_t embedding(const std::string& name) {
@@ -216,6 +251,30 @@ struct TermCode::Plan {
         fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) cls[{} * np + p] = count++;  // {{{}}}: a class per copy\n", g, members);
         continue;
       }
+      const NodeId at = kept_at[u][g];
+      if (at != no_node) {
+        // The kept-label shortcut (kept_groups): cls holds G's pool index
+        // of the kept node's dart at each copy instead of a class number.
+        std::string agree;
+        for (int k : gr.words[g])
+          agree += fmt::format(" || slot_of(match[{} * np + ws.shift[{}][p]]) != v", at, k);
+        fmt::format_to(out,
+                       "    {{  // {{{0}}}: G's value of {1} at every copy when G's labels agree along the loops\n"
+                       "      const auto slot_of = [e = e{2}](Dart d) {{ return d < e->slot.size() ? e->slot[d] : Embedding::none; }};\n"
+                       "      kept{3}_{4} = true;\n"
+                       "      for (std::size_t p = 0; p < np; ++p) {{\n"
+                       "        const std::uint32_t v = slot_of(match[{5} * np + p]);\n"
+                       "        if (v == Embedding::none{6}) {{  // the walk below decides\n"
+                       "          kept{3}_{4} = false;\n"
+                       "          std::fill(cls.begin() + {4} * np, cls.begin() + {4} * np + p, dartcheck::compiled::none);\n"
+                       "          break;\n        }}\n"
+                       "        cls[{4} * np + p] = v;\n"
+                       "      }}\n"
+                       "      ++(kept{3}_{4} ? tw.shortcuts : tw.shortcut_fallbacks);\n"
+                       "    }}\n"
+                       "    if (!kept{3}_{4})\n",
+                       members, comment_text(op.rule.left().name(at)), index_of(used[u]->name), u, g, at, agree);
+      }
       std::string follow;
       for (int k : gr.words[g])
         follow += fmt::format(
@@ -271,6 +330,9 @@ void TermCode::lookups(Out out) const {
   }
   for (std::size_t s = 0; s < p.sites.size(); ++s)
     fmt::format_to(out, "  static const CollectSite site{}({}, {{{}}});\n", s, cpp_literal(p.sites[s]->name), fmt::join(p.sites[s]->orbit, ", "));
+  for (std::size_t u = 0; u < p.kept_at.size(); ++u)
+    for (std::size_t g = 0; g < p.kept_at[u].size(); ++g)
+      if (p.kept_at[u][g] != no_node) fmt::format_to(out, "  bool kept{}_{} = false;  // the kept-label shortcut taken\n", u, g);
 }
 
 void TermCode::before_rewrite(Out out) const {
@@ -338,6 +400,8 @@ void TermCode::before_rewrite(Out out) const {
       const NodeTerm& t = p.terms.right[k];
       if (t.embedding != sig.name) continue;
       const NodeId y = p.right_node[k];
+      if (p.extended() && p.right_groups[u].grouped && p.kept_at[u][p.right_groups[u].group_of[y]] != no_node)
+        fmt::format_to(out, "    if (!kept{}_{})  // else its values are G's, in cls\n", u, p.right_groups[u].group_of[y]);
       fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) {{  // R: {} labeled {} = {}\n      Source& here = src[{}];\n",
                      comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()),
                      p.extended() ? p.class_of(u, y) : fmt::format("{} * np + p", k));
@@ -411,11 +475,19 @@ void TermCode::after_rewrite(Out out) const {
                      "      if (const Source f = src[c]; f.index != Embedding::none) pool[c] = f.stored ? f.index : e.store(tw.evaluated[f.index]);\n"
                      "    // R closes <{1}>: a class is a whole orbit of H.\n",
                      u, fmt::join(sig.orbit, ","));
-      for (NodeId y = 0; y < R.node_count(); ++y)
+      for (NodeId y = 0; y < R.node_count(); ++y) {
+        const std::size_t g = p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0;
+        if (p.right_groups[u].grouped && p.kept_at[u][g] != no_node)
+          fmt::format_to(out,
+                         "    if (kept{0}_{1})\n"
+                         "      for (std::size_t p = 0; p < np; ++p) e.set_index(cm[{2} * np + p], cls[{1} * np + p]);  // {3}: G's value\n"
+                         "    else\n",
+                         u, g, y, comment_text(R.name(y)));
         fmt::format_to(out,
                        "    for (std::size_t p = 0; p < np; ++p)  // {}\n"
                        "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.set_index(cm[{} * np + p], v);\n",
                        comment_text(R.name(y)), p.class_of(u, y), y);
+      }
     } else if (p.extended()) {
       fmt::format_to(
           out,

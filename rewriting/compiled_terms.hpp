@@ -81,6 +81,10 @@ struct TermWorkspace {
   /// exist); H keeps both, as the interpreter's. Never for a rule the
   /// static checker calls consistent (Thm 4).
   std::size_t conflicts = 0;
+  /// How often the kept-label shortcut of compiler/term_compiler.cpp
+  /// (kept_groups) was taken and how often its check failed and the
+  /// classes were walked: the differential test needs both.
+  std::size_t shortcuts = 0, shortcut_fallbacks = 0;
 
   /// Sizes the per-application tables: `used` embeddings labeled, `sites`
   /// collects in the function.

@@ -116,6 +116,11 @@ void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Da
   // every G-map dimension); otherwise the orbit is walked.
   const bool none_common = inner.empty(), one_letter = inner.size() == 1 && inner[0].size() == 1;
   const Dim i = one_letter ? inner[0][0] : 0;
+  // A pi-orbit's value is that of its smallest labeled dart: on a
+  // consistent G every labeled dart has it; on one that is not, the
+  // choice does not depend on the dart a walk of <o'> meets first (the
+  // evaluator walks breadth first, compiled rules a face as alternating
+  // links), so both read the same value.
   for (Dart x : orbit) {
     if (done(x)) continue;
     const Value* v = nullptr;
@@ -126,12 +131,16 @@ void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Da
       v = e.value(x);
       if (y != no_dart && y != x) {
         mark(y);
-        if (!v) v = e.value(y);
+        if (const Value* w = e.value(y); w && (!v || y < x)) v = w;
       }
     } else {
+      Dart smallest = no_dart;
       for (Dart z : inner_walker.orbit(x, inner)) {
         mark(z);
-        if (!v) v = e.value(z);
+        if (const Value* w = e.value(z); w && z < smallest) {
+          v = w;
+          smallest = z;
+        }
       }
     }
     if (!v) {

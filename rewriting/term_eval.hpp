@@ -20,10 +20,11 @@ namespace dartcheck {
 class TermEvaluator;
 
 /// The multiset of a collect pi<o'>(x) (003 Def. 9) from a walk `orbit` of
-/// x's <o'>-orbit: one value per pi-orbit inside it, each pi-orbit taken
-/// through `inner`, the generators of <o> ∩ <o'> (walked with
-/// `inner_walker`), appended to `out` in a canonical order (value_less),
-/// so the multiset is the same from any dart of the orbit. `done` holds one
+/// x's <o'>-orbit: one value per pi-orbit inside it (that of its smallest
+/// labeled dart), each pi-orbit taken through `inner`, the generators of
+/// <o> ∩ <o'> (walked with `inner_walker`), appended to `out` in a
+/// canonical order (value_less), so the multiset is the same from any dart
+/// of the orbit, even where G is not consistent. `done` holds one
 /// bit per dart, clear before and after. Throws EvaluationError, naming
 /// pi (`name`) and <o'> (`dims`), when a pi-orbit has no value. The
 /// evaluator and compiled rules (rewriting/compiled_terms.hpp) both
