@@ -275,6 +275,15 @@ struct TermCode::Plan {
                        "    if (!kept{3}_{4})\n",
                        members, comment_text(op.rule.left().name(at)), index_of(used[u]->name), u, g, at, agree);
       }
+      // Two involutions of the positions: the walk without a stack, the
+      // stack walk kept for a host whose links are not involutions.
+      const auto single_unoriented = [&](int k) {
+        const ConjWord& w = facts.gens[static_cast<std::size_t>(k)];
+        return w.size() == 1 && !w.bar(0) && !op.rule.model().is_oriented(w.dim(0));
+      };
+      if (gr.words[g].size() == 2 && single_unoriented(gr.words[g][0]) && single_unoriented(gr.words[g][1]))
+        fmt::format_to(out, "    if (!dartcheck::compiled::alternating_classes(cls.data() + {} * np, ws.shift[{}].data(), ws.shift[{}].data(), np, count))\n",
+                       g, gr.words[g][0], gr.words[g][1]);
       std::string follow;
       for (int k : gr.words[g])
         follow += fmt::format(

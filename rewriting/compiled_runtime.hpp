@@ -31,7 +31,6 @@
 
 namespace dartcheck::compiled {
 
-inline constexpr std::uint32_t none = 0xffffffffU;
 
 /// The tables of one application, kept from one application to the next
 /// so that a loop of small applications on a large map costs the darts

@@ -8,6 +8,7 @@
 // evaluator's own), so a compiled rule writes the interpreter's values.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -20,6 +21,9 @@
 #include "rewriting/embedded_map.hpp"
 
 namespace dartcheck::compiled {
+
+/// An unset entry of the compiled runtime's per-dart and per-instance tables.
+inline constexpr std::uint32_t none = 0xffffffffU;
 
 /// Where the value of a labeled instance (or class) of R is: a stored value
 /// of G kept by the rule (an index into the embedding's pool) or one the
@@ -146,5 +150,51 @@ std::uint32_t pool_index(TermWorkspace& tw, Embedding& e, Source from);
 /// clear them (end_writes) before the next one.
 void write_orbit(TermWorkspace& tw, const Map& g, Embedding& e, std::span<const OrbitWord> generators, Dart d, Source from);
 void end_writes(TermWorkspace& tw);
+
+/// The classes of one group of R's nodes whose loop words are two single
+/// letters of non-oriented dimensions (a face <0,1>, an edge <0,2>, a
+/// vertex <1,2> of a G-map): their shift tables `a` and `b` are
+/// involutions of the positions, so a class is a path or a cycle of
+/// alternating shifts, walked without a stack. `cls` is the group's row
+/// (np entries, none where unnumbered); classes are numbered from `count`
+/// in order of their smallest position, as the stack walk numbers them,
+/// so the rows are equal. Returns false, with the row reset to none and
+/// `count` unchanged, if a shift is not an involution there (a host that
+/// is not a G-map); the caller then walks with the stack.
+inline bool alternating_classes(std::uint32_t* cls, const std::uint32_t* a, const std::uint32_t* b, std::size_t np, std::uint32_t& count) {
+  const std::uint32_t first = count;
+  auto fail = [&] {
+    std::fill(cls, cls + np, none);
+    count = first;
+    return false;
+  };
+  for (std::uint32_t p0 = 0; p0 < np; ++p0) {
+    if (cls[p0] != none) continue;
+    cls[p0] = count;
+    bool cycle = false;
+    for (int half = 0; half < 2 && !cycle; ++half) {
+      // First half a, b, a, ...; second (a path only) b, a, b, ...
+      const std::uint32_t* next = half == 0 ? a : b;
+      const std::uint32_t* other = half == 0 ? b : a;
+      std::uint32_t x = p0;
+      for (std::size_t steps = 0;; ++steps) {
+        const std::uint32_t r = next[x];
+        if (r >= np || next[r] != x || steps > np) return fail();
+        if (r == x) break;  // a fixed point: the end of a path
+        if (r == p0) {
+          if (half == 1) return fail();  // a path cannot close
+          cycle = true;
+          break;
+        }
+        if (cls[r] != none) return fail();
+        cls[r] = count;
+        x = r;
+        std::swap(next, other);
+      }
+    }
+    ++count;
+  }
+  return true;
+}
 
 }  // namespace dartcheck::compiled

@@ -657,5 +657,73 @@ TEST(CompiledOperations, SubdivisionCatalogAgreesWithTheInterpreterBitForBit) {
   expect_agreement(t, ops.size());
 }
 
+// compiled::alternating_classes against the stack walk it replaces.
+// Property: for two involutions a, b of 0..np-1 (random pairings with fixed
+// points), it numbers the classes of <a, b> as a depth-first walk from each
+// smallest unnumbered position does (the generated code's fallback, written
+// here again), from the given start count; for a pair where one is not an
+// involution it returns false with the row reset and the count unchanged.
+TEST(CompiledRuntime, AlternatingClassesEqualTheStackWalk) {
+  std::mt19937 rng(7);
+  auto involution = [&](std::size_t np) {
+    std::vector<std::uint32_t> f(np);
+    std::vector<std::uint32_t> order(np);
+    std::iota(order.begin(), order.end(), 0U);
+    std::shuffle(order.begin(), order.end(), rng);
+    for (std::size_t k = 0; k < np; ++k) f[order[k]] = order[k];
+    for (std::size_t k = 0; k + 1 < np; k += 2)
+      if (rng() % 3 != 0) std::swap(f[order[k]], f[order[k + 1]]);
+    return f;
+  };
+  std::size_t non_involutions = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const std::size_t np = 1 + rng() % 40;
+    std::vector<std::uint32_t> a = involution(np), b = involution(np);
+    const bool broken = trial % 4 == 3 && np >= 3;
+    if (broken) {  // a 3-cycle in a: not an involution
+      std::vector<std::uint32_t> order(np);
+      std::iota(order.begin(), order.end(), 0U);
+      std::shuffle(order.begin(), order.end(), rng);
+      a = std::vector<std::uint32_t>(np);
+      std::iota(a.begin(), a.end(), 0U);
+      a[order[0]] = order[1];
+      a[order[1]] = order[2];
+      a[order[2]] = order[0];
+      ++non_involutions;
+    }
+    const std::uint32_t start = static_cast<std::uint32_t>(rng() % 5);
+    std::vector<std::uint32_t> want(np, compiled::none);
+    std::uint32_t count = start;
+    for (std::uint32_t p0 = 0; p0 < np; ++p0) {
+      if (want[p0] != compiled::none) continue;
+      want[p0] = count;
+      std::vector<std::uint32_t> stack{p0};
+      while (!stack.empty()) {
+        const std::uint32_t q = stack.back();
+        stack.pop_back();
+        for (const std::uint32_t r : {a[q], b[q]})
+          if (want[r] == compiled::none) {
+            want[r] = count;
+            stack.push_back(r);
+          }
+      }
+      ++count;
+    }
+    std::vector<std::uint32_t> got(np, compiled::none);
+    std::uint32_t got_count = start;
+    const bool ok = compiled::alternating_classes(got.data(), a.data(), b.data(), np, got_count);
+    if (broken) {
+      ASSERT_FALSE(ok) << "trial " << trial;
+      ASSERT_EQ(got, std::vector<std::uint32_t>(np, compiled::none)) << "trial " << trial;
+      ASSERT_EQ(got_count, start) << "trial " << trial;
+    } else {
+      ASSERT_TRUE(ok) << "trial " << trial;
+      ASSERT_EQ(got, want) << "trial " << trial;
+      ASSERT_EQ(got_count, count) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(non_involutions, 400U);
+}
+
 }  // namespace
 }  // namespace dartcheck
