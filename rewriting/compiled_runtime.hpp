@@ -31,7 +31,6 @@
 
 namespace dartcheck::compiled {
 
-
 /// The tables of one application, kept from one application to the next
 /// so that a loop of small applications on a large map costs the darts
 /// each one touches (as SchemeRewriter does for the interpreter).
