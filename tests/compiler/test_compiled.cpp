@@ -17,8 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <type_traits>
+#include <utility>
 #include <bit>
 #include <filesystem>
 #include <numeric>
@@ -158,15 +158,14 @@ std::vector<std::vector<std::optional<std::array<std::uint64_t, 5>>>> bits_of(co
 // all positions before the next, in the interpreter's order) and leaves
 // the map and values unchanged; otherwise the components of its result
 // are, one for one, isomorphic to the interpreter's results, with the
-// same value of every embedding at corresponding darts. Values: equal bit
-// for bit, or within 1e-9 of the host's largest coordinate magnitude (a
-// class's term is evaluated at its first position, which is the class's
-// smallest dart here and its first in the hook's BFS order there: a
-// collect starts at another dart of the orbit and a sum adds the same
-// terms in another order); the tally counts both.
+// same value of every embedding at corresponding darts, bit for bit: a
+// class's value is its first instance's (its smallest dart here, its first
+// in the hook's BFS there), and on these consistent hosts every instance
+// of a class reads the same value (003 Thm 4), a collect's multiset being
+// sorted into one canonical order before any function reads it.
 
 struct EverywhereTally {
-  std::size_t hosts = 0, several_components = 0, applied = 0, refused = 0, values_bit_equal = 0, values_within_tolerance = 0;
+  std::size_t hosts = 0, several_components = 0, applied = 0, refused = 0, values = 0;
 };
 
 // Connected components (links and inverse links), each in increasing order.
@@ -236,39 +235,19 @@ std::optional<std::vector<Dart>> anchored_isomorphism(const Map& a, Dart a0, con
   return phi;
 }
 
-// Every embedding's value at x in a and at phi(x) in b: both absent, or of
-// one type and integer and with coordinates equal or within `tolerance`.
-bool same_values(const EmbeddedMap& a, const EmbeddedMap& b, const std::vector<Dart>& phi, double tolerance, EverywhereTally& tally) {
-  std::size_t bit_equal = 0, close = 0;
-  for (std::size_t e = 0; e < a.embeddings.size(); ++e)
-    for (Dart x = 0; x < a.map.size(); ++x) {
+// The number of values compared when every embedding's value at x in a
+// and at phi(x) in b is the same, bit for bit (as bits_of reads them), or
+// nullopt at the first that differs.
+using Bits = decltype(bits_of(std::declval<const EmbeddedMap&>()));
+std::optional<std::size_t> same_values(const Bits& in_a, const Bits& in_b, const std::vector<Dart>& phi) {
+  std::size_t compared = 0;
+  for (std::size_t e = 0; e < in_a.size(); ++e)
+    for (Dart x = 0; x < phi.size(); ++x) {
       if (phi[x] == no_dart) continue;
-      const Value *va = a.embeddings[e].value(x), *vb = b.embeddings[e].value(phi[x]);
-      if (!va || !vb) {
-        if (va != vb) return false;
-        continue;
-      }
-      if (va->type != vb->type || va->i != vb->i) return false;
-      bool exact = true;
-      for (std::size_t k = 0; k < 3; ++k) {
-        if (std::bit_cast<std::uint64_t>(va->x[k]) == std::bit_cast<std::uint64_t>(vb->x[k])) continue;
-        exact = false;
-        if (!(std::abs(va->x[k] - vb->x[k]) <= tolerance)) return false;
-      }
-      (exact ? bit_equal : close) += 1;
+      if (in_a[e][x] != in_b[e][phi[x]]) return std::nullopt;
+      compared += in_a[e][x].has_value();
     }
-  tally.values_bit_equal += bit_equal;
-  tally.values_within_tolerance += close;
-  return true;
-}
-
-double coordinate_scale(const EmbeddedMap& g) {
-  double largest = 1;
-  for (const Embedding& e : g.embeddings)
-    for (const Value& v : e.pool)
-      for (const double x : v.x)
-        if (std::isfinite(x)) largest = std::max(largest, std::abs(x));
-  return largest;
+  return compared;
 }
 
 template <class Everywhere>
@@ -315,22 +294,21 @@ void compare_everywhere(const Operation& op, const char* name, Everywhere everyw
   ++tally.applied;
   ASSERT_EQ(got, Refusal::none) << where << ": " << ws.why;
   ASSERT_EQ(ws.terms.conflicts, conflicts) << where;
-  const double tolerance = 1e-9 * coordinate_scale(host);
   std::vector<std::vector<Dart>> parts = components_of(generated.map);
   ASSERT_EQ(parts.size(), expected.size()) << where << ": components";
   std::vector<bool> used(parts.size(), false);
+  const Bits got_bits = bits_of(generated);
   for (std::size_t k = 0; k < expected.size(); ++k) {
     const EmbeddedMap& want = expected[k];
+    const Bits want_bits = bits_of(want);
     bool found = false;
     for (std::size_t j = 0; j < parts.size() && !found; ++j) {
       if (used[j] || parts[j].size() != want.map.size()) continue;
       for (const Dart b0 : parts[j]) {
-        EverywhereTally values;
         const auto phi = anchored_isomorphism(want.map, 0, generated.map, b0);
-        if (phi && same_values(want, generated, *phi, tolerance, values)) {
+        if (const auto compared = phi ? same_values(want_bits, got_bits, *phi) : std::nullopt) {
           used[j] = found = true;
-          tally.values_bit_equal += values.values_bit_equal;
-          tally.values_within_tolerance += values.values_within_tolerance;
+          tally.values += *compared;
           break;
         }
       }
@@ -341,8 +319,8 @@ void compare_everywhere(const Operation& op, const char* name, Everywhere everyw
 }
 
 void report_everywhere(const char* catalog, const EverywhereTally& t) {
-  std::printf("%severywhere: %zu hosts (%zu of several components), %zu applied, %zu refused; values %zu bit for bit, %zu within tolerance\n",
-              catalog, t.hosts, t.several_components, t.applied, t.refused, t.values_bit_equal, t.values_within_tolerance);
+  std::printf("%severywhere: %zu hosts (%zu of several components), %zu applied, %zu refused; %zu values equal bit for bit\n", catalog,
+              t.hosts, t.several_components, t.applied, t.refused, t.values);
 }
 
 struct Tally {
