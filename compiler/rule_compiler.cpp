@@ -332,7 +332,7 @@ void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::
     emit_dpo_match(out, op);
     // The interpreter checks a DPO rule's terms on the match, then applies
     // the rule (dangling, representability).
-    if (terms) terms->before_rewrite(out);
+    if (terms) terms->before_rewrite(out, false);
   } else {
     // P_v (002 Def. 20).
     if (everywhere)
@@ -363,7 +363,7 @@ void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::
   }
   if (emit_conditions(out, op, f)) {
     // A scheme's match includes its conditions (match_scheme), then terms.
-    if (terms && op.words.scheme) terms->before_rewrite(out);
+    if (terms && op.words.scheme) terms->before_rewrite(out, everywhere);
     emit_rewrite(out, op, f);
     if (terms) terms->after_rewrite(out);
     fmt::format_to(out, "  return Refusal::none;\n");
@@ -436,7 +436,7 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
                  "using dartcheck::dims_generators;\nusing dartcheck::EmbeddedMap;\nusing dartcheck::Embedding;\nusing dartcheck::EvaluationError;\n"
                  "using dartcheck::Value;\nusing dartcheck::ValueType;\nusing dartcheck::OrbitWord;\nusing dartcheck::compiled::CollectSite;\n"
                  "using dartcheck::compiled::end_writes;\nusing dartcheck::compiled::neighbour;\nusing dartcheck::compiled::overlap;\n"
-                 "using dartcheck::compiled::read;\nusing dartcheck::compiled::Source;\nusing dartcheck::compiled::TermWorkspace;\n"
+                 "using dartcheck::compiled::read;\nusing dartcheck::compiled::reserve_more;\nusing dartcheck::compiled::Source;\nusing dartcheck::compiled::TermWorkspace;\n"
                  "using dartcheck::compiled::unlabel;\nusing dartcheck::compiled::write_orbit;\n\n",
                  comment_text(source), ns);
   std::vector<std::string> names;

@@ -140,8 +140,43 @@ struct TermCode::Plan {
     return fmt::format("neighbour(g, {}, {}, {})", t.dim, node(t.args[0]), cpp_literal(t.str()));
   }
 
+  // The class a term of R is evaluated for in an everywhere function
+  // (positions are darts): embedding u's group g, whose first position p
+  // evaluates it.
+  struct Along {
+    std::size_t u, g;
+  };
+
+  // Whether group g of embedding u has its classes numbered by
+  // alternating_classes: two single-letter generators of non-oriented
+  // dimensions (a face, an edge or a vertex of a G-map), no kept-label
+  // shortcut; their indices into W's generators.
+  std::optional<std::pair<int, int>> alternating(std::size_t u, std::size_t g) const {
+    const Grouping& gr = right_groups[u];
+    if (!gr.grouped || gr.words[g].size() != 2 || kept_at[u][g] != no_node) return std::nullopt;
+    for (int k : gr.words[g]) {
+      const ConjWord& w = facts.gens[static_cast<std::size_t>(k)];
+      if (w.size() != 1 || w.bar(0) || op.rule.model().is_oriented(w.dim(0))) return std::nullopt;
+    }
+    return std::pair{gr.words[g][0], gr.words[g][1]};
+  }
+
+  // A collect pi<o'>(x) whose orbit is the class it is evaluated for: x is
+  // the hook (the match is the identity, so x is dart p) and <o'> is the
+  // group's two letters, so the class of p is the <o'>-orbit of dart p.
+  // The shift tables of o'[0] and o'[1], or nullopt.
+  std::optional<std::pair<int, int>> collect_along(const Term& t, const Along* along) const {
+    if (!along || t.args[0].kind != Term::Kind::variable || !op.rule.left().find(t.args[0].name) || t.orbit.size() != 2) return std::nullopt;
+    const auto ab = alternating(along->u, along->g);
+    if (!ab) return std::nullopt;
+    const Dim da = facts.gens[static_cast<std::size_t>(ab->first)].dim(0), db = facts.gens[static_cast<std::size_t>(ab->second)].dim(0);
+    if (t.orbit[0] == da && t.orbit[1] == db) return ab;
+    if (t.orbit[0] == db && t.orbit[1] == da) return std::pair{ab->second, ab->first};
+    return std::nullopt;
+  }
+
   // Statements computing the value of t into a fresh variable; its name.
-  std::string value(const Term& t, std::string& code, int& next) const {
+  std::string value(const Term& t, std::string& code, int& next, const Along* along = nullptr) const {
     const std::string v = fmt::format("v{}", next++);
     switch (t.kind) {
       case Term::Kind::literal:
@@ -160,13 +195,21 @@ struct TermCode::Plan {
         return v;
       case Term::Kind::collect: {
         const std::size_t s = site.at(&t);
+        if (const auto ab = collect_along(t, along)) {
+          fmt::format_to(std::back_inserter(code),
+                         "    const std::span<const Value> {0} = alternated{1}_{2}  // {3}: the class of p is this orbit\n"
+                         "        ? tw.collect_class({4}, site{4}, g, e{5}, static_cast<std::uint32_t>(p), ws.shift[{6}].data(), ws.shift[{7}].data())\n"
+                         "        : tw.collect({4}, site{4}, g, e{5}, {8});\n",
+                         v, along->u, along->g, comment_text(t.str()), s, index_of(t.name), ab->first, ab->second, node(t.args[0]));
+          return v;
+        }
         fmt::format_to(std::back_inserter(code), "    const std::span<const Value> {} = tw.collect({}, site{}, g, e{}, {});  // {}\n", v, s, s,
                        index_of(t.name), node(t.args[0]), comment_text(t.str()));
         return v;
       }
       case Term::Kind::call: {
         fmt::dynamic_format_arg_store<fmt::format_context> args;
-        for (const Term& a : t.args) args.push_back(value(a, code, next));
+        for (const Term& a : t.args) args.push_back(value(a, code, next, along));
         fmt::format_to(std::back_inserter(code), "    const Value {} = {};  // {}\n", v, fmt::vformat(t.function->cpp, args), comment_text(t.str()));
         return v;
       }
@@ -234,7 +277,7 @@ struct TermCode::Plan {
   }
 
   // R's classes for embedding u into `cls` and tw.class_count[u].
-  void right_classes(Out out, std::size_t u) const {
+  void right_classes(Out out, std::size_t u, bool everywhere) const {
     const Grouping& gr = right_groups[u];
     const TopoGraph& R = op.rule.right();
     if (!gr.grouped) {
@@ -281,7 +324,12 @@ struct TermCode::Plan {
         const ConjWord& w = facts.gens[static_cast<std::size_t>(k)];
         return w.size() == 1 && !w.bar(0) && !op.rule.model().is_oriented(w.dim(0));
       };
-      if (gr.words[g].size() == 2 && single_unoriented(gr.words[g][0]) && single_unoriented(gr.words[g][1]))
+      if (everywhere && alternating(u, g))  // its collects may walk the class (collect_along)
+        fmt::format_to(out,
+                       "    const bool alternated{0}_{1} = dartcheck::compiled::alternating_classes(cls.data() + {1} * np, ws.shift[{2}].data(), "
+                       "ws.shift[{3}].data(), np, count);\n    if (!alternated{0}_{1})\n",
+                       u, g, gr.words[g][0], gr.words[g][1]);
+      else if (gr.words[g].size() == 2 && single_unoriented(gr.words[g][0]) && single_unoriented(gr.words[g][1]))
         fmt::format_to(out, "    if (!dartcheck::compiled::alternating_classes(cls.data() + {} * np, ws.shift[{}].data(), ws.shift[{}].data(), np, count))\n",
                        g, gr.words[g][0], gr.words[g][1]);
       std::string follow;
@@ -344,7 +392,7 @@ void TermCode::lookups(Out out) const {
       if (p.kept_at[u][g] != no_node) fmt::format_to(out, "  bool kept{}_{} = false;  // the kept-label shortcut taken\n", u, g);
 }
 
-void TermCode::before_rewrite(Out out) const {
+void TermCode::before_rewrite(Out out, bool everywhere) const {
   const Plan& p = *plan_;
   const Rule& r = p.op.rule;
   const TopoGraph& L = r.left();
@@ -400,8 +448,11 @@ void TermCode::before_rewrite(Out out) const {
     fmt::format_to(out, "  {{  // {} <{}>\n", comment_text(sig.name), fmt::join(sig.orbit, ","));
     if (p.extended()) {
       fmt::format_to(out, "    std::vector<std::uint32_t>& cls = tw.class_of[{}];\n", u);
-      p.right_classes(out, u);
-      fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign(tw.class_count[{}], Source{{}});\n", u, u);
+      p.right_classes(out, u, everywhere);
+      fmt::format_to(out,
+                     "    std::vector<Source>& src = tw.sources[{0}];\n    src.assign(tw.class_count[{0}], Source{{}});\n"
+                     "    reserve_more(tw.evaluated, tw.class_count[{0}]);  // at most a value per class\n",
+                     u);
     } else {
       fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign({} * np, Source{{}});\n", u, p.terms.right.size());
     }
@@ -425,7 +476,8 @@ void TermCode::before_rewrite(Out out) const {
       } else {
         std::string code;
         int next = 0;
-        const std::string v = p.value(t.term, code, next);
+        const Plan::Along along{u, p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0};
+        const std::string v = p.value(t.term, code, next, everywhere && p.extended() && p.right_groups[u].grouped ? &along : nullptr);
         for (std::size_t i = 0; i < code.size(); ++i) {  // one more indent
           if (i == 0 || code[i - 1] == '\n') code.insert(i, "  ");
         }
@@ -480,6 +532,7 @@ void TermCode::after_rewrite(Out out) const {
                      "    const std::vector<std::uint32_t>& cls = tw.class_of[{0}];\n"
                      "    std::vector<std::uint32_t>& pool = tw.pool_of;\n"
                      "    pool.assign(tw.class_count[{0}], Embedding::none);\n"
+                     "    reserve_more(e.pool, tw.class_count[{0}]);\n"
                      "    for (std::size_t c = 0; c < pool.size(); ++c)\n"
                      "      if (const Source f = src[c]; f.index != Embedding::none) pool[c] = f.stored ? f.index : e.store(tw.evaluated[f.index]);\n"
                      "    // R closes <{1}>: a class is a whole orbit of H.\n",

@@ -48,8 +48,9 @@ class TermCode {
   /// At the function's start: `Map& g`, the embeddings' pointers, and the
   /// refusal of a map without an embedding the rule labels.
   void lookups(Out out) const;
-  /// After the match: L's labels, Lemma 3, R's classes and sources.
-  void before_rewrite(Out out) const;
+  /// After the match: L's labels, Lemma 3, R's classes and sources;
+  /// `everywhere` for a NAME_everywhere function (positions are darts).
+  void before_rewrite(Out out, bool everywhere) const;
   /// After the topological rewrite: the renumbering followed, and the
   /// labels written.
   void after_rewrite(Out out) const;

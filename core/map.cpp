@@ -6,8 +6,8 @@ namespace dartcheck {
 
 Map::Map(Model model, std::size_t darts) : model_(std::move(model)) {
   int next = 0;
-  for (Dim i : model_.dims) succ_slot_[i] = next++;
-  for (Dim i : model_.dims) pred_slot_[i] = model_.is_oriented(i) ? next++ : succ_slot_[i];
+  for (Dim i : model_.dims) succ_slot_[i] = static_cast<std::int16_t>(next++);
+  for (Dim i : model_.dims) pred_slot_[i] = model_.is_oriented(i) ? static_cast<std::int16_t>(next++) : succ_slot_[i];
   stride_ = static_cast<std::size_t>(next);
   add_darts(darts);
 }

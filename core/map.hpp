@@ -94,8 +94,11 @@ class Map {
 
   Model model_;
   std::size_t stride_ = 0;
-  int succ_slot_[max_dimension + 1] = {};
-  int pred_slot_[max_dimension + 1] = {};
+  // Not int: a store to a Dart (unsigned int) may alias an int, so the
+  // compiler would reload the slot numbers after every link written; a
+  // 16-bit type lets loops of set_link keep them in registers.
+  std::int16_t succ_slot_[max_dimension + 1] = {};
+  std::int16_t pred_slot_[max_dimension + 1] = {};
   std::vector<Dart, HugePageAllocator<Dart>> links_;
 };
 

@@ -67,6 +67,11 @@ struct Workspace {
   void prepare(std::size_t darts, std::size_t generators) {
     if (position.size() < darts) position.resize(darts, none);
     if (queue.size() < darts + 1) queue.resize(darts + 1);
+    prepare_tables(generators);
+  }
+  /// prepare without the per-dart marks and queue (whole_map_patterns
+  /// walks nothing).
+  void prepare_tables(std::size_t generators) {
     shift.resize(generators);
     for (auto& s : shift) s.clear();
     moved.clear();
@@ -148,19 +153,22 @@ Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, 
 /// generator, as walk_patterns refuses at the first such dart of P_v.
 template <std::size_t Generators, class Follow>
 Refusal whole_map_patterns(const Map& g, Workspace& ws, Follow follow, const char* const* generator_names) {
-  ws.prepare(g.size(), Generators);
+  ws.prepare_tables(Generators);
   const auto n = static_cast<Dart>(g.size());
-  ws.pattern.resize(n);
-  for (Dart d = 0; d < n; ++d) ws.pattern[d] = d;
+  // Filled by push_back into reserved space: a resize would first write
+  // every entry with zeros.
+  ws.pattern.clear();
+  ws.pattern.reserve(n);
+  for (Dart d = 0; d < n; ++d) ws.pattern.push_back(d);
   for (std::size_t w = 0; w < Generators; ++w) {
     std::vector<std::uint32_t>& shift = ws.shift[w];
-    shift.resize(n);
+    shift.reserve(n);
     for (Dart d = 0; d < n; ++d) {
       const Dart t = follow(w, d);
       if (t == no_dart)
         return ws.refuse(Refusal::not_combinatorial,
                          "dart " + std::to_string(d) + " has no " + generator_names[w] + "-path: the host is not combinatorial");
-      shift[d] = t;
+      shift.push_back(t);
     }
   }
   ws.np = n;

@@ -43,25 +43,89 @@ void TermWorkspace::walkers_for(const Map& g) {
   writer_ = std::make_unique<OrbitWalker>(g);
 }
 
-std::span<const Value> TermWorkspace::collect(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, Dart d) {
-  if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", site.name));
+const std::vector<OrbitWord>& TermWorkspace::inner_of(std::size_t bag, const CollectSite& site, const Embedding& e) {
   Within& w = within[bag];
-  if (w.for_site != &site || w.for_orbit != e->signature.orbit) {
+  if (w.for_site != &site || w.for_orbit != e.signature.orbit) {
     std::vector<Dim> common;  // <o> ∩ <o'>, in <o>'s order as the evaluator's
-    for (Dim i : e->signature.orbit)
+    for (Dim i : e.signature.orbit)
       if (std::find(site.dims.begin(), site.dims.end(), i) != site.dims.end()) common.push_back(i);
     w.inner = dims_generators(common);
-    w.for_orbit = e->signature.orbit;
+    w.for_orbit = e.signature.orbit;
     w.for_site = &site;
   }
+  return w.inner;
+}
+
+std::span<const Value> TermWorkspace::collect(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, Dart d) {
+  if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", site.name));
+  const std::vector<OrbitWord>& inner = inner_of(bag, site, *e);
   walkers_for(g);
   std::vector<Value>& out = bags[bag];
   out.clear();
   const bool two_letters = site.outer.size() == 2 && site.outer[0].size() == 1 && site.outer[1].size() == 1;
-  const std::span<const Dart> orbit =
-      two_letters && alternate(g, site.outer[0][0], site.outer[1][0], d) ? std::span<const Dart>(cycle_) : outer_->orbit(d, site.outer);
-  collect_orbit_values(g, *e, orbit, w.inner, *inner_, done_, out, site.name, site.dims);
+  if (two_letters && alternate(g, site.outer[0][0], site.outer[1][0], d)) {
+    if (!pairs_within(g, *e, site, inner, out)) collect_orbit_values(g, *e, cycle_, inner, *inner_, done_, out, site.name, site.dims);
+  } else {
+    collect_orbit_values(g, *e, outer_->orbit(d, site.outer), inner, *inner_, done_, out, site.name, site.dims);
+  }
   return out;
+}
+
+std::span<const Value> TermWorkspace::collect_class(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, std::uint32_t p,
+                                                    const std::uint32_t* a, const std::uint32_t* b) {
+  if (!e) throw EvaluationError(fmt::format("the map has no embedding '{}'", site.name));
+  const std::vector<OrbitWord>& inner = inner_of(bag, site, *e);
+  walkers_for(g);
+  std::vector<Value>& out = bags[bag];
+  out.clear();
+  // The class of p is a path or a cycle of alternating shifts: walked as
+  // `alternate` walks links, a first, then (a path) b first from p.
+  cycle_.assign(1, p);
+  bool closed = false;
+  for (int half = 0; half < 2 && !closed; ++half) {
+    const std::uint32_t* next = half == 0 ? a : b;
+    const std::uint32_t* other = half == 0 ? b : a;
+    for (std::uint32_t x = p;;) {
+      const std::uint32_t r = next[x];
+      if (r == x) break;
+      if (r == p) {
+        closed = true;
+        break;
+      }
+      cycle_.push_back(r);
+      x = r;
+      std::swap(next, other);
+    }
+  }
+  if (!pairs_within(g, *e, site, inner, out)) collect_orbit_values(g, *e, cycle_, inner, *inner_, done_, out, site.name, site.dims);
+  return out;
+}
+
+// collect_orbit_values on the alternating walk's orbit (cycle_) when <o> ∩
+// <o'> is empty or one of the walk's two letters: a pi-orbit is then a dart
+// alone or a pair {x, alpha_i(x)}, both in the orbit because the walk
+// checked that each of its letters is an involution there. Each pair is
+// taken at its smaller dart, with no marks to set and clear; its value is
+// that of its smallest labeled dart, and the multiset is sorted as there,
+// so the values are the same bit for bit.
+bool TermWorkspace::pairs_within(const Map& g, const Embedding& e, const CollectSite& site, std::span<const OrbitWord> inner,
+                                 std::vector<Value>& out) {
+  const bool alone = inner.empty();
+  if (!alone && (inner.size() != 1 || inner[0].size() != 1 || (inner[0][0] != site.outer[0][0] && inner[0][0] != site.outer[1][0]))) return false;
+  const Dim i = alone ? 0 : inner[0][0];
+  for (const Dart x : cycle_) {
+    const Dart y = alone ? x : g.link(i, x);
+    if (y < x) continue;  // taken at y
+    const Value* v = e.value(x);
+    if (!v && y != x) v = e.value(y);
+    if (!v) {
+      out.clear();
+      throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", site.name, fmt::join(site.dims, ","), site.name, x));
+    }
+    out.push_back(*v);
+  }
+  std::sort(out.begin(), out.end(), [](const Value& a, const Value& b) { return value_less(a, b); });
+  return true;
 }
 
 // An orbit of two involutions a, b (a face <0,1> of a 2-G-map, an edge

@@ -110,17 +110,35 @@ struct TermWorkspace {
   /// The multiset of `site` from dart d (collect_orbit_values), in this
   /// site's bag. Throws EvaluationError when the map lacks the embedding.
   std::span<const Value> collect(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, Dart d);
+  /// collect(bag, site, g, e, p) in an everywhere function (positions are
+  /// darts) when site's orbit is the class of p in a group whose classes
+  /// alternating_classes numbered along the shifts `a` and `b` of site's
+  /// two letters: the class is that orbit, walked on the shift tables with
+  /// no involution to check (alternating_classes checked them).
+  std::span<const Value> collect_class(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, std::uint32_t p,
+                                       const std::uint32_t* a, const std::uint32_t* b);
   /// The darts of d's orbit under `generators` in H (a walk).
   const std::vector<Dart>& orbit(const Map& g, Dart d, std::span<const OrbitWord> generators);
 
  private:
   void walkers_for(const Map& g);
+  const std::vector<OrbitWord>& inner_of(std::size_t bag, const CollectSite& site, const Embedding& e);
   bool alternate(const Map& g, Dim a, Dim b, Dart d);
+  bool pairs_within(const Map& g, const Embedding& e, const CollectSite& site, std::span<const OrbitWord> inner, std::vector<Value>& out);
   std::vector<Dart> cycle_;
   const Map* walked_ = nullptr;
   std::unique_ptr<OrbitWalker> outer_, inner_, writer_;
   std::vector<std::uint64_t> done_;
 };
+
+/// Room for `more` further elements of v, growing geometrically: one
+/// reallocation instead of the doublings of a long run of push_back, and
+/// none in a loop of small applications (a reserve of the exact size
+/// would reallocate at each).
+template <class T>
+void reserve_more(std::vector<T>& v, std::size_t more) {
+  if (v.size() + more > v.capacity()) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+}
 
 /// x.pi: the value of e at d, or EvaluationError naming `term` (the map
 /// has no embedding pi, or d has no pi value).

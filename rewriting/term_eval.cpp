@@ -152,7 +152,7 @@ void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Da
   // A multiset has no order; a canonical one makes every function of it
   // (center's floating-point sum) the same from whichever dart of the
   // orbit the traversal starts.
-  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), value_less);
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [](const Value& a, const Value& b) { return value_less(a, b); });
 }
 
 std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, const std::vector<Dim>& orbit) {

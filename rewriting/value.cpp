@@ -5,7 +5,6 @@
 #include <charconv>
 #include <deque>
 #include <mutex>
-#include <tuple>
 #include <unordered_map>
 
 #include <fmt/format.h>
@@ -111,11 +110,6 @@ const std::string& Value::string() const {
   InternTable& t = interned();
   const std::scoped_lock hold(t.lock);
   return t.texts[static_cast<std::size_t>(i)];
-}
-
-bool value_less(const Value& a, const Value& b) {
-  if (a.type == ValueType::string && b.type == ValueType::string) return a.string() < b.string();
-  return std::tie(a.type, a.x, a.i) < std::tie(b.type, b.x, b.i);
 }
 
 std::string Value::str() const {

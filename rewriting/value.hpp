@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -64,7 +65,13 @@ static_assert(std::is_trivially_copyable_v<Value>);
 /// A strict order on values of one type: coordinates, then the integer,
 /// then a string's text (not its intern number, which depends on the
 /// order strings were first met).
-bool value_less(const Value& a, const Value& b);
+/// Inline: every collect sorts its multiset with it (a call per comparison
+/// was a tenth of a compiled face triangulation).
+inline bool value_less(const Value& a, const Value& b) {
+  if (a.type == ValueType::string && b.type == ValueType::string) [[unlikely]]
+    return a.string() < b.string();
+  return std::tie(a.type, a.x, a.i) < std::tie(b.type, b.x, b.i);
+}
 
 /// Parses a value of type t from text: "1 2", "1, 2", "(1, 2)", "[1,2]"
 /// for coordinates; a number, true/false, or any text for strings.
