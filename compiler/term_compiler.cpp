@@ -176,8 +176,15 @@ struct TermCode::Plan {
   }
 
   // Statements computing the value of t into a fresh variable; its name.
-  std::string value(const Term& t, std::string& code, int& next, const Along* along = nullptr) const {
+  // `seen` (the collects of the term so far, by text) lets a collect that
+  // the term repeats, as count(x) beside center(x), reuse the first one's
+  // bag instead of walking the orbit again.
+  std::string value(const Term& t, std::string& code, int& next, const Along* along = nullptr,
+                    std::map<std::string, std::string>* seen = nullptr) const {
+    if (t.kind == Term::Kind::collect && seen)
+      if (const auto it = seen->find(t.str()); it != seen->end()) return it->second;
     const std::string v = fmt::format("v{}", next++);
+    if (t.kind == Term::Kind::collect && seen) (*seen)[t.str()] = v;
     switch (t.kind) {
       case Term::Kind::literal:
       case Term::Kind::parameter: {
@@ -209,7 +216,7 @@ struct TermCode::Plan {
       }
       case Term::Kind::call: {
         fmt::dynamic_format_arg_store<fmt::format_context> args;
-        for (const Term& a : t.args) args.push_back(value(a, code, next, along));
+        for (const Term& a : t.args) args.push_back(value(a, code, next, along, seen));
         fmt::format_to(std::back_inserter(code), "    const Value {} = {};  // {}\n", v, fmt::vformat(t.function->cpp, args), comment_text(t.str()));
         return v;
       }
@@ -410,7 +417,8 @@ void TermCode::before_rewrite(Out out, bool everywhere) const {
     } else {
       std::string code;
       int next = 0;
-      const std::string v = p.value(t.term, code, next);
+      std::map<std::string, std::string> seen;
+      const std::string v = p.value(t.term, code, next, nullptr, &seen);
       code += fmt::format(
           "    const Value* have = e{}->value(d);\n"
           "    if (!have || !(*have == {}))\n"
@@ -477,7 +485,8 @@ void TermCode::before_rewrite(Out out, bool everywhere) const {
         std::string code;
         int next = 0;
         const Plan::Along along{u, p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0};
-        const std::string v = p.value(t.term, code, next, everywhere && p.extended() && p.right_groups[u].grouped ? &along : nullptr);
+        std::map<std::string, std::string> seen;
+        const std::string v = p.value(t.term, code, next, everywhere && p.extended() && p.right_groups[u].grouped ? &along : nullptr, &seen);
         for (std::size_t i = 0; i < code.size(); ++i) {  // one more indent
           if (i == 0 || code[i - 1] == '\n') code.insert(i, "  ");
         }
