@@ -24,6 +24,7 @@
 // with one triangle per old edge side.
 //
 //   build/bench/bench_triangulation [--runs N] [--mesh FILE.off | --grid RxC]
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -38,6 +39,7 @@
 #include "checkers/map_validity.hpp"
 #include "core/dart_table.hpp"
 #include "io/catalog.hpp"
+#include "rewriting/algebra.hpp"
 #include "rewriting/embedded_application.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/scheme_application.hpp"
@@ -149,6 +151,112 @@ Result run_topology(const std::string& off, int runs, std::size_t triangles) {
     ms = since(t0);
     out = g.size();
     return ok && count_cells(g).cells[2] == triangles && check_map(g).valid();
+  });
+}
+
+// The floor of a fused everywhere function (issue 41): what a generator
+// that emits one pass per class, instead of one pass per step of the
+// interpreter, would write for triangulation-all-faces-pos, with every
+// check and every semantic choice of the compiled row kept: each dart's
+// three links (whole_map_patterns' refusal), every dart labeled (L's
+// term), the kept-label check along 1 and 2, the faces walked as
+// alternating 0/1 links with their involutions checked, a face's
+// vertices as 1-pairs valued at their smaller labeled dart, the multiset
+// sorted canonically before its center (so the values are the compiled
+// row's bit for bit), and a refusal that leaves the map as it was (the
+// slots and pool entries written so far are dropped). What it changes
+// against the compiled row: no tables (pattern, shifts, match, classes,
+// sources, comatch, pool indices), each rewritten link being read before
+// its position writes it, which holds because the rule changes only the
+// 1-link of a position's own dart; the multiset sorted as pointers, not
+// 40-byte values; the pool reserved before the centers; and a position's
+// two new darts numbered side by side (n1 at n + 2p, n2 at n + 2p + 1, as
+// the by-hand row), so that its links are written in one cache line. A kept-label check
+// that fails would need the compiled row's walk: this row reports it
+// invalid instead (a mesh's positions are shared per vertex, so it does
+// not fail here).
+Result run_fused_floor(const std::string& off, int runs, std::size_t triangles) {
+  using namespace dartcheck;
+  const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  const CatalogRule& s = *catalog.find_rule("triangulation-all-faces-pos");
+  const EmbeddedMap input = mesh_with_positions(Model::gmap(2), read_mesh(off), s.terms->embeddings[0]);
+  std::vector<Dart> face;
+  std::vector<const Value*> bag;
+  return measure(runs, [&](double& ms, std::size_t& out) {
+    EmbeddedMap g = input;
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool ok = [&] {
+      Map& m = g.map;
+      Embedding* const e = g.find("pos");
+      if (!e) return false;
+      const auto n = static_cast<Dart>(m.size());
+      for (Dart d = 0; d < n; ++d)
+        if (m.link(0, d) == no_dart || m.link(1, d) == no_dart || m.link(2, d) == no_dart) return false;  // not combinatorial
+      for (Dart d = 0; d < n; ++d)
+        if (!e->value(d)) return false;  // L: n0.pos has no value
+      for (Dart d = 0; d < n; ++d)
+        if (e->slot[m.link(1, d)] != e->slot[d] || e->slot[m.link(2, d)] != e->slot[d]) return false;  // the shortcut's check
+      const std::size_t pool0 = e->pool.size();
+      e->pool.reserve(pool0 + n / 3);  // room for a center per face of 3 or more darts
+      e->slot.resize(3 * static_cast<std::size_t>(n), Embedding::none);
+      auto undo = [&] {
+        e->slot.resize(n);
+        e->pool.resize(pool0);
+        return false;
+      };
+      for (Dart p0 = 0; p0 < n; ++p0) {  // n2: center(pos<0,1>(n0)), once per face
+        if (e->slot[n + 2 * p0 + 1] != Embedding::none) continue;
+        face.assign(1, p0);
+        bool closed = false;
+        for (int half = 0; half < 2 && !closed; ++half) {
+          Dim i = half == 0 ? 0 : 1;
+          for (Dart x = p0;; i = 1 - i) {
+            const Dart y = m.link(i, x);
+            if (m.link(i, y) != x) return undo();  // not an involution: the compiled row walks with a stack
+            if (y == x) break;
+            if (y == p0) {
+              closed = true;
+              break;
+            }
+            face.push_back(y);
+            x = y;
+          }
+        }
+        bag.clear();  // the pi-orbits' values, as pointers sorted by value_less (the multiset's canonical order)
+        for (const Dart x : face) {
+          const Dart y = m.link(1, x);
+          if (y < x) continue;
+          const Value* v = e->value(x);
+          if (!v && y != x) v = e->value(y);
+          if (!v) return undo();
+          bag.push_back(v);
+        }
+        std::sort(bag.begin(), bag.end(), [](const Value* a, const Value* b) { return value_less(*a, *b); });
+        std::array<double, 3> sum{};  // algebra::average's sum, in the same order
+        for (const Value* v : bag)
+          for (std::size_t k = 0; k < 3; ++k) sum[k] += v->x[k];
+        for (double& x : sum) x /= static_cast<double>(bag.size());
+        const std::uint32_t centre = e->store(Value::coords(e->signature.type, sum));
+        for (const Dart x : face) e->slot[n + 2 * x + 1] = centre;
+      }
+      for (Dart p = 0; p < n; ++p) e->slot[n + 2 * p] = e->slot[p];  // n1: n0.pos, kept
+      m.add_darts(2 * static_cast<std::size_t>(n));
+      for (Dart p = 0; p < n; ++p) {
+        const Dart a0 = m.link(0, p), a1 = m.link(1, p), n1 = n + 2 * p, n2 = n + 2 * p + 1;
+        m.set_link(1, p, n1);
+        m.set_link(1, n1, p);
+        m.set_link(0, n1, n2);
+        m.set_link(0, n2, n1);
+        m.set_link(2, n1, n + 2 * a1);
+        m.set_link(1, n2, n + 2 * a0 + 1);
+        m.set_link(2, n2, n + 2 * a1 + 1);
+      }
+      return true;
+    }();
+    ms = since(t0);
+    out = g.map.size();
+    return ok && count_cells(g.map).cells[2] == triangles && check_map(g.map).valid() && check_embedding(g.map, g.embeddings[0], true).consistent() &&
+           centres_are_barycenters(input, g);
   });
 }
 
@@ -424,6 +532,7 @@ int main(int argc, char** argv) {
       {"generic scheme floor by hand, per face (P_v, Lemma 3 and Def. 12 walks)",
        [&] { return run_generic_floor(off, runs, sides, Scope::per_face); }},
       {"generic scheme floor by hand, all faces (P_v, classes over P_v)", [&] { return run_generic_floor(off, runs, sides, Scope::all_faces); }},
+      {"fused floor by hand: the compiled row's checks and canonical collects, no tables", [&] { return run_fused_floor(off, runs, sides); }},
       {"by hand on dartcheck's Map and Embedding, with barycenters (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, true); }},
       {"by hand on dartcheck's Map, topology only (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, false); }},
       {"CGAL Combinatorial_map<2> insert_cell_0_in_cell_2 on every face (topology only)", [&] { return run_cgal_topology(off, runs, sides); }},
