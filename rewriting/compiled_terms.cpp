@@ -113,18 +113,20 @@ bool TermWorkspace::pairs_within(const Map& g, const Embedding& e, const Collect
   const bool alone = inner.empty();
   if (!alone && (inner.size() != 1 || inner[0].size() != 1 || (inner[0][0] != site.outer[0][0] && inner[0][0] != site.outer[1][0]))) return false;
   const Dim i = alone ? 0 : inner[0][0];
+  // Pointers are sorted, not the 40-byte values: std::sort makes the same
+  // comparisons and so the same permutation, and each value is copied
+  // once, in order.
+  sorted_.clear();
   for (const Dart x : cycle_) {
     const Dart y = alone ? x : g.link(i, x);
     if (y < x) continue;  // taken at y
     const Value* v = e.value(x);
     if (!v && y != x) v = e.value(y);
-    if (!v) {
-      out.clear();
-      throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", site.name, fmt::join(site.dims, ","), site.name, x));
-    }
-    out.push_back(*v);
+    if (!v) throw EvaluationError(fmt::format("{}<{}>: the {}-orbit of dart {} has no value", site.name, fmt::join(site.dims, ","), site.name, x));
+    sorted_.push_back(v);
   }
-  std::sort(out.begin(), out.end(), [](const Value& a, const Value& b) { return value_less(a, b); });
+  std::sort(sorted_.begin(), sorted_.end(), [](const Value* a, const Value* b) { return value_less(*a, *b); });
+  for (const Value* v : sorted_) out.push_back(*v);
   return true;
 }
 

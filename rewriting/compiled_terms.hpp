@@ -126,6 +126,7 @@ struct TermWorkspace {
   bool alternate(const Map& g, Dim a, Dim b, Dart d);
   bool pairs_within(const Map& g, const Embedding& e, const CollectSite& site, std::span<const OrbitWord> inner, std::vector<Value>& out);
   std::vector<Dart> cycle_;
+  std::vector<const Value*> sorted_;  // pairs_within's multiset, sorted
   const Map* walked_ = nullptr;
   std::unique_ptr<OrbitWalker> outer_, inner_, writer_;
   std::vector<std::uint64_t> done_;
