@@ -147,13 +147,14 @@ struct TermCode::Plan {
     std::size_t u, g;
   };
 
-  // Whether group g of embedding u has its classes numbered by
-  // alternating_classes: two single-letter generators of non-oriented
-  // dimensions (a face, an edge or a vertex of a G-map), no kept-label
-  // shortcut; their indices into W's generators.
-  std::optional<std::pair<int, int>> alternating(std::size_t u, std::size_t g) const {
+  // Whether group g of embedding u is joined by two single-letter
+  // generators of non-oriented dimensions (a face, an edge or a vertex of
+  // a G-map), whose shifts are involutions of the positions on a valid
+  // host, so that alternating_classes can number its classes; their
+  // indices into W's generators.
+  std::optional<std::pair<int, int>> two_involutions(std::size_t u, std::size_t g) const {
     const Grouping& gr = right_groups[u];
-    if (!gr.grouped || gr.words[g].size() != 2 || kept_at[u][g] != no_node) return std::nullopt;
+    if (!gr.grouped || gr.words[g].size() != 2) return std::nullopt;
     for (int k : gr.words[g]) {
       const ConjWord& w = facts.gens[static_cast<std::size_t>(k)];
       if (w.size() != 1 || w.bar(0) || op.rule.model().is_oriented(w.dim(0))) return std::nullopt;
@@ -167,8 +168,8 @@ struct TermCode::Plan {
   // The shift tables of o'[0] and o'[1], or nullopt.
   std::optional<std::pair<int, int>> collect_along(const Term& t, const Along* along) const {
     if (!along || t.args[0].kind != Term::Kind::variable || !op.rule.left().find(t.args[0].name) || t.orbit.size() != 2) return std::nullopt;
-    const auto ab = alternating(along->u, along->g);
-    if (!ab) return std::nullopt;
+    const auto ab = two_involutions(along->u, along->g);
+    if (!ab || kept_at[along->u][along->g] != no_node) return std::nullopt;  // the kept-label shortcut numbers no class
     const Dim da = facts.gens[static_cast<std::size_t>(ab->first)].dim(0), db = facts.gens[static_cast<std::size_t>(ab->second)].dim(0);
     if (t.orbit[0] == da && t.orbit[1] == db) return ab;
     if (t.orbit[0] == db && t.orbit[1] == da) return std::pair{ab->second, ab->first};
@@ -326,19 +327,17 @@ struct TermCode::Plan {
                        members, comment_text(op.rule.left().name(at)), index_of(used[u]->name), u, g, at, agree);
       }
       // Two involutions of the positions: the walk without a stack, the
-      // stack walk kept for a host whose links are not involutions.
-      const auto single_unoriented = [&](int k) {
-        const ConjWord& w = facts.gens[static_cast<std::size_t>(k)];
-        return w.size() == 1 && !w.bar(0) && !op.rule.model().is_oriented(w.dim(0));
-      };
-      if (everywhere && alternating(u, g))  // its collects may walk the class (collect_along)
+      // stack walk kept for a host whose links are not involutions. In an
+      // everywhere function its outcome is kept: the group's collects may
+      // walk the class (collect_along).
+      if (const auto ab = two_involutions(u, g); ab && everywhere && at == no_node)
         fmt::format_to(out,
                        "    const bool alternated{0}_{1} = dartcheck::compiled::alternating_classes(cls.data() + {1} * np, ws.shift[{2}].data(), "
                        "ws.shift[{3}].data(), np, count);\n    if (!alternated{0}_{1})\n",
-                       u, g, gr.words[g][0], gr.words[g][1]);
-      else if (gr.words[g].size() == 2 && single_unoriented(gr.words[g][0]) && single_unoriented(gr.words[g][1]))
+                       u, g, ab->first, ab->second);
+      else if (ab)
         fmt::format_to(out, "    if (!dartcheck::compiled::alternating_classes(cls.data() + {} * np, ws.shift[{}].data(), ws.shift[{}].data(), np, count))\n",
-                       g, gr.words[g][0], gr.words[g][1]);
+                       g, ab->first, ab->second);
       std::string follow;
       for (int k : gr.words[g])
         follow += fmt::format(
