@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/comatch_text.hpp"
 #include "compiler/cpp_text.hpp"
 #include "compiler/term_compiler.hpp"
 #include "rewriting/scheme_application.hpp"
@@ -112,7 +113,7 @@ void emit_propagation(Out out, const Operation& op, const RuleFacts& f) {
 void emit_dpo_match(Out out, const Operation& op) {
   const Rule& core = op.rule;
   const TopoGraph& L = core.left();
-  fmt::format_to(out, "  ws.prepare_dpo(g.size(), {});\n  const std::size_t np = 1;\n", L.node_count());
+  fmt::format_to(out, "  ws.prepare_dpo(g.size(), {});\n  [[maybe_unused]] const std::size_t np = 1;\n", L.node_count());
   if (L.node_count() == 0) return;
   std::vector<bool> set(L.node_count(), false);
   std::vector<NodeId> queue;
@@ -212,7 +213,7 @@ bool emit_conditions(Out out, const Operation& op, const RuleFacts& f) {
 // 32-bit, so the compiler could not keep them in registers across writes).
 // The order of the writes within a step does not matter: a representable
 // rule writes each (dart, dimension) slot once.
-void emit_rewrite(Out out, const Operation& op, const RuleFacts& f) {
+void emit_rewrite(Out out, const Operation& op, const RuleFacts& f, bool everywhere) {
   const Rule& core = op.rule;
   const TopoGraph &L = core.left(), &R = core.right();
   const std::vector<ConjWord>& gens = f.gens;
@@ -243,7 +244,10 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f) {
     // A DPO rule reuses the smallest deleted darts first (apply_rule).
     if (!op.words.scheme) fmt::format_to(out, "  std::sort(ws.holes.begin(), ws.holes.end());\n");
   }
-  fmt::format_to(out, "  ws.comatch.resize({} * np);\n  [[maybe_unused]] Dart* const comatch = ws.comatch.data();\n", R.node_count());
+  if (deleted > 0)
+    fmt::format_to(out, "  ws.comatch.resize({} * np);\n  [[maybe_unused]] Dart* const comatch = ws.comatch.data();\n", R.node_count());
+  else
+    fmt::format_to(out, "  // The comatch is arithmetic (no node of L is deleted): preserved nodes on their matched darts, added ones on new darts.\n");
   if (added > 0) {
     if (deleted > 0)
       fmt::format_to(out,
@@ -254,25 +258,19 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f) {
     else
       fmt::format_to(out, "  const Dart first_new = g.add_darts({} * np);\n", added);
   }
-  for (NodeId y = 0; y < R.node_count(); ++y)
-    if (const NodeId x = core.to_left(y); x != no_node)
-      fmt::format_to(out, "  std::copy_n(match + {} * np, np, comatch + {} * np);  // {} is preserved\n", x, y, cpp_literal(R.name(y)));
   // Added nodes: new darts in R's node order, position by position (as
   // the interpreter numbers them), after the deleted darts are reused.
-  std::size_t rank = 0;
-  for (NodeId y = 0; y < R.node_count(); ++y) {
-    if (core.to_left(y) != no_node) continue;
-    if (deleted > 0)
-      fmt::format_to(out,
-                     "  for (std::size_t p = 0; p < np; ++p)  // {} is added\n"
-                     "    comatch[{} * np + p] = next_hole < reused ? ws.holes[next_hole++] : static_cast<Dart>(first_new + next_new++);\n",
-                     cpp_literal(R.name(y)), y);
-    else
-      fmt::format_to(out,
-                     "  for (std::size_t p = 0; p < np; ++p) comatch[{} * np + p] = static_cast<Dart>(first_new + {} * np + p);  // {} is added\n", y,
-                     rank, cpp_literal(R.name(y)));
-    ++rank;
-  }
+  // Without deleted darts that is comatch_dart's arithmetic.
+  if (deleted > 0)
+    for (NodeId y = 0; y < R.node_count(); ++y) {
+      if (const NodeId x = core.to_left(y); x != no_node)
+        fmt::format_to(out, "  std::copy_n(match + {} * np, np, comatch + {} * np);  // {} is preserved\n", x, y, cpp_literal(R.name(y)));
+      else
+        fmt::format_to(out,
+                       "  for (std::size_t p = 0; p < np; ++p)  // {} is added\n"
+                       "    comatch[{} * np + p] = next_hole < reused ? ws.holes[next_hole++] : static_cast<Dart>(first_new + next_new++);\n",
+                       cpp_literal(R.name(y)), y);
+    }
   any = false;
   for (ArcId e = 0; e < R.arc_count(); ++e) {
     if (core.preserved_right_arc(e)) continue;
@@ -280,8 +278,8 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f) {
     any = true;
     const auto& a = R.arc(e);
     const int k = generator_index(gens, arc_word(op.words.right, e));
-    fmt::format_to(out, "    g.set_link({}, comatch[{} * np + p], comatch[{} * np + {}]);  // {}\n", a.label, a.source, a.target,
-                   k < 0 ? std::string("p") : fmt::format("shift{}[p]", k), arc_text(R, e, op.words.right));
+    fmt::format_to(out, "    g.set_link({}, {}, {});  // {}\n", a.label, comatch_dart(core, a.source, "p", everywhere),
+                   comatch_dart(core, a.target, k < 0 ? std::string("p") : fmt::format("shift{}[p]", k), everywhere), arc_text(R, e, op.words.right));
   }
   if (any) fmt::format_to(out, "  }}\n");
   if (deleted > 0) fmt::format_to(out, "  fill_holes(g, ws, {});\n", added > 0 ? "reused" : "0");
@@ -353,19 +351,26 @@ void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::
     else
       fmt::format_to(out, "  if (const Refusal r = walk_patterns<{}>(g, hooks, ws, follow, generator_names); r != Refusal::none) return r;\n",
                      f.gens.size());
-    fmt::format_to(out, "  const std::size_t np = ws.np;\n  ws.match.assign({} * np, no_dart);\n", core.left().node_count());
-    if (f.identity_match)
+    fmt::format_to(out, "  [[maybe_unused]] const std::size_t np = ws.np;\n");
+    if (f.identity_match && core.left().node_count() == 1) {
       fmt::format_to(out,
                      "  // L is the hook with a loop per letter of W: product node (p, hook) is the p-th dart of P_v.\n"
-                     "  std::copy(ws.pattern.begin(), ws.pattern.end(), ws.match.begin());\n");
-    else
-      emit_propagation(out, op, f);
+                     "  ws.match.assign(ws.pattern.begin(), ws.pattern.end());\n");
+    } else {
+      fmt::format_to(out, "  ws.match.assign({} * np, no_dart);\n", core.left().node_count());
+      if (f.identity_match)
+        fmt::format_to(out,
+                       "  // L is the hook with a loop per letter of W: product node (p, hook) is the p-th dart of P_v.\n"
+                       "  std::copy(ws.pattern.begin(), ws.pattern.end(), ws.match.begin());\n");
+      else
+        emit_propagation(out, op, f);
+    }
   }
   if (emit_conditions(out, op, f)) {
     // A scheme's match includes its conditions (match_scheme), then terms.
     if (terms && op.words.scheme) terms->before_rewrite(out, everywhere);
-    emit_rewrite(out, op, f);
-    if (terms) terms->after_rewrite(out);
+    emit_rewrite(out, op, f, everywhere);
+    if (terms) terms->after_rewrite(out, everywhere);
     fmt::format_to(out, "  return Refusal::none;\n");
   }
   fmt::format_to(out, "}}\n");

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "compiler/comatch_text.hpp"
 #include "compiler/cpp_text.hpp"
 #include "rewriting/embedded_application.hpp"
 #include "rewriting/term_functions.hpp"
@@ -89,11 +90,12 @@ struct TermCode::Plan {
 
   // The groups of R for embedding u whose classes need no walk when G's
   // labels agree along the group's loops (the kept-label shortcut): per
-  // group, the L node whose matched darts' stored value is the group's
-  // only term, or no_node. Conditions, all known from the rule:
+  // group, the L node whose matched darts' stored value is each of the
+  // group's terms, or no_node. Conditions, all known from the rule:
   //   - extended instantiation, R closes the orbit (a class is written per
   //     instance), the classes found by groups, the group has loop words;
-  //   - the group holds one term of u, and it is kept from G (stored_at);
+  //   - every term of u in the group is kept from G, from one node of L
+  //     (stored_at): then every instance of a copy p reads the same dart;
   //   - no node of L is deleted, so no dart of G is renumbered.
   // Why the result is the walk's, bit for bit: if at every copy p the
   // pool index i(p) of the kept node's matched dart is defined and equals
@@ -109,14 +111,15 @@ struct TermCode::Plan {
     if (!extended() || !closed[u] || !gr.grouped) return out;
     for (NodeId x = 0; x < op.rule.left().node_count(); ++x)
       if (op.rule.to_right(x) == no_node) return out;
-    std::vector<std::size_t> terms_in(gr.words.size(), 0);
-    for (std::size_t k = 0; k < terms.right.size(); ++k)
-      if (terms.right[k].embedding == used[u]->name) ++terms_in[gr.group_of[right_node[k]]];
+    std::vector<char> mixed(gr.words.size(), 0);  // a term not kept, or kept from another node
     for (std::size_t k = 0; k < terms.right.size(); ++k) {
       if (terms.right[k].embedding != used[u]->name) continue;
       const std::size_t g = gr.group_of[right_node[k]];
-      if (terms_in[g] == 1 && stored_at[k] != no_node && !gr.words[g].empty()) out[g] = stored_at[k];
+      if (stored_at[k] == no_node || (out[g] != no_node && out[g] != stored_at[k])) mixed[g] = 1;
+      out[g] = stored_at[k];
     }
+    for (std::size_t g = 0; g < out.size(); ++g)
+      if (mixed[g] || gr.words[g].empty()) out[g] = no_node;
     return out;
   }
 
@@ -501,20 +504,29 @@ void TermCode::before_rewrite(Out out, bool everywhere) const {
                  "x.what());\n  }}\n  }}\n");
 }
 
-void TermCode::after_rewrite(Out out) const {
+void TermCode::after_rewrite(Out out, bool everywhere) const {
   const Plan& p = *plan_;
   const Rule& r = p.op.rule;
   const TopoGraph& R = r.right();
-  fmt::format_to(out, "  // Labels (003 Def. 12).\n  em.follow(ws.moved);\n  {{\n  [[maybe_unused]] const Dart* const cm = ws.comatch.data();\n");
+  const auto cm = [&](NodeId y) { return comatch_dart(r, y, "p", everywhere); };  // y's dart at position p
+  fmt::format_to(out, "  // Labels (003 Def. 12).\n  em.follow(ws.moved);\n  {{\n");
   std::vector<NodeId> added;
   for (NodeId y = 0; y < R.node_count(); ++y)
     if (r.to_left(y) == no_node) added.push_back(y);
-  if (!added.empty()) {
+  if (!added.empty() && !deletes_nodes(r)) {
+    // The new darts are one range (comatch_dart): a slot table longer than
+    // the map (darts removed before) may hold stale labels there.
+    fmt::format_to(out,
+                   "  for (Embedding& e : em.embeddings)  // added darts start unlabeled\n"
+                   "    if (e.slot.size() > first_new)\n"
+                   "      std::fill(e.slot.begin() + first_new, e.slot.begin() + std::min<std::size_t>(e.slot.size(), first_new + {} * np), "
+                   "Embedding::none);\n",
+                   added.size());
+  } else if (!added.empty()) {
     fmt::format_to(out, "  for (Embedding& e : em.embeddings) {{  // added darts start unlabeled\n");
     for (NodeId y : added)
-      fmt::format_to(
-          out,
-          "    for (std::size_t p = 0; p < np; ++p)\n      if (const Dart d = cm[{} * np + p]; d < e.slot.size()) e.slot[d] = Embedding::none;\n", y);
+      fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p)\n      if (const Dart d = {}; d < e.slot.size()) e.slot[d] = Embedding::none;\n",
+                     cm(y));
     fmt::format_to(out, "  }}\n");
   }
   for (std::size_t k = 0; k < p.terms.left.size(); ++k) {
@@ -525,8 +537,8 @@ void TermCode::after_rewrite(Out out) const {
     fmt::format_to(out,
                    "  {{  // {} keeps no {} label in R: it loses its value\n"
                    "    const std::vector<OrbitWord> gens = dims_generators(e{}->signature.orbit);\n"
-                   "    for (std::size_t p = 0; p < np; ++p) unlabel(tw, g, *e{}, gens, cm[{} * np + p], {});\n  }}\n",
-                   comment_text(t.node), comment_text(t.embedding), e, e, y, p.extended());
+                   "    for (std::size_t p = 0; p < np; ++p) unlabel(tw, g, *e{}, gens, {}, {});\n  }}\n",
+                   comment_text(t.node), comment_text(t.embedding), e, e, cm(y), p.extended());
   }
   for (std::size_t u = 0; u < p.used.size(); ++u) {
     const EmbeddingSignature& sig = *p.used[u];
@@ -547,16 +559,21 @@ void TermCode::after_rewrite(Out out) const {
                      u, fmt::join(sig.orbit, ","));
       for (NodeId y = 0; y < R.node_count(); ++y) {
         const std::size_t g = p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0;
-        if (p.right_groups[u].grouped && p.kept_at[u][g] != no_node)
+        const NodeId at = p.right_groups[u].grouped ? p.kept_at[u][g] : no_node;
+        if (at != no_node && r.to_left(y) == at)
+          // The shortcut stored, at each copy, the pool index of this very
+          // dart (no dart is renumbered: kept_groups): nothing to write.
+          fmt::format_to(out, "    if (!kept{}_{})  // else {} keeps its own value from G\n", u, g, comment_text(R.name(y)));
+        else if (at != no_node)
           fmt::format_to(out,
                          "    if (kept{0}_{1})\n"
-                         "      for (std::size_t p = 0; p < np; ++p) e.set_index(cm[{2} * np + p], cls[{1} * np + p]);  // {3}: G's value\n"
+                         "      for (std::size_t p = 0; p < np; ++p) e.set_index({2}, cls[{1} * np + p]);  // {3}: G's value\n"
                          "    else\n",
-                         u, g, y, comment_text(R.name(y)));
+                         u, g, cm(y), comment_text(R.name(y)));
         fmt::format_to(out,
                        "    for (std::size_t p = 0; p < np; ++p)  // {}\n"
-                       "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.set_index(cm[{} * np + p], v);\n",
-                       comment_text(R.name(y)), p.class_of(u, y), y);
+                       "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.set_index({}, v);\n",
+                       comment_text(R.name(y)), p.class_of(u, y), cm(y));
       }
     } else if (p.extended()) {
       fmt::format_to(
@@ -567,9 +584,9 @@ void TermCode::after_rewrite(Out out) const {
         if (p.terms.right[k].embedding != sig.name) continue;
         const NodeId y = p.right_node[k];
         fmt::format_to(out,
-                       "    for (std::size_t p = 0; p < np; ++p)  // {}: its orbit of H\n      write_orbit(tw, g, e, gens, cm[{} * np + p], "
+                       "    for (std::size_t p = 0; p < np; ++p)  // {}: its orbit of H\n      write_orbit(tw, g, e, gens, {}, "
                        "src[{}]);\n",
-                       comment_text(p.terms.right[k].node), y, p.class_of(u, y));
+                       comment_text(p.terms.right[k].node), cm(y), p.class_of(u, y));
       }
       fmt::format_to(out, "    end_writes(tw);\n");
     } else {
@@ -578,9 +595,9 @@ void TermCode::after_rewrite(Out out) const {
         const NodeId y = p.right_node[k];
         fmt::format_to(out,
                        "    for (std::size_t p = 0; p < np; ++p) {{  // {}: its own dart (direct)\n"
-                       "      const Source f = src[{} * np + p];\n      e.set_index(cm[{} * np + p], f.stored ? f.index : "
+                       "      const Source f = src[{} * np + p];\n      e.set_index({}, f.stored ? f.index : "
                        "e.store(tw.evaluated[f.index]));\n    }}\n",
-                       comment_text(p.terms.right[k].node), k, y);
+                       comment_text(p.terms.right[k].node), k, cm(y));
       }
     }
     fmt::format_to(out, "  }}\n");

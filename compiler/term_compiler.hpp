@@ -52,8 +52,8 @@ class TermCode {
   /// `everywhere` for a NAME_everywhere function (positions are darts).
   void before_rewrite(Out out, bool everywhere) const;
   /// After the topological rewrite: the renumbering followed, and the
-  /// labels written.
-  void after_rewrite(Out out) const;
+  /// labels written (`everywhere` as for before_rewrite).
+  void after_rewrite(Out out, bool everywhere) const;
 
  private:
   struct Plan;

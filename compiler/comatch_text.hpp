@@ -1,0 +1,36 @@
+// The comatch (002 Def. 4: where each node of R lands in H) as generated
+// C++, shared by the rewrite's emitter and the labels' emitter.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "rewriting/rule.hpp"
+
+namespace dartcheck::compiler {
+
+/// Whether the rule deletes a node of L. Then added nodes reuse the
+/// deleted darts (holes), so the comatch is a table (ws.comatch).
+inline bool deletes_nodes(const Rule& r) {
+  for (NodeId x = 0; x < r.left().node_count(); ++x)
+    if (r.to_right(x) == no_node) return true;
+  return false;
+}
+
+/// The dart of R's node y at pattern position `p`, as an expression. When
+/// no node of L is deleted it is arithmetic and no table is written: a
+/// preserved node is on its matched dart (in an everywhere function the
+/// match is the identity, so on dart p), an added node on the new darts,
+/// np per added node in R's node order, as emit_rewrite numbers them.
+inline std::string comatch_dart(const Rule& r, NodeId y, std::string_view p, bool positions_are_darts) {
+  if (deletes_nodes(r)) return fmt::format("comatch[{} * np + {}]", y, p);
+  if (const NodeId x = r.to_left(y); x != no_node)
+    return positions_are_darts ? fmt::format("static_cast<Dart>({})", p) : fmt::format("match[{} * np + {}]", x, p);
+  std::size_t rank = 0;
+  for (NodeId z = 0; z < y; ++z) rank += r.to_left(z) == no_node;
+  return fmt::format("static_cast<Dart>(first_new + {} * np + {})", rank, p);
+}
+
+}  // namespace dartcheck::compiler
