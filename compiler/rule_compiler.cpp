@@ -352,7 +352,9 @@ void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::
       fmt::format_to(out, "  if (const Refusal r = walk_patterns<{}>(g, hooks, ws, follow, generator_names); r != Refusal::none) return r;\n",
                      f.gens.size());
     fmt::format_to(out, "  [[maybe_unused]] const std::size_t np = ws.np;\n");
-    if (f.identity_match && core.left().node_count() == 1) {
+    if (everywhere) {
+      fmt::format_to(out, "  // L is the hook with a loop per letter of W: whole_map_patterns set the match, product node (p, hook) being dart p.\n");
+    } else if (f.identity_match && core.left().node_count() == 1) {
       fmt::format_to(out,
                      "  // L is the hook with a loop per letter of W: product node (p, hook) is the p-th dart of P_v.\n"
                      "  ws.match.assign(ws.pattern.begin(), ws.pattern.end());\n");

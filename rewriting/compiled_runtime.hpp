@@ -18,7 +18,9 @@
 // ws.why says why.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <string>
 #include <utility>
@@ -155,21 +157,36 @@ template <std::size_t Generators, class Follow>
 Refusal whole_map_patterns(const Map& g, Workspace& ws, Follow follow, const char* const* generator_names) {
   ws.prepare_tables(Generators);
   const auto n = static_cast<Dart>(g.size());
-  // Filled by push_back into reserved space: a resize would first write
-  // every entry with zeros.
+  // L is the hook with a loop per letter of W (everywhere_applies): the
+  // match is the identity, product node (p, hook) being dart p.
   ws.pattern.clear();
-  ws.pattern.reserve(n);
-  for (Dart d = 0; d < n; ++d) ws.pattern.push_back(d);
-  for (std::size_t w = 0; w < Generators; ++w) {
+  ws.match.resize(n);
+  std::iota(ws.match.begin(), ws.match.end(), Dart{0});
+  // One loop per generator with its index a constant, so that follow's
+  // switch folds away, writing through a raw pointer (a push_back's end
+  // pointer may alias the map's link array, which forced a reload of it
+  // per dart). The refusal is the one of the first generator, in W's
+  // order, with a dart that has no path, at its first such dart.
+  std::size_t failed = Generators;
+  const auto fill = [&](auto w) {
     std::vector<std::uint32_t>& shift = ws.shift[w];
-    shift.reserve(n);
+    shift.resize(n);
+    std::uint32_t* const out = shift.data();
+    bool complete = true;
     for (Dart d = 0; d < n; ++d) {
       const Dart t = follow(w, d);
-      if (t == no_dart)
-        return ws.refuse(Refusal::not_combinatorial,
-                         "dart " + std::to_string(d) + " has no " + generator_names[w] + "-path: the host is not combinatorial");
-      shift.push_back(t);
+      out[d] = t;
+      complete &= t != no_dart;
     }
+    if (!complete) failed = w;
+    return complete;
+  };
+  [&]<std::size_t... W>(std::index_sequence<W...>) { (void)(fill(std::integral_constant<std::size_t, W>{}) && ...); }(std::make_index_sequence<Generators>{});
+  if (failed < Generators) {
+    const std::vector<std::uint32_t>& shift = ws.shift[failed];
+    const auto d = static_cast<std::size_t>(std::find(shift.begin(), shift.end(), no_dart) - shift.begin());
+    return ws.refuse(Refusal::not_combinatorial,
+                     "dart " + std::to_string(d) + " has no " + generator_names[failed] + "-path: the host is not combinatorial");
   }
   ws.np = n;
   return Refusal::none;
