@@ -33,4 +33,13 @@ inline std::string comatch_dart(const Rule& r, NodeId y, std::string_view p, boo
   return fmt::format("static_cast<Dart>(first_new + {} * np + {})", rank, p);
 }
 
+/// The declaration of `match`, the darts of L's nodes per position: the
+/// table ws.match, or in an everywhere function of a rule that deletes no
+/// node (no pointer into the match is taken) the identity as a type, since
+/// product node (p, hook) is dart p, so that its reads fold away.
+inline std::string match_declaration(const Rule& r, bool positions_are_darts) {
+  return positions_are_darts && !deletes_nodes(r) ? "[[maybe_unused]] constexpr dartcheck::compiled::IdentityMatch match{};"
+                                                  : "[[maybe_unused]] const Dart* const match = ws.match.data();";
+}
+
 }  // namespace dartcheck::compiler

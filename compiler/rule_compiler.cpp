@@ -220,7 +220,7 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f, bool everywh
   std::size_t deleted = 0, added = 0;
   for (NodeId x = 0; x < L.node_count(); ++x) deleted += core.to_right(x) == no_node;
   for (NodeId y = 0; y < R.node_count(); ++y) added += core.to_left(y) == no_node;
-  fmt::format_to(out, "  [[maybe_unused]] const Dart* const match = ws.match.data();\n");
+  fmt::format_to(out, "  {}\n", match_declaration(core, everywhere));
   std::vector<bool> used(gens.size(), false);
   for (ArcId e = 0; e < R.arc_count(); ++e)
     if (!core.preserved_right_arc(e))

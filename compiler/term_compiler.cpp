@@ -407,7 +407,7 @@ void TermCode::before_rewrite(Out out, bool everywhere) const {
   const TopoGraph& L = r.left();
   fmt::format_to(out, "  // Terms (003 Def. 10): L's labels, then one source per class of R.\n  tw.prepare({}, {});\n", p.used.size(),
                  p.sites.size());
-  fmt::format_to(out, "  {{\n  [[maybe_unused]] const Dart* const match = ws.match.data();\n  try {{\n");
+  fmt::format_to(out, "  {{\n  {}\n  try {{\n", match_declaration(r, everywhere));
   for (std::size_t k = 0; k < p.terms.left.size(); ++k) {
     const NodeTerm& t = p.terms.left[k];
     const NodeId x = p.left_node[k];
@@ -555,7 +555,7 @@ void TermCode::after_rewrite(Out out, bool everywhere) const {
                      "    reserve_more(e.pool, tw.class_count[{0}]);\n"
                      "    for (std::size_t c = 0; c < pool.size(); ++c)\n"
                      "      if (const Source f = src[c]; f.index != Embedding::none) pool[c] = f.stored ? f.index : e.store(tw.evaluated[f.index]);\n"
-                     "    // R closes <{1}>: a class is a whole orbit of H.\n",
+                     "    // R closes <{1}>: a class is a whole orbit of H. (em.follow made the slots as many as the darts.)\n",
                      u, fmt::join(sig.orbit, ","));
       for (NodeId y = 0; y < R.node_count(); ++y) {
         const std::size_t g = p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0;
@@ -567,12 +567,12 @@ void TermCode::after_rewrite(Out out, bool everywhere) const {
         else if (at != no_node)
           fmt::format_to(out,
                          "    if (kept{0}_{1})\n"
-                         "      for (std::size_t p = 0; p < np; ++p) e.set_index({2}, cls[{1} * np + p]);  // {3}: G's value\n"
+                         "      for (std::size_t p = 0; p < np; ++p) e.slot[{2}] = cls[{1} * np + p];  // {3}: G's value\n"
                          "    else\n",
                          u, g, cm(y), comment_text(R.name(y)));
         fmt::format_to(out,
                        "    for (std::size_t p = 0; p < np; ++p)  // {}\n"
-                       "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.set_index({}, v);\n",
+                       "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.slot[{}] = v;\n",
                        comment_text(R.name(y)), p.class_of(u, y), cm(y));
       }
     } else if (p.extended()) {
