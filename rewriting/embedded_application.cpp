@@ -84,17 +84,54 @@ struct EmbeddedRewriter::Context {
   std::vector<std::uint32_t> pooled, writer_of;
   std::vector<Writer> writers;
   DartTable orbit_of, given;  // each left empty between applications
+  bool kept_shortcut = true;  // EmbeddedRewriter::use_kept_label_shortcut
+  bool deletes = false;       // the rule deletes a node of L
+  EmbeddedRewriter::ShortcutCounts shortcuts;
 
   Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
       : rule(r), words(w), terms(t), g(map), evaluation(e), facts(term_facts(r, t)), ev(map), walker(map.map), scheme(r, w) {
     classes.resize(used.size());
     class_source.resize(used.size());
     for (const EmbeddingSignature* sig : used) used_gens.push_back(dims_generators(sig->orbit));
+    for (NodeId x = 0; x < r.left().node_count(); ++x) deletes |= r.to_right(x) == no_node;
   }
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
   std::string overlap(const Instances& in, std::size_t u);
+  bool kept_classes(const Instances& in, std::size_t u, std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
+                    std::vector<std::uint32_t>& id, std::uint32_t& count);
 };
+
+// The kept-label shortcut (EmbeddedRewriter::use_kept_label_shortcut) for
+// group `group` of R's nodes and embedding used[u]: one class per pattern
+// copy when the check holds, else false (the group is walked).
+bool EmbeddedRewriter::Context::kept_classes(const Instances& in, std::size_t u, std::uint32_t group, const std::vector<std::uint32_t>& group_of,
+                                             const std::vector<int>& steps, std::vector<std::uint32_t>& id, std::uint32_t& count) {
+  if (steps.empty()) return false;
+  NodeId at = no_node;  // the L node every term of the group reads
+  for (std::size_t k = 0; k < terms.right.size(); ++k) {
+    if (terms.right[k].embedding != used[u]->name || group_of[right_node[k]] != group) continue;
+    if (stored_at[k] == no_node || (at != no_node && stored_at[k] != at)) return false;
+    at = stored_at[k];
+  }
+  const Embedding* e = g.find(used[u]->name);
+  if (at == no_node || !e) return false;
+  const auto slot_of = [e](Dart d) { return d < e->slot.size() ? e->slot[d] : Embedding::none; };
+  for (std::size_t p = 0; p < in.np; ++p) {
+    const std::uint32_t v = slot_of(in.at(at, p));
+    bool agree = v != Embedding::none;
+    for (std::size_t s = 0; agree && s < steps.size(); ++s) agree = slot_of(in.at(at, in.step(p, steps[s]))) == v;
+    if (!agree) {
+      ++shortcuts.refused;
+      return false;
+    }
+  }
+  id.resize(in.np);
+  for (std::size_t p = 0; p < in.np; ++p) id[p] = count + static_cast<std::uint32_t>(p);
+  count += static_cast<std::uint32_t>(in.np);
+  ++shortcuts.taken;
+  return true;
+}
 
 // Lemma 3: instances of L in different pi-orbits of the instantiated L
 // must match darts in different pi-orbits of G. The matched darts are
@@ -223,7 +260,12 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   per_class.assign(used.size(), 0);
   for (std::size_t u = 0; u < used.size(); ++u) {
     if (extended && (evaluation == Evaluation::one_per_orbit || closed[u])) {
-      instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u]);
+      const GroupNumbering kept = [&](std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
+                                      std::vector<std::uint32_t>& id, std::uint32_t& count) {
+        return kept_classes(in, u, group, group_of, steps, id, count);
+      };
+      const bool shortcut = kept_shortcut && evaluation == Evaluation::one_per_orbit && closed[u] && !deletes;
+      instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u], shortcut ? &kept : nullptr);
       has_classes[u] = true;
     }
     per_class[u] = has_classes[u] && evaluation == Evaluation::one_per_orbit;
@@ -436,6 +478,10 @@ EmbeddedRewriter::EmbeddedRewriter(const Rule& rule, const ArcWords& words, cons
 EmbeddedRewriter::~EmbeddedRewriter() = default;
 
 Outcome<EmbeddedDerivation> EmbeddedRewriter::apply(std::span<const Dart> hook_darts, bool record) { return c_->apply(hook_darts, record); }
+
+void EmbeddedRewriter::use_kept_label_shortcut(bool on) { c_->kept_shortcut = on; }
+
+EmbeddedRewriter::ShortcutCounts EmbeddedRewriter::kept_label_shortcuts() const { return c_->shortcuts; }
 
 Outcome<EmbeddedDerivation> apply_embedded(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g,
                                            std::span<const Dart> hook_darts, bool record) {

@@ -106,6 +106,24 @@ class EmbeddedRewriter {
   /// With `record`, `written` lists every value the rule wrote.
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record = true);
 
+  /// The kept-label shortcut (on by default). Under one evaluation per
+  /// orbit, for an embedding R closes, of a rule that deletes no node of
+  /// L: a group of R's nodes whose terms all read one L node's stored
+  /// value (`n0.pos`) is not walked for its classes when that value's pool
+  /// index i(p) at each pattern copy p is defined and equals i(p·w) for
+  /// each of the group's steps w; each copy is then its own class, valued
+  /// i(p). The result is the walk's, index for index: a class is connected
+  /// by those steps, so i is constant on it, and the walk gives every
+  /// instance the index of the class's first instance, i(p) again. When
+  /// the check fails (G not consistent along the group, equal values in
+  /// distinct pool entries, a missing value) the group is walked.
+  void use_kept_label_shortcut(bool on);
+  /// How often the shortcut's check held, and failed (the walk ran).
+  struct ShortcutCounts {
+    std::size_t taken = 0, refused = 0;
+  };
+  ShortcutCounts kept_label_shortcuts() const;
+
  private:
   struct Context;
   std::unique_ptr<Context> c_;

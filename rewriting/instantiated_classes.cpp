@@ -114,7 +114,7 @@ void instantiated_classes_by_instance(const TopoGraph& side, const std::vector<C
 // An arc with a word between two groups (a general (W, D) scheme) falls
 // back to the definition.
 void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& words, const PatternGraphs* pattern, const std::vector<Dim>& orbit,
-                          InstantiatedClasses& out) {
+                          InstantiatedClasses& out, const GroupNumbering* numbering) {
   const std::size_t n = side.node_count(), np = copies(pattern);
   // The node groups use the scratch tables first; the pattern's walks
   // reuse them once group_of is known.
@@ -154,6 +154,7 @@ void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& wo
   out.id.resize(groups);
   for (std::size_t k = 0; k < groups; ++k) {
     const std::uint32_t first = out.count;
+    if (numbering && (*numbering)(static_cast<std::uint32_t>(k), out.group_of, group_words[k], out.id[k], out.count)) continue;
     if (!label_orbits(pattern, np, group_words[k], out.scratch.up, out.count, out.id[k])) {
       out.count = first;
       UnionFind uf(out.scratch.up, np);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "rewriting/rule.hpp"
@@ -32,11 +33,22 @@ struct InstantiatedClasses {
   } scratch;
 };
 
+/// A caller's numbering of one group's classes in place of the walk:
+/// given the group, the nodes' groups and the group's steps (pattern
+/// generators), it either fills id (one entry per pattern copy, numbers
+/// from count on, count advanced) and returns true, or returns false and
+/// the group is walked. The numbering may split a class (the embedded
+/// application's kept-label shortcut numbers one class per copy where
+/// every copy of a class has one value).
+using GroupNumbering = std::function<bool(std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
+                                          std::vector<std::uint32_t>& id, std::uint32_t& count)>;
+
 /// The classes of `side` (with its arcs' words) instantiated on `pattern`
 /// (null for a DPO rule: one copy) for the orbit <o>. `out` keeps its
-/// memory for the next call.
+/// memory for the next call. With `numbering`, a group it numbers is not
+/// walked (only when the classes are found by groups, `by_pattern`).
 void instantiated_classes(const TopoGraph& side, const std::vector<ConjWord>& words, const PatternGraphs* pattern, const std::vector<Dim>& orbit,
-                          InstantiatedClasses& out);
+                          InstantiatedClasses& out, const GroupNumbering* numbering = nullptr);
 
 /// The same classes by the definition: one union-find over every
 /// instance (each node its own group). The reference for tests.
