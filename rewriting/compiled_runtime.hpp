@@ -141,6 +141,13 @@ Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, 
   return Refusal::none;
 }
 
+/// The match of a generated everywhere function (whole_map_patterns):
+/// product node (p, hook) is dart p, so match[p] is p, known to the
+/// compiler as a type rather than read from a table.
+struct IdentityMatch {
+  constexpr Dart operator[](std::size_t p) const { return static_cast<Dart>(p); }
+};
+
 /// P for a scheme applied at every connected component at once (the
 /// generated NAME_everywhere functions): when W's single-letter generators
 /// name every dimension of the model, the P_v of any dart is its connected
@@ -153,13 +160,6 @@ Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, 
 /// BFS order from a hook, so the result is isomorphic to the sequential
 /// applications', not equal. Refused when some dart has no path along a
 /// generator, as walk_patterns refuses at the first such dart of P_v.
-/// The match of a generated everywhere function (whole_map_patterns):
-/// product node (p, hook) is dart p, so match[p] is p, known to the
-/// compiler as a type rather than read from a table.
-struct IdentityMatch {
-  constexpr Dart operator[](std::size_t p) const { return static_cast<Dart>(p); }
-};
-
 template <std::size_t Generators, class Follow>
 Refusal whole_map_patterns(const Map& g, Workspace& ws, Follow follow, const char* const* generator_names) {
   ws.prepare_tables(Generators);
