@@ -11,21 +11,14 @@
 
 namespace dartcheck::compiler {
 
-/// Whether the rule deletes a node of L. Then added nodes reuse the
-/// deleted darts (holes), so the comatch is a table (ws.comatch).
-inline bool deletes_nodes(const Rule& r) {
-  for (NodeId x = 0; x < r.left().node_count(); ++x)
-    if (r.to_right(x) == no_node) return true;
-  return false;
-}
-
-/// The dart of R's node y at pattern position `p`, as an expression. When
-/// no node of L is deleted it is arithmetic and no table is written: a
+/// The dart of R's node y at pattern position `p`, as an expression: the
+/// table ws.comatch when the rule deletes a node of L (added nodes reuse
+/// its darts, the holes). When no node of L is deleted it is arithmetic and no table is written: a
 /// preserved node is on its matched dart (in an everywhere function the
 /// match is the identity, so on dart p), an added node on the new darts,
 /// np per added node in R's node order, as emit_rewrite numbers them.
 inline std::string comatch_dart(const Rule& r, NodeId y, std::string_view p, bool positions_are_darts) {
-  if (deletes_nodes(r)) return fmt::format("comatch[{} * np + {}]", y, p);
+  if (r.deletes_nodes()) return fmt::format("comatch[{} * np + {}]", y, p);
   if (const NodeId x = r.to_left(y); x != no_node)
     return positions_are_darts ? fmt::format("static_cast<Dart>({})", p) : fmt::format("match[{} * np + {}]", x, p);
   std::size_t rank = 0;
@@ -38,7 +31,7 @@ inline std::string comatch_dart(const Rule& r, NodeId y, std::string_view p, boo
 /// node (no pointer into the match is taken) the identity as a type, since
 /// product node (p, hook) is dart p, so that its reads fold away.
 inline std::string match_declaration(const Rule& r, bool positions_are_darts) {
-  return positions_are_darts && !deletes_nodes(r) ? "[[maybe_unused]] constexpr dartcheck::compiled::IdentityMatch match{};"
+  return positions_are_darts && !r.deletes_nodes() ? "[[maybe_unused]] constexpr dartcheck::compiled::IdentityMatch match{};"
                                                   : "[[maybe_unused]] const Dart* const match = ws.match.data();";
 }
 

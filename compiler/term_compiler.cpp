@@ -108,18 +108,9 @@ struct TermCode::Plan {
   std::vector<NodeId> kept_groups(std::size_t u) const {
     const Grouping& gr = right_groups[u];
     std::vector<NodeId> out(gr.words.size(), no_node);
-    if (!extended() || !closed[u] || !gr.grouped) return out;
-    for (NodeId x = 0; x < op.rule.left().node_count(); ++x)
-      if (op.rule.to_right(x) == no_node) return out;
-    std::vector<char> mixed(gr.words.size(), 0);  // a term not kept, or kept from another node
-    for (std::size_t k = 0; k < terms.right.size(); ++k) {
-      if (terms.right[k].embedding != used[u]->name) continue;
-      const std::size_t g = gr.group_of[right_node[k]];
-      if (stored_at[k] == no_node || (out[g] != no_node && out[g] != stored_at[k])) mixed[g] = 1;
-      out[g] = stored_at[k];
-    }
+    if (!extended() || !closed[u] || !gr.grouped || op.rule.deletes_nodes()) return out;
     for (std::size_t g = 0; g < out.size(); ++g)
-      if (mixed[g] || gr.words[g].empty()) out[g] = no_node;
+      if (!gr.words[g].empty()) out[g] = kept_source(tf, terms, used[u]->name, [&](NodeId y) { return gr.group_of[y] == g; });
     return out;
   }
 
@@ -513,7 +504,7 @@ void TermCode::after_rewrite(Out out, bool everywhere) const {
   std::vector<NodeId> added;
   for (NodeId y = 0; y < R.node_count(); ++y)
     if (r.to_left(y) == no_node) added.push_back(y);
-  if (!added.empty() && !deletes_nodes(r)) {
+  if (!added.empty() && !r.deletes_nodes()) {
     // The new darts are one range (comatch_dart): a slot table longer than
     // the map (darts removed before) may hold stale labels there.
     fmt::format_to(out,

@@ -85,7 +85,6 @@ struct EmbeddedRewriter::Context {
   std::vector<Writer> writers;
   DartTable orbit_of, given;  // each left empty between applications
   bool kept_shortcut = true;  // EmbeddedRewriter::use_kept_label_shortcut
-  bool deletes = false;       // the rule deletes a node of L
   EmbeddedRewriter::ShortcutCounts shortcuts;
 
   Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
@@ -93,7 +92,6 @@ struct EmbeddedRewriter::Context {
     classes.resize(used.size());
     class_source.resize(used.size());
     for (const EmbeddingSignature* sig : used) used_gens.push_back(dims_generators(sig->orbit));
-    for (NodeId x = 0; x < r.left().node_count(); ++x) deletes |= r.to_right(x) == no_node;
   }
 
   Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
@@ -108,12 +106,7 @@ struct EmbeddedRewriter::Context {
 bool EmbeddedRewriter::Context::kept_classes(const Instances& in, std::size_t u, std::uint32_t group, const std::vector<std::uint32_t>& group_of,
                                              const std::vector<int>& steps, std::vector<std::uint32_t>& id, std::uint32_t& count) {
   if (steps.empty()) return false;
-  NodeId at = no_node;  // the L node every term of the group reads
-  for (std::size_t k = 0; k < terms.right.size(); ++k) {
-    if (terms.right[k].embedding != used[u]->name || group_of[right_node[k]] != group) continue;
-    if (stored_at[k] == no_node || (at != no_node && stored_at[k] != at)) return false;
-    at = stored_at[k];
-  }
+  const NodeId at = kept_source(facts, terms, used[u]->name, [&](NodeId y) { return group_of[y] == group; });
   const Embedding* e = g.find(used[u]->name);
   if (at == no_node || !e) return false;
   const auto slot_of = [e](Dart d) { return d < e->slot.size() ? e->slot[d] : Embedding::none; };
@@ -260,12 +253,15 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   per_class.assign(used.size(), 0);
   for (std::size_t u = 0; u < used.size(); ++u) {
     if (extended && (evaluation == Evaluation::one_per_orbit || closed[u])) {
-      const GroupNumbering kept = [&](std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
-                                      std::vector<std::uint32_t>& id, std::uint32_t& count) {
-        return kept_classes(in, u, group, group_of, steps, id, count);
-      };
-      const bool shortcut = kept_shortcut && evaluation == Evaluation::one_per_orbit && closed[u] && !deletes;
-      instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u], shortcut ? &kept : nullptr);
+      if (kept_shortcut && evaluation == Evaluation::one_per_orbit && closed[u] && !rule.deletes_nodes()) {
+        const GroupNumbering kept = [&](std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
+                                        std::vector<std::uint32_t>& id, std::uint32_t& count) {
+          return kept_classes(in, u, group, group_of, steps, id, count);
+        };
+        instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u], &kept);
+      } else {
+        instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u]);
+      }
       has_classes[u] = true;
     }
     per_class[u] = has_classes[u] && evaluation == Evaluation::one_per_orbit;
@@ -443,6 +439,16 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
   }
   if (record) out.comatch = comatch;  // a copy: the tables go back to the scheme's pool
   return {std::move(out), Refusal::none, {}};
+}
+
+NodeId kept_source(const TermFacts& facts, const RuleTerms& terms, const std::string& embedding, const std::function<bool(NodeId)>& in_group) {
+  NodeId at = no_node;
+  for (std::size_t k = 0; k < terms.right.size(); ++k) {
+    if (terms.right[k].embedding != embedding || !in_group(facts.right_node[k])) continue;
+    if (facts.stored_at[k] == no_node || (at != no_node && facts.stored_at[k] != at)) return no_node;
+    at = facts.stored_at[k];
+  }
+  return at;
 }
 
 TermFacts term_facts(const Rule& r, const RuleTerms& t) {

@@ -22,6 +22,7 @@
 //   the inconsistency.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -88,6 +89,13 @@ struct TermFacts {
   std::vector<char> left_closed;
 };
 TermFacts term_facts(const Rule& rule, const RuleTerms& terms);
+
+/// The L node whose matched dart's stored value every term of `embedding`
+/// on the R nodes `in_group` accepts reads (TermFacts::stored_at), or
+/// no_node when there is no such term, or one is evaluated or reads another
+/// node: the kept-label shortcut's group condition, shared by
+/// EmbeddedRewriter and `dartcheck compile`.
+NodeId kept_source(const TermFacts& facts, const RuleTerms& terms, const std::string& embedding, const std::function<bool(NodeId)>& in_group);
 
 /// Applies one embedded rule many times to one map, keeping its
 /// traversal marks, per-dart tables and evaluator between applications:

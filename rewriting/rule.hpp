@@ -5,6 +5,8 @@
 // a -0-> b arcs and R one, one is preserved and one deleted.
 #pragma once
 
+#include <algorithm>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +45,8 @@ class Rule {
   NodeId to_left(NodeId v) const { return right_to_left_[v]; }
   bool preserved_left_arc(ArcId e) const { return left_arc_kept_[e]; }
   bool preserved_right_arc(ArcId e) const { return right_arc_kept_[e]; }
+  /// Whether some node of L is deleted (has no R node).
+  bool deletes_nodes() const { return std::find(left_to_right_.begin(), left_to_right_.end(), no_node) != left_to_right_.end(); }
 
   /// The inverse rule R ⊇ K ⊆ L with the given hooks (nodes of R by name).
   Rule inverse(std::vector<std::string> hooks) const;
