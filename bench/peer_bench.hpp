@@ -6,6 +6,7 @@
 
 #include <sys/mman.h>
 #include <sys/resource.h>
+#include <sched.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -135,10 +137,6 @@ inline double page_fault_us() {
   return probes[probes.size() / 2];
 }
 
-inline void print_machine_line() {
-  const char* tunables = std::getenv("GLIBC_TUNABLES");
-  std::printf("machine: a page's first touch costs %.2f us; GLIBC_TUNABLES=%s\n", page_fault_us(), tunables ? tunables : "(unset)");
-}
 
 struct Result {
   double median_ms = 0;
@@ -190,6 +188,81 @@ T run_in_child(const std::function<T()>& run) {
   close(pipefd[0]);
   waitpid(pid, nullptr, 0);
   return res;
+}
+
+// Milliseconds of a chase of dependent loads through a random cycle over
+// 8 MiB (beyond a core's own caches, as the rows' maps are) on the calling
+// thread: the best of 3, so a CPU's speed as these benches use it.
+inline double cpu_probe_ms() {
+  constexpr std::size_t slots = (std::size_t{8} << 20) / sizeof(std::uint32_t);
+  std::vector<std::uint32_t> order(slots), next(slots);
+  for (std::size_t k = 0; k < slots; ++k) order[k] = static_cast<std::uint32_t>(k);
+  std::uint64_t x = 88172645463325252ULL;  // xorshift64: the same cycle on every CPU
+  for (std::size_t k = slots - 1; k > 0; --k) {
+    x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+    std::swap(order[k], order[x % (k + 1)]);
+  }
+  for (std::size_t k = 0; k < slots; ++k) next[order[k]] = order[(k + 1) % slots];
+  double best = 1e300;
+  for (int round = 0; round < 3; ++round) {
+    std::uint32_t at = order[0];
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int k = 0; k < 300'000; ++k) at = next[at];
+    best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    volatile std::uint32_t sink = at;
+    (void)sink;
+  }
+  return best;
+}
+
+// The vCPUs of a VM need not run at one speed: on the 2-core machines of
+// these benches one ran 1.5x slower than the other for hours (2026-11-28),
+// and the scheduler moves a process, and each forked row, between them, so
+// two rows of one run could be timed on different CPUs and their ratio be
+// off by that factor. Pins the process (and so every row it forks) to the
+// fastest CPU it may use, by cpu_probe_ms on each, and says so with every
+// CPU's probe time. DARTCHECK_BENCH_CPU=k pins to CPU k instead.
+inline std::string pin_to_one_cpu() {
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0) return "not pinned (sched_getaffinity failed)";
+  std::string probes;
+  int best = -1;
+  double best_ms = 1e300;
+  const char* forced = std::getenv("DARTCHECK_BENCH_CPU");
+  for (int c = 0; c < CPU_SETSIZE; ++c) {
+    if (!CPU_ISSET(c, &allowed)) continue;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(c, &one);
+    if (sched_setaffinity(0, sizeof one, &one) != 0) continue;
+    // In a child: the probe's 16 MiB must not raise the peak RSS that
+    // the rows' children inherit from this process.
+    const double ms = run_in_child<double>(std::function<double()>(cpu_probe_ms));
+    char probe[64];
+    std::snprintf(probe, sizeof probe, "%sCPU %d %.2f ms", probes.empty() ? "" : ", ", c, ms);
+    probes += probe;
+    if (forced ? std::atoi(forced) == c : ms < best_ms) {
+      best = c;
+      best_ms = ms;
+    }
+  }
+  if (best < 0) {
+    sched_setaffinity(0, sizeof allowed, &allowed);
+    return "not pinned (no usable CPU" + std::string(forced ? " matches DARTCHECK_BENCH_CPU" : "") + "); probes: " + probes;
+  }
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(best, &one);
+  sched_setaffinity(0, sizeof one, &one);
+  return "every row on CPU " + std::to_string(best) + (forced ? " (DARTCHECK_BENCH_CPU)" : " (the fastest)") + "; probes: " + probes;
+}
+
+inline void print_machine_line() {
+  const std::string pinned = pin_to_one_cpu();
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  std::printf("machine: a page's first touch costs %.2f us; GLIBC_TUNABLES=%s; %s\n", page_fault_us(), tunables ? tunables : "(unset)",
+              pinned.c_str());
 }
 
 }  // namespace
