@@ -175,7 +175,15 @@ Result run_topology(const std::string& off, int runs, std::size_t triangles) {
 // that fails would need the compiled row's walk: this row reports it
 // invalid instead (a mesh's positions are shared per vertex, so it does
 // not fail here).
-Result run_fused_floor(const std::string& off, int runs, std::size_t triangles) {
+//
+// Its two ablations say what the floor is made of (issue 41): `checks`
+// false drops the three check passes (each dart's links, L's labels, the
+// kept-label check), `canonical` false sums each face's values in walk
+// order instead of the sorted order. Neither is a valid compiled row: the
+// first would apply the rule to hosts the interpreter refuses, the second
+// gives centers that differ in the last bits between isomorphic numberings
+// of one mesh (and from the interpreter's).
+Result run_fused_floor(const std::string& off, int runs, std::size_t triangles, bool checks = true, bool canonical = true) {
   using namespace dartcheck;
   const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
   const CatalogRule& s = *catalog.find_rule("triangulation-all-faces-pos");
@@ -190,12 +198,14 @@ Result run_fused_floor(const std::string& off, int runs, std::size_t triangles) 
       Embedding* const e = g.find("pos");
       if (!e) return false;
       const auto n = static_cast<Dart>(m.size());
-      for (Dart d = 0; d < n; ++d)
-        if (m.link(0, d) == no_dart || m.link(1, d) == no_dart || m.link(2, d) == no_dart) return false;  // not combinatorial
-      for (Dart d = 0; d < n; ++d)
-        if (!e->value(d)) return false;  // L: n0.pos has no value
-      for (Dart d = 0; d < n; ++d)
-        if (e->slot[m.link(1, d)] != e->slot[d] || e->slot[m.link(2, d)] != e->slot[d]) return false;  // the shortcut's check
+      if (checks) {
+        for (Dart d = 0; d < n; ++d)
+          if (m.link(0, d) == no_dart || m.link(1, d) == no_dart || m.link(2, d) == no_dart) return false;  // not combinatorial
+        for (Dart d = 0; d < n; ++d)
+          if (!e->value(d)) return false;  // L: n0.pos has no value
+        for (Dart d = 0; d < n; ++d)
+          if (e->slot[m.link(1, d)] != e->slot[d] || e->slot[m.link(2, d)] != e->slot[d]) return false;  // the shortcut's check
+      }
       const std::size_t pool0 = e->pool.size();
       e->pool.reserve(pool0 + n / 3);  // room for a center per face of 3 or more darts
       e->slot.resize(3 * static_cast<std::size_t>(n), Embedding::none);
@@ -231,7 +241,7 @@ Result run_fused_floor(const std::string& off, int runs, std::size_t triangles) 
           if (!v) return undo();
           bag.push_back(v);
         }
-        std::sort(bag.begin(), bag.end(), [](const Value* a, const Value* b) { return value_less(*a, *b); });
+        if (canonical) std::sort(bag.begin(), bag.end(), [](const Value* a, const Value* b) { return value_less(*a, *b); });
         std::array<double, 3> sum{};  // algebra::average's sum, in the same order
         for (const Value* v : bag)
           for (std::size_t k = 0; k < 3; ++k) sum[k] += v->x[k];
@@ -533,6 +543,9 @@ int main(int argc, char** argv) {
        [&] { return run_generic_floor(off, runs, sides, Scope::per_face); }},
       {"generic scheme floor by hand, all faces (P_v, classes over P_v)", [&] { return run_generic_floor(off, runs, sides, Scope::all_faces); }},
       {"fused floor by hand: the compiled row's checks and canonical collects, no tables", [&] { return run_fused_floor(off, runs, sides); }},
+      {"fused floor without its check passes (ablation: not a valid compiled row)", [&] { return run_fused_floor(off, runs, sides, false, true); }},
+      {"fused floor without the canonical order, sums in walk order (ablation: not a valid compiled row)",
+       [&] { return run_fused_floor(off, runs, sides, true, false); }},
       {"by hand on dartcheck's Map and Embedding, with barycenters (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, true); }},
       {"by hand on dartcheck's Map, topology only (one pass, no rule)", [&] { return run_by_hand(off, runs, sides, false); }},
       {"CGAL Combinatorial_map<2> insert_cell_0_in_cell_2 on every face (topology only)", [&] { return run_cgal_topology(off, runs, sides); }},
