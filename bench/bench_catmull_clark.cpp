@@ -13,7 +13,8 @@
 //   - OpenMesh: Subdivider::Uniform::CatmullClarkT on a PolyMesh with
 //     double points, built from the parsed file.
 // Each peer runs in a child process ("peak MiB" is its own growth of the
-// peak RSS while subdividing once); times are medians of --runs
+// peak RSS while subdividing once), all on one CPU (peer_bench.hpp's
+// pin_to_one_cpu); times are medians of --runs
 // subdivisions of a fresh copy (copy not timed). Every result is checked:
 // a valid map or mesh with one quad per old edge side, and the same points
 // as CGAL's (computed once in the parent) within 1e-9 of the input's

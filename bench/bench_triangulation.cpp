@@ -10,14 +10,19 @@
 //         <0,1,2>, as Jerboa applies a scheme to a whole orbit);
 //     each with every instance evaluated (the dynamic check) and with one
 //     evaluation per orbit (allowed because the rule passes (A));
-//   - the floor: the same triangulation written by hand on dartcheck's
-//     Map (one pass over the old darts), with and without barycenters;
+//   - the compiled rows (`dartcheck compile`, issue 41) and the floors:
+//     a generic scheme engine's, a fused pass keeping the compiled row's
+//     checks and canonical collects (and two ablations of it that say
+//     what it is made of), and the same triangulation written by hand on
+//     dartcheck's Map (one pass over the old darts), with and without
+//     barycenters;
 //   - CGAL: Linear_cell_complex_for_combinatorial_map<2,3>,
 //     insert_barycenter_in_cell<2> on every face (topology + barycenter),
 //     and insert_cell_0_in_cell_2 on a plain Combinatorial_map<2>
 //     (topology only).
 // Each peer runs in a child process ("peak MiB" is its own growth of the
-// peak RSS while triangulating once); times are medians of --runs
+// peak RSS while triangulating once), all on one CPU (peer_bench.hpp's
+// pin_to_one_cpu); times are medians of --runs
 // triangulations of a fresh copy (copy not timed). Every result is
 // checked: dartcheck's map valid with a consistent, total pos embedding
 // and every new vertex at its face's barycenter; CGAL's is_valid(); both

@@ -1,12 +1,13 @@
 // Shared by the programs that time dartcheck against a peer library on
-// one OFF input (bench_quad_subdivision, bench_triangulation): the input
-// torus, resident-memory probes, medians, and one child process per peer
-// so that each peak RSS is its own.
+// one OFF input (bench_quad_subdivision, bench_triangulation,
+// bench_catmull_clark): the input torus, resident-memory probes, medians,
+// one child process per peer so that each peak RSS is its own, and the
+// machine line that pins every peer to one CPU.
 #pragma once
 
+#include <sched.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
-#include <sched.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -136,7 +137,6 @@ inline double page_fault_us() {
   std::sort(probes.begin(), probes.end());
   return probes[probes.size() / 2];
 }
-
 
 struct Result {
   double median_ms = 0;
