@@ -13,10 +13,11 @@ namespace dartcheck::compiler {
 
 /// The dart of R's node y at pattern position `p`, as an expression: the
 /// table ws.comatch when the rule deletes a node of L (added nodes reuse
-/// its darts, the holes). When no node of L is deleted it is arithmetic and no table is written: a
-/// preserved node is on its matched dart (in an everywhere function the
-/// match is the identity, so on dart p), an added node on the new darts,
-/// np per added node in R's node order, as emit_rewrite numbers them.
+/// its darts, the holes). When no node of L is deleted it is arithmetic
+/// and no table is written: a preserved node is on its matched dart (in an
+/// everywhere function the match is the identity, so on dart p), an added
+/// node on the new darts, np per added node in R's node order, as
+/// emit_rewrite numbers them.
 inline std::string comatch_dart(const Rule& r, NodeId y, std::string_view p, bool positions_are_darts) {
   if (r.deletes_nodes()) return fmt::format("comatch[{} * np + {}]", y, p);
   if (const NodeId x = r.to_left(y); x != no_node)
