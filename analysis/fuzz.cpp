@@ -5,6 +5,7 @@
 #include "analysis/interrupt.hpp"
 
 #include "analysis/embedded_fuzz.hpp"
+#include "checkers/embedding_conditions.hpp"
 
 #include <algorithm>
 #include <random>
@@ -413,7 +414,23 @@ class Fuzzer {
 }  // namespace
 
 FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, const FuzzOptions& o) {
-  if (entry.terms) return fuzz_embedded_rule(entry, seeds, o);
+  if (entry.terms) {
+    // A topological failure is first sought by the topological fuzzer,
+    // which enumerates small hosts and confirms not-representable results
+    // (the embedded one draws random hosts and only applies); the values
+    // are fuzzed when the topology gives no counterexample.
+    const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);
+    if (!static_failures(verdict).empty()) {
+      Operation topology = entry;
+      topology.terms.reset();
+      FuzzReport t = fuzz_rule(topology, seeds, o);
+      if (t.counterexample) {
+        for (const auto& name : failing_names(check_term_conditions(entry.rule, entry.words, *entry.terms))) t.static_failures.push_back(name);
+        return t;
+      }
+    }
+    return fuzz_embedded_rule(entry, seeds, o);
+  }
   FuzzReport out;
   out.rule = entry.rule.name();
   const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);

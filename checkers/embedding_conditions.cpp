@@ -36,13 +36,35 @@ std::vector<NodeId> orbits(const TopoGraph& g, const std::vector<ConjWord>& word
 // variable y is read through an access or collect whose orbit contains
 // the label of an L loop on y with word w: the two copies' darts then lie
 // in one such orbit of G.
-bool copy_invariant(const Term& t, const ConjWord& w, const TopoGraph& L, const ArcWords& words, const RuleTerms& terms) {
-  auto moves_inside = [&](const std::string& y, const std::vector<Dim>& orbit) {
+// The variable a node term (x, x.alpha_i, ...) starts from.
+const std::string& root_variable(const Term& t) { return t.kind == Term::Kind::neighbour ? root_variable(t.args[0]) : t.name; }
+
+// An each term's dart variable ranges over a whole orbit, the same one
+// from every dart of it: what the body reads through it is the same at
+// every copy whenever the orbit is (`bound`: the dart variables in scope).
+//
+// A neighbour read y.alpha_c1...alpha_ck.pi is invariant too when the
+// loop's label l commutes with every c (both involutions, total, and
+// (l, c) exchangeable: alpha_l alpha_c is an involution, hence
+// alpha_l alpha_c = alpha_c alpha_l): the copy's neighbour is then
+// alpha_l of the first copy's, in the same <o>-orbit since l is in <o>.
+bool copy_invariant(const Term& t, const ConjWord& w, const TopoGraph& L, const ArcWords& words, const RuleTerms& terms, const Model& model,
+                    std::vector<std::string>& bound) {
+  auto is_bound = [&](const Term& node) { return std::find(bound.begin(), bound.end(), root_variable(node)) != bound.end(); };
+  auto commutes = [&](Dim l, Dim c) {
+    const auto total_involution = [&](Dim i) { return !model.is_oriented(i) && !has_dim(model.partial, i); };
+    const std::pair<Dim, Dim> p{std::min(l, c), std::max(l, c)};
+    return l != c && total_involution(l) && total_involution(c) &&
+           std::find(model.exchangeable.begin(), model.exchangeable.end(), p) != model.exchangeable.end();
+  };
+  auto moves_inside = [&](const std::string& y, const std::vector<Dim>& orbit, const std::vector<Dim>& chain = {}) {
     const auto v = L.find(y);
     if (!v) return false;
     for (ArcId e = 0; e < L.arc_count(); ++e) {
       const auto& a = L.arc(e);
-      if (a.source == *v && a.target == *v && arc_word(words.left, e) == w && in_orbit(orbit, a.label)) return true;
+      if (a.source == *v && a.target == *v && arc_word(words.left, e) == w && in_orbit(orbit, a.label) &&
+          std::all_of(chain.begin(), chain.end(), [&](Dim c) { return commutes(a.label, c); }))
+        return true;
     }
     return false;
   };
@@ -52,20 +74,37 @@ bool copy_invariant(const Term& t, const ConjWord& w, const TopoGraph& L, const 
       return true;
     case Term::Kind::access:
     case Term::Kind::collect: {
-      if (t.args[0].kind != Term::Kind::variable) return false;
+      if (is_bound(t.args[0])) return true;
       std::vector<Dim> orbit = t.orbit;
       if (t.kind == Term::Kind::access)
         for (const auto& e : terms.embeddings)
           if (e.name == t.name) orbit = e.orbit;
-      return moves_inside(t.args[0].name, orbit);
+      std::vector<Dim> chain;  // y.alpha_c1...alpha_ck, innermost first
+      const Term* node = &t.args[0];
+      for (; node->kind == Term::Kind::neighbour; node = &node->args[0]) chain.push_back(node->dim);
+      if (node->kind != Term::Kind::variable) return false;
+      return moves_inside(node->name, orbit, chain);
+    }
+    case Term::Kind::each: {
+      if (!is_bound(t.args[0]) && (t.args[0].kind != Term::Kind::variable || !moves_inside(t.args[0].name, t.orbit))) return false;
+      bound.push_back(t.name);
+      const bool body = copy_invariant(t.args[1], w, L, words, terms, model, bound);
+      bound.pop_back();
+      return body;
     }
     case Term::Kind::variable:
     case Term::Kind::neighbour:
       return false;
     case Term::Kind::call:
+    case Term::Kind::list:
       break;
   }
-  return std::all_of(t.args.begin(), t.args.end(), [&](const Term& a) { return copy_invariant(a, w, L, words, terms); });
+  return std::all_of(t.args.begin(), t.args.end(), [&](const Term& a) { return copy_invariant(a, w, L, words, terms, model, bound); });
+}
+
+bool copy_invariant(const Term& t, const ConjWord& w, const TopoGraph& L, const ArcWords& words, const RuleTerms& terms, const Model& model) {
+  std::vector<std::string> bound;
+  return copy_invariant(t, w, L, words, terms, model, bound);
 }
 
 std::string list(const TopoGraph& g, const std::vector<NodeId>& nodes) {
@@ -136,7 +175,7 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
           if (w.empty()) continue;
           for (NodeId v : nodes) {
             const Term* t = label_of(v);
-            if (t && !copy_invariant(*t, w, L, words, terms)) {
+            if (t && !copy_invariant(*t, w, L, words, terms, rule.model())) {
               a.holds = false;
               a.witnesses.push_back({0,
                                      side,

@@ -47,7 +47,14 @@ struct Grouping {
 std::optional<std::string> terms_not_compilable(const Operation& op) {
   if (!op.terms) return std::nullopt;
   std::optional<std::string> why;
+  // Jerboa's loops and lists (each, [..]) are evaluated by the interpreter
+  // only: the generator has no code for them yet.
+  auto loops = [](const Term& t, const auto& self) -> bool {
+    return t.kind == Term::Kind::each || t.kind == Term::Kind::list || std::any_of(t.args.begin(), t.args.end(), [&](const Term& a) { return self(a, self); });
+  };
   auto check = [&](const NodeTerm& t) {
+    if (!why && loops(t.term, loops))
+      why = fmt::format("its term {} has a loop over an orbit or a list (each, [...]), which the compiler does not generate yet", t.term.str());
     for_each_call(t.term, [&](const Term& c) {
       if (!why && (!c.function || c.function->cpp.empty()))
         why = fmt::format("its term {} calls {}, a function with no C++ text (not one of the built-in algebra's)", t.term.str(), c.name);
@@ -217,6 +224,8 @@ struct TermCode::Plan {
       }
       case Term::Kind::variable:
       case Term::Kind::neighbour:
+      case Term::Kind::each:  // refused by terms_not_compilable
+      case Term::Kind::list:
         break;
     }
     fmt::format_to(std::back_inserter(code), "    const Value {} = (throw EvaluationError({}), Value{{}});\n", v,
@@ -540,7 +549,7 @@ void TermCode::after_rewrite(Out out, bool everywhere) const {
       // Every node of R has one arc of each dimension of <o>: a class is a
       // whole orbit of H, written without a walk.
       fmt::format_to(out,
-                     "    const std::vector<std::uint32_t>& cls = tw.class_of[{0}];\n"
+                     "    [[maybe_unused]] const std::vector<std::uint32_t>& cls = tw.class_of[{0}];  // unused when R is empty\n"
                      "    std::vector<std::uint32_t>& pool = tw.pool_of;\n"
                      "    pool.assign(tw.class_count[{0}], Embedding::none);\n"
                      "    reserve_more(e.pool, tw.class_count[{0}]);\n"

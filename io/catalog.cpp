@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/limits.hpp"
+#include "io/jerboa_expression.hpp"
 #include "io/jerboa_modeler.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 #include "io/map_io.hpp"
@@ -315,7 +316,14 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
         const auto ebd = yaml::as_string(file, e.first, "embedding name");
         if (std::none_of(c.embeddings.begin(), c.embeddings.end(), [&](const EmbeddingDecl& d) { return d.name == ebd; }))
           fail_at(file, e.first, fmt::format("expressions: no embedding named '{}' under 'embeddings'", ebd));
-        cr.expressions.push_back({node, ebd, yaml::as_string(file, e.second, "expression"), where(file, e.second)});
+        // The code of a modeler's export: read when the rule's labels carry
+        // its term (the export writes both), opaque otherwise.
+        NodeExpression x{node, ebd, yaml::as_string(file, e.second, "expression"), where(file, e.second), std::nullopt, {}, where(file, e.second)};
+        if (const Term* t = cr.terms ? cr.terms->find('R', node, ebd) : nullptr)
+          x.term = *t;
+        else
+          x.reason = "kept as code in a YAML catalog without its term (labels): dartcheck reads Jerboa's Java from a .jme";
+        cr.expressions.push_back(std::move(x));
       }
     }
   }
@@ -377,7 +385,8 @@ static Catalog read_yaml_catalog(const std::string& file) {
       } catch (const std::invalid_argument& x) {
         fail_at(file, orbit, fmt::format("embedding '{}': {}", d.name, x.what()));
       }
-      if (const auto t = type_by_name(d.type)) c.signatures.push_back({d.name, *t, d.orbit});
+      // A Jerboa class (a modeler's export) has the reading the .jme gives it.
+      if (const auto t = jerboa_value_type(d.type) ? jerboa_value_type(d.type) : type_by_name(d.type)) c.signatures.push_back({d.name, *t, d.orbit});
       c.embeddings.push_back(std::move(d));
     }
   }

@@ -53,6 +53,60 @@ void side(YAML::Emitter& y, const TopoGraph& g, const std::vector<ConjWord>& wor
 
 }  // namespace
 
+namespace {
+
+// A value as a closed term the term parser reads back to the same value.
+std::string value_term(const Value& v) {
+  switch (v.type) {
+    case ValueType::real: {
+      std::string x = fmt::format("{}", v.x[0]);
+      if (x.find_first_of(".eEn") == std::string::npos) x += ".0";  // a real, not an integer
+      return x;
+    }
+    case ValueType::point2:
+    case ValueType::vector2:
+      return fmt::format("{}({}, {})", type_name(v.type), value_term(Value::real(v.x[0])), value_term(Value::real(v.x[1])));
+    case ValueType::point3:
+    case ValueType::vector3:
+    case ValueType::color:
+      return fmt::format("{}({}, {}, {})", type_name(v.type), value_term(Value::real(v.x[0])), value_term(Value::real(v.x[1])),
+                         value_term(Value::real(v.x[2])));
+    default:
+      return v.str();
+  }
+}
+
+// The terms of a Jerboa rule whose expressions were read (labels, its
+// parameters, extended instantiation), so that the export checks as the
+// .jme does; its expressions' Java stays beside them.
+void write_terms(YAML::Emitter& y, const RuleTerms& t) {
+  y << YAML::Key << "labels" << YAML::Value << YAML::BeginMap;
+  for (const char side : {'L', 'R'}) {
+    const auto& labels = side == 'L' ? t.left : t.right;
+    if (labels.empty()) continue;
+    y << YAML::Key << (side == 'L' ? "left" : "right") << YAML::Value << YAML::BeginMap;
+    std::vector<std::string> nodes;
+    for (const auto& x : labels)
+      if (std::find(nodes.begin(), nodes.end(), x.node) == nodes.end()) nodes.push_back(x.node);
+    for (const auto& n : nodes) {
+      y << YAML::Key << n << YAML::Value << YAML::Flow << YAML::BeginMap;
+      for (const auto& x : labels)
+        if (x.node == n) y << YAML::Key << x.embedding << YAML::Value << YAML::DoubleQuoted << x.term.str();
+      y << YAML::EndMap;
+    }
+    y << YAML::EndMap;
+  }
+  y << YAML::EndMap;
+  if (!t.parameters.empty()) {
+    y << YAML::Key << "parameters" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    for (const auto& [name, v] : t.parameters) y << YAML::Key << name << YAML::Value << YAML::DoubleQuoted << value_term(v);
+    y << YAML::EndMap;
+  }
+  y << YAML::Key << "instantiation" << YAML::Value << (t.instantiation == Instantiation::extended ? "extended" : "direct");
+}
+
+}  // namespace
+
 std::string catalog_yaml(const Catalog& c, const std::string& description) {
   YAML::Emitter y;
   y << YAML::BeginMap;
@@ -153,6 +207,7 @@ std::string catalog_yaml(const Catalog& c, const std::string& description) {
       }
       y << YAML::EndMap;
     }
+    if (r.terms && !r.expressions.empty()) write_terms(y, *r.terms);
     if (!r.examples.empty()) {
       y << YAML::Key << "examples" << YAML::Value << YAML::BeginSeq;
       for (const auto& e : r.examples) {

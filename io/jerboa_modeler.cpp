@@ -11,6 +11,7 @@
 
 #include "core/input_error.hpp"
 #include "io/input_file.hpp"
+#include "io/jerboa_expression.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 
 namespace dartcheck {
@@ -152,6 +153,117 @@ std::string unrepresentable(const pugi::xml_node& rule) {
   return {};
 }
 
+// The file offset of position k of an element's text as pugixml decodes
+// it (entities such as &lt; one character, CR LF one newline).
+std::ptrdiff_t text_offset(const std::string& raw, const pugi::xml_node& e, std::size_t k) {
+  const pugi::xml_node text = e.first_child();
+  if (!text || text.offset_debug() < 0) return e.offset_debug();
+  auto r = static_cast<std::size_t>(text.offset_debug());
+  for (std::size_t d = 0; d < k && r < raw.size(); ++d) {
+    if (raw[r] == '&') {
+      const auto semi = raw.find(';', r);
+      r = semi == std::string::npos ? r + 1 : semi + 1;
+    } else {
+      r += raw.compare(r, 2, "\r\n") == 0 ? 2 : 1;
+    }
+  }
+  return static_cast<std::ptrdiff_t>(r);
+}
+
+// What every rule's expressions may read: the modeler's typed embeddings.
+struct ModelerScope {
+  std::vector<EmbeddingSignature> typed;  // embeddings whose Java class dartcheck reads
+  std::vector<std::string> untyped;       // "norm (fr.Foo)": the others
+};
+
+// The rule's parameters (<paramsebd>): values from their text, Java's
+// default when empty (said as a caveat), opaque when not read.
+void read_parameters(const pugi::xml_node& rule, JerboaScope& scope, std::vector<std::string>& caveats) {
+  for (const auto& e : rule.child("paramsebd").children("paramebd")) {
+    const std::string name = e.attribute("name").value(), type = e.attribute("type").value(), text = trimmed(e.child_value());
+    if (const auto v = jerboa_parameter_value(type, text)) {
+      scope.parameters[name] = *v;
+      if (text.empty())
+        caveats.push_back(fmt::format("parameter {} ({}) has no value in the .jme: expressions read Java's default, {}", name, type, v->str()));
+    } else {
+      scope.opaque_parameters.push_back(name);
+    }
+  }
+}
+
+// R's pi-orbits through explicit arcs labeled in <o> (Jerboa's implicit
+// arcs join copies of one node only), as a root per node.
+std::vector<std::size_t> explicit_orbits(const JmeSide& side, const std::vector<Dim>& orbit) {
+  std::vector<std::size_t> up(side.nodes.size());
+  for (std::size_t k = 0; k < up.size(); ++k) up[k] = k;
+  auto root = [&](std::size_t v) {
+    while (up[v] != v) v = up[v] = up[up[v]];
+    return v;
+  };
+  auto index = [&](const std::string& n) {
+    for (std::size_t k = 0; k < side.nodes.size(); ++k)
+      if (side.nodes[k].name == n) return k;
+    return std::size_t{0};
+  };
+  for (const auto& [d, a, b] : side.arcs)
+    if (std::find(orbit.begin(), orbit.end(), d) != orbit.end()) {
+      const std::size_t x = root(index(a)), y = root(index(b));
+      up[std::max(x, y)] = std::min(x, y);
+    }
+  for (std::size_t k = 0; k < up.size(); ++k) up[k] = root(k);
+  return up;
+}
+
+// A read rule's terms (003 Sec. 6.3, extended instantiation, as Jerboa
+// applies a scheme): every node of L reads its orbit's value (x.pi); a node
+// of R carries its expression's term; a preserved node without one keeps
+// its value (x.pi) unless an expression of its R pi-orbit gives the
+// orbit's new value (Jerboa propagates it, 003 Def. 12); an added node
+// without one is unlabeled, and takes its orbit's value by propagation.
+RuleTerms jerboa_terms(const JmeSide& left, const JmeSide& right, const std::vector<NodeExpression>& expressions, const JerboaScope& scope) {
+  RuleTerms t;
+  t.embeddings = scope.embeddings;
+  t.parameters = scope.parameters;
+  t.instantiation = Instantiation::extended;
+  TermScope ts{scope.model, &scope.embeddings, scope.nodes, scope.parameters, nullptr};
+  auto own = [&](const std::string& node, const std::string& pi) {
+    Term x;
+    x.kind = Term::Kind::variable;
+    x.name = node;
+    Term a;
+    a.kind = Term::Kind::access;
+    a.name = pi;
+    a.args.push_back(std::move(x));
+    check_term(a, ts);
+    return a;
+  };
+  for (const auto& e : scope.embeddings) {
+    // The nodes of one pi-orbit of L hold one value: each reads it at the
+    // orbit's first node (as 003's Fig. 25a labels e and f with e.col).
+    const auto left_orbit = explicit_orbits(left, e.orbit);
+    auto value_of = [&](const std::string& n) {
+      for (std::size_t k = 0; k < left.nodes.size(); ++k)
+        if (left.nodes[k].name == n) return own(left.nodes[left_orbit[k]].name, e.name);
+      return own(n, e.name);
+    };
+    for (const auto& n : left.nodes) t.left.push_back({n.name, e.name, value_of(n.name), {}, 0, 0});
+    const auto orbit = explicit_orbits(right, e.orbit);
+    std::vector<char> computed(right.nodes.size());
+    for (std::size_t k = 0; k < right.nodes.size(); ++k)
+      for (const auto& x : expressions)
+        if (x.embedding == e.name && x.node == right.nodes[k].name) computed[orbit[k]] = 1;
+    for (std::size_t k = 0; k < right.nodes.size(); ++k) {
+      const std::string& n = right.nodes[k].name;
+      const auto x = std::find_if(expressions.begin(), expressions.end(), [&](const NodeExpression& y) { return y.embedding == e.name && y.node == n; });
+      if (x != expressions.end())
+        t.right.push_back({n, e.name, *x->term, x->location.file, x->location.line, x->location.column});
+      else if (left.find(n) && !computed[orbit[k]])
+        t.right.push_back({n, e.name, value_of(n), {}, 0, 0});
+    }
+  }
+  return t;
+}
+
 std::vector<std::string> caveats_of(const pugi::xml_node& rule) {
   std::vector<std::string> out;
   if (!trimmed(rule.child_value("precondition")).empty())
@@ -159,14 +271,11 @@ std::vector<std::string> caveats_of(const pugi::xml_node& rule) {
   for (const char* code : {"preprocess", "midprocess", "postprocess"})
     if (!trimmed(rule.child_value(code)).empty())
       out.push_back(fmt::format("<{}> code ignored (Java code, not evaluated): it may change the map outside the rule", code));
-  std::vector<std::string> params;
-  for (const auto& e : rule.child("paramsebd").children("paramebd"))
-    params.push_back(fmt::format("{} ({})", e.attribute("name").value(), e.attribute("type").value()));
-  if (!params.empty()) out.push_back(fmt::format("embedding parameters {} kept opaque: they only feed expressions", fmt::join(params, ", ")));
   return out;
 }
 
-void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Model& model, int dimension) {
+void read_rule(Catalog& c, const Positions& p, const std::string& raw, const ModelerScope& ms, const pugi::xml_node& r, const Model& model,
+               int dimension) {
   const std::string name = r.attribute("name").value();
   if (name.empty()) p.fail(r, "a rule without a name");
   if (c.find_rule(name) || std::any_of(c.skipped.begin(), c.skipped.end(), [&](const SkippedRule& s) { return s.name == name; }))
@@ -247,19 +356,46 @@ void read_rule(Catalog& c, const Positions& p, const pugi::xml_node& r, const Mo
                  at,
                  std::nullopt,
                  {}};
+  JerboaScope scope{&cr.rule.model(), ms.typed, {}, {}, {}};
+  for (const auto& n : left.nodes) scope.nodes.push_back(n.name);
+  read_parameters(r, scope, cr.caveats);
   for (const auto* side : {&left, &right})
     for (const auto& n : side->nodes)
       for (const auto& e : n.xml.children("expr")) {
         const std::string ebd = e.attribute("ebd").value();
-        if (std::none_of(c.embeddings.begin(), c.embeddings.end(), [&](const EmbeddingDecl& d) { return d.name == ebd; }))
+        const auto decl = std::find_if(c.embeddings.begin(), c.embeddings.end(), [&](const EmbeddingDecl& d) { return d.name == ebd; });
+        if (decl == c.embeddings.end())
           p.fail(e, fmt::format("node '{}': <expr ebd=\"{}\">, but the modeler declares no embedding '{}'", n.name, ebd, ebd));
         if (side == &left) {
           cr.caveats.push_back(
               fmt::format("expression for {} on node '{}' of the left side ignored (Jerboa reads embeddings on the left)", ebd, n.name));
           continue;
         }
-        cr.expressions.push_back({n.name, ebd, trimmed(e.child_value()), p.at(e)});
+        const std::string code = e.child_value();
+        const auto first = code.find_first_not_of(" \t\r\n");
+        const std::size_t lead = first == std::string::npos ? 0 : first;
+        NodeExpression x{n.name, ebd, trimmed(code), p.at(e), std::nullopt, {}, {}};
+        const auto sig = std::find_if(ms.typed.begin(), ms.typed.end(), [&](const EmbeddingSignature& t) { return t.name == ebd; });
+        if (sig == ms.typed.end()) {
+          x.reason = fmt::format("the embedding {} has the Java class {}, whose values dartcheck does not read", ebd, decl->type);
+          x.reason_location = x.location;
+        } else {
+          try {
+            ReadExpression read = read_jerboa_expression(x.code, scope, sig->type);
+            x.term = std::move(read.term);
+            x.reason = std::move(read.reason);
+            x.reason_location = p.at(text_offset(raw, e, lead + read.offset));
+          } catch (const JerboaCodeError& err) {
+            const auto w = p.at(text_offset(raw, e, lead + err.offset()));
+            throw InputError(w.file, w.line, w.column, fmt::format("rule '{}', node '{}', expression for {}: {}", name, n.name, ebd, err.what()));
+          }
+        }
+        cr.expressions.push_back(std::move(x));
       }
+  // A rule whose every expression is read, on a modeler whose every
+  // embedding is typed, is checked, applied and compiled with its terms.
+  const bool all_read = std::all_of(cr.expressions.begin(), cr.expressions.end(), [](const NodeExpression& x) { return x.read(); });
+  if (all_read && ms.untyped.empty() && !ms.typed.empty()) cr.terms = jerboa_terms(left, right, cr.expressions, scope);
   c.rules.push_back(std::move(cr));
 }
 
@@ -293,10 +429,17 @@ Catalog read_jme(const std::string& file) {
     }
     c.embeddings.push_back(std::move(d));
   }
+  ModelerScope ms;
+  for (const auto& d : c.embeddings) {
+    if (const auto t = jerboa_value_type(d.type))
+      ms.typed.push_back({d.name, *t, d.orbit});
+    else
+      ms.untyped.push_back(fmt::format("{} ({})", d.name, d.type));
+  }
   for (const auto& r : modeler.child("rules").children()) {
     const std::string tag = r.name();
     if (tag == "rule") {
-      read_rule(c, p, r, model, dimension);
+      read_rule(c, p, text, ms, r, model, dimension);
     } else if (tag == "script") {
       c.skipped.push_back({r.attribute("name").value(), "a script (Java code calling rules), not a rule: not checked", p.at(r)});
     } else {

@@ -132,6 +132,23 @@ Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& repl
               {"not_compared", p.count(proofs::Agreement::not_compared)}};
 }
 
+// A Jerboa rule's expressions: the Java, and the term it was read as or
+// why it is opaque (docs/jerboa-expressions.md).
+Json expressions_json(const std::vector<NodeExpression>& expressions) {
+  Json out = Json::array();
+  for (const auto& x : expressions) {
+    Json j{{"node", x.node}, {"embedding", x.embedding}, {"source", x.code}, {"location", location_json(x.location)}, {"status", x.read() ? "read" : "opaque"}};
+    if (x.read())
+      j["term"] = x.term->str();
+    else {
+      j["reason"] = x.reason;
+      j["reason_location"] = location_json(x.reason_location);
+    }
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
 Json rule_result_json(const RuleResult& r) {
   const CatalogRule& e = *r.entry;
   Json conditions = Json::array();
@@ -149,6 +166,7 @@ Json rule_result_json(const RuleResult& r) {
          {"verdict", r.verdict_text()},
          {"conditions", std::move(conditions)},
          {"embedding_checks", std::move(embedding)},
+         {"embedding_expressions", expressions_json(e.expressions)},
          {"caveats", e.caveats},
          {"static_ms", r.static_ms}};
   j["recorded"] = Json{{"source", r.record_source_name()},

@@ -300,6 +300,8 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
     if (!r.matches_record())
       out += paint(row_note(indent, fmt::format("differs from the {}: see stderr", r.record_source_name())), Tone::error, colour);
     for (const auto& caveat : r.entry->caveats) out += row_note(indent, "note: " + printable(caveat));
+    for (const auto& x : r.entry->expressions)
+      if (!x.read()) out += row_note(indent, printable(fmt::format("opaque: {}.{}: {} ({})", x.node, x.embedding, x.reason, x.reason_location.str())));
     if (r.host_search || r.scheme_search) out += row_note(indent, r.confirmation_text());
     if (o.explain && !r.failures.empty()) {
       for (const auto& cond : v.conditions) {
@@ -324,12 +326,17 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
   if (whole_catalog)
     for (const auto& sk : catalog.skipped)
       out += printable(fmt::format("{}  not checked ({}): {}", padded(sk.name, t.name), sk.location.str(), sk.why)) + "\n";
+  // Jerboa's expressions: how many were read as terms (docs/jerboa-expressions.md).
+  std::size_t read = 0, opaque = 0;
+  for (const auto& r : catalog.rules)
+    for (const auto& x : r.expressions) ++(x.read() ? read : opaque);
   if (t.embedded) {
     out += '\n';
-    out += row_note(
-        0, fmt::format("embeddings: {}{}", sufficiency_note,
-                       catalog.signatures.size() == catalog.embeddings.size() ? "" : "; Jerboa expressions are compared as text, never evaluated"));
+    out += row_note(0, fmt::format("embeddings: {}{}", sufficiency_note,
+                                   opaque ? "; a rule with an opaque expression gets Jerboa's presence checks, its expressions compared as text" : ""));
   }
+  if (read + opaque)
+    out += fmt::format("\n{}: {} expressions read, {} opaque\n", catalog.modeler.empty() ? catalog.file : catalog.modeler, read, opaque);
   const auto counts = count_results(results);
   const std::size_t mismatches = counts.mismatches + baseline_mismatches;
   const std::string_view source = results.empty() ? "catalog" : results.front().record_source_name();

@@ -83,5 +83,39 @@ inline Value integer_sum(std::span<const Value> m) {
 }
 inline Value count(std::span<const Value> m) { return Value::integer(static_cast<std::int64_t>(m.size())); }
 
+// Jerboa's Vec3 arithmetic (docs/jerboa-expressions.md), coordinate by
+// coordinate with Java's operations in Java's order, in double precision
+// (Jerboa's Vec3 rounds each result to float).
+
+/// p + q (Vec3.addn(Vec3)).
+inline Value plus(ValueType t, const Value& p, const Value& q) { return Value::coords(t, {p.x[0] + q.x[0], p.x[1] + q.x[1], p.x[2] + q.x[2]}); }
+/// p + (dx, dy, dz) (Vec3.addn(dx, dy, dz)).
+inline Value shifted(ValueType t, const Value& p, const Value& dx, const Value& dy, const Value& dz) {
+  return Value::coords(t, {p.x[0] + dx.x[0], p.x[1] + dy.x[0], p.x[2] + dz.x[0]});
+}
+/// p * k (Vec3.mul(k)).
+inline Value scaled(ValueType t, const Value& p, const Value& k) { return Value::coords(t, {p.x[0] * k.x[0], p.x[1] * k.x[0], p.x[2] * k.x[0]}); }
+/// p / k (Vec3.div(k)): a division, not a product by 1/k.
+inline Value divided(ValueType t, const Value& p, const Value& k) { return Value::coords(t, {p.x[0] / k.x[0], p.x[1] / k.x[0], p.x[2] / k.x[0]}); }
+/// (a + b) / 2 (Vec3.mid).
+inline Value mid(ValueType t, const Value& a, const Value& b) {
+  return Value::coords(t, {(a.x[0] + b.x[0]) / 2, (a.x[1] + b.x[1]) / 2, (a.x[2] + b.x[2]) / 2});
+}
+/// a + (b - a) * w (Vec3.segmentABByWeight).
+inline Value segment(ValueType t, const Value& a, const Value& b, const Value& w) {
+  std::array<double, 3> c{};
+  for (std::size_t k = 0; k < 3; ++k) c[k] = a.x[k] + (b.x[k] - a.x[k]) * w.x[0];
+  return Value::coords(t, c);
+}
+/// The coordinate sum of a multiset (a loop accumulating with addn).
+inline Value coordinate_sum(ValueType t, std::span<const Value> m) {
+  std::array<double, 3> c{};
+  for (const Value& v : m)
+    for (std::size_t k = 0; k < 3; ++k) c[k] += v.x[k];
+  return Value::coords(t, c);
+}
+/// Coordinate k of p (Vec3.x(), .y(), .z()).
+inline Value coordinate(const Value& p, std::size_t k) { return Value::real(p.x[k]); }
+
 }  // namespace algebra
 }  // namespace dartcheck

@@ -24,11 +24,16 @@ struct EmbeddingDecl {
 };
 
 /// An embedding expression carried by a node of R (Jerboa's
-/// <expr ebd="pos">code</expr>): opaque code, never evaluated; what matters
-/// to the presence checks is that it is there.
+/// <expr ebd="pos">code</expr>), as io/jerboa_expression reads it: a term
+/// when its Java lies in the part dartcheck reads, opaque otherwise (the
+/// reason, and where in the file). The presence checks only need it there.
 struct NodeExpression {
   std::string node, embedding, code;
   SourceLocation location;
+  std::optional<Term> term;  // read
+  std::string reason;        // opaque: why
+  SourceLocation reason_location;
+  bool read() const { return term.has_value(); }
 };
 
 /// A rule or rule scheme and everything the engines need to apply and

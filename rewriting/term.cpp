@@ -5,6 +5,7 @@
 #include <charconv>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/input_error.hpp"
 #include "core/limits.hpp"
@@ -56,7 +57,7 @@ class Lexer {
       if (k_ == s_.size()) throw TermError(start, "unterminated string");
       ++k_;
       tok_ = {Token::string, s_.substr(start + 1, k_ - start - 2), start};
-    } else if (std::string_view("+-*/().,<>").find(c) != std::string_view::npos) {
+    } else if (std::string_view("+-*/().,<>[]:").find(c) != std::string_view::npos) {
       ++k_;
       tok_ = {Token::punct, std::string(1, c), start};
     } else {
@@ -207,12 +208,26 @@ class Parser {
           expect(")", "to close '('");
           return inner;
         }
+        if (t.text == "[") {
+          r.kind = Term::Kind::list;
+          std::size_t d = 0;
+          do {
+            if (!r.args.empty()) lex_.take();  // ','
+            r.args.push_back(sum());
+            d = std::max(d, depth_);
+          } while (lex_.at(","));
+          expect("]", "to close the list");
+          depth_ = d + 1;
+          deeper(depth_, t.offset);
+          return r;
+        }
         throw TermError(t.offset, fmt::format("expected a term, found {}", describe(t)));
       case Token::end:
         throw TermError(t.offset, "expected a term, found the end of the term");
       case Token::name:
         break;
     }
+    if (t.text == "each" && lex_.at("(")) return each(t);
     if (t.text == "true" || t.text == "false") {
       r.kind = Term::Kind::literal;
       r.literal = Value::boolean(t.text == "true");
@@ -242,28 +257,64 @@ class Parser {
     r.name = t.text;
     return r;
   }
-  // pi<o'>(x) or pi_<o'>(x): dimensions separated by ',' or spaces.
+  // '<' dims '>': dimensions separated by ',' or spaces, sorted, without
+  // repeats; `what` names the operator in messages.
+  std::vector<Dim> dims(const std::string& what) {
+    expect("<", fmt::format("to open the orbit type of {}", what).c_str());
+    std::vector<Dim> out;
+    while (!lex_.at(">")) {
+      const Token d = lex_.take();
+      if (d.kind != Token::number || d.text.find('.') != std::string::npos)
+        throw TermError(d.offset, fmt::format("expected a dimension or '>' in the orbit type of {}, found {}", what, describe(d)));
+      int dim = -1;
+      const auto e = std::from_chars(d.text.data(), d.text.data() + d.text.size(), dim);
+      if (e.ec != std::errc{} || e.ptr != d.text.data() + d.text.size() || dim > max_dimension)
+        throw TermError(d.offset, fmt::format("'{}' in the orbit type of {} is not a dimension (0 to {})", d.text, what, max_dimension));
+      out.push_back(dim);
+      if (lex_.at(",")) lex_.take();
+    }
+    lex_.take();  // '>'
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+  // each(x in <o>(y): t) or each(x in <o>_<s>(y): t).
+  Term each(const Token& kw) {
+    lex_.take();  // '('
+    Term r;
+    r.kind = Term::Kind::each;
+    r.offset = kw.offset;
+    const Token x = lex_.take();
+    if (x.kind != Token::name) throw TermError(x.offset, fmt::format("expected the name of each's dart variable, found {}", describe(x)));
+    r.name = x.text;
+    const Token in = lex_.take();
+    if (in.kind != Token::name || in.text != "in") throw TermError(in.offset, fmt::format("expected 'in' after '{}', found {}", x.text, describe(in)));
+    r.orbit = dims("each");
+    if (lex_.peek().kind == Token::name && lex_.peek().text == "_") {
+      lex_.take();
+      r.per_sub = true;
+      r.sub_orbit = dims("each's sub-orbit");
+    }
+    expect("(", "after the orbit type of each");
+    r.args.push_back(sum());
+    std::size_t d = depth_;
+    expect(")", "to close each's start node");
+    expect(":", "before each's body");
+    r.args.push_back(sum());
+    d = std::max(d, depth_);
+    expect(")", "to close each");
+    depth_ = d + 1;
+    deeper(depth_, kw.offset);
+    return r;
+  }
+  // pi<o'>(x) or pi_<o'>(x).
   Term collect(const Token& name) {
-    lex_.take();  // '<'
     Term r;
     r.kind = Term::Kind::collect;
     r.offset = name.offset;
     r.name = name.text;
     if (r.name.size() > 1 && r.name.back() == '_') r.name.pop_back();
-    while (!lex_.at(">")) {
-      const Token d = lex_.take();
-      if (d.kind != Token::number || d.text.find('.') != std::string::npos)
-        throw TermError(d.offset, fmt::format("expected a dimension or '>' in the orbit type of '{}', found {}", r.name, describe(d)));
-      int dim = -1;
-      const auto e = std::from_chars(d.text.data(), d.text.data() + d.text.size(), dim);
-      if (e.ec != std::errc{} || e.ptr != d.text.data() + d.text.size() || dim > max_dimension)
-        throw TermError(d.offset, fmt::format("'{}' in the orbit type of '{}' is not a dimension (0 to {})", d.text, r.name, max_dimension));
-      r.orbit.push_back(dim);
-      if (lex_.at(",")) lex_.take();
-    }
-    lex_.take();  // '>'
-    std::sort(r.orbit.begin(), r.orbit.end());
-    r.orbit.erase(std::unique(r.orbit.begin(), r.orbit.end()), r.orbit.end());
+    r.orbit = dims(fmt::format("'{}'", r.name));
     expect("(", fmt::format("after the orbit type of the collect operator '{}'", r.name).c_str());
     r.args.push_back(sum());
     expect(")", "to close the collect operator");
@@ -284,10 +335,20 @@ int precedence(const Term& t) {
   return 4;
 }
 
-void collect_variables(const Term& t, std::vector<std::string>& out) {
-  if (t.kind == Term::Kind::variable) out.push_back(t.name);
-  for (const Term& a : t.args) collect_variables(a, out);
+// The free node variables of t: each's dart variable is bound in its body.
+void collect_variables(const Term& t, std::vector<std::string>& out, std::vector<std::string>& bound) {
+  if (t.kind == Term::Kind::variable && std::find(bound.begin(), bound.end(), t.name) == bound.end()) out.push_back(t.name);
+  if (t.kind == Term::Kind::each) {
+    collect_variables(t.args[0], out, bound);
+    bound.push_back(t.name);
+    collect_variables(t.args[1], out, bound);
+    bound.pop_back();
+    return;
+  }
+  for (const Term& a : t.args) collect_variables(a, out, bound);
 }
+
+std::string dims_str(const std::vector<Dim>& o) { return fmt::format("{}", fmt::join(o, ",")); }
 
 }  // namespace
 
@@ -309,10 +370,15 @@ std::string Term::str() const {
       return fmt::format("{}.{}", sub(args[0], 4), name);
     case Kind::neighbour:
       return fmt::format("{}.alpha{}", sub(args[0], 4), dim);
-    case Kind::collect: {
-      std::string o;
-      for (std::size_t k = 0; k < orbit.size(); ++k) o += (k ? "," : "") + std::to_string(orbit[k]);
-      return fmt::format("{}<{}>({})", name, o, args[0].str());
+    case Kind::collect:
+      return fmt::format("{}<{}>({})", name, dims_str(orbit), args[0].str());
+    case Kind::each:
+      return fmt::format("each({} in <{}>{}({}): {})", name, dims_str(orbit), per_sub ? fmt::format("_<{}>", dims_str(sub_orbit)) : "", args[0].str(),
+                         args[1].str());
+    case Kind::list: {
+      std::vector<std::string> parts;
+      for (const Term& a : args) parts.push_back(a.str());
+      return fmt::format("[{}]", fmt::join(parts, ", "));
     }
     case Kind::call:
       break;
@@ -332,7 +398,8 @@ bool Term::same(const Term& o) const {
   // Conversions inserted by the checker are invisible.
   if (implicit) return args[0].same(o);
   if (o.implicit) return same(o.args[0]);
-  if (kind != o.kind || name != o.name || dim != o.dim || orbit != o.orbit || args.size() != o.args.size()) return false;
+  if (kind != o.kind || name != o.name || dim != o.dim || orbit != o.orbit || per_sub != o.per_sub || sub_orbit != o.sub_orbit || args.size() != o.args.size())
+    return false;
   if (kind == Kind::literal && !(literal == o.literal)) return false;
   for (std::size_t k = 0; k < args.size(); ++k)
     if (!args[k].same(o.args[k])) return false;
@@ -340,8 +407,8 @@ bool Term::same(const Term& o) const {
 }
 
 std::vector<std::string> Term::variables() const {
-  std::vector<std::string> r;
-  collect_variables(*this, r);
+  std::vector<std::string> r, bound;
+  collect_variables(*this, r, bound);
   std::sort(r.begin(), r.end());
   r.erase(std::unique(r.begin(), r.end()), r.end());
   return r;
@@ -409,6 +476,33 @@ Sort check_term(Term& t, const TermScope& scope) {
           throw TermError(t.offset, fmt::format("{}<...>: {} is not a dimension of the model {}", t.name, d, scope.model->name));
       expect_node(t.args[0], scope, t, fmt::format("the collect operator '{}'", t.name).c_str());
       return t.sort = Sort::bag(e->type);
+    }
+    case Term::Kind::each: {
+      for (const auto* o : {&t.orbit, &t.sub_orbit})
+        for (Dim d : *o)
+          if (scope.model && !scope.model->contains(d))
+            throw TermError(t.offset, fmt::format("each: {} is not a dimension of the model {}", d, scope.model->name));
+      expect_node(t.args[0], scope, t, "each");
+      if (std::find(scope.variables.begin(), scope.variables.end(), t.name) != scope.variables.end() || scope.parameters.count(t.name))
+        throw TermError(t.offset, fmt::format("each: the dart variable '{}' hides a node or parameter of that name", t.name));
+      TermScope inner = scope;
+      inner.variables.push_back(t.name);
+      const Sort body = check_term(t.args[1], inner);
+      if (body.kind != Sort::value) throw TermError(t.args[1].offset, fmt::format("each's body must be a value, '{}' is a {}", t.args[1].str(), body.str()));
+      return t.sort = Sort::bag(body.type);
+    }
+    case Term::Kind::list: {
+      std::optional<ValueType> type;
+      for (Term& a : t.args) {
+        const Sort s = check_term(a, scope);
+        if (s.kind == Sort::node) throw TermError(a.offset, fmt::format("a list holds values, '{}' is a node", a.str()));
+        if (type && s.type != *type)
+          throw TermError(a.offset, fmt::format("a list holds values of one type: '{}' is a {}, the list's first element a {}", a.str(), s.str(),
+                                                type_name(*type)));
+        type = s.type;
+      }
+      if (!type) throw TermError(t.offset, "an empty list has no type");
+      return t.sort = Sort::bag(*type);
     }
     case Term::Kind::call:
       break;

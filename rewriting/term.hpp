@@ -12,8 +12,22 @@
 //   postfix := primary ('.' name)*          name: alpha_i, alphai, or an embedding
 //   primary := number | "string" | true | false | '(' sum ')'
 //            | name '<' dims '>' '(' sum ')'   collect (also name_<dims>)
+//            | 'each' '(' name 'in' '<' dims '>' ['_' '<' dims '>'] '(' sum ')' ':' sum ')'
+//                                              dart comprehension
+//            | '[' sum (',' sum)* ']'          list (a multiset)
 //            | name '(' sum (',' sum)* ')'     function call
 //            | name                            node variable or parameter
+//
+// Two extensions of 003's terms serve Jerboa's expressions (docs/
+// jerboa-expressions.md says why Theorems 2 and 4 still hold):
+// - `each(x in <o>(y): t)` is the multiset of t with x bound to every dart
+//   of the <o>-orbit of y, and `each(x in <o>_<s>(y): t)` the multiset of
+//   t once per <s>-orbit inside it (Jerboa's `<o>_<s>(y)`: one dart per
+//   sub-orbit; t must give one value on every dart of a sub-orbit, or the
+//   evaluation fails, since Jerboa's choice of dart is its traversal's);
+// - `[t1, ..., tk]` is the multiset of its elements, an element being a
+//   value or a multiset whose elements it adds (Jerboa's lists built with
+//   `add`).
 //
 // Two terms are equal when their trees are (003 Sec. 6.1: "embedding
 // labels of rule schemes will be compared via the strict syntactic
@@ -36,12 +50,16 @@ namespace dartcheck {
 struct Function;
 
 struct Term {
-  enum class Kind : std::uint8_t { variable, parameter, literal, access, neighbour, collect, call };
+  enum class Kind : std::uint8_t { variable, parameter, literal, access, neighbour, collect, call, each, list };
   Kind kind = Kind::literal;
-  std::string name;        // variable, parameter, embedding (access, collect) or function
+  std::string name;        // variable, parameter, embedding (access, collect), function, or each's bound variable
   Dim dim = 0;             // neighbour
-  std::vector<Dim> orbit;  // collect, ascending
-  std::vector<Term> args;  // access/neighbour/collect: the node term; call: the arguments
+  std::vector<Dim> orbit;  // collect, each: ascending
+  std::vector<Dim> sub_orbit;  // each with per_sub: the sub-orbit type, ascending
+  bool per_sub = false;    // each: one value per <sub>-orbit instead of per dart
+  /// access/neighbour/collect: the node term; call, list: the arguments;
+  /// each: the node term the orbit starts at, then the body.
+  std::vector<Term> args;
   Value literal;           // literal; a parameter's value once resolved
   std::size_t offset = 0;  // 0-based position in the source text
   bool implicit = false;   // a conversion the checker inserted (printed as its argument)

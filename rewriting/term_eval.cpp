@@ -1,8 +1,10 @@
 #include "rewriting/term_eval.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace dartcheck {
 
@@ -81,14 +83,53 @@ void TermEvaluator::emit(const Term& t, std::span<const std::string> names, Comp
       s.op = Op::call;
       s.target = static_cast<std::uint32_t>(t.args.size());
       break;
+    case Term::Kind::list:
+      for (const Term& a : t.args) emit(a, names, out);
+      s.op = Op::list;
+      s.first = static_cast<std::uint32_t>(t.args.size());
+      s.target = scratch_memo(t);
+      break;
+    case Term::Kind::each: {
+      s.op = Op::each;
+      s.first = static_cast<std::uint32_t>(out.links_.size());
+      if (!emit_node(t.args[0], names, out, s)) {
+        s.op = Op::fail;
+        s.target = static_cast<std::uint32_t>(out.failures_.size() - 1);
+        break;
+      }
+      s.last = static_cast<std::uint32_t>(out.links_.size());
+      std::vector<std::string> inner(names.begin(), names.end());
+      inner.push_back(t.name);
+      std::vector<Dim> sub;  // <s> ∩ <o>: the sub-orbits inside the orbit
+      for (Dim i : t.sub_orbit)
+        if (std::find(t.orbit.begin(), t.orbit.end(), i) != t.orbit.end()) sub.push_back(i);
+      CompiledTerm::Body b{std::make_unique<CompiledTerm>(), dims_generators(t.orbit), dims_generators(sub)};
+      // The body is compiled into its own program: it runs once per dart.
+      b.program->root_ = &t.args[1];
+      emit(t.args[1], inner, *b.program);
+      s.body = static_cast<std::uint32_t>(out.bodies_.size());
+      out.bodies_.push_back(std::move(b));
+      s.target = scratch_memo(t);
+      break;
+    }
   }
   out.steps_.push_back(s);
+}
+
+std::uint32_t TermEvaluator::scratch_memo(const Term& owner) {
+  for (std::size_t k = 0; k < memo_.size(); ++k)
+    if (memo_[k].owner == &owner) return static_cast<std::uint32_t>(k);
+  CollectMemo m{{}, static_cast<std::size_t>(-1), {}, {}, {}, {}, {}, {0}};
+  m.owner = &owner;
+  memo_.push_back(std::move(m));
+  return static_cast<std::uint32_t>(memo_.size() - 1);
 }
 
 void TermEvaluator::compile(const Term& t, std::span<const std::string> names, CompiledTerm& out) {
   out.steps_.clear();
   out.links_.clear();
   out.failures_.clear();
+  out.bodies_.clear();
   out.root_ = &t;
   emit(t, names, out);
 }
@@ -221,11 +262,63 @@ Dart TermEvaluator::node(const CompiledTerm& c, const CompiledTerm::Step& s, std
 }
 
 Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
-  using Op = CompiledTerm::Step::Op;
   stack_.clear();
-  // Without a memo, the multisets of the last call are no longer lent.
-  if (!memorise_)
-    for (CollectMemo& m : memo_) m.empty();
+  // Without a memo, the multisets of the last call are no longer lent;
+  // each and list bags are never memorised.
+  for (CollectMemo& m : memo_)
+    if (!memorise_ || m.embedding == static_cast<std::size_t>(-1)) m.empty();
+  return run(c, darts);
+}
+
+std::uint32_t TermEvaluator::each_bag(const CompiledTerm& c, const CompiledTerm::Step& s, std::span<const Dart> darts) {
+  const CompiledTerm::Body& b = c.bodies_[s.body];
+  const Term& t = *s.term;
+  // A copy: the body's collects walk with outer_ too.
+  const std::vector<Dart> orbit = [&] {
+    const auto o = outer_.orbit(node(c, s, darts), b.outer);
+    return std::vector<Dart>(o.begin(), o.end());
+  }();
+  outer_dart_ = no_dart;
+  std::vector<Dart> bound(darts.begin(), darts.end());
+  bound.push_back(no_dart);
+  std::vector<Value> values;
+  values.reserve(orbit.size());
+  for (Dart x : orbit) {
+    bound.back() = x;
+    values.push_back(run(*b.program, bound));
+  }
+  std::vector<Value> bag;
+  if (!t.per_sub) {
+    bag = std::move(values);
+  } else {
+    // One value per <s>-orbit: every dart of it must give the same one
+    // (Jerboa takes the dart its traversal meets first).
+    std::unordered_map<Dart, std::size_t> at;
+    for (std::size_t k = 0; k < orbit.size(); ++k) at.emplace(orbit[k], k);
+    std::vector<bool> seen(orbit.size());
+    for (std::size_t k = 0; k < orbit.size(); ++k) {
+      if (seen[k]) continue;
+      for (Dart z : inner_.orbit(orbit[k], b.sub)) {
+        const std::size_t j = at.at(z);
+        seen[j] = true;
+        if (!(values[j] == values[k]))
+          throw EvaluationError(fmt::format("{}: the body gives {} at dart {} and {} at dart {} of one <{}>-orbit: its value depends on the dart "
+                                            "Jerboa's traversal picks",
+                                            t.str(), values[k].str(), orbit[k], values[j].str(), z, fmt::join(t.sub_orbit, ",")));
+      }
+      bag.push_back(values[k]);
+    }
+  }
+  std::sort(bag.begin(), bag.end(), [](const Value& x, const Value& y) { return value_less(x, y); });
+  CollectMemo& m = memo_[s.target];
+  m.elements.insert(m.elements.end(), bag.begin(), bag.end());
+  m.start.push_back(static_cast<std::uint32_t>(m.elements.size()));
+  return static_cast<std::uint32_t>(m.start.size() - 2);
+}
+
+Value TermEvaluator::run(const CompiledTerm& c, std::span<const Dart> darts) {
+  using Op = CompiledTerm::Step::Op;
+  const std::size_t base = stack_.size();
   for (const CompiledTerm::Step& s : c.steps_) {
     switch (s.op) {
       case Op::literal:
@@ -246,9 +339,9 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
       case Op::call: {
         // Every argument is evaluated (and every collect memorised), so
         // the multisets can be lent by address for the call.
-        const std::size_t base = stack_.size() - s.target;
+        const std::size_t from = stack_.size() - s.target;
         args_.clear();
-        for (std::size_t k = base; k < stack_.size(); ++k) {
+        for (std::size_t k = from; k < stack_.size(); ++k) {
           const Entry& a = stack_[k];
           if (a.memo == DartTable::none)
             args_.emplace_back(a.value);
@@ -256,8 +349,34 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
             args_.emplace_back(memo_[a.memo].bag(a.bag));
         }
         const Value r = s.term->function->apply(args_);
-        stack_.resize(base);
+        stack_.resize(from);
         stack_.push_back({r});
+        break;
+      }
+      case Op::each: {
+        const std::uint32_t k = each_bag(c, s, darts);
+        stack_.push_back({{}, s.target, k});
+        break;
+      }
+      case Op::list: {
+        // The elements, values and bags alike, as one canonical bag.
+        const std::size_t from = stack_.size() - s.first;
+        std::vector<Value> bag;
+        for (std::size_t k = from; k < stack_.size(); ++k) {
+          const Entry& a = stack_[k];
+          if (a.memo == DartTable::none) {
+            bag.push_back(a.value);
+          } else {
+            const auto b = memo_[a.memo].bag(a.bag);
+            bag.insert(bag.end(), b.begin(), b.end());
+          }
+        }
+        std::sort(bag.begin(), bag.end(), [](const Value& x, const Value& y) { return value_less(x, y); });
+        CollectMemo& m = memo_[s.target];
+        m.elements.insert(m.elements.end(), bag.begin(), bag.end());
+        m.start.push_back(static_cast<std::uint32_t>(m.elements.size()));
+        stack_.resize(from);
+        stack_.push_back({{}, s.target, static_cast<std::uint32_t>(m.start.size() - 2)});
         break;
       }
       case Op::fail:
@@ -265,7 +384,9 @@ Value TermEvaluator::value(const CompiledTerm& c, std::span<const Dart> darts) {
     }
   }
   if (stack_.back().memo != DartTable::none) throw EvaluationError(fmt::format("'{}' is a multiset, not a value", c.root_->str()));
-  return stack_.back().value;
+  const Value r = stack_.back().value;
+  stack_.resize(base);
+  return r;
 }
 
 Value TermEvaluator::value(const Term& t, std::span<const std::string> names, std::span<const Dart> darts) {

@@ -6,6 +6,7 @@
 // being taken inside it (through the dimensions of <o> ∩ <o'>).
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -57,12 +58,18 @@ class CompiledTerm {
                             OrbitWalker& inner_walker, std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name,
                             const std::vector<Dim>& dims);
   struct Step {
-    enum class Op : std::uint8_t { literal, access, collect, call, fail };
+    enum class Op : std::uint8_t { literal, access, collect, call, each, list, fail };
     Op op = Op::literal;
     std::uint32_t slot = 0;             // access, collect: binding of the node variable
     std::uint32_t first = 0, last = 0;  // access, collect: links_[first, last) followed from it
-    std::uint32_t target = 0;           // embedding (access), memo (collect), argument count (call), message (fail)
+    std::uint32_t target = 0;           // embedding (access), memo (collect, each, list), argument count (call, list), message (fail)
+    std::uint32_t body = 0;             // each: its body in bodies_
     const Term* term = nullptr;         // the literal, the function, the text in messages
+  };
+  // An each term's body, compiled with its dart variable bound last.
+  struct Body {
+    std::unique_ptr<CompiledTerm> program;
+    std::vector<OrbitWord> outer, sub;  // generators of <o> and of <s> ∩ <o>
   };
   struct Link {
     Dim dim;
@@ -71,6 +78,7 @@ class CompiledTerm {
   std::vector<Step> steps_;
   std::vector<Link> links_;
   std::vector<std::string> failures_;
+  std::vector<Body> bodies_;
   const Term* root_ = nullptr;
 };
 
@@ -119,6 +127,7 @@ class TermEvaluator {
     // term that repeats a collect reads it once).
     Dart last_dart = no_dart;
     std::uint32_t last_bag = 0;
+    const Term* owner = nullptr;  // an each or list term's own bags (embedding: none)
     std::span<const Value> bag(std::uint32_t k) const { return {elements.data() + start[k], elements.data() + start[k + 1]}; }
     /// Drops the bags (the per-dart memo stays: forget() clears it).
     void empty() {
@@ -135,6 +144,13 @@ class TermEvaluator {
   };
 
   void emit(const Term& t, std::span<const std::string> names, CompiledTerm& out);
+  // Runs c on darts above the stack's current top; returns its value.
+  Value run(const CompiledTerm& c, std::span<const Dart> darts);
+  // The multiset of an each step: its body on every dart of the orbit (or
+  // once per sub-orbit), appended as a bag of memo s.target.
+  std::uint32_t each_bag(const CompiledTerm& c, const CompiledTerm::Step& s, std::span<const Dart> darts);
+  // A memo that only holds the bags of one each or list step.
+  std::uint32_t scratch_memo(const Term& owner);
   bool emit_node(const Term& t, std::span<const std::string> names, CompiledTerm& out, CompiledTerm::Step& s);
   Dart node(const CompiledTerm& c, const CompiledTerm::Step& s, std::span<const Dart> darts) const;
   const Embedding* embedding(const std::string& name, std::size_t* index = nullptr) const;

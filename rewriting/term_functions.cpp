@@ -69,6 +69,36 @@ FunctionRegistry make_builtin() {
     r.add(
         "length", {V}, real, [](auto a) { return length(val(a, 0)); }, cpp_call("length", "{0}"));
   }
+  // Jerboa's Vec3 methods (docs/jerboa-expressions.md): Vec3 is read as a
+  // point3 (a position) and its methods as coordinate arithmetic on points,
+  // vectors and colors alike, as Java computes them.
+  for (VT t : {VT::point3, VT::vector3, VT::color}) {
+    const Sort P = Sort::of(t);
+    const std::string tt = cpp_type(t);
+    r.add(
+        "addn", {P, P}, P, [t](auto a) { return plus(t, val(a, 0), val(a, 1)); }, cpp_call("plus", tt + ", {0}, {1}"));
+    r.add(
+        "addn", {P, real, real, real}, P, [t](auto a) { return shifted(t, val(a, 0), val(a, 1), val(a, 2), val(a, 3)); },
+        cpp_call("shifted", tt + ", {0}, {1}, {2}, {3}"));
+    r.add(
+        "mul", {P, real}, P, [t](auto a) { return scaled(t, val(a, 0), val(a, 1)); }, cpp_call("scaled", tt + ", {0}, {1}"));
+    r.add(
+        "div", {P, real}, P, [t](auto a) { return divided(t, val(a, 0), val(a, 1)); }, cpp_call("divided", tt + ", {0}, {1}"));
+    r.add(
+        "mid", {P, P}, P, [t](auto a) { return mid(t, val(a, 0), val(a, 1)); }, cpp_call("mid", tt + ", {0}, {1}"));
+    r.add(
+        "segment", {P, P, real}, P, [t](auto a) { return segment(t, val(a, 0), val(a, 1), val(a, 2)); },
+        cpp_call("segment", tt + ", {0}, {1}, {2}"));
+    r.add(
+        "barycenter", {Sort::bag(t)}, P, [t](auto a) { return average(t, bag(a, 0), "barycenter"); },
+        cpp_call("average", tt + ", {0}, \"barycenter\""));
+    r.add(
+        "sum", {Sort::bag(t)}, P, [t](auto a) { return coordinate_sum(t, bag(a, 0)); }, cpp_call("coordinate_sum", tt + ", {0}"));
+    for (std::size_t k = 0; k < 3; ++k)
+      r.add(
+          std::string(1, "xyz"[k]), {P}, real, [k](auto a) { return coordinate(val(a, 0), k); }, cpp_call("coordinate", fmt::format("{{0}}, {}", k)));
+  }
+
   // Colors: the average (003 Sec. 3.4 "mix : color x color -> color").
   const std::string tc = cpp_type(VT::color);
   r.add(

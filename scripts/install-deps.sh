@@ -5,6 +5,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  # Compiler output cached across builds and clones (CI time).
+  ccache
   libgtest-dev libgmock-dev librapidcheck-dev
   libz3-dev libfmt-dev libyaml-cpp-dev libcli11-dev libpugixml-dev
   libgraphviz-dev graphviz

@@ -160,11 +160,11 @@ TEST(Jme, EmbeddingPresenceChecks) {
   EXPECT_EQ(v[0].witnesses.at(0).nodes, (std::vector<std::string>{"n2", "n3"}));
   // Two different expressions in one orbit.
   CatalogRule two = *c.find_rule("InsertVertex");
-  two.expressions.push_back({"n3", "pos", "return n1.pos;", {}});
+  two.expressions.push_back({"n3", "pos", "return n1.pos;", {}, std::nullopt, {}, {}});
   EXPECT_EQ(check(two), (std::vector<std::string>{"one-value(pos)"}));
   // An expression on one node of the merged orbit settles SewA2.
   CatalogRule sewn = *c.find_rule("SewA2");
-  sewn.expressions.push_back({"n0", "pos", "return n0.pos;", {}});
+  sewn.expressions.push_back({"n0", "pos", "return n0.pos;", {}, std::nullopt, {}, {}});
   EXPECT_TRUE(check(sewn).empty());
 }
 
