@@ -1,5 +1,6 @@
 #include "reports/apply_output.hpp"
 
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "core/output_file.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_embedding.hpp"
+#include "io/jerboa_expression.hpp"
 #include "io/jerboa_jba.hpp"
 #include "io/kappa_file.hpp"
 #include "io/map_io.hpp"
@@ -31,11 +33,111 @@ namespace {
 // An embedded rule (003): the host's values come from the mesh file
 // (positions) or are drawn per orbit (seed 1); the rule's new values are
 // printed, and H is checked for validity and embedding consistency.
+// A value as a .jba file writes it: coordinates separated by spaces.
+std::string jba_value(const Value& v) {
+  switch (v.type) {
+    case ValueType::point2:
+    case ValueType::vector2:
+      return fmt::format("{} {}", v.x[0], v.x[1]);
+    case ValueType::point3:
+    case ValueType::vector3:
+    case ValueType::color:
+      return fmt::format("{} {} {}", v.x[0], v.x[1], v.x[2]);
+    case ValueType::real:
+      return fmt::format("{}", v.x[0]);
+    case ValueType::string:
+      return v.string();
+    default:
+      return v.str();
+  }
+}
+
+// A .jba host's embeddings, typed (a Jerboa class as the .jme reads it);
+// values that do not parse as their type are carried as text. An
+// embedding of the rule that the file names otherwise (cube.jba's
+// `point` for a modeler's `pos`) is the file's only one with its orbit
+// and value type; `file_name` says what to write it back as.
+struct JbaHost {
+  JbaFile file;
+  std::map<std::string, std::string> file_name;  // the host's embedding -> the file's, where they differ
+};
+
+JbaHost jba_host(const ApplyRequest& o, const RuleTerms& terms, EmbeddedMap& host) {
+  JbaHost j{read_jba(o.map), {}};
+  for (const MapEmbedding& m : j.file.embeddings) {
+    MapEmbedding typed = m;
+    if (const auto t = jerboa_value_type(m.type)) typed.type = std::string(type_name(*t));
+    std::string why;
+    std::optional<Embedding> e = typed_embedding(typed, &why);
+    if (!e) {
+      typed.type = "string";
+      e = typed_embedding(typed, &why);
+      fmt::print("values: {} carried as text ({})\n", m.name, why);
+    }
+    // A value type other than the rule's: kept out of the rule's way,
+    // carried to the darts H keeps, and written back.
+    const auto clash = std::find_if(terms.embeddings.begin(), terms.embeddings.end(), [&](const auto& x) { return x.name == m.name; });
+    if (clash != terms.embeddings.end() && clash->type != e->signature.type) {
+      e->signature.name = m.name + " (the file's)";
+      j.file_name[e->signature.name] = m.name;
+      fmt::print("values: the file's {} are not {} values: the rule computes its own {}, and the file's are kept on the darts H keeps\n", m.name,
+                 type_name(clash->type), m.name);
+    }
+    host.embeddings.push_back(std::move(*e));
+  }
+  for (const auto& sig : terms.embeddings) {
+    if (host.find(sig.name)) continue;
+    Embedding* only = nullptr;
+    int candidates = 0;
+    for (Embedding& e : host.embeddings)
+      if (e.signature.orbit == sig.orbit && e.signature.type == sig.type &&
+          std::none_of(terms.embeddings.begin(), terms.embeddings.end(), [&](const EmbeddingSignature& x) { return x.name == e.signature.name; })) {
+        only = &e;
+        ++candidates;
+      }
+    if (candidates != 1) continue;
+    j.file_name[sig.name] = only->signature.name;
+    fmt::print("values: {} read from the file's {} (the only embedding with its orbit <{}> and type {})\n", sig.name, only->signature.name,
+               fmt::join(sig.orbit, ","), type_name(sig.type));
+    only->signature.name = sig.name;
+  }
+  return j;
+}
+
+// The result as a .jba: the file's embeddings under their own names, with
+// the values H holds; embeddings the file did not have are not written.
+void write_jba_result(const ApplyRequest& o, const JbaHost& j, const EmbeddedMap& h) {
+  JbaFile out{j.file.name, h.map, {}, {}};
+  for (const MapEmbedding& m : j.file.embeddings) {
+    std::string ours = m.name;
+    for (const auto& [host_name, file_name] : j.file_name)
+      if (file_name == m.name) ours = host_name;
+    const Embedding* e = h.find(ours);
+    MapEmbedding w{m.name, m.type, m.orbit, std::vector<std::optional<std::string>>(h.map.size()), {}};
+    std::size_t labeled = 0;
+    for (Dart d = 0; d < h.map.size(); ++d)
+      if (const Value* v = e ? e->value(d) : nullptr) {
+        w.values[d] = jba_value(*v);
+        ++labeled;
+      }
+    fmt::print("embedding {}: {} of {} darts labeled\n", m.name, labeled, h.map.size());
+    out.embeddings.push_back(std::move(w));
+  }
+  std::ostringstream text;  // refused (not an n-G-map) before a file exists
+  write_jba(text, out, o.output);
+  write_file(o.output, text.str());
+  fmt::print("written: {}\n", o.output);
+}
+
 int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const RuleTerms& terms = *rule.terms;
   std::mt19937 rng(1);
   std::optional<EmbeddedMap> host;
-  if (is_mesh_path(o.map))
+  std::optional<JbaHost> jba;
+  if (o.map.ends_with(".jba")) {
+    host.emplace(std::move(map));
+    jba = jba_host(o, terms, *host);
+  } else if (is_mesh_path(o.map))
     for (const auto& e : terms.embeddings)
       if (!host && (e.type == ValueType::point2 || e.type == ValueType::point3)) {
         host = mesh_with_positions(rule.rule.model(), read_mesh(o.map), e);
@@ -47,7 +149,8 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     Embedding& added = host->embeddings[host->add_embedding(e)];
     const EmbeddedMap drawn = embed_randomly(host->map, {e}, rng);
     added = drawn.embeddings[0];
-    fmt::print("values: {} drawn at random, one per <{}>-orbit (seed 1)\n", e.name, fmt::join(e.orbit, ","));
+    fmt::print("values: {} drawn at random, one per <{}>-orbit (seed 1){}\n", e.name, fmt::join(e.orbit, ","),
+               jba ? ": the file has no such embedding, and -o .jba does not write it" : "");
   }
   auto result = apply_embedded(rule.rule, rule.words, terms, *host, o.hooks);
   if (!result.ok()) {
@@ -65,11 +168,24 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     const auto c = check_embedding(host->map, e, true);
     fmt::print("embedding {} <{}>: {} orbits, {}\n", e.signature.name, fmt::join(e.signature.orbit, ","), c.orbits,
                c.consistent() ? "consistent (every dart labeled, one value per orbit)" : fmt::format("{} inconsistent orbits", c.conflicts.size()));
+    // A file's embedding the modeler does not declare: the rule cannot
+    // give it values, so its new darts are reported but do not fail H.
+    const bool foreign = std::none_of(terms.embeddings.begin(), terms.embeddings.end(), [&](const auto& x) { return x.name == e.signature.name; });
+    if (foreign && !c.consistent()) {
+      fmt::print("  (not an embedding of the rule's modeler: its new darts get no value, and H is judged on the modeler's embeddings)\n");
+      continue;
+    }
     for (std::size_t k = 0; k < c.conflicts.size() && (o.limit == 0 || k < o.limit); ++k)
       fmt::print("  {}\n", c.conflicts[k].describe(e.signature.name, e.signature.orbit));
     consistent &= c.consistent();
   }
-  if (!o.output.empty() && is_mesh_path(o.output)) {
+  if (!o.output.empty() && o.output.ends_with(".jba")) {
+    if (!jba) jba = JbaHost{{"dartcheck", Map(rule.rule.model()), {}, {}}, {}};
+    if (jba->file.embeddings.empty())
+      for (const Embedding& e : host->embeddings)  // a host of another format: every embedding is written
+        jba->file.embeddings.push_back({e.signature.name, std::string(type_name(e.signature.type)), e.signature.orbit, {}, {}});
+    write_jba_result(o, *jba, *host);
+  } else if (!o.output.empty() && is_mesh_path(o.output)) {
     // The positions: the first point embedding of the rule.
     const Embedding* pos = nullptr;
     for (const Embedding& e : host->embeddings)
@@ -180,11 +296,13 @@ int apply_topology(const ApplyRequest& o, const CatalogRule& rule, Map map) {
 
 int apply_and_write(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const bool jba_out = o.output.ends_with(".jba"), mesh_out = is_mesh_path(o.output);
-  if (rule.terms) {
-    if (!o.kappa_out.empty()) throw InputError("<command line>", 0, 0, "--kappa-out: for topological rules (infer reads G-maps without values)");
-    if (jba_out) throw InputError("<command line>", 0, 0, "-o: an embedded rule's result is written as YAML (its values are printed); use .yaml");
-    return apply_terms(o, rule, std::move(map));
+  if (rule.terms && !o.kappa_out.empty()) {
+    // infer reads G-maps without values: the correspondence of the topology.
+    if (jba_out || mesh_out) throw InputError("<command line>", 0, 0, "--kappa-out: the result is written as YAML (the topology infer reads); use -o X.yaml");
+    fmt::print("values: not computed (--kappa-out applies the rule's topology, which infer reads)\n");
+    return apply_topology(o, rule, std::move(map));
   }
+  if (rule.terms) return apply_terms(o, rule, std::move(map));
   if (jba_out) return apply_to_jba(o, rule, std::move(map));
   if (mesh_out)
     throw InputError("<command line>", 0, 0,

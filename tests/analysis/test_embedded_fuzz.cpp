@@ -48,9 +48,9 @@ TEST(EmbeddingCatalog, StaticVerdictsMatchTheRecordedOnes) {
 TEST(EmbeddingCatalog, FuzzConfirmsEveryRejectionExceptEqualTerms) {
   // Rejected rules whose two terms are equal on every map (hand
   // derivations in the catalog's notes): the static conditions are only
-  // sufficient, so no map can break them.
-  const std::set<std::string> equal_terms = {"fig17b-vertex-insertion/two-terms", "fig19b-triangulation-col/equal-terms", "triangulation-jerboa-col",
-                                             "exploded-view/two-nodes"};
+  // sufficient, so no map can break them. (triangulation-jerboa-col was
+  // one until the check learned that alpha2 commutes with the word-0 loop.)
+  const std::set<std::string> equal_terms = {"fig17b-vertex-insertion/two-terms", "fig19b-triangulation-col/equal-terms", "exploded-view/two-nodes"};
   analysis::FuzzOptions o;
   o.seed = 3;
   o.runs = 2000;
@@ -69,7 +69,7 @@ TEST(EmbeddingCatalog, FuzzConfirmsEveryRejectionExceptEqualTerms) {
       ++confirmed;
     }
   }
-  EXPECT_EQ(consistent, 14u);
+  EXPECT_EQ(consistent, 15u);
   EXPECT_EQ(confirmed, 15u);
 }
 
