@@ -567,16 +567,7 @@ class Reader {
       const Token op = take();
       Sym a = unary();
       if (a.kind != Sym::value || !scalar(a.type)) throw Opaque{op.offset, fmt::format("uses unary '{}' on something other than a number", op.s)};
-      if (op.s == "-") {
-        // A negative literal stays a literal (-0.5f is a number, as in Java).
-        if (a.term.kind == Term::Kind::literal) {
-          if (a.type == ValueType::real) a.term.literal.x[0] = -a.term.literal.x[0];
-          else a.term.literal.i = -a.term.literal.i;
-          a.term.offset = op.offset;
-        } else {
-          a.term = make_call("-", {std::move(a.term)}, op.offset);
-        }
-      }
+      if (op.s == "-") a.term = make_call("-", {std::move(a.term)}, op.offset);  // as the term language writes -x
       return a;
     }
     if (at("!") || at("~") || at("++") || at("--")) throw Opaque{peek().offset, fmt::format("uses the operator '{}'", peek().s)};
@@ -929,7 +920,11 @@ class Reader {
     }
     const auto t = jerboa_value_type(type);
     if (!t || !geometric(*t)) throw Opaque{c.offset, fmt::format("builds a {}", type)};
-    if (args.empty()) return value_of(make_literal(Value::coords(*t, {0, 0, 0}), kw.offset), *t);
+    if (args.empty()) {  // the zero vector, as the constructor call (its text reads back)
+      std::vector<Term> zero;
+      for (int k = 0; k < 3; ++k) zero.push_back(make_literal(Value::real(0), kw.offset));
+      return value_of(make_call(std::string(type_name(*t)), std::move(zero), kw.offset), *t);
+    }
     if (args.size() == 1 && args[0].kind == Sym::value && args[0].type == *t) return args[0];  // a copy
     if (args.size() == 3 || (args.size() == 4 && *t == ValueType::color)) {
       if (args.size() == 4) throw Opaque{kw.offset, "builds a color with an alpha channel (dartcheck's colors have three components)"};
