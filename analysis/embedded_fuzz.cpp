@@ -9,6 +9,7 @@
 
 #include "checkers/embedding_conditions.hpp"
 #include "checkers/embedding_consistency.hpp"
+#include "checkers/host_search.hpp"
 #include "checkers/map_validity.hpp"
 #include "rewriting/application.hpp"
 #include "rewriting/embedded_application.hpp"
@@ -84,8 +85,29 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
   std::vector<Map> given;
   for (const Map& m : seeds)
     if (m.model() == model) given.push_back(m);
+  // Then every map of up to 6 darts (containing L for a DPO rule), at
+  // most 2,000: a rule whose L random maps rarely match (a free dart, a
+  // loop) still applies, as in the topological fuzzer's first phase.
+  std::vector<Map> small;
+  const std::size_t small_budget = 2000;
+  for (std::size_t n = 1; n <= std::min<std::size_t>(6, o.max_darts) && small.size() < small_budget; ++n)
+    for_each_small_map(
+        model, n,
+        [&](const std::vector<std::vector<NodeId>>& sigma) {
+          Map m(model, n);
+          for (std::size_t k = 0; k < model.dims.size(); ++k)
+            for (Dart d = 0; d < n; ++d) m.set_link(model.dims[k], d, sigma[k][d]);
+          small.push_back(std::move(m));
+          return small.size() < small_budget;
+        },
+        small_budget - small.size(), entry.words.scheme ? nullptr : &entry.rule.left());
+  const std::size_t user_maps = given.size();
+  const std::size_t small_count = small.size();
+  for (Map& m : small) given.push_back(std::move(m));
   std::size_t next_given = 0, faces = 1;
+  const char* host_kind = "random";  // of the last host: given, every small map, random
   auto next_host = [&]() -> std::optional<Map> {
+    host_kind = next_given < user_maps ? "given" : next_given < given.size() ? "enumerated" : "random";
     if (next_given < given.size()) return given[next_given++];
     if (!has_random_generator(model)) return std::nullopt;
     for (int tries = 0; tries < 8; ++tries) {
@@ -96,6 +118,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
     return std::nullopt;
   };
 
+  Applier applier(entry);
   std::size_t attempts = 0;
   while (out.applications < o.runs && attempts < o.runs * 20) {
     if (o.deadline && Clock::now() > *o.deadline) {
@@ -113,6 +136,12 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
     for (std::size_t t = 0; t < tries && out.applications < o.runs; ++t, ++attempts) {
       std::vector<Dart> hooks;
       for (std::size_t k = 0; k < entry.rule.hooks().size(); ++k) hooks.push_back(pick(rng));
+      // Where L does not match, the application is refused alike: said
+      // without copying the host (most attempts of a rule with a rare match).
+      if (const auto m = applier.match(g.map, hooks); !m.ok()) {
+        ++out.refusals[std::string(refusal_name(m.refusal))];
+        continue;
+      }
       EmbeddedMap h = g;
       plant(entry, h, hooks, t % 2 == 0);
       const EmbeddedMap planted = h;
@@ -134,7 +163,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
         if (!r.consistent()) cx.broken_embeddings.push_back(e.signature.name);
       }
       if (cx.violations.empty() && cx.embedding_failures.empty()) continue;
-      cx.origin = fmt::format("random {}-dart {} with random values (host {} of the run)", planted.map.size(), model.name, out.hosts);
+      cx.origin = fmt::format("{} {}-dart {} with random values (host {} of the run)", host_kind, planted.map.size(), model.name, out.hosts);
       // The match and the comatch, for the pictures: the application
       // again (it is deterministic), recorded this time; schemes show
       // their match as P_v from the hooks.
@@ -167,7 +196,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
   out.reason = out.applications == 0
                    ? fmt::format("never applied{}", refusals)
                    : fmt::format("no failure in {} on {} of up to {} darts: the static conditions are sufficient, not necessary{}",
-                                 counted(out.applications, "application"), counted(out.hosts, "random embedded map"), out.largest_host, refusals);
+                                 counted(out.applications, "application"), counted(out.hosts, "embedded map") + fmt::format(" ({} enumerated maps of up to 6 darts, then random ones)", small_count), out.largest_host, refusals);
   if (out.out_of_time) out.reason += " (stopped by --time)";
   return out;
 }

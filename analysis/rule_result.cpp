@@ -98,7 +98,10 @@ RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std:
   r.static_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   r.failures = static_failures(r.verdict);
   for (const auto& name : failing_names(r.embedding)) r.failures.push_back(name);
-  if (confirm_darts > 0 && entry.words.scheme) {
+  // An embedded DPO rule that fails an embedding condition is fuzzed with
+  // its values too: the failure ends confirmed or not found, as a scheme's.
+  const bool embedding_failure = entry.terms && !failing_names(r.embedding).empty();
+  if (confirm_darts > 0 && (entry.words.scheme || embedding_failure)) {
     // Schemes, consistent or not, run on every small map of their model,
     // the catalog's maps and random valid maps (the fuzzer with a small
     // fixed budget): a failure is confirmed or reported as not found; a

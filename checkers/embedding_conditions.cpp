@@ -1,6 +1,8 @@
 #include "checkers/embedding_conditions.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <optional>
 #include <map>
 #include <numeric>
 
@@ -115,6 +117,59 @@ std::string list(const TopoGraph& g, const std::vector<NodeId>& nodes) {
 
 }  // namespace
 
+namespace {
+
+// Overlap in R (003 Lemma 3 defines it on L, K and R, but its condition
+// on the match excludes it on L only): preserved nodes of one pi-orbit of
+// L that R splits into two pi-orbits are matched in one pi-orbit of G,
+// and links the rule does not match (a dimension of <o> with no arc of L
+// at the node) may join them again in H, through darts outside the
+// match. The extended rule then gives that orbit both R-orbits' terms:
+// unless they are the same term, (A) fails for the extended rule, which
+// Theorem 4 assumes. Found by the fuzzer on 2-dart hosts: L n0 -2- n1
+// with n0, n1 free of 1-arcs, R unsewing them with two constants, G a
+// 2-dart map whose 1-link still joins the two darts.
+void split_orbits(const Rule& rule, const EmbeddingSignature& e, const std::vector<NodeId>& lo, const std::vector<NodeId>& ro,
+                  const std::function<const Term*(char, NodeId)>& term, TermConditionVerdict& a) {
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  // The term of each R-orbit (A holds or is reported apart: its first).
+  std::map<NodeId, const Term*> orbit_term;
+  for (NodeId r = 0; r < R.node_count(); ++r)
+    if (const Term* t = term('R', r); t && !orbit_term.count(ro[r])) orbit_term[ro[r]] = t;
+  auto unmatched_dim = [&](NodeId v) -> std::optional<Dim> {
+    for (Dim i : e.orbit) {
+      bool arc = false;
+      for (ArcId x = 0; x < L.arc_count() && !arc; ++x) arc = L.arc(x).source == v && L.arc(x).label == i;
+      if (!arc) return i;
+    }
+    return std::nullopt;
+  };
+  for (NodeId r1 = 0; r1 < R.node_count(); ++r1)
+    for (NodeId r2 = r1 + 1; r2 < R.node_count(); ++r2) {
+      const NodeId v1 = rule.to_left(r1), v2 = rule.to_left(r2);
+      if (v1 == no_node || v2 == no_node || lo[v1] != lo[v2] || ro[r1] == ro[r2]) continue;
+      const auto t1 = orbit_term.find(ro[r1]), t2 = orbit_term.find(ro[r2]);
+      const Term* x = t1 == orbit_term.end() ? nullptr : t1->second;
+      const Term* y = t2 == orbit_term.end() ? nullptr : t2->second;
+      if ((!x && !y) || (x && y && x->same(*y))) continue;
+      const auto d1 = unmatched_dim(v1), d2 = unmatched_dim(v2);
+      if (!d1 || !d2) continue;
+      a.holds = false;
+      a.witnesses.push_back({0,
+                             'R',
+                             {R.name(r1), R.name(r2)},
+                             {},
+                             {},
+                             fmt::format("R: nodes {} and {} share a {}-orbit <{}> of L that R splits, with terms {} and {}; their darts' {}- and "
+                                         "{}-links, which L does not match, may join the two orbits again in H (003 Lemma 3's overlap in R, "
+                                         "which its condition on the match does not exclude)",
+                                         R.name(r1), R.name(r2), e.name, fmt::join(e.orbit, ","), x ? x->str() : "unlabeled",
+                                         y ? y->str() : "unlabeled", *d1, *d2)});
+    }
+}
+
+}  // namespace
+
 std::string TermConditionVerdict::name() const { return fmt::format("{}({})", condition, embedding); }
 
 std::vector<std::string> failing_names(const std::vector<TermConditionVerdict>& v) {
@@ -199,6 +254,7 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
       return l && rr && l->same(*rr) ? l : nullptr;
     });
     check_side('R', "R", R, ro, words.right, nullptr, [&](NodeId v) { return term('R', v); });
+    if (!direct) split_orbits(rule, e, lo, ro, term, a);
     out.push_back(std::move(a));
 
     // (B): a preserved node whose term changes has a full, labeled R-orbit.
