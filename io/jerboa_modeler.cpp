@@ -436,6 +436,7 @@ Catalog read_jme(const std::string& file) {
     else
       ms.untyped.push_back(fmt::format("{} ({})", d.name, d.type));
   }
+  if (ms.untyped.empty()) c.signatures = ms.typed;  // the rules' terms use them
   for (const auto& r : modeler.child("rules").children()) {
     const std::string tag = r.name();
     if (tag == "rule") {
