@@ -323,9 +323,13 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
   }
   if (!failing.empty()) out += "<h3>Conditions that fail</h3>\n<ul>\n" + failing + "</ul>\n";
   if (!e.expressions.empty()) {
-    out += "<h3>Embedding expressions (opaque)</h3>\n<ul>\n";
+    // Each expression's Java, and the term it was read as or why not
+    // (docs/jerboa-expressions.md).
+    out += "<h3>Embedding expressions</h3>\n<ul>\n";
     for (const auto& x : e.expressions)
-      out += fmt::format("<li>{}.{}: <code>{}</code></li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code));
+      out += fmt::format("<li>{}.{}: <code>{}</code><br>{}</li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code),
+                         x.read() ? fmt::format("read as <code>{}</code>", html_text(x.term->str()))
+                                  : fmt::format("<b>opaque</b>: {} ({})", html_text(x.reason), html_text(x.reason_location.str())));
     out += "</ul>\n";
   }
   for (const auto& caveat : e.caveats) out += fmt::format("<p class=\"note\">Not represented: {}</p>\n", html_text(caveat));

@@ -300,8 +300,12 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
     if (!r.matches_record())
       out += paint(row_note(indent, fmt::format("differs from the {}: see stderr", r.record_source_name())), Tone::error, colour);
     for (const auto& caveat : r.entry->caveats) out += row_note(indent, "note: " + printable(caveat));
-    for (const auto& x : r.entry->expressions)
-      if (!x.read()) out += row_note(indent, printable(fmt::format("opaque: {}.{}: {} ({})", x.node, x.embedding, x.reason, x.reason_location.str())));
+    for (const auto& x : r.entry->expressions) {
+      if (!x.read())
+        out += row_note(indent, printable(fmt::format("opaque: {}.{}: {} ({})", x.node, x.embedding, x.reason, x.reason_location.str())));
+      else if (o.explain)
+        out += row_note(indent, printable(fmt::format("read: {}.{} = {}", x.node, x.embedding, x.term->str())));
+    }
     if (r.host_search || r.scheme_search) out += row_note(indent, r.confirmation_text());
     if (o.explain && !r.failures.empty()) {
       for (const auto& cond : v.conditions) {

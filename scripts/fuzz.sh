@@ -30,6 +30,7 @@ seeds fuzz_yaml_map tests/data/corrupt-square.yaml tests/data/hostile-*.yaml
 seeds fuzz_jba "$jerboa"/*.jba
 seeds fuzz_jme "$jerboa"/*.jme tests/data/*.jme
 seeds fuzz_term fuzz/seeds/term/*
+seeds fuzz_jerboa_expression fuzz/seeds/jerboa/*
 seeds fuzz_word fuzz/seeds/word/*
 seeds fuzz_shard fuzz/seeds/shard/*
 seeds fuzz_tet_mesh tests/data/*.mesh
@@ -47,10 +48,10 @@ for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.o
 done
 
 # The smoke's executions per target: what 20 s gave on a busy 2-core VM.
-declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_word]=300000 [fuzz_shard]=15000 [fuzz_tet_mesh]=50000 [fuzz_side_files]=20000)
-declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_word]=term [fuzz_shard]=jsonl [fuzz_tet_mesh]=tet [fuzz_side_files]=yaml)
+declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_jerboa_expression]=100000 [fuzz_word]=300000 [fuzz_shard]=15000 [fuzz_tet_mesh]=50000 [fuzz_side_files]=20000)
+declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_jerboa_expression]=jerboa [fuzz_word]=term [fuzz_shard]=jsonl [fuzz_tet_mesh]=tet [fuzz_side_files]=yaml)
 status=0
-all_targets="fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard fuzz_tet_mesh fuzz_side_files"
+all_targets="fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jerboa_expression fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard fuzz_tet_mesh fuzz_side_files"
 for t in ${FUZZ_TARGETS:-$all_targets}; do
   [ -n "${smoke_runs[$t]:-}" ] || { echo "fuzz.sh: no target $t (targets: $all_targets)" >&2; exit 2; }
   mkdir -p "$build/findings/$t"

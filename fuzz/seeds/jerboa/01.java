@@ -1,0 +1,11 @@
+JerboaList<@ebd<pos>> l;
+Vec3 centerFace = new Vec3(); centerFace.barycenter(<0,1>_pos(n0));
+l.add(centerFace);
+Vec3 midEdge1 = new Vec3(); midEdge1.barycenter(<0>_pos(n0));
+l.add(midEdge1);
+Vec3 midEdge2 = new Vec3(); midEdge2.barycenter(<0>_pos(n0@1));
+l.add(midEdge2);
+l.add(n0.pos);
+Vec3 res = new Vec3();
+res.barycenter(l);
+return res;

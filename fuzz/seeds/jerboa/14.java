@@ -1,0 +1,1 @@
+return Vec3.mid(n0.pos, n1.pos);

@@ -1,0 +1,1 @@
+return n0.pos.addn(0,0.5f,0);

@@ -1,0 +1,1 @@
+return n0.pos.addn(0,1,0);

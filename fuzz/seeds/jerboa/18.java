@@ -1,0 +1,1 @@
+return n0.pos.addn(1,0,0);

@@ -1,0 +1,1 @@
+return n1.pos.addn(0,1,0);

@@ -1,0 +1,1 @@
+return n2.pos;

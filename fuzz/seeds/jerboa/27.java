@@ -1,0 +1,1 @@
+return new Color(0,153,0);

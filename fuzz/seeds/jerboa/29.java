@@ -1,0 +1,1 @@
+return new Color(255,0,0);

@@ -1,0 +1,1 @@
+return new Vec3(0,1,0);

@@ -1,0 +1,1 @@
+return new Vec3(0.5, 1.5,0);

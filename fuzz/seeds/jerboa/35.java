@@ -1,0 +1,1 @@
+return new Vec3(0.5,0,0.5);

@@ -1,0 +1,1 @@
+return new Vec3(1,1,0);

@@ -1,0 +1,1 @@
+return new Vec3(1.0f,0.0f,0.5f);

@@ -1,0 +1,1 @@
+return new Vec3(1.5, 1.5, 0);

@@ -1,0 +1,1 @@
+return new Vec3(Vec3.segmentABByWeight(n0.pos, n0@0.pos, 0.3f));

@@ -1,0 +1,1 @@
+return new Vec3(center.x()+vOffset,center.y()+vOffset,center.z());

@@ -1,0 +1,1 @@
+return new Vec3(n0.pos.addn(1.f,0.f,0.f));

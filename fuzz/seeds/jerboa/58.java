@@ -1,0 +1,1 @@
+return new Vec3(n1.pos.addn(-0.5f,0.5f,0.0f));
