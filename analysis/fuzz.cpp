@@ -419,17 +419,33 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
     // which enumerates small hosts and confirms not-representable results
     // (the embedded one draws random hosts and only applies); the values
     // are fuzzed when the topology gives no counterexample.
+    // The topological fuzzer also cross-checks the event logs (004), which
+    // the embedded one does not: it runs first whenever events are asked.
     const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);
-    if (!static_failures(verdict).empty()) {
+    std::optional<FuzzReport> t;
+    if (!static_failures(verdict).empty() || o.event_checks > 0) {
       Operation topology = entry;
       topology.terms.reset();
-      FuzzReport t = fuzz_rule(topology, seeds, o);
-      if (t.counterexample) {
-        for (const auto& name : failing_names(check_term_conditions(entry.rule, entry.words, *entry.terms))) t.static_failures.push_back(name);
-        return t;
+      FuzzOptions first = o;  // with a time budget, half of it: the values get the rest
+      if (o.deadline) first.deadline = std::chrono::steady_clock::now() + (*o.deadline - std::chrono::steady_clock::now()) / 2;
+      t = fuzz_rule(topology, seeds, first);
+      if (t->counterexample) {
+        for (const auto& name : failing_names(check_term_conditions(entry.rule, entry.words, *entry.terms))) t->static_failures.push_back(name);
+        return *t;
       }
     }
-    return fuzz_embedded_rule(entry, seeds, o);
+    FuzzReport e = fuzz_embedded_rule(entry, seeds, o);
+    if (t) {  // both phases' applications were checked
+      e.event_checks = t->event_checks;
+      e.event_contradiction = std::move(t->event_contradiction);
+      e.applications += t->applications;
+      e.hosts += t->hosts;
+      e.largest_host = std::max(e.largest_host, t->largest_host);
+      e.exhaustive_darts = t->exhaustive_darts;
+      e.seconds += t->seconds;
+      for (const auto& [why, n] : t->refusals) e.refusals[why] += n;
+    }
+    return e;
   }
   FuzzReport out;
   out.rule = entry.rule.name();

@@ -54,8 +54,15 @@ std::vector<Token> tokens(const std::string& s) {
       out.push_back({Token::ident, s.substr(start, k - start), start});
       continue;
     }
+    if (c == '0' && k + 1 < s.size() && std::string_view("xXbB").find(s[k + 1]) != std::string_view::npos) {  // 0x1F, 0b101
+      k += 2;
+      while (k < s.size() && (std::isxdigit(static_cast<unsigned char>(s[k])) || s[k] == '_')) ++k;
+      if (k < s.size() && (s[k] == 'l' || s[k] == 'L')) ++k;
+      out.push_back({Token::number, s.substr(start, k - start), start});
+      continue;
+    }
     if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && k + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[k + 1])))) {
-      while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+      while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '_')) ++k;
       // "2.5", "2.f" and "2." are numbers; "n0@2.pos" is a neighbour's
       // embedding (Jerboa's '@' is read before Java's lexer).
       if (k < s.size() && s[k] == '.') {
@@ -936,7 +943,17 @@ class Reader {
   }
 
   Sym number(const Token& t) {
-    std::string s = t.s;
+    std::string s;
+    for (char c : t.s)
+      if (c != '_') s += c;  // 1_000
+    if (s.size() > 2 && s[0] == '0' && std::string_view("xXbB").find(s[1]) != std::string_view::npos) {
+      if (s.back() == 'l' || s.back() == 'L') s.pop_back();
+      const int base = s[1] == 'x' || s[1] == 'X' ? 16 : 2;
+      std::uint64_t v = 0;
+      const auto r = std::from_chars(s.data() + 2, s.data() + s.size(), v, base);
+      if (r.ec != std::errc{} || r.ptr != s.data() + s.size()) throw JerboaCodeError(t.offset, fmt::format("not Java: '{}' is not a number", t.s));
+      return value_of(make_literal(Value::integer(static_cast<std::int64_t>(v)), t.offset), ValueType::integer);
+    }
     const char suffix = s.empty() ? ' ' : s.back();
     const bool is_float = suffix == 'f' || suffix == 'F';
     if (std::string_view("fFdDlL").find(suffix) != std::string_view::npos) s.pop_back();
@@ -946,9 +963,12 @@ class Reader {
       if (is_float) v = static_cast<double>(static_cast<float>(v));  // Java's float literal, widened
       return value_of(make_literal(Value::real(v), t.offset), ValueType::real);
     }
+    // A leading 0 makes an octal literal in Java (0775 is 509; 079 is no number).
+    const int base = s.size() > 1 && s[0] == '0' ? 8 : 10;
     std::int64_t v = 0;
-    const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (r.ec != std::errc{} || r.ptr != s.data() + s.size()) throw JerboaCodeError(t.offset, fmt::format("not Java: '{}' is not a number", t.s));
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), v, base);
+    if (r.ec != std::errc{} || r.ptr != s.data() + s.size())
+      throw JerboaCodeError(t.offset, fmt::format("not Java: '{}' is not a{} number", t.s, base == 8 ? "n octal" : ""));
     return value_of(make_literal(Value::integer(v), t.offset), ValueType::integer);
   }
 

@@ -62,12 +62,36 @@ inline Value real_minus(const Value& a, const Value& b) { return Value::real(a.x
 inline Value real_times(const Value& a, const Value& b) { return Value::real(a.x[0] * b.x[0]); }
 inline Value real_divided(const Value& a, const Value& b) { return Value::real(a.x[0] / b.x[0]); }
 inline Value real_negated(const Value& a) { return Value::real(-a.x[0]); }
-inline Value integer_plus(const Value& a, const Value& b) { return Value::integer(a.i + b.i); }
-inline Value integer_minus(const Value& a, const Value& b) { return Value::integer(a.i - b.i); }
-inline Value integer_times(const Value& a, const Value& b) { return Value::integer(a.i * b.i); }
-inline Value integer_negated(const Value& a) { return Value::integer(-a.i); }
+// Integers are exact: a result past 64 bits has no value (an error, not
+// the undefined behaviour of a signed overflow).
+[[noreturn]] inline void integer_overflow(const char* op) { throw EvaluationError(std::string("integer overflow in ") + op); }
+inline Value integer_plus(const Value& a, const Value& b) {
+  std::int64_t r = 0;
+  if (__builtin_add_overflow(a.i, b.i, &r)) [[unlikely]]
+    integer_overflow("+");
+  return Value::integer(r);
+}
+inline Value integer_minus(const Value& a, const Value& b) {
+  std::int64_t r = 0;
+  if (__builtin_sub_overflow(a.i, b.i, &r)) [[unlikely]]
+    integer_overflow("-");
+  return Value::integer(r);
+}
+inline Value integer_times(const Value& a, const Value& b) {
+  std::int64_t r = 0;
+  if (__builtin_mul_overflow(a.i, b.i, &r)) [[unlikely]]
+    integer_overflow("*");
+  return Value::integer(r);
+}
+inline Value integer_negated(const Value& a) {
+  std::int64_t r = 0;
+  if (__builtin_sub_overflow(std::int64_t{0}, a.i, &r)) [[unlikely]]
+    integer_overflow("unary -");
+  return Value::integer(r);
+}
 inline Value integer_divided(const Value& a, const Value& b) {
   if (b.i == 0) throw EvaluationError("integer division by 0");
+  if (b.i == -1) return integer_negated(a);  // INT64_MIN / -1 overflows
   return Value::integer(a.i / b.i);
 }
 
@@ -78,7 +102,9 @@ inline Value real_sum(std::span<const Value> m) {
 }
 inline Value integer_sum(std::span<const Value> m) {
   std::int64_t s = 0;
-  for (const Value& v : m) s += v.i;
+  for (const Value& v : m)
+    if (__builtin_add_overflow(s, v.i, &s)) [[unlikely]]
+      throw EvaluationError("integer overflow in sum");
   return Value::integer(s);
 }
 inline Value count(std::span<const Value> m) { return Value::integer(static_cast<std::int64_t>(m.size())); }

@@ -48,7 +48,7 @@ for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.o
 done
 
 # The smoke's executions per target: what 20 s gave on a busy 2-core VM.
-declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_jerboa_expression]=100000 [fuzz_word]=300000 [fuzz_shard]=15000 [fuzz_tet_mesh]=50000 [fuzz_side_files]=20000)
+declare -A smoke_runs=([fuzz_yaml_map]=40000 [fuzz_catalog]=2500 [fuzz_jme]=25000 [fuzz_jba]=10000 [fuzz_mesh]=50000 [fuzz_term]=200000 [fuzz_jerboa_expression]=400000 [fuzz_word]=300000 [fuzz_shard]=15000 [fuzz_tet_mesh]=50000 [fuzz_side_files]=20000)
 declare -A dict=([fuzz_yaml_map]=yaml [fuzz_catalog]=yaml [fuzz_jme]=jme [fuzz_jba]=jba [fuzz_mesh]=off [fuzz_term]=term [fuzz_jerboa_expression]=jerboa [fuzz_word]=term [fuzz_shard]=jsonl [fuzz_tet_mesh]=tet [fuzz_side_files]=yaml)
 status=0
 all_targets="fuzz_yaml_map fuzz_catalog fuzz_jme fuzz_jerboa_expression fuzz_jba fuzz_mesh fuzz_term fuzz_word fuzz_shard fuzz_tet_mesh fuzz_side_files"

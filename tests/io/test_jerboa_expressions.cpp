@@ -144,6 +144,8 @@ TEST(JerboaExpressions, ConstructsReadAsTheHandTranslations) {
       {"JerboaList<@ebd<pos>> l;\nl.add(n0.pos); l.add(n1.pos);\nVec3 r = new Vec3(); r.barycenter(l); return r;", "barycenter([n0.pos, n1.pos])"},
       {"JerboaDarts ds = <0,1>_<0>(n0);\nreturn n0.pos.mul(ds.size());", "mul(n0.pos, count(each(d in <0,1>_<0>(n0): 0)))"},
       {"return new Vec3(-0.5f, 2.0, 1e-1);", "point3(-0.5, 2.0, 0.1)"},
+      // Java's integer literals: hexadecimal, octal (a leading 0), underscores.
+      {"return n0.pos.mul(0x10 + 010 + 1_0);", "mul(n0.pos, 16 + 8 + 10)"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.java);
@@ -200,6 +202,7 @@ TEST(JerboaExpressions, CodeNoModelerAcceptsIsAnError) {
       {"return n0.pos.mul(weight);", "'weight' is neither a variable, a node of the left side (n0) nor a parameter of the rule", 18},
       {"return <0,7>_pos(n0);", "orbit type: 7 is not a dimension of the model 3-gmap", 10},
       {"return \"abc;", "not Java: a string literal that is never closed", 7},
+      {"return n0.pos.mul(079);", "not Java: '079' is not an octal number", 18},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.java);
@@ -211,6 +214,30 @@ TEST(JerboaExpressions, CodeNoModelerAcceptsIsAnError) {
       EXPECT_EQ(e.offset(), c.offset);
     }
   }
+}
+
+// Integers are exact: past 64 bits a term has no value (found by
+// fuzz_jerboa_expression as a signed overflow, undefined behaviour, in
+// 0775*050*...*0777777079).
+TEST(JerboaExpressions, IntegerOverflowHasNoValue) {
+  const Model model = Model::gmap(3);
+  JerboaScope scope{&model, {{"pos", ValueType::point3, {1, 2, 3}}}, {"n0"}, {}, {}};
+  EmbeddedMap g(Map(model, 1));
+  g.add_embedding(scope.embeddings[0]);
+  g.label_orbit(0, 0, Value::coords(ValueType::point3, {1, 2, 3}));
+  TermEvaluator ev(g);
+  const std::vector<std::string> names{"n0"};
+  const std::vector<Dart> darts{0};
+  for (const char* java : {"return n0.pos.mul(9223372036854775807 * 2);", "return n0.pos.mul(-9223372036854775807 - 2);",
+                           "return n0.pos.mul(9223372036854775807 + 1);"}) {
+    SCOPED_TRACE(java);
+    const ReadExpression r = read_jerboa_expression(java, scope, ValueType::point3);
+    ASSERT_TRUE(r.term) << r.reason;
+    EXPECT_THROW(ev.value(*r.term, names, darts), EvaluationError);
+  }
+  const ReadExpression fine = read_jerboa_expression("return n0.pos.mul(3037000499 * 3037000499);", scope, ValueType::point3);
+  ASSERT_TRUE(fine.term);
+  EXPECT_EQ(ev.value(*fine.term, names, darts).x[0], 9223372030926249001.0);
 }
 
 // In a .jme, the error names the rule, the node and the file position of
