@@ -620,16 +620,24 @@ class Reader {
         continue;
       }
       take();
-      std::vector<Sym> args;
-      while (!at(")")) {
-        args.push_back(expression());
-        if (at(",")) take();
-        else if (!at(")")) throw JerboaCodeError(peek().offset, fmt::format("not Java: expected ',' or ')' in the arguments of {}, found {}", m.s, shown(peek())));
-      }
-      take();
+      std::vector<Sym> args = arguments(m.s);
       a = method(std::move(a), m, std::move(args), lvalue);
       lvalue.clear();
     }
+  }
+
+  // A call's arguments, after its '(' and up to its ')'.
+  std::vector<Sym> arguments(const std::string& of) {
+    std::vector<Sym> args;
+    while (!at(")")) {
+      args.push_back(expression());
+      if (at(","))
+        take();
+      else if (!at(")"))
+        throw JerboaCodeError(peek().offset, fmt::format("not Java: expected ',' or ')' in the arguments of {}, found {}", of, shown(peek())));
+    }
+    take();
+    return args;
   }
 
   void neighbour(Sym& a, const Token& d) {
@@ -873,13 +881,7 @@ class Reader {
       const Token m = take();
       if (!at("(")) throw Opaque{t.offset, fmt::format("reads {}.{}", cls, m.s)};
       take();
-      std::vector<Sym> args;
-      while (!at(")")) {
-        args.push_back(expression());
-        if (at(",")) take();
-        else if (!at(")")) throw JerboaCodeError(peek().offset, fmt::format("not Java: expected ',' or ')' in the arguments of {}, found {}", m.s, shown(peek())));
-      }
-      take();
+      std::vector<Sym> args = arguments(m.s);
       return static_call(cls, m, args);
     }
     if (std::isupper(static_cast<unsigned char>(t.s[0])) || at(".")) throw Opaque{t.offset, fmt::format("reads {}", t.s)};
@@ -905,13 +907,7 @@ class Reader {
     std::vector<std::string> targs;
     const std::string type = type_text(&targs);
     expect("(", fmt::format("after new {}", type).c_str());
-    std::vector<Sym> args;
-    while (!at(")")) {
-      args.push_back(expression());
-      if (at(",")) take();
-      else if (!at(")")) throw JerboaCodeError(peek().offset, fmt::format("not Java: expected ',' or ')' in the arguments of new {}, found {}", type, shown(peek())));
-    }
-    take();
+    std::vector<Sym> args = arguments("new " + type);
     if (at("{")) throw Opaque{kw.offset, "declares an anonymous class"};
     const std::string n = last_component(type);
     if (n == "ArrayList" || n == "JerboaList" || n == "LinkedList") {

@@ -44,6 +44,19 @@ bool TermEvaluator::emit_node(const Term& t, std::span<const std::string> names,
   return true;
 }
 
+// The node an access, collect or each starts from, as s's binding and
+// links [first, last); false, with s a fail step, when it cannot be.
+bool TermEvaluator::emit_start(const Term& node, std::span<const std::string> names, CompiledTerm& out, CompiledTerm::Step& s) {
+  s.first = static_cast<std::uint32_t>(out.links_.size());
+  if (!emit_node(node, names, out, s)) {
+    s.op = CompiledTerm::Step::Op::fail;
+    s.target = static_cast<std::uint32_t>(out.failures_.size() - 1);
+    return false;
+  }
+  s.last = static_cast<std::uint32_t>(out.links_.size());
+  return true;
+}
+
 void TermEvaluator::emit(const Term& t, std::span<const std::string> names, CompiledTerm& out) {
   using Op = CompiledTerm::Step::Op;
   CompiledTerm::Step s;
@@ -62,13 +75,7 @@ void TermEvaluator::emit(const Term& t, std::span<const std::string> names, Comp
     case Term::Kind::access:
     case Term::Kind::collect: {
       s.op = t.kind == Term::Kind::access ? Op::access : Op::collect;
-      s.first = static_cast<std::uint32_t>(out.links_.size());
-      if (!emit_node(t.args[0], names, out, s)) {
-        s.op = Op::fail;
-        s.target = static_cast<std::uint32_t>(out.failures_.size() - 1);
-        break;
-      }
-      s.last = static_cast<std::uint32_t>(out.links_.size());
+      if (!emit_start(t.args[0], names, out, s)) break;
       std::size_t e = 0;
       if (!embedding(t.name, &e)) return fail(fmt::format("the map has no embedding '{}'", t.name));
       s.target = static_cast<std::uint32_t>(s.op == Op::access ? e : memo_for(t.name, e, t.orbit));
@@ -91,13 +98,7 @@ void TermEvaluator::emit(const Term& t, std::span<const std::string> names, Comp
       break;
     case Term::Kind::each: {
       s.op = Op::each;
-      s.first = static_cast<std::uint32_t>(out.links_.size());
-      if (!emit_node(t.args[0], names, out, s)) {
-        s.op = Op::fail;
-        s.target = static_cast<std::uint32_t>(out.failures_.size() - 1);
-        break;
-      }
-      s.last = static_cast<std::uint32_t>(out.links_.size());
+      if (!emit_start(t.args[0], names, out, s)) break;
       std::vector<std::string> inner(names.begin(), names.end());
       inner.push_back(t.name);
       std::vector<Dim> sub;  // <s> ∩ <o>: the sub-orbits inside the orbit

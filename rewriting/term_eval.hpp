@@ -152,6 +152,7 @@ class TermEvaluator {
   // A memo that only holds the bags of one each or list step.
   std::uint32_t scratch_memo(const Term& owner);
   bool emit_node(const Term& t, std::span<const std::string> names, CompiledTerm& out, CompiledTerm::Step& s);
+  bool emit_start(const Term& node, std::span<const std::string> names, CompiledTerm& out, CompiledTerm::Step& s);
   Dart node(const CompiledTerm& c, const CompiledTerm::Step& s, std::span<const Dart> darts) const;
   const Embedding* embedding(const std::string& name, std::size_t* index = nullptr) const;
   std::size_t memo_for(const std::string& name, std::size_t embedding, const std::vector<Dim>& orbit);
