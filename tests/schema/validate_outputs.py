@@ -147,6 +147,10 @@ if back:
 # --- real catalogs: every JSON document follows its schema ---
 check_json(["check", "catalogs/seed-operations.yaml", "--format", "json"], 0, "https://dartcheck.invalid/schema/check.schema.json")
 check_json(["check", "catalogs/embedding-operations.yaml", "--format", "json"], 0, "https://dartcheck.invalid/schema/check.schema.json")
+# Jerboa expressions, read (terms) and opaque (reasons).
+check_json(["check", "tests/data/jerboa-opaque-expression.jme", "--format", "json"], 0, "https://dartcheck.invalid/schema/check.schema.json")
+check_json(["check", "../shared/jerboa-samples/JerboaRebuilt2.jme", "--format", "json", "--confirm-darts", "0"], 1,
+           "https://dartcheck.invalid/schema/check.schema.json")
 check_json(["check", "catalogs/seed-operations.yaml", "--format", "sarif"], 0, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
 check_json(["check", "tests/data/wrong-verdict.yaml", "--format", "sarif"], 1, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
 check_json(["fuzz", "catalogs/event-operations.yaml", "--runs", "100", "--seed", "1", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json",
