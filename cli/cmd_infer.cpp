@@ -10,6 +10,7 @@
 
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
+#include "io/jerboa_jba.hpp"
 #include "cli/options.hpp"
 #include "reports/infer_report.hpp"
 #include "checkers/map_validity.hpp"
@@ -85,6 +86,17 @@ int infer(const InferCommand& o) {
     fmt::print("{}\n", reports::infer_json(run, *graph, attempts));
   else
     fmt::print("{}", reports::infer_text(run, attempts));
+  // A Jerboa example's values: 000 infers the topology and leaves the
+  // embedding computations aside ("the inferred rule scheme will have no
+  // embedding computation"; its examples add them by hand), so say so.
+  if (o.format != "json" && o.after.ends_with(".jba")) {
+    std::vector<std::string> names;
+    for (const auto& e : read_jba(o.after).embeddings) names.push_back(fmt::format("{} <{}>", e.name, fmt::join(e.orbit, ",")));
+    if (!names.empty())
+      fmt::print("values of {} ({}): not inferred (000 infers the topology only; write each new orbit's value as an <expr> of the rule, "
+                 "docs/jerboa-expressions.md)\n",
+                 o.after, fmt::join(names, ", "));
+  }
   const auto inferred = std::count_if(attempts.begin(), attempts.end(), [](const Attempt& a) { return a.inferred(); });
   const bool contradiction = std::any_of(attempts.begin(), attempts.end(), [](const Attempt& a) { return a.verification && !a.verification->holds; });
   // Nothing is written when nothing was inferred: an empty catalog is not a result.
