@@ -3,6 +3,8 @@
 // pipe), so that no command reports success for a result it lost.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,9 +22,18 @@ class OutputError : public std::runtime_error {
   std::string file_;
 };
 
-/// Writes `bytes` to `path` (replacing it), flushes and closes it; throws
+/// Writes `bytes` to `path` (replacing it) atomically: to a temporary file
+/// in the same directory, flushed, synced and renamed over the target, so a
+/// failed or interrupted write leaves the previous file as it was and no
+/// temporary behind (a device or FIFO is written in place). Throws
 /// OutputError if any step fails.
 void write_file(const std::string& path, std::string_view bytes);
+
+namespace detail {
+/// Test-only: called with the bytes written so far after each chunk of a
+/// write_file (a test stops a writer part way through).
+extern std::function<void(std::size_t)> write_hook;
+}  // namespace detail
 
 /// Creates `dir` and its parents if needed; OutputError if it cannot be or
 /// is not a directory. Commands call it before their work starts.
