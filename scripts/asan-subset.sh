@@ -13,6 +13,8 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DDARTCHECK_SANITIZE=ON -DDARTCH
 cmake --build "$build" -j2 --target dartcheck dartcheck_man test_io test_jerboa test_reports test_campaign test_compiled test_compiled_mutant test_compiled_shortcut_mutant >/dev/null
 suites='MapYaml|Mesh|MeshWriter|Catalog|HostileInput|TetMeshIo|Jme|Jba|RuleDot|RuleSvg|MapSvg|Render|CounterexampleDot|Shard|ResultRecord|CompiledOperations'
 # Over 30 s each under the sanitizers: fuzzing, proving and recombining
-# whole catalogs and meshes, which the Release suite runs.
-long='cli\.(recombine_elephant|fuzz_jme|fuzz_events_.*|outputs_follow_schemas|verdicts_agree_across_commands|fuzz_embedding_catalog|prove_catalog|fuzz_subdivision_catalog)|campaign\.(parallel_equal|slurm_array)'
+# whole catalogs and meshes, and every example of docs/cli.md (which fuzzes
+# the embedding catalog and the Jerboa modelers with values: minutes under
+# ASan), which the Release suite runs.
+long='cli\.(docs_cli_examples|recombine_elephant|fuzz_jme|fuzz_events_.*|outputs_follow_schemas|verdicts_agree_across_commands|fuzz_embedding_catalog|prove_catalog|fuzz_subdivision_catalog)|campaign\.(parallel_equal|slurm_array)'
 ctest --test-dir "$build" -j2 --output-on-failure -R "^(cli\.|compiled\.|campaign\.|($suites)\.)" -E "^($long)$"
