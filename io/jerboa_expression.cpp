@@ -280,18 +280,14 @@ class Reader {
       take();
       while (!at(">")) {
         if (at_end()) throw JerboaCodeError(peek().offset, "not Java: a type's '<' is never closed");
-        const std::string a = at(">") ? "" : type_text();
+        const std::string a = type_text();
         if (args) args->push_back(a);
         if (at(",")) take();
         else if (!at(">")) throw JerboaCodeError(peek().offset, fmt::format("not Java: expected ',' or '>' in a type, found {}", shown(peek())));
       }
       take();
     }
-    while (at("[") && at("]", 1)) {
-      take();
-      take();
-      throw Opaque{t.offset, fmt::format("declares an array ({}[])", name)};
-    }
+    if (at("[") && at("]", 1)) throw Opaque{t.offset, fmt::format("declares an array ({}[])", name)};
     return name;
   }
   Declared declared(const std::string& name, const std::vector<std::string>& args, std::size_t offset) {
@@ -419,8 +415,7 @@ class Reader {
       value.term = make_call(op.s.substr(0, 1), {v->sym.term, std::move(value.term)}, op.offset);
       value.type = v->sym.type == ValueType::real || value.type == ValueType::real ? ValueType::real : ValueType::integer;
     }
-    Declared d{v->sym.kind, v->sym.type, v->sym.kind == Sym::none, v->sym.typed};
-    if (v->sym.kind == Sym::none) d.inferred = true;
+    const Declared d{v->sym.kind, v->sym.type, v->sym.kind == Sym::none, v->sym.typed};
     v->sym = converted(std::move(value), d, name);
     expect(";", "after an assignment");
   }
