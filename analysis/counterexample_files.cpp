@@ -1,11 +1,14 @@
 #include "analysis/counterexample_files.hpp"
 
 #include <filesystem>
+#include <sstream>
 
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
+#include "core/shell_quote.hpp"
+#include "io/jerboa_jba.hpp"
 #include "io/counterexample_file.hpp"
 #include "io/map_io.hpp"
 
@@ -57,6 +60,33 @@ std::string write_counterexample(const std::string& dir, const std::string& stem
   for (const auto& v : cx.violations) file.violations.push_back({v.element, constraint_name(v), describe(v, fmt::format("dart {}", v.element))});
   write_file(stem + ".counterexample.yaml", counterexample_file_text(file));
   return replay;
+}
+
+std::string write_embedding_counterexample(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule,
+                                           const EmbeddedMap& host, const std::vector<Dart>& hooks) {
+  JbaFile f{"dartcheck prove", host.map, {}, {}};
+  for (const Embedding& e : host.embeddings) {
+    MapEmbedding m{e.signature.name, std::string(type_name(e.signature.type)), e.signature.orbit, {}, {}};
+    for (Dart d = 0; d < host.map.size(); ++d)
+      if (const Value* v = e.value(d)) {
+        m.values.resize(host.map.size());
+        m.values[d] = jba_value(*v);
+      }
+    m.values.resize(host.map.size());
+    f.embeddings.push_back(std::move(m));
+  }
+  const std::string base = (std::filesystem::path(dir) / stem).string();
+  std::ostringstream text;
+  try {
+    write_jba(text, f, base + ".host.jba");
+  } catch (const InputError&) {
+    return {};  // not an n-G-map with every link set: no .jba form
+  }
+  write_file(base + ".host.jba", text.str());
+  std::string hook_args;
+  for (Dart d : hooks) hook_args += fmt::format(" --hook {}", d);
+  return fmt::format("dartcheck apply {} --rule {} --map {}{} -o {}; dartcheck validate-map {}", shell_quote(catalog), shell_quote(rule),
+                     shell_quote(base + ".host.jba"), hook_args, shell_quote(base + ".result.jba"), shell_quote(base + ".result.jba"));
 }
 
 }  // namespace dartcheck::analysis

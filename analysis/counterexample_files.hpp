@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/fuzz.hpp"
+#include "rewriting/embedded_map.hpp"
 
 namespace dartcheck::analysis {
 
@@ -27,5 +28,14 @@ enum class ReplayCommand { apply, events };
 std::string write_counterexample(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule,
                                  const std::vector<std::pair<std::string, std::string>>& fields, const std::vector<std::string>& static_failures,
                                  const Counterexample& cx, ReplayCommand replay = ReplayCommand::apply);
+
+/// An embedding counterexample of the solver (proofs/embedding_prover):
+/// DIR/STEM.host.jba, the host with its values, read back by `dartcheck
+/// apply --map` and `validate-map`. Returns the commands that replay it
+/// (apply writes STEM.result.jba, exit 1, which validate-map rejects at the darts
+/// whose values differ), shell-quoted; empty when the host has no .jba
+/// form (an O-map, a partial link).
+std::string write_embedding_counterexample(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule,
+                                           const EmbeddedMap& host, const std::vector<Dart>& hooks);
 
 }  // namespace dartcheck::analysis

@@ -42,7 +42,7 @@ bool RuleResult::unsound() const {
     if (!topological_failure() && (!cx.violations.empty() || !cx.unrepresentable.empty() || failing_names(embedding).empty())) return true;
   }
   if (fuzz && fuzz->verdict == FuzzClass::soundness_bug) return true;
-  return proof && proof->count(proofs::Agreement::disagree) > 0;
+  return proof && (proof->count(proofs::Agreement::disagree) > 0 || proof->embedding_disagreements() > 0);
 }
 
 bool RuleResult::broke_a_map() const {
@@ -165,6 +165,17 @@ void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::st
                                    proof.static_failures, *maps.back())
             : std::string());
   }
+  // Embedding counterexamples with values (the arithmetic reading) as files
+  // that `apply` and `validate-map` replay.
+  std::vector<std::string> embedding_replays;
+  if (proof.embedding)
+    for (const auto& a : proof.embedding->answers)
+      embedding_replays.push_back(a.status == proofs::EmbeddingAnswer::Status::counterexample && a.reading == proofs::Reading::arithmetic && a.host &&
+                                          !out_dir.empty()
+                                      ? write_embedding_counterexample(out_dir, file_stem(e.rule.name()) + suffix + "." + a.embedding, catalog_file,
+                                                                       e.rule.name(), *a.host, a.hooks)
+                                      : std::string());
+  r.embedding_replays = std::move(embedding_replays);
   add_proof(r, std::move(proof), std::move(replays), std::move(maps));
 }
 

@@ -50,6 +50,9 @@ struct RuleResult {
   std::optional<proofs::RuleProof> proof;
   std::vector<std::string> proof_replays;
   std::vector<std::optional<Counterexample>> proof_maps;
+  // Per embedding answer of the proof: the shell commands that replay its
+  // counterexample files (apply, then validate-map), or empty.
+  std::vector<std::string> embedding_replays;
 
   /// How this run compares with the recorded verdict: one sentence per
   /// disagreement (empty: it matches). Filled by `compare_with_record`.

@@ -208,4 +208,22 @@ void write_jba(std::ostream& out, const JbaFile& f, const std::string& path) {
   }
 }
 
+std::string jba_value(const Value& v) {
+  switch (v.type) {
+    case ValueType::point2:
+    case ValueType::vector2:
+      return fmt::format("{} {}", v.x[0], v.x[1]);
+    case ValueType::point3:
+    case ValueType::vector3:
+    case ValueType::color:
+      return fmt::format("{} {} {}", v.x[0], v.x[1], v.x[2]);
+    case ValueType::real:
+      return fmt::format("{}", v.x[0]);
+    case ValueType::string:
+      return v.string();
+    default:
+      return v.str();
+  }
+}
+
 }  // namespace dartcheck

@@ -23,6 +23,7 @@
 
 #include "core/map.hpp"
 #include "core/map_embedding.hpp"
+#include "rewriting/value.hpp"
 
 namespace dartcheck {
 
@@ -41,5 +42,10 @@ JbaFile read_jba(const std::string& file);
 /// `path` if the map is not an n-G-map with every link set (a .jba holds
 /// nothing else).
 void write_jba(std::ostream& out, const JbaFile& f, const std::string& path);
+
+/// A value as a .jba record holds it (coordinates separated by spaces, the
+/// shortest text that reads back to the same double), as typed_embedding
+/// reads it back.
+std::string jba_value(const Value& v);
 
 }  // namespace dartcheck

@@ -12,6 +12,7 @@
 #include "rewriting/scheme_instantiation.hpp"
 #include "proofs/dpo_encoding.hpp"
 #include "proofs/scheme_encoding.hpp"
+#include "proofs/solver_watch.hpp"
 
 namespace dartcheck::proofs {
 
@@ -41,6 +42,13 @@ std::string_view agreement_name(Agreement a) {
       return "not compared";
   }
   return "";
+}
+
+std::size_t RuleProof::embedding_disagreements() const {
+  std::size_t n = 0;
+  if (embedding)
+    for (const auto& a : embedding->answers) n += a.disagree;
+  return n;
 }
 
 std::size_t RuleProof::count(Agreement a) const {
@@ -228,30 +236,6 @@ std::string scheme_never_applies(const Rule& core) {
   }
   return {};
 }
-
-// Interrupts the context's solver when the caller asks to stop: a thread
-// polls `stop` while the rule is proved (Z3's interrupt is the one call
-// that is safe from another thread).
-class SolverWatch {
- public:
-  SolverWatch(z3::context& ctx, const std::function<bool()>& stop) {
-    if (!stop) return;
-    thread_ = std::jthread([&ctx, stop, this](std::stop_token token) {
-      while (!token.stop_requested()) {
-        if (stop()) {
-          fired_ = true;
-          ctx.interrupt();
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      }
-    });
-  }
-  bool fired() const { return fired_; }
-
- private:
-  std::atomic<bool> fired_ = false;
-  std::jthread thread_;  // last: joined before fired_ goes
-};
 
 class ClassRun {
  public:
@@ -466,7 +450,19 @@ RuleProof prove_rule(const Operation& entry, const ProveOptions& o) {
   p.model = rule.model().name;
   p.scheme = entry.words.scheme;
   if (p.scheme) p.out_of_scope = scheme_out_of_scope(rule);
-  if (!p.out_of_scope.empty()) return p;
+  // Embeddings first: their hosts are enumerated, so a scheme outside the
+  // topological encoding's scope is still answered.
+  if (o.embeddings && entry.terms) {
+    EmbeddingProveOptions eo;
+    eo.max_darts = o.embedding_darts > 0 ? o.embedding_darts : std::min(o.max_darts, rule.left().node_count() + 4);
+    eo.rlimit = o.rlimit;
+    eo.stop = o.stop;
+    p.embedding = prove_embeddings(entry, eo);
+  }
+  if (!p.out_of_scope.empty()) {
+    p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return p;
+  }
   const RuleVerdict verdict = check_rule(rule, entry.words);
   for (const auto& c : verdict.conditions)
     if (!c.holds) p.static_failures.push_back(c.name());

@@ -15,6 +15,7 @@
 
 #include "rewriting/operation.hpp"
 #include "core/graph.hpp"
+#include "proofs/embedding_prover.hpp"
 #include "proofs/host_class.hpp"
 #include "proofs/solver_types.hpp"
 
@@ -37,6 +38,10 @@ struct ProveOptions {
   /// rule's remaining ones end "unknown" with why "interrupted" (Ctrl-C
   /// must not wait for a query that may run for minutes).
   std::function<bool()> stop;
+  /// Embeddings (proofs/embedding_prover): hosts of up to this many darts
+  /// for rules with terms; 0 gives |L| + 4, at most max_darts.
+  std::size_t embedding_darts = 0;
+  bool embeddings = true;
 };
 
 enum class Status {
@@ -91,7 +96,12 @@ struct RuleProof {
   std::vector<ConstraintProof> constraints;
   bool interrupted = false;  // ProveOptions::stop fired: constraints may be missing, answers "interrupted"
   double seconds = 0;
+  /// The embedding answers of a rule with terms (each judged against the
+  /// static conditions of its embedding: EmbeddingAnswer::disagree).
+  std::optional<EmbeddingProof> embedding;
   std::size_t count(Agreement a) const;
+  /// Embedding answers that contradict Theorem 2/4 or do not replay.
+  std::size_t embedding_disagreements() const;
 };
 
 RuleProof prove_rule(const Operation& entry, const ProveOptions& options);

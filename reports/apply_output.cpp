@@ -33,25 +33,6 @@ namespace {
 // An embedded rule (003): the host's values come from the mesh file
 // (positions) or are drawn per orbit (seed 1); the rule's new values are
 // printed, and H is checked for validity and embedding consistency.
-// A value as a .jba file writes it: coordinates separated by spaces.
-std::string jba_value(const Value& v) {
-  switch (v.type) {
-    case ValueType::point2:
-    case ValueType::vector2:
-      return fmt::format("{} {}", v.x[0], v.x[1]);
-    case ValueType::point3:
-    case ValueType::vector3:
-    case ValueType::color:
-      return fmt::format("{} {} {}", v.x[0], v.x[1], v.x[2]);
-    case ValueType::real:
-      return fmt::format("{}", v.x[0]);
-    case ValueType::string:
-      return v.string();
-    default:
-      return v.str();
-  }
-}
-
 // A .jba host's embeddings, typed (a Jerboa class as the .jme reads it);
 // values that do not parse as their type are carried as text. An
 // embedding of the rule that the file names otherwise (cube.jba's

@@ -110,7 +110,7 @@ Json fuzz_json(const FuzzReport& f, const std::string& replay, const std::string
   return j;
 }
 
-Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays) {
+Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays, const std::vector<std::string>& embedding_replays) {
   Json constraints = Json::array();
   for (std::size_t i = 0; i < p.constraints.size(); ++i) {
     const auto& c = p.constraints[i];
@@ -122,7 +122,27 @@ Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& repl
                                {"note", c.note},
                                {"replay", i < replays.size() ? replays[i] : std::string()}});
   }
+  // The embeddings' answers (proofs/embedding_prover), one per embedding
+  // and reading.
+  Json embedding = Json::array();
+  if (p.embedding)
+    for (std::size_t i = 0; i < p.embedding->answers.size(); ++i) {
+      const auto& a = p.embedding->answers[i];
+      embedding.push_back(Json{{"condition", a.condition()},
+                               {"static", a.static_failures},
+                               {"reading", proofs::reading_name(a.reading)},
+                               {"answer", proofs::status_name(a.status)},
+                               {"darts", a.darts},
+                               {"why", a.why},
+                               {"replayed", a.replayed},
+                               {"replay", i < embedding_replays.size() ? embedding_replays[i] : std::string()},
+                               {"uninterpreted", a.uninterpreted},
+                               {"disagree", a.disagree},
+                               {"note", a.note}});
+    }
   return Json{{"scheme", p.scheme},
+              {"embedding", std::move(embedding)},
+              {"embedding_seconds", p.embedding ? p.embedding->seconds : 0.0},
               {"out_of_scope", p.out_of_scope.empty() ? Json(nullptr) : Json(p.out_of_scope)},
               {"seconds", p.seconds},
               {"constraints", std::move(constraints)},
@@ -177,7 +197,7 @@ Json rule_result_json(const RuleResult& r) {
   j["unsound"] = r.unsound();
   j["confirmation"] = r.host_search || r.scheme_search ? confirmation_json(r) : Json(nullptr);
   j["fuzz"] = r.fuzz ? fuzz_json(*r.fuzz, r.fuzz_replay, r.events_replay) : Json(nullptr);
-  j["proof"] = r.proof ? proof_json(*r.proof, r.proof_replays) : Json(nullptr);
+  j["proof"] = r.proof ? proof_json(*r.proof, r.proof_replays, r.embedding_replays) : Json(nullptr);
   return j;
 }
 

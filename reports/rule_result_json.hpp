@@ -21,7 +21,7 @@ Json rule_result_json(const analysis::RuleResult& r);
 Json fuzz_json(const analysis::FuzzReport& f, const std::string& replay, const std::string& events_replay);
 
 /// A solver stage's proof (also inside rule_result_json).
-Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays);
+Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays, const std::vector<std::string>& embedding_replays);
 
 /// The rules a catalog names but dartcheck does not check, with why.
 Json skipped_json(const std::vector<SkippedRule>& skipped);

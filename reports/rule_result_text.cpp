@@ -63,6 +63,41 @@ std::string fields_under(const std::string& head, const std::vector<std::string>
 
 }  // namespace
 
+namespace {
+
+// One row per embedding: its static conditions and the solver's two
+// readings, with what a counterexample breaks and how it replays.
+std::string embedding_proof_text(const proofs::EmbeddingProof& e, const std::vector<std::string>& replays) {
+  std::string out;
+  for (std::size_t i = 0; i + 1 < e.answers.size(); i += 2) {
+    std::string row = fmt::format("  {} static {}", e.answers[i].condition(),
+                                  e.answers[i].static_failures.empty() ? "holds" : fmt::format("fails {}", fmt::join(e.answers[i].static_failures, " ")));
+    for (const auto* a : {&e.answers[i], &e.answers[i + 1]}) {
+      row += fmt::format("; {}: {}", proofs::reading_name(a->reading), proofs::status_name(a->status));
+      if (a->status == proofs::EmbeddingAnswer::Status::counterexample)
+        row += fmt::format(" on {} darts{}", a->darts, a->reading == proofs::Reading::arithmetic ? (a->replayed ? " (replayed)" : " (NOT replayed)") : "");
+      else if (a->status == proofs::EmbeddingAnswer::Status::none)
+        row += fmt::format(" up to {} darts", a->darts);
+      if (a->disagree) row += " DISAGREE";
+    }
+    out += hanging("", row, 4);
+    for (const auto* a : {&e.answers[i], &e.answers[i + 1]}) {
+      const std::string reading(proofs::reading_name(a->reading));
+      if (!a->why.empty()) out += hanging("", fmt::format("    {}: {}", reading, a->why), 6);
+      if (!a->note.empty()) out += hanging("", fmt::format("    {}: {}", reading, a->note), 6);
+      if (!a->uninterpreted.empty()) out += hanging("", fmt::format("    {}: left uninterpreted: {}", reading, fmt::join(a->uninterpreted, "; ")), 6);
+      const std::size_t k = static_cast<std::size_t>(a - e.answers.data());
+      if (k < replays.size() && !replays[k].empty()) out += hanging("", fmt::format("    replay: {}", replays[k]), 6);
+    }
+  }
+  if (!e.answers.empty())
+    out += fmt::format("  embeddings: {} hosts, {} applications, {} queries ({} cached), {:.2f} s\n", e.hosts, e.applications, e.queries, e.cached,
+                       e.seconds);
+  return out;
+}
+
+}  // namespace
+
 std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& results) {
   using proofs::Agreement;
   std::string out;
@@ -72,8 +107,9 @@ std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& resul
     scoped += p.out_of_scope.empty();
     for (auto a : {Agreement::agree, Agreement::disagree, Agreement::unresolved, Agreement::not_compared}) counts[static_cast<int>(a)] += p.count(a);
     const std::string name = fmt::format("{} ({}):", printable(p.rule), printable(p.model));
+    const std::string embeddings = p.embedding ? embedding_proof_text(*p.embedding, result.embedding_replays) : std::string();
     if (!p.out_of_scope.empty()) {
-      out += hanging(name, fmt::format("out of the solver's scope: {}", p.out_of_scope), 2);
+      out += hanging(name, fmt::format("out of the solver's scope: {}", p.out_of_scope), 2) + embeddings;
       continue;
     }
     out += hanging(name,
@@ -99,6 +135,7 @@ std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& resul
                hanging(fmt::format("  {:<11} H: ", ""), arcs_text(cp.theorem->result_graph), 17);
       if (!result.proof_replays[i].empty()) out += fmt::format("  {:<11} replay: {}\n", "", printable(result.proof_replays[i]));
     }
+    out += embeddings;
   }
   out += fmt::format(
       "\n{} ({} in the solver's scope); {} agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
