@@ -89,4 +89,13 @@ std::string write_embedding_counterexample(const std::string& dir, const std::st
                      shell_quote(base + ".host.jba"), hook_args, shell_quote(base + ".result.jba"), shell_quote(base + ".result.jba"));
 }
 
+std::string write_event_witness(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule, const Map& host,
+                                const std::vector<Dart>& hooks) {
+  const std::string path = (std::filesystem::path(dir) / stem).string() + ".host.yaml";
+  write_file(path, map_to_yaml(host));
+  std::string hook_args;
+  for (Dart d : hooks) hook_args += fmt::format(" --hook {}", d);
+  return fmt::format("dartcheck events {} --rule {} --map {}{} --dynamic", shell_quote(catalog), shell_quote(rule), shell_quote(path), hook_args);
+}
+
 }  // namespace dartcheck::analysis

@@ -38,4 +38,10 @@ std::string write_counterexample(const std::string& dir, const std::string& stem
 std::string write_embedding_counterexample(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule,
                                            const EmbeddedMap& host, const std::vector<Dart>& hooks);
 
+/// A witness of a potential event (analysis/potential_events): DIR/STEM.host.yaml
+/// and the command that shows the event on it (`dartcheck events --map
+/// ... --dynamic`), shell-quoted.
+std::string write_event_witness(const std::string& dir, const std::string& stem, const std::string& catalog, const std::string& rule, const Map& host,
+                                const std::vector<Dart>& hooks);
+
 }  // namespace dartcheck::analysis

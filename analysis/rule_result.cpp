@@ -176,6 +176,17 @@ void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::st
                                                                        e.rule.name(), *a.host, a.hooks)
                                       : std::string());
   r.embedding_replays = std::move(embedding_replays);
+  // Potential events (004) decided on the same hosts as the embeddings.
+  const std::size_t k = options.embedding_darts > 0 ? options.embedding_darts : std::min(options.max_darts, e.rule.left().node_count() + 4);
+  r.potential_events = decide_potential_events(e, k, options.stop);
+  r.potential_event_replays.clear();
+  for (std::size_t i = 0; i < r.potential_events->events.size(); ++i) {
+    const auto& pe = r.potential_events->events[i];
+    r.potential_event_replays.push_back(pe.host && !out_dir.empty()
+                                            ? write_event_witness(out_dir, fmt::format("{}{}.event{}", file_stem(e.rule.name()), suffix, i), catalog_file,
+                                                                  e.rule.name(), *pe.host, pe.hooks)
+                                            : std::string());
+  }
   add_proof(r, std::move(proof), std::move(replays), std::move(maps));
 }
 

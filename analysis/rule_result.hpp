@@ -16,6 +16,7 @@
 #include "checkers/rule_conditions.hpp"
 #include "io/catalog.hpp"
 #include "proofs/rule_prover.hpp"
+#include "analysis/potential_events.hpp"
 
 namespace dartcheck::analysis {
 
@@ -53,6 +54,10 @@ struct RuleResult {
   // Per embedding answer of the proof: the shell commands that replay its
   // counterexample files (apply, then validate-map), or empty.
   std::vector<std::string> embedding_replays;
+  // 004's potential events decided on hosts up to K (prove), and per
+  // event the command that replays its witness (with --out), or empty.
+  std::optional<PotentialEvents> potential_events;
+  std::vector<std::string> potential_event_replays;
 
   /// How this run compares with the recorded verdict: one sentence per
   /// disagreement (empty: it matches). Filled by `compare_with_record`.

@@ -1,5 +1,6 @@
 #include "checkers/host_search.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 #include <fmt/format.h>
@@ -158,6 +159,82 @@ std::size_t for_each_small_map(const Model& model, std::size_t n, const std::fun
   if (containing && (containing->node_count() > n || !fix_arcs(s, *containing))) return 0;
   s.assign(0, 0);
   return std::min(s.out.hosts, budget);
+}
+
+namespace {
+
+// Every dart reached from `roots` along the links of the model, both ways.
+bool connected(const Map& g, std::span<const Dart> roots) {
+  std::vector<bool> seen(g.size(), false);
+  std::vector<Dart> stack;
+  for (Dart r : roots)
+    if (!seen[r]) {
+      seen[r] = true;
+      stack.push_back(r);
+    }
+  std::size_t count = stack.size();
+  while (!stack.empty()) {
+    const Dart d = stack.back();
+    stack.pop_back();
+    for (Dim i : g.model().dims)
+      for (Dart x : {g.link(i, d), g.inverse_link(i, d)})
+        if (x != no_dart && !seen[x]) {
+          seen[x] = true;
+          ++count;
+          stack.push_back(x);
+        }
+  }
+  return count == g.size();
+}
+
+}  // namespace
+
+RootedHosts for_each_rooted_host(const Operation& op, std::size_t max_darts, const std::function<bool(const Map&, std::span<const Dart>)>& visit,
+                                 std::size_t budget) {
+  RootedHosts out;
+  const Rule& rule = op.rule;
+  const Model& model = rule.model();
+  const TopoGraph& L = rule.left();
+  const bool scheme = op.words.scheme;
+  const std::size_t first = scheme ? 1 : L.node_count(), hooks = rule.hooks().size();
+  bool stopped = false;
+  out.complete = first - 1;
+  for (std::size_t n = first; n <= max_darts && !stopped; ++n) {
+    const std::size_t left = budget - std::min(budget, out.hosts);
+    const std::size_t visited = for_each_small_map(
+        model, n,
+        [&](const std::vector<std::vector<NodeId>>& sigma) {
+          Map g(model, n);
+          for (std::size_t k = 0; k < model.dims.size(); ++k)
+            for (Dart d = 0; d < n; ++d) g.set_link(model.dims[k], d, sigma[k][d]);
+          ++out.hosts;
+          if (!scheme) {
+            std::vector<Dart> roots(L.node_count());
+            std::iota(roots.begin(), roots.end(), Dart{0});
+            if (!connected(g, roots)) return true;
+            std::vector<Dart> hk(rule.hooks().begin(), rule.hooks().end());
+            return !(stopped = !visit(g, hk));
+          }
+          // The first hook at dart 0, the others anywhere.
+          std::vector<Dart> hk(hooks, 0);
+          while (true) {
+            if (connected(g, hk) && !visit(g, hk)) {
+              stopped = true;
+              return false;
+            }
+            std::size_t i = 1;
+            while (i < hooks && ++hk[i] == n) hk[i++] = 0;
+            if (i >= hooks) return true;
+          }
+        },
+        left, scheme ? nullptr : &L);
+    if (visited >= left) {
+      out.budget_hit = true;
+      break;
+    }
+    if (!stopped) out.complete = n;
+  }
+  return out;
 }
 
 }  // namespace dartcheck

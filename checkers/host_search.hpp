@@ -8,8 +8,10 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 
 #include "checkers/violation.hpp"
+#include "rewriting/operation.hpp"
 #include "rewriting/rule.hpp"
 
 namespace dartcheck {
@@ -41,5 +43,19 @@ HostSearch search_hosts(const Rule& rule, const Model& host_model, std::size_t e
 /// `budget` and no early stop means every such map was visited.
 std::size_t for_each_small_map(const Model& model, std::size_t n, const std::function<bool(const std::vector<std::vector<NodeId>>&)>& visit,
                                std::size_t budget = 2'000'000, const TopoGraph* containing = nullptr);
+
+/// Every host of an operation up to `max_darts` darts, each with the hooks
+/// to apply it at, smallest hosts first: for a DPO rule the maps containing
+/// L with its nodes as darts 0..|L|-1 (every match is one of these up to
+/// renaming), for a scheme the maps with the first hook at dart 0 and the
+/// others at every dart; only hosts connected to the hooks (another
+/// component is left as it is). `visit` returns false to stop.
+struct RootedHosts {
+  std::size_t hosts = 0;     // maps visited
+  std::size_t complete = 0;  // every host of up to this many darts was visited
+  bool budget_hit = false;   // `budget` maps stopped the search
+};
+RootedHosts for_each_rooted_host(const Operation& op, std::size_t max_darts, const std::function<bool(const Map&, std::span<const Dart>)>& visit,
+                                 std::size_t budget = 2'000'000);
 
 }  // namespace dartcheck

@@ -44,9 +44,10 @@ int prove(const ProveCommand& c) {
   o.max_darts = c.max_darts;
   o.scheme_darts = c.scheme_darts;
   o.rlimit = c.rlimit;
+  o.embedding_darts = c.embedding_darts;
   o.timeout_ms = static_cast<unsigned>(c.timeout * 1000);
   o.stop = [] { return interrupted(); };  // Ctrl-C interrupts the running Z3 query too
-  run.open_lines({{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}});
+  run.open_lines({{"max_darts", o.max_darts}, {"scheme_darts", o.scheme_darts}, {"embedding_darts", o.embedding_darts}, {"rlimit", o.rlimit}, {"timeout", c.timeout}});
   std::vector<RuleResult> results;
   const auto rules = run.rules();
   StageProgress progress(rules.size(), isatty(fileno(stderr)) != 0 && !terminal().quiet);

@@ -172,6 +172,10 @@ void add_prove(CLI::App& app, Commands& commands) {
                 "for rule schemes, hosts of up to this many darts (at most --max-darts): H has that many darts per node of R")
       ->capture_default_str()
       ->transform(count_option(1, 256));
+  p->add_option("--embedding-darts", o->embedding_darts,
+                "for rules with embedding terms, hosts of up to this many darts for the embedding queries (0: |L| + 4, at most --max-darts)")
+      ->capture_default_str()
+      ->transform(count_option(0, 64));
   p->add_option("--rlimit", o->rlimit, "Z3 resource limit per query (deterministic)")
       ->capture_default_str()
       ->transform(count_option(1, std::numeric_limits<unsigned>::max()));

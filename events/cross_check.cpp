@@ -148,11 +148,13 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
   };
 
   for (const EventClaim& cl : k.claims) {
+    const auto index = static_cast<std::size_t>(&cl - k.claims.data());
     const bool left = cl.event != Event::creation;
     const auto& touched = left ? touched_g[static_cast<std::size_t>(cl.orbit)] : touched_h[static_cast<std::size_t>(cl.orbit)];
     for (Dart rep : touched) {
       const std::string where = fmt::format("{}{}({})", left ? 'G' : 'H', o, rep);
       if (happened(cl.event, left, rep)) {
+        if (out.happened.empty() || out.happened.back() != index) out.happened.push_back(index);
         // A loop-case no-modification must have its loops.
         if (!cl.loop_positions.empty() && cl.certainty == Certainty::conditional)
           if (auto why = changed_link(cl, rep); !why.empty())

@@ -24,6 +24,9 @@ namespace dartcheck::events {
 struct CrossCheck {
   std::vector<std::string> contradictions;
   std::vector<std::string> resolutions;
+  /// Indices of k.claims whose event happened on an orbit its rule orbit
+  /// touches (a witness for a potential or conditional claim).
+  std::vector<std::size_t> happened;
 };
 
 /// `g` before and `h` after the application traced by `t`.

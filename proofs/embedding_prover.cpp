@@ -172,26 +172,6 @@ std::optional<Derived> derive(const Operation& op, Applier& applier, const Map& 
   return out;
 }
 
-// Every dart reached from `roots` along the links of the model.
-bool connected(const Map& g, std::span<const Dart> roots) {
-  std::vector<bool> seen(g.size(), false);
-  std::vector<Dart> stack(roots.begin(), roots.end());
-  for (Dart r : roots) seen[r] = true;
-  std::size_t count = roots.size();
-  while (!stack.empty()) {
-    const Dart d = stack.back();
-    stack.pop_back();
-    for (Dim i : g.model().dims)
-      for (Dart x : {g.link(i, d), g.inverse_link(i, d)})
-        if (x != no_dart && !seen[x]) {
-          seen[x] = true;
-          ++count;
-          stack.push_back(x);
-        }
-  }
-  return count == g.size();
-}
-
 // The query's text: two hosts with one text ask one question.
 std::string query_key(Reading r, const Derived& d, const OrbitQuestion& q) {
   std::string key(reading_name(r));
@@ -264,8 +244,6 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
   std::set<std::string> uninterpreted;
   Applier applier(op);
   std::string not_encoded;
-  std::size_t largest = 0;
-  bool budget_hit = false;
   auto all_settled = [&] { return std::all_of(searches.begin(), searches.end(), [](const Search& s) { return s.settled; }); };
   auto stopped = [&] { return watch.fired() || (o.stop && o.stop()); };
 
@@ -353,52 +331,16 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
     }
   };
 
-  const std::size_t hooks = rule.hooks().size();
-  for (std::size_t n = op.words.scheme ? 1 : L.node_count(); n <= o.max_darts && !all_settled() && !stopped(); ++n) {
-    largest = n;
-    const std::size_t budget = o.host_budget - std::min(o.host_budget, out.hosts);
-    const std::size_t visited = for_each_small_map(
-        rule.model(), n,
-        [&](const std::vector<std::vector<NodeId>>& sigma) {
-          Map g(rule.model(), n);
-          for (std::size_t k = 0; k < rule.model().dims.size(); ++k)
-            for (Dart d = 0; d < n; ++d) g.set_link(rule.model().dims[k], d, sigma[k][d]);
-          std::vector<Dart> roots;
-          if (op.words.scheme) {
-            roots.assign(hooks, 0);
-          } else {
-            for (NodeId x = 0; x < L.node_count(); ++x) roots.push_back(x);
-          }
-          if (!connected(g, op.words.scheme ? std::span<const Dart>(roots.data(), 1) : std::span<const Dart>(roots))) {
-            // A scheme with several hooks may join components; a DPO rule's L
-            // spans its components, so only connected hosts matter.
-            if (!op.words.scheme || hooks == 1) return true;
-          }
-          ++out.hosts;
-          if (op.words.scheme) {
-            // Hook 0 at dart 0 (any rooted host is one up to renaming), the
-            // others anywhere.
-            std::vector<Dart> hk(hooks, 0);
-            while (true) {
-              if (connected(g, hk)) ask(g, hk);
-              std::size_t i = 1;
-              while (i < hooks && ++hk[i] == n) hk[i++] = 0;
-              if (i >= hooks) break;
-            }
-          } else {
-            std::vector<Dart> hk;
-            for (NodeId x : rule.hooks()) hk.push_back(x);
-            ask(g, hk);
-          }
-          return !all_settled() && !stopped();
-        },
-        budget, op.words.scheme ? nullptr : &L);
-    if (visited >= budget) {
-      budget_hit = true;
-      --largest;  // the last size searched completely
-      break;
-    }
-  }
+  const RootedHosts searched = for_each_rooted_host(
+      op, o.max_darts,
+      [&](const Map& g, std::span<const Dart> hooks) {
+        ask(g, hooks);
+        return !all_settled() && !stopped();
+      },
+      o.host_budget);
+  out.hosts = searched.hosts;
+  const std::size_t largest = searched.complete;
+  const bool budget_hit = searched.budget_hit;
   out.interrupted = stopped();
   for (Search& s : searches) {
     EmbeddingAnswer& a = s.answer;
@@ -430,6 +372,9 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
     } else if (a.status == EmbeddingAnswer::Status::counterexample && a.reading == Reading::arithmetic && !a.replayed) {
       a.disagree = true;
       a.note = fmt::format("the solver's counterexample does not replay: {}", a.replay);
+    } else if (a.status == EmbeddingAnswer::Status::none && out.applications == 0) {
+      a.note = fmt::format("no host up to {} darts admits an application (every match is refused whatever the values): nothing was decided",
+                           a.darts);
     } else if (a.status == EmbeddingAnswer::Status::none && !holds) {
       a.note = fmt::format("{} fails syntactically; no host up to {} darts breaks {}{}: a false alarm up to {} darts", fmt::join(a.static_failures, ", "),
                            a.darts, a.embedding, a.reading == Reading::uninterpreted ? " for any interpretation of the operations" : " in real arithmetic",

@@ -143,6 +143,11 @@ Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& repl
   return Json{{"scheme", p.scheme},
               {"embedding", std::move(embedding)},
               {"embedding_seconds", p.embedding ? p.embedding->seconds : 0.0},
+              {"embedding_search", p.embedding ? Json{{"hosts", p.embedding->hosts},
+                                                      {"applications", p.embedding->applications},
+                                                      {"queries", p.embedding->queries},
+                                                      {"cached", p.embedding->cached}}
+                                               : Json(nullptr)},
               {"out_of_scope", p.out_of_scope.empty() ? Json(nullptr) : Json(p.out_of_scope)},
               {"seconds", p.seconds},
               {"constraints", std::move(constraints)},
@@ -198,6 +203,23 @@ Json rule_result_json(const RuleResult& r) {
   j["confirmation"] = r.host_search || r.scheme_search ? confirmation_json(r) : Json(nullptr);
   j["fuzz"] = r.fuzz ? fuzz_json(*r.fuzz, r.fuzz_replay, r.events_replay) : Json(nullptr);
   j["proof"] = r.proof ? proof_json(*r.proof, r.proof_replays, r.embedding_replays) : Json(nullptr);
+  if (r.potential_events) {
+    // 004's potential events decided on hosts up to K (prove).
+    Json events = Json::array();
+    for (std::size_t i = 0; i < r.potential_events->events.size(); ++i) {
+      const auto& pe = r.potential_events->events[i];
+      events.push_back(Json{{"orbit", pe.kind},
+                            {"claim", pe.claim},
+                            {"answer", pe.happens ? "witness" : "never"},
+                            {"darts", pe.darts},
+                            {"replay", i < r.potential_event_replays.size() ? r.potential_event_replays[i] : std::string()}});
+    }
+    j["potential_events"] = Json{{"events", std::move(events)},
+                                 {"hosts", r.potential_events->hosts},
+                                 {"applications", r.potential_events->applications},
+                                 {"not_decided", r.potential_events->not_decided},
+                                 {"seconds", r.potential_events->seconds}};
+  }
   return j;
 }
 

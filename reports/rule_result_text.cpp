@@ -96,6 +96,24 @@ std::string embedding_proof_text(const proofs::EmbeddingProof& e, const std::vec
   return out;
 }
 
+// 004's potential events, each with its witness or "never up to K".
+std::string potential_events_text(const RuleResult& r) {
+  if (!r.potential_events || r.potential_events->events.empty()) return {};
+  const auto& p = *r.potential_events;
+  std::string out;
+  for (std::size_t i = 0; i < p.events.size(); ++i) {
+    const auto& e = p.events[i];
+    out += hanging("", fmt::format("  event {} {}: {}", e.kind, e.claim,
+                                   e.happens ? fmt::format("happens on a {}-dart host", e.darts) : fmt::format("never up to {} darts", e.darts)),
+                   6);
+    if (i < r.potential_event_replays.size() && !r.potential_event_replays[i].empty())
+      out += hanging("", fmt::format("    replay: {}", printable(r.potential_event_replays[i])), 6);
+  }
+  if (!p.not_decided.empty()) out += hanging("", fmt::format("  events: {}", p.not_decided), 4);
+  out += fmt::format("  events: {} hosts, {} applications, {:.2f} s\n", p.hosts, p.applications, p.seconds);
+  return out;
+}
+
 }  // namespace
 
 std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& results) {
@@ -107,7 +125,8 @@ std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& resul
     scoped += p.out_of_scope.empty();
     for (auto a : {Agreement::agree, Agreement::disagree, Agreement::unresolved, Agreement::not_compared}) counts[static_cast<int>(a)] += p.count(a);
     const std::string name = fmt::format("{} ({}):", printable(p.rule), printable(p.model));
-    const std::string embeddings = p.embedding ? embedding_proof_text(*p.embedding, result.embedding_replays) : std::string();
+    const std::string embeddings =
+        (p.embedding ? embedding_proof_text(*p.embedding, result.embedding_replays) : std::string()) + potential_events_text(result);
     if (!p.out_of_scope.empty()) {
       out += hanging(name, fmt::format("out of the solver's scope: {}", p.out_of_scope), 2) + embeddings;
       continue;

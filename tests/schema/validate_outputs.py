@@ -165,6 +165,9 @@ check_json(["report", "catalogs/seed-operations.yaml", "-o", os.path.join(WORK, 
            "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
 check_json(["prove", "catalogs/seed-operations.yaml", "--rule", "fig17-exchange", "--format", "json"], 0, "https://dartcheck.invalid/schema/prove.schema.json")
 check_json(["prove", "tests/data/wrong-verdict.yaml", "--format", "json"], 1, "https://dartcheck.invalid/schema/prove.schema.json")
+check_json(["prove", "catalogs/embedding-operations.yaml", "--rule", "triangulation-all-faces-pos/corner-copy", "--max-darts", "5", "--format", "json"], 0,
+           "https://dartcheck.invalid/schema/prove.schema.json")
+check_json(["prove", "tests/data/embedding-readings.yaml", "--max-darts", "5", "--format", "json"], 0, "https://dartcheck.invalid/schema/prove.schema.json")
 check_json(["events", "catalogs/event-operations.yaml", "--format", "json"], 0, "https://dartcheck.invalid/schema/events.schema.json")
 check_json(["events", "catalogs/event-operations.yaml", "--rule", "delete-edge", "--map", "cube", "--hook", "0", "--dynamic", "--format", "json"],
            0, "https://dartcheck.invalid/schema/events.schema.json")
