@@ -42,6 +42,7 @@ bool RuleResult::unsound() const {
     if (!topological_failure() && (!cx.violations.empty() || !cx.unrepresentable.empty() || failing_names(embedding).empty())) return true;
   }
   if (fuzz && fuzz->verdict == FuzzClass::soundness_bug) return true;
+  if (!solver_fuzz_contradiction().empty()) return true;
   return proof && (proof->count(proofs::Agreement::disagree) > 0 || proof->embedding_disagreements() > 0);
 }
 
@@ -60,6 +61,46 @@ std::string RuleResult::recorded_text() const {
 }
 
 std::string_view RuleResult::record_source_name() const { return record_source == RecordSource::baseline ? "baseline" : "catalog"; }
+
+std::string RuleResult::solver_fuzz_contradiction() const {
+  if (!proof || !proof->embedding || !fuzz || !fuzz->counterexample) return {};
+  const Counterexample& cx = *fuzz->counterexample;
+  for (const auto& a : proof->embedding->answers) {
+    if (a.status != proofs::EmbeddingAnswer::Status::none || cx.host.size() > a.darts) continue;
+    if (std::find(cx.broken_embeddings.begin(), cx.broken_embeddings.end(), a.embedding) == cx.broken_embeddings.end()) continue;
+    return fmt::format("the solver found no host up to {} darts breaking {} ({} reading), yet fuzz broke it on a {}-dart host{}", a.darts, a.embedding,
+                       proofs::reading_name(a.reading), cx.host.size(),
+                       a.reading == proofs::Reading::arithmetic ? " (the reals and the library's doubles may round apart: docs/prove.md)" : "");
+  }
+  return {};
+}
+
+std::vector<std::string> RuleResult::solver_lines() const {
+  std::vector<std::string> out;
+  if (!proof || !proof->embedding) return out;
+  using Status = proofs::EmbeddingAnswer::Status;
+  const auto& answers = proof->embedding->answers;
+  for (std::size_t i = 0; i + 1 < answers.size(); i += 2) {
+    const auto &uf = answers[i], &ar = answers[i + 1];
+    const std::string head = uf.static_failures.empty() ? fmt::format("{} holds", uf.condition())
+                                                        : fmt::format("fails {} syntactically", fmt::join(uf.static_failures, ", "));
+    const std::string ops = uf.functions.empty() ? std::string("whatever the values") : fmt::format("for every interpretation of {}", fmt::join(uf.functions, ", "));
+    std::string z3;
+    if (uf.disagree || ar.disagree)
+      z3 = fmt::format("DISAGREE: {}", uf.disagree ? uf.note : ar.note);
+    else if (ar.status == Status::counterexample)
+      z3 = fmt::format("a {}-dart host breaks {} in dartcheck's algebra{}", ar.darts, ar.embedding, ar.replayed ? " (replayed)" : " (NOT replayed)");
+    else if (uf.status == Status::counterexample && ar.status == Status::none)
+      z3 = fmt::format("no host up to {} darts breaks {} in real arithmetic; another interpretation of {} would, on {} darts", ar.darts, ar.embedding,
+                       fmt::join(uf.functions, ", "), uf.darts);
+    else if (uf.status == Status::none)
+      z3 = fmt::format("no host up to {} darts breaks {}, {}", uf.darts, uf.embedding, ops);
+    else
+      z3 = fmt::format("unknown ({})", ar.status == Status::unknown ? ar.why : uf.why);
+    out.push_back(fmt::format("solver: {}; Z3: {}", head, z3));
+  }
+  return out;
+}
 
 std::string RuleResult::confirmation_text() const {
   const std::string& model = entry->rule.model().name;
@@ -120,6 +161,22 @@ RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std:
   }
   compare_with_record(r);
   return r;
+}
+
+void run_embedding_solver(RuleResult& r, const std::function<bool()>& stop) {
+  const CatalogRule& e = *r.entry;
+  if (!e.terms) return;
+  proofs::RuleProof p;
+  p.rule = e.rule.name();
+  p.model = e.rule.model().name;
+  p.scheme = e.words.scheme;
+  proofs::EmbeddingProveOptions o;
+  o.max_darts = std::min<std::size_t>(10, e.rule.left().node_count() + 4);
+  o.stop = stop;
+  p.embedding = proofs::prove_embeddings(e, o);
+  p.interrupted = p.embedding->interrupted;
+  p.seconds = p.embedding->seconds;
+  add_proof(r, std::move(p), {}, {});
 }
 
 void add_proof(RuleResult& r, proofs::RuleProof proof, std::vector<std::string> replays, std::vector<std::optional<Counterexample>> maps) {
@@ -208,7 +265,10 @@ void compare_with_record(RuleResult& r) {
     how.erase(std::unique(how.begin(), how.end()), how.end());
     r.mismatches.push_back(fmt::format("the {} records 'consistent', but {} broke a map", source, fmt::join(how, " and ")));
   }
-  if (r.unsound()) r.mismatches.push_back("SOUNDNESS BUG: a stage contradicts the static verdict where a theorem says they agree");
+  if (const auto c = r.solver_fuzz_contradiction(); !c.empty())
+    r.mismatches.push_back("DISAGREE: " + c);
+  else if (r.unsound())
+    r.mismatches.push_back("SOUNDNESS BUG: a stage contradicts the static verdict where a theorem says they agree");
 }
 
 ResultCounts count_results(const std::vector<RuleResult>& results) {

@@ -6,6 +6,7 @@
 // verdict are computed in one place and read the same in every output.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,6 +87,13 @@ struct RuleResult {
   std::string_view record_source_name() const;
   /// The model-level confirmation in one sentence ("" when none ran).
   std::string confirmation_text() const;
+  /// The solver's refined verdict per embedding (prove, check --solver):
+  /// "fails A(col) syntactically; Z3: no host up to 5 darts breaks col,
+  /// for every interpretation of mix"; empty without a solver stage.
+  std::vector<std::string> solver_lines() const;
+  /// Fuzz broke an embedding on a host no larger than the K up to which
+  /// the solver found none (in either reading): what contradicts, or empty.
+  std::string solver_fuzz_contradiction() const;
 };
 
 /// The static stage of one rule: conditions, embedding checks and, with
@@ -103,6 +111,11 @@ RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std:
 /// `events --dynamic` line; none when there is nowhere to write.
 void add_fuzz(RuleResult& r, FuzzReport report, std::uint64_t seed, const std::string& out_dir, const std::string& catalog_file,
               const std::string& suffix = "");
+
+/// check --solver: the embedding queries alone (proofs/embedding_prover)
+/// on hosts of up to |L| + 4 darts (at most 10), as the rule's proof,
+/// compared again; nothing for a rule without terms.
+void run_embedding_solver(RuleResult& r, const std::function<bool()>& stop);
 
 /// Adds a proof with its replays and dynamic counterexamples, and compares again.
 void add_proof(RuleResult& r, proofs::RuleProof proof, std::vector<std::string> replays, std::vector<std::optional<Counterexample>> maps);

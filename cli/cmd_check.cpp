@@ -60,7 +60,7 @@ int check(const CheckOptions& o) {
   if (!o.write_baseline.empty()) check_writable(o.write_baseline);  // before the work, not after it
   if (!o.write_baseline.empty() && !run.shard().whole())
     throw InputError("<command line>", 0, 0, "--write-baseline: a baseline records every rule, not a shard's");
-  run.open_lines({{"confirm_darts", o.confirm_darts}});
+  run.open_lines({{"confirm_darts", o.confirm_darts}, {"solver", o.solver}});
   const Catalog& catalog = run.catalog();
   const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.words.scheme; });
   const std::vector<Map> maps = o.confirm_darts > 0 && schemes ? catalog_maps(catalog) : std::vector<Map>{};
@@ -69,6 +69,7 @@ int check(const CheckOptions& o) {
   for (const CatalogRule* entry : rules) {
     if (interrupted()) break;
     results.push_back(analyse_static(catalog, *entry, o.confirm_darts, maps, run.source()));
+    if (o.solver) run_embedding_solver(results.back(), [] { return interrupted(); });
     run.finished(results.back());
   }
   const int status = run.finish(results, rules.size());

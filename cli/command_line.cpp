@@ -106,6 +106,8 @@ void add_check(CLI::App& app, Commands& commands) {
   c->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (for a .jme modeler, which records none)");
   c->add_option("--write-baseline", o->write_baseline, "write this run's verdicts (and the rules not checked) as a baseline file");
   c->add_flag("--explain", o->explain, "print the witnesses of every failing condition and the counterexample map");
+  c->add_flag("--solver", o->solver,
+              "ask Z3 about each embedding of a rule with terms (hosts up to |L| + 4 darts, two readings): false alarms told from real breaks");
   c->add_option("--confirm-darts", o->confirm_darts, "for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
       ->capture_default_str()
       ->transform(host_darts());

@@ -83,6 +83,7 @@ struct CheckOptions {
   std::string write_baseline;  // write this run's verdicts as a baseline
   bool explain = false;
   std::size_t confirm_darts = 2;  // extra darts beyond L for the model-level search (0: none)
+  bool solver = false;             // Z3 on each embedding (proofs/embedding_prover): the refined verdict
 };
 /// Exit 0 iff every rule's failing conditions equal the recorded verdict
 /// (all conditions hold where none is recorded), 1 otherwise.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -225,12 +226,25 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
     std::string unknown;  // why the answer cannot be none
   };
   std::vector<Search> searches;
+  // The functions each embedding's terms call (for "every interpretation of ...").
+  auto functions_of = [&](const std::string& embedding) {
+    std::set<std::string> names;
+    std::function<void(const Term&)> walk = [&](const Term& t) {
+      if (t.kind == Term::Kind::call && !t.implicit) names.insert(t.name);
+      for (const Term& a : t.args) walk(a);
+    };
+    for (const auto* side : {&terms.left, &terms.right})
+      for (const NodeTerm& t : *side)
+        if (t.embedding == embedding) walk(t.term);
+    return std::vector<std::string>(names.begin(), names.end());
+  };
   for (std::size_t k = 0; k < terms.embeddings.size(); ++k)
     for (Reading r : {Reading::uninterpreted, Reading::arithmetic}) {
       Search s;
       s.embedding = k;
       s.answer.embedding = terms.embeddings[k].name;
       s.answer.reading = r;
+      s.answer.functions = functions_of(s.answer.embedding);
       for (const auto& v : verdicts)
         if (v.embedding == s.answer.embedding && v.required && !v.holds) s.answer.static_failures.push_back(v.name());
       searches.push_back(std::move(s));
@@ -249,7 +263,8 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
 
   // One application: every unsettled embedding and reading asked.
   auto ask = [&](const Map& g, std::span<const Dart> hooks) {
-    auto d = derive(op, applier, g, hooks, not_encoded, o.fault_fresh_writes);
+    auto d = derive(op, applier, g, hooks, not_encoded, o.fault == EmbeddingProveOptions::Fault::fresh_writes);
+    if (o.fault == EmbeddingProveOptions::Fault::no_breaks) return;
     if (!d) return;
     ++out.applications;
     for (Search& s : searches) {

@@ -42,9 +42,10 @@ struct EmbeddingProveOptions {
   unsigned rlimit = 20'000'000;   // Z3 resource units per query
   std::size_t host_budget = 2'000'000;  // maps enumerated per rule, at most
   std::function<bool()> stop;     // polled between queries (Ctrl-C)
-  /// Tests only: every value R writes is read as a fresh unknown, a planted
-  /// encoding fault whose counterexamples must fail to replay (DISAGREE).
-  bool fault_fresh_writes = false;
+  /// Tests only, planted encoding faults: `fresh_writes` reads every value
+  /// R writes as a fresh unknown (counterexamples that do not replay);
+  /// `no_breaks` never asks Z3 (`none` where fuzz breaks the embedding).
+  enum class Fault : std::uint8_t { none, fresh_writes, no_breaks } fault = Fault::none;
 };
 
 struct EmbeddingAnswer {
@@ -55,6 +56,7 @@ struct EmbeddingAnswer {
   std::size_t darts = 0;  // the counterexample's host size, or K searched
   std::string why;        // unknown: the limit; counterexample: what breaks
   std::vector<std::string> uninterpreted;  // arithmetic reading: functions left uninterpreted
+  std::vector<std::string> functions;      // the functions the embedding's terms call
   // A counterexample: the host with its values (arithmetic), the hooks,
   // and whether the library's application breaks the same embedding.
   std::optional<EmbeddedMap> host;

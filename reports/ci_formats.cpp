@@ -74,7 +74,7 @@ std::string sarif_document(const std::string& catalog, const std::vector<RuleRes
                                  {"level", error ? "error" : "note"},
                                  {"message", Json{{"text", text}}},
                                  {"locations", sarif_location(catalog, r.entry->location)},
-                                 {"properties", Json{{"rule", r.name()}, {"recorded", r.recorded_text()}}}});
+                                 {"properties", Json{{"rule", r.name()}, {"recorded", r.recorded_text()}, {"solver", r.solver_lines()}}}});
   };
   for (const RuleResult& r : results) {
     const auto& recorded = r.entry->expected_failures;
@@ -143,7 +143,9 @@ std::string junit_document(const std::string& command, const std::string& catalo
       f.text() = xml_safe(fmt::format("{}: {}", e.location.str(), fmt::join(r.mismatches, "; "))).c_str();
     }
     const std::string confirmation = r.confirmation_text();
-    tc.append_child("system-out").text() = xml_safe(r.verdict_text() + (confirmation.empty() ? "" : "; " + confirmation)).c_str();
+    std::string solver;
+    for (const auto& line : r.solver_lines()) solver += "; " + line;
+    tc.append_child("system-out").text() = xml_safe(r.verdict_text() + (confirmation.empty() ? "" : "; " + confirmation) + solver).c_str();
   }
   for (std::size_t k = 0; k < extra_failures.size(); ++k) {
     auto tc = suite.append_child("testcase");

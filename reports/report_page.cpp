@@ -378,6 +378,15 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
               counterexample_html(r, *r.proof_maps[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
                                   r.proof_replays[k], pictures, "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
     }
+    // Embeddings: the refined verdict per embedding (docs/prove.md, Embeddings).
+    const auto lines = r.solver_lines();
+    if (!lines.empty()) {
+      out += "<ul>\n";
+      for (const auto& line : lines) out += fmt::format("<li>{}</li>\n", html_text(line));
+      for (const auto& replay : r.embedding_replays)
+        if (!replay.empty()) out += fmt::format("<li>Replay: <code>{}</code></li>\n", html_text(replay));
+      out += "</ul>\n";
+    }
   }
   return out;
 }

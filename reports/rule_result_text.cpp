@@ -363,6 +363,7 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
         out += row_note(indent, printable(fmt::format("read: {}.{} = {}", x.node, x.embedding, x.term->str())));
     }
     if (r.host_search || r.scheme_search) out += row_note(indent, r.confirmation_text());
+    for (const auto& line : r.solver_lines()) out += row_note(indent, printable(line));
     if (o.explain && !r.failures.empty()) {
       for (const auto& cond : v.conditions) {
         if (cond.holds) continue;

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "analysis/embedded_fuzz.hpp"
+#include "analysis/rule_result.hpp"
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/host_search.hpp"
 #include "generators/random_rules.hpp"
@@ -30,7 +32,7 @@ const Catalog& embedding_catalog() {
   return c;
 }
 
-const Operation& rule_named(const std::string& name) {
+const CatalogRule& rule_named(const std::string& name) {
   for (const auto& e : embedding_catalog().rules)
     if (e.rule.name() == name) return e;
   throw std::runtime_error("no rule " + name);
@@ -237,7 +239,7 @@ TEST(ProveEmbeddings, RandomRulesMatchBruteForceUpToK) {
 // that the library does not reproduce: each is reported as a DISAGREE.
 TEST(ProveEmbeddings, PlantedFaultIsCaughtByTheReplay) {
   EmbeddingProveOptions o = at(6);
-  o.fault_fresh_writes = true;
+  o.fault = EmbeddingProveOptions::Fault::fresh_writes;
   int disagreements = 0;
   for (const char* name : {"fig17b-vertex-insertion", "fig12b-vertex-insertion", "triangulation-jerboa-pos", "fig19b-triangulation-col"}) {
     const EmbeddingProof p = prove_embeddings(rule_named(name), o);
@@ -263,4 +265,28 @@ TEST(ProveEmbeddings, ReadingsDifferWhereOnlyTheAlgebraAgrees) {
   const auto& a = answer(shifted, "pos", Reading::arithmetic);
   EXPECT_EQ(a.status, EmbeddingAnswer::Status::counterexample);
   EXPECT_TRUE(a.replayed) << a.replay;
+}
+
+// Item 4's second cross-check, with a planted fault: a solver that never
+// asks Z3 answers `none` up to K = 8 darts for fig17a's two terms, which
+// fuzz breaks on a 4-dart host; the rule's result must then contradict
+// itself (a DISAGREE, exit 3), and without the fault it must not.
+TEST(ProveEmbeddings, FuzzBreakWithinKContradictsASolverNone) {
+  const auto& entry = rule_named("fig17a-translation/two-terms");
+  analysis::FuzzOptions fo;
+  fo.runs = 2000;
+  const analysis::FuzzReport report = analysis::fuzz_embedded_rule(entry, {}, fo);
+  ASSERT_TRUE(report.counterexample);
+  ASSERT_LE(report.counterexample->host.size(), 8U);
+  for (const bool faulty : {false, true}) {
+    analysis::RuleResult r = analysis::analyse_static(embedding_catalog(), entry, 0);
+    analysis::add_fuzz(r, report, fo.seed, "", "");
+    proofs::RuleProof p;
+    EmbeddingProveOptions o = at(8);
+    if (faulty) o.fault = EmbeddingProveOptions::Fault::no_breaks;
+    p.embedding = prove_embeddings(entry, o);
+    analysis::add_proof(r, std::move(p), {}, {});
+    EXPECT_EQ(!r.solver_fuzz_contradiction().empty(), faulty) << r.solver_fuzz_contradiction();
+    EXPECT_EQ(r.unsound(), faulty);
+  }
 }

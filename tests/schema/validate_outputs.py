@@ -168,6 +168,9 @@ check_json(["prove", "tests/data/wrong-verdict.yaml", "--format", "json"], 1, "h
 check_json(["prove", "catalogs/embedding-operations.yaml", "--rule", "triangulation-all-faces-pos/corner-copy", "--max-darts", "5", "--format", "json"], 0,
            "https://dartcheck.invalid/schema/prove.schema.json")
 check_json(["prove", "tests/data/embedding-readings.yaml", "--max-darts", "5", "--format", "json"], 0, "https://dartcheck.invalid/schema/prove.schema.json")
+check_json(["check", "catalogs/embedding-operations.yaml", "--solver", "--rule", "fig19b-triangulation-col/equal-terms", "--format", "json"], 0,
+           "https://dartcheck.invalid/schema/check.schema.json")
+check_json(["prove", "catalogs/event-operations.yaml", "--rule", "unsew2", "--format", "json"], 0, "https://dartcheck.invalid/schema/prove.schema.json")
 check_json(["events", "catalogs/event-operations.yaml", "--format", "json"], 0, "https://dartcheck.invalid/schema/events.schema.json")
 check_json(["events", "catalogs/event-operations.yaml", "--rule", "delete-edge", "--map", "cube", "--hook", "0", "--dynamic", "--format", "json"],
            0, "https://dartcheck.invalid/schema/events.schema.json")
