@@ -171,7 +171,7 @@ void run_embedding_solver(RuleResult& r, const std::function<bool()>& stop) {
   p.model = e.rule.model().name;
   p.scheme = e.words.scheme;
   proofs::EmbeddingProveOptions o;
-  o.max_darts = std::min<std::size_t>(10, e.rule.left().node_count() + 4);
+  o.max_darts = e.rule.left().node_count() + 4;
   o.stop = stop;
   p.embedding = proofs::prove_embeddings(e, o);
   p.interrupted = p.embedding->interrupted;
@@ -234,7 +234,7 @@ void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::st
                                       : std::string());
   r.embedding_replays = std::move(embedding_replays);
   // Potential events (004) decided on the same hosts as the embeddings.
-  const std::size_t k = options.embedding_darts > 0 ? options.embedding_darts : std::min(options.max_darts, e.rule.left().node_count() + 4);
+  const std::size_t k = options.embedding_darts > 0 ? options.embedding_darts : e.rule.left().node_count() + 4;
   r.potential_events = decide_potential_events(e, k, options.stop);
   r.potential_event_replays.clear();
   for (std::size_t i = 0; i < r.potential_events->events.size(); ++i) {

@@ -113,7 +113,7 @@ void add_fuzz(RuleResult& r, FuzzReport report, std::uint64_t seed, const std::s
               const std::string& suffix = "");
 
 /// check --solver: the embedding queries alone (proofs/embedding_prover)
-/// on hosts of up to |L| + 4 darts (at most 10), as the rule's proof,
+/// on hosts of up to |L| + 4 darts, as the rule's proof,
 /// compared again; nothing for a rule without terms.
 void run_embedding_solver(RuleResult& r, const std::function<bool()>& stop);
 

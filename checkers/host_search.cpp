@@ -198,7 +198,7 @@ RootedHosts for_each_rooted_host(const Operation& op, std::size_t max_darts, con
   const bool scheme = op.words.scheme;
   const std::size_t first = scheme ? 1 : L.node_count(), hooks = rule.hooks().size();
   bool stopped = false;
-  out.complete = first - 1;
+  out.complete = std::min(first - 1, max_darts);  // no smaller host can hold L
   for (std::size_t n = first; n <= max_darts && !stopped; ++n) {
     const std::size_t left = budget - std::min(budget, out.hosts);
     const std::size_t visited = for_each_small_map(

@@ -175,7 +175,7 @@ void add_prove(CLI::App& app, Commands& commands) {
       ->capture_default_str()
       ->transform(count_option(1, 256));
   p->add_option("--embedding-darts", o->embedding_darts,
-                "for rules with embedding terms, hosts of up to this many darts for the embedding queries (0: |L| + 4, at most --max-darts)")
+                "for rules with embedding terms, hosts of up to this many darts for the embedding and potential-event queries (0: |L| + 4)")
       ->capture_default_str()
       ->transform(count_option(0, 64));
   p->add_option("--rlimit", o->rlimit, "Z3 resource limit per query (deterministic)")

@@ -165,7 +165,7 @@ struct ProveCommand {
   std::size_t scheme_darts = 6;
   unsigned rlimit = 200'000'000;
   double timeout = 0;  // seconds of wall clock per query on top of rlimit (0: none)
-  std::size_t embedding_darts = 0;  // hosts of the embedding queries (0: |L| + 4, at most max_darts)
+  std::size_t embedding_darts = 0;  // hosts of the embedding and potential-event queries (0: |L| + 4)
   bool explain = false;
 };
 /// Exit 3 if some solver answer contradicts the static verdict where a

@@ -38,8 +38,8 @@ struct ProveOptions {
   /// rule's remaining ones end "unknown" with why "interrupted" (Ctrl-C
   /// must not wait for a query that may run for minutes).
   std::function<bool()> stop;
-  /// Embeddings (proofs/embedding_prover): hosts of up to this many darts
-  /// for rules with terms; 0 gives |L| + 4, at most max_darts.
+  /// Embeddings and potential events: hosts of up to this many darts for
+  /// rules with terms; 0 gives |L| + 4 (the host budget bounds the work).
   std::size_t embedding_darts = 0;
   bool embeddings = true;
 };
