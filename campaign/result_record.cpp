@@ -128,6 +128,34 @@ Json answer_record(const proofs::ClassAnswer& a) {
               {"seconds", a.seconds}};
 }
 
+// The solver's embedding answers, without their hosts (the files are
+// written before the record; the renderers read the rest).
+Json embedding_record(const proofs::EmbeddingProof& e) {
+  Json answers = Json::array();
+  for (const auto& a : e.answers)
+    answers.push_back(Json{{"embedding", a.embedding},
+                           {"static_failures", a.static_failures},
+                           {"reading", static_cast<int>(a.reading)},
+                           {"status", static_cast<int>(a.status)},
+                           {"darts", a.darts},
+                           {"why", a.why},
+                           {"uninterpreted", a.uninterpreted},
+                           {"functions", a.functions},
+                           {"replayed", a.replayed},
+                           {"replay", a.replay},
+                           {"disagree", a.disagree},
+                           {"note", a.note}});
+  return Json{{"answers", std::move(answers)}, {"hosts", e.hosts},         {"applications", e.applications}, {"queries", e.queries},
+              {"cached", e.cached},            {"out_of_scope", e.out_of_scope}, {"interrupted", e.interrupted}, {"seconds", e.seconds}};
+}
+
+Json potential_events_record(const analysis::PotentialEvents& p) {
+  Json events = Json::array();
+  for (const auto& e : p.events) events.push_back(Json{{"kind", e.kind}, {"claim", e.claim}, {"happens", e.happens}, {"darts", e.darts}});
+  return Json{{"events", std::move(events)},       {"hosts", p.hosts},   {"applications", p.applications},
+              {"not_decided", p.not_decided}, {"interrupted", p.interrupted}, {"seconds", p.seconds}};
+}
+
 Json proof_record(const proofs::RuleProof& p) {
   Json constraints = Json::array();
   for (const auto& c : p.constraints)
@@ -146,6 +174,7 @@ Json proof_record(const proofs::RuleProof& p) {
               {"static_failures", p.static_failures},
               {"constraints", std::move(constraints)},
               {"interrupted", p.interrupted},
+              {"embedding", optional_json(p.embedding, embedding_record)},
               {"seconds", p.seconds}};
 }
 
@@ -365,6 +394,49 @@ proofs::ClassAnswer read_answer(const In& in) {
   return a;
 }
 
+proofs::EmbeddingProof read_embedding(const In& in) {
+  proofs::EmbeddingProof e;
+  const In as = in["answers"];
+  for (std::size_t k = 0; k < as.size(); ++k) {
+    const In a = as[k];
+    proofs::EmbeddingAnswer x;
+    x.embedding = a["embedding"].str();
+    x.static_failures = a["static_failures"].strings();
+    x.reading = static_cast<proofs::Reading>(a["reading"].integer(0, static_cast<int>(proofs::Reading::arithmetic)));
+    x.status = static_cast<proofs::EmbeddingAnswer::Status>(a["status"].integer(0, static_cast<int>(proofs::EmbeddingAnswer::Status::unknown)));
+    x.darts = a["darts"].count();
+    x.why = a["why"].str();
+    x.uninterpreted = a["uninterpreted"].strings();
+    x.functions = a["functions"].strings();
+    x.replayed = a["replayed"].boolean();
+    x.replay = a["replay"].str();
+    x.disagree = a["disagree"].boolean();
+    x.note = a["note"].str();
+    e.answers.push_back(std::move(x));
+  }
+  e.hosts = in["hosts"].count();
+  e.applications = in["applications"].count();
+  e.queries = in["queries"].count();
+  e.cached = in["cached"].count();
+  e.out_of_scope = in["out_of_scope"].str();
+  e.interrupted = in["interrupted"].boolean();
+  e.seconds = in["seconds"].real();
+  return e;
+}
+
+analysis::PotentialEvents read_potential_events(const In& in) {
+  analysis::PotentialEvents p;
+  const In es = in["events"];
+  for (std::size_t k = 0; k < es.size(); ++k)
+    p.events.push_back({es[k]["kind"].str(), es[k]["claim"].str(), es[k]["happens"].boolean(), es[k]["darts"].count(), std::nullopt, {}});
+  p.hosts = in["hosts"].count();
+  p.applications = in["applications"].count();
+  p.not_decided = in["not_decided"].str();
+  p.interrupted = in["interrupted"].boolean();
+  p.seconds = in["seconds"].real();
+  return p;
+}
+
 proofs::RuleProof read_proof(const In& in) {
   proofs::RuleProof p;
   p.rule = in["rule"].str();
@@ -386,6 +458,7 @@ proofs::RuleProof read_proof(const In& in) {
     p.constraints.push_back(std::move(cp));
   }
   p.interrupted = in["interrupted"].boolean();
+  p.embedding = in["embedding"].optional(read_embedding);
   p.seconds = in["seconds"].real();
   return p;
 }
@@ -404,7 +477,10 @@ Json result_record(const RuleResult& r) {
               {"events_replay", r.events_replay},
               {"proof", optional_json(r.proof, proof_record)},
               {"proof_replays", r.proof_replays},
-              {"proof_maps", std::move(maps)}};
+              {"proof_maps", std::move(maps)},
+              {"embedding_replays", r.embedding_replays},
+              {"potential_events", optional_json(r.potential_events, potential_events_record)},
+              {"potential_event_replays", r.potential_event_replays}};
 }
 
 void restore_record(RuleResult& r, const Json& record) {
@@ -424,6 +500,9 @@ void restore_record(RuleResult& r, const Json& record) {
   r.proof_maps.clear();
   const In maps = in["proof_maps"];
   for (std::size_t k = 0; k < maps.size(); ++k) r.proof_maps.push_back(maps[k].optional(read_counterexample));
+  r.embedding_replays = in["embedding_replays"].strings();
+  r.potential_events = in["potential_events"].optional(read_potential_events);
+  r.potential_event_replays = in["potential_event_replays"].strings();
   analysis::compare_with_record(r);
 }
 

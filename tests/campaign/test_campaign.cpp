@@ -129,6 +129,26 @@ TEST(ResultRecord, EmbeddedCounterexamplesReadBackUnchanged) {
   EXPECT_GT(values, 0U);
 }
 
+// The solver's embedding answers and decided potential events (prove on
+// embedded rules and on the event catalog) read back as written.
+TEST(ResultRecord, EmbeddingAnswersAndPotentialEventsReadBackUnchanged) {
+  proofs::ProveOptions po;
+  po.max_darts = 5;
+  std::size_t answers = 0, events = 0;
+  for (const char* file : {"/catalogs/embedding-operations.yaml", "/catalogs/event-operations.yaml"}) {
+    const Catalog catalog = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + file);
+    for (std::size_t k = 0; k < catalog.rules.size(); k += 3) {
+      RuleResult r = analysis::analyse_static(catalog, catalog.rules[k], 0);
+      run_proof(r, po, "", catalog.file);
+      if (r.proof->embedding) answers += r.proof->embedding->answers.size();
+      if (r.potential_events) events += r.potential_events->events.size();
+      expect_round_trip(catalog, r);
+    }
+  }
+  EXPECT_GT(answers, 10U);
+  EXPECT_GT(events, 5U);
+}
+
 // A damaged record is refused with the path of the damage, never read as
 // a result: a dart beyond the map, a missing key, a wrong type, an enum
 // out of range, and static failures that the catalog no longer gives.
