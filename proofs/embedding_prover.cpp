@@ -289,7 +289,9 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
       ++out.queries;
       z3::check_result r = z3::unknown;
       try {
+        const auto asked = Clock::now();
         r = solver.check();
+        out.z3_seconds += std::chrono::duration<double>(Clock::now() - asked).count();
       } catch (const z3::exception& e) {
         s.unknown = fmt::format("Z3: {}", e.msg());
         continue;

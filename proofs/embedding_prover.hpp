@@ -74,6 +74,7 @@ std::string_view status_name(EmbeddingAnswer::Status s);
 struct EmbeddingProof {
   std::vector<EmbeddingAnswer> answers;  // per embedding R labels, uninterpreted then arithmetic
   std::size_t hosts = 0, applications = 0, queries = 0, cached = 0;
+  double z3_seconds = 0;  // inside Z3's checks
   std::string out_of_scope;  // why the rule is not encoded (no terms, ...)
   bool interrupted = false;
   double seconds = 0;
