@@ -1,5 +1,6 @@
 #include "analysis/counterexample_files.hpp"
 
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
@@ -15,9 +16,17 @@
 namespace dartcheck::analysis {
 
 std::string file_stem(const std::string& name) {
-  std::string s = name;
-  for (char& c : s)
-    if (c == '/' || c == '\\' || c == ' ') c = '.';
+  // Injective: '.' in a stem only ever comes from '/', and '%' only from
+  // an escape, so two rule names never share a file.
+  std::string s;
+  for (const unsigned char c : name) {
+    if (c == '/')
+      s += '.';
+    else if (std::isalnum(c) || c == '-' || c == '_' || c == '+' || c == '=' || c == ',' || c == '@')
+      s += static_cast<char>(c);
+    else
+      s += fmt::format("%{:02X}", c);
+  }
   return s;
 }
 
@@ -25,7 +34,8 @@ namespace {
 
 std::string replay_command(ReplayCommand what, const std::string& catalog, const std::string& rule, const std::string& host,
                            const std::vector<Dart>& hooks) {
-  std::string cmd = fmt::format("dartcheck {} {} --rule {} --map {}", what == ReplayCommand::apply ? "apply" : "events", catalog, rule, host);
+  std::string cmd = fmt::format("dartcheck {} {} --rule {} --map {}", what == ReplayCommand::apply ? "apply" : "events", shell_quote(catalog),
+                                shell_quote(rule), shell_quote(host));
   for (Dart h : hooks) cmd += fmt::format(" --hook {}", h);
   if (what == ReplayCommand::events) cmd += " --dynamic";
   return cmd;

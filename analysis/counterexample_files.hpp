@@ -14,7 +14,9 @@
 
 namespace dartcheck::analysis {
 
-/// Rule names may hold '/' (variants): file names use '.' instead.
+/// A rule's name as a file name: '/' (variants) becomes '.', letters,
+/// digits and - _ + = , @ stay, every other byte is %XX (so '.', ' ' and
+/// '%' are escaped and no two names share a stem).
 std::string file_stem(const std::string& name);
 
 /// What the replay command runs: the application (`dartcheck apply`), or

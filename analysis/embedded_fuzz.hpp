@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "analysis/fuzz.hpp"
+#include "core/shell_quote.hpp"
 
 namespace dartcheck::analysis {
 
@@ -25,7 +26,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
 /// fuzz itself is the replay (one stream per rule and seed, stopped at
 /// the counterexample's application).
 inline std::string embedded_replay(const std::string& catalog, const FuzzReport& r, std::uint64_t seed) {
-  return fmt::format("dartcheck fuzz {} --rule {} --seed {} --runs {}", catalog, r.rule, seed, r.applications);
+  return fmt::format("dartcheck fuzz {} --rule {} --seed {} --runs {}", shell_quote(catalog), shell_quote(r.rule), seed, r.applications);
 }
 
 }  // namespace dartcheck::analysis

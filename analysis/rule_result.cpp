@@ -229,7 +229,7 @@ void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::st
     for (const auto& a : proof.embedding->answers)
       embedding_replays.push_back(a.status == proofs::EmbeddingAnswer::Status::counterexample && a.reading == proofs::Reading::arithmetic && a.host &&
                                           !out_dir.empty()
-                                      ? write_embedding_counterexample(out_dir, file_stem(e.rule.name()) + suffix + "." + a.embedding, catalog_file,
+                                      ? write_embedding_counterexample(out_dir, file_stem(e.rule.name()) + suffix + "." + file_stem(a.embedding), catalog_file,
                                                                        e.rule.name(), *a.host, a.hooks)
                                       : std::string());
   r.embedding_replays = std::move(embedding_replays);

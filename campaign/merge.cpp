@@ -118,7 +118,7 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
     doc["runs"] = std::move(runs);
     fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
-    fmt::print("{}", text);
+    fmt::print("{}", printable(text));  // a shard file is input: no escape sequence reaches the terminal
   }
   return status;
 }
@@ -152,7 +152,7 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
       if (!(*f)["json"].is_null()) doc["rules"].push_back((*f)["json"]);
     fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
-    for (const auto& [k, f] : fragments) fmt::print("{}", (*f)["text"].get<std::string>());
+    for (const auto& [k, f] : fragments) fmt::print("{}", printable((*f)["text"].get<std::string>()));
   }
   return status;
 }

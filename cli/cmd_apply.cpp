@@ -19,6 +19,7 @@ int apply(const ApplyOptions& o) {
     throw InputError(
         "<command line>", 0, 0,
         fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or OFF/OBJ meshes (.off, .obj)", o.output));
+  check_distinct_outputs({{"-o", o.output}, {"--kappa-out", o.kappa_out}});
   for (const auto* out : {&o.output, &o.kappa_out})
     if (!out->empty()) check_writable(*out);  // before the work, not after it
   const Catalog catalog = read_catalog(o.catalog);

@@ -1,5 +1,7 @@
 #include "core/output_file.hpp"
 
+#include "core/input_error.hpp"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -12,6 +14,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+
+#include <fmt/format.h>
 
 namespace dartcheck {
 
@@ -144,6 +148,21 @@ void check_writable(const std::string& path) {
   if (!fs::is_directory(dir, ec)) throw OutputError(path, "the directory " + dir + " does not exist");
   if (fs::is_directory(path, ec)) throw OutputError(path, "is a directory");
   if (::access(dir.c_str(), W_OK) != 0) throw OutputError(path, std::strerror(errno));
+}
+
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+  std::vector<std::pair<std::string, std::filesystem::path>> seen;
+  for (const auto& [option, path] : outputs) {
+    if (path.empty()) continue;
+    std::error_code ec;
+    std::filesystem::path p = std::filesystem::weakly_canonical(path, ec);
+    if (ec) p = std::filesystem::absolute(path).lexically_normal();
+    for (const auto& [other, q] : seen)
+      if (q == p)
+        throw InputError("<command line>", 0, 0,
+                         fmt::format("{} and {} both name '{}': one run writes each file once (give them different paths)", other, option, path));
+    seen.emplace_back(option, p);
+  }
 }
 
 }  // namespace dartcheck

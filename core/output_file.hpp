@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace dartcheck {
 
@@ -42,5 +44,10 @@ void ensure_directory(const std::string& dir);
 /// Checks before the work starts that `path` can be written: its directory
 /// exists and is writable. OutputError otherwise.
 void check_writable(const std::string& path);
+
+/// Refuses (InputError at the command line) two outputs of one run that
+/// name one file, after resolving `.`, `..` and links: the second would
+/// overwrite the first. Each entry is (option, path); empty paths are unset.
+void check_distinct_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 }  // namespace dartcheck

@@ -1,6 +1,8 @@
 #include "core/wording.hpp"
 #include "reports/report_page.hpp"
 
+#include "reports/ci_formats.hpp"
+
 #include <algorithm>
 #include <filesystem>
 
@@ -37,7 +39,9 @@ void Pictures::write(const std::string& svg, const std::string& file) {
 }
 
 std::string Pictures::link(const std::string& file) {
-  return fmt::format("<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n", html_text(file), html_text(file));
+  // The file name may hold a rule name's %XX escapes (file_stem): the link
+  // percent-encodes them again.
+  return fmt::format("<p class=\"note\">Picture: <a href=\"{}\">{}</a></p>\n", html_text(uri_path(file)), html_text(file));
 }
 
 std::string Pictures::add(const std::string& dot, const std::string& file) {

@@ -2,6 +2,8 @@
 #include "core/wording.hpp"
 #include "reports/rule_result_text.hpp"
 
+#include "core/shell_quote.hpp"
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -375,8 +377,8 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
         for (const auto& w : e.witnesses)
           out += row_note(indent + 2, fmt::format("{}{}: {}", e.name, e.required ? "" : " (not required)", printable(w.text)));
       if (r.scheme_search && r.scheme_search->counterexample)
-        out += row_note(indent + 2, fmt::format("host: {} (`dartcheck fuzz --rule {} --out DIR` writes it with a replay command)",
-                                                r.scheme_search->counterexample->origin, printable(r.name())));
+        out += row_note(indent + 2, printable(fmt::format("host: {} (`dartcheck fuzz {} --rule {} --out DIR` writes it with a replay command)",
+                                                          r.scheme_search->counterexample->origin, shell_quote(o.catalog), shell_quote(r.name()))));
       if (r.host_search && r.host_search->host) {
         out += row_note(indent + 2, "host G: " + printable(arcs_text(*r.host_search->host)));
         out += row_note(indent + 2, "result H: " + printable(arcs_text(*r.host_search->result)));

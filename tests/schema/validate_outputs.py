@@ -186,6 +186,19 @@ check_json(["infer", "--before", "polygon:3", "--after", "polygon:6", "--orbit",
 # An example that changes nothing: no rule, exit 1, still a valid document.
 check_json(["infer", "--before", "polygon:4", "--after", "polygon:4", "--orbit", "<0,1>", "--format", "json"], 1, "https://dartcheck.invalid/schema/infer.schema.json")
 
+# merge prints a shard's text: a shard is input, so an escape sequence
+# planted in it reaches the terminal escaped (issue 62, item 3).
+lines = check_json(["recombine", "tests/data/cube-5-tets.mesh", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
+for l in lines:
+    if l.get("type") == "input":
+        l["input"]["text"] = "\x1b]0;owned\x07\x1b[31m" + l["input"]["text"]
+hostile_shard = os.path.join(WORK, "escape-shard.jsonl")
+with open(hostile_shard, "w", encoding="utf-8") as f:
+    f.write("".join(json.dumps(l) + "\n" for l in lines))
+merged = run(["merge", hostile_shard], 0)
+expect_equal("merge: raw ESC bytes on stdout", b"\x1b" in merged, False)
+expect_equal("merge: the escaped sequence shown", b"\\x1b[31m" in merged, True)
+
 for f in failures:
     print("FAIL:", f)
 print(f"{len(failures)} failures")
