@@ -75,6 +75,23 @@ std::string RuleResult::solver_fuzz_contradiction() const {
   return {};
 }
 
+std::vector<std::pair<std::string, std::string>> RuleResult::solver_classes() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!proof || !proof->embedding) return out;
+  using Status = proofs::EmbeddingAnswer::Status;
+  const auto& answers = proof->embedding->answers;
+  for (std::size_t i = 0; i + 1 < answers.size(); i += 2) {
+    const auto &uf = answers[i], &ar = answers[i + 1];
+    const char* cls = ar.status == Status::counterexample                                ? "breaks"
+                      : uf.status == Status::counterexample && ar.status == Status::none ? "other algebra"
+                      : uf.status == Status::none && uf.static_failures.empty()           ? "holds"
+                      : uf.status == Status::none                                         ? "false alarm"
+                                                                                          : "unknown";
+    out.emplace_back(uf.embedding, cls);
+  }
+  return out;
+}
+
 std::vector<std::string> RuleResult::solver_lines() const {
   std::vector<std::string> out;
   if (!proof || !proof->embedding) return out;
@@ -235,9 +252,13 @@ void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::st
   r.embedding_replays = std::move(embedding_replays);
   // Potential events (004) decided on the same hosts as the embeddings.
   const std::size_t k = options.embedding_darts > 0 ? options.embedding_darts : e.rule.left().node_count() + 4;
-  r.potential_events = decide_potential_events(e, k, options.stop);
+  r.potential_events.reset();
+  if (!proof.interrupted) {
+    r.potential_events = decide_potential_events(e, k, options.stop);
+    proof.interrupted = proof.interrupted || r.potential_events->interrupted;
+  }
   r.potential_event_replays.clear();
-  for (std::size_t i = 0; i < r.potential_events->events.size(); ++i) {
+  for (std::size_t i = 0; r.potential_events && i < r.potential_events->events.size(); ++i) {
     const auto& pe = r.potential_events->events[i];
     r.potential_event_replays.push_back(pe.host && !out_dir.empty()
                                             ? write_event_witness(out_dir, fmt::format("{}{}.event{}", file_stem(e.rule.name()), suffix, i), catalog_file,
@@ -264,6 +285,18 @@ void compare_with_record(RuleResult& r) {
     if (r.proof && solver_broke_a_map(*r.proof)) how.push_back("the solver");
     how.erase(std::unique(how.begin(), how.end()), how.end());
     r.mismatches.push_back(fmt::format("the {} records 'consistent', but {} broke a map", source, fmt::join(how, " and ")));
+  }
+  // A baseline's solver classes, where this run asked the solver.
+  if (e.expected_solver && r.proof && r.proof->embedding) {
+    const auto now = r.solver_classes();
+    if (now != *e.expected_solver) {
+      auto text = [](const std::vector<std::pair<std::string, std::string>>& v) {
+        std::vector<std::string> parts;
+        for (const auto& [embedding, cls] : v) parts.push_back(embedding + ": " + cls);
+        return fmt::format("{{{}}}", fmt::join(parts, ", "));
+      };
+      r.mismatches.push_back(fmt::format("the solver finds {}, the baseline records {} ({})", text(now), text(*e.expected_solver), e.solver_location.str()));
+    }
   }
   if (const auto c = r.solver_fuzz_contradiction(); !c.empty())
     r.mismatches.push_back("DISAGREE: " + c);

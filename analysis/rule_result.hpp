@@ -91,6 +91,10 @@ struct RuleResult {
   /// "fails A(col) syntactically; Z3: no host up to 5 darts breaks col,
   /// for every interpretation of mix"; empty without a solver stage.
   std::vector<std::string> solver_lines() const;
+  /// The solver's class per embedding as a baseline records it (io/
+  /// baseline.hpp: holds, breaks, false alarm, other algebra, unknown);
+  /// empty without a solver stage.
+  std::vector<std::pair<std::string, std::string>> solver_classes() const;
   /// Fuzz broke an embedding on a host no larger than the K up to which
   /// the solver found none (in either reading): what contradicts, or empty.
   std::string solver_fuzz_contradiction() const;

@@ -47,7 +47,7 @@ std::vector<std::string> apply_baseline(Catalog& catalog, const std::string& fil
     if (r && !e.failures)
       mismatches.push_back(fmt::format("{}: the baseline records rule '{}' as not checked, but it is read now", e.location.str(), e.rule));
     else if (r)
-      r->expected_failures = e.failures, r->verdict_location = e.location;
+      r->expected_failures = e.failures, r->verdict_location = e.location, r->expected_solver = e.solver, r->solver_location = e.solver_location;
     if (!r && e.failures)
       mismatches.push_back(fmt::format("{}: the baseline records a verdict for rule '{}', which is not checked now", e.location.str(), e.rule));
   }

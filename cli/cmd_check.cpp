@@ -38,8 +38,11 @@ std::vector<Map> catalog_maps(const Catalog& catalog) {
 
 void write_baseline_file(const std::string& path, const std::string& catalog_file, const Catalog& catalog, const std::vector<RuleResult>& results) {
   std::vector<BaselineEntry> entries;
-  for (const auto& r : results) entries.push_back({r.name(), r.failures, {}});
-  for (const auto& s : catalog.skipped) entries.push_back({s.name, std::nullopt, {}});
+  for (const auto& r : results) {
+    entries.push_back({r.name(), r.failures, {}, std::nullopt, {}});
+    if (r.proof && r.proof->embedding) entries.back().solver = r.solver_classes();
+  }
+  for (const auto& s : catalog.skipped) entries.push_back({s.name, std::nullopt, {}, std::nullopt, {}});
   std::ostringstream text;
   write_baseline(text, catalog_file, entries);
   write_file(path, text.str());

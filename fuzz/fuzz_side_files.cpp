@@ -25,7 +25,7 @@ void baseline_round_trip(const std::string& file) {
   const Baseline back = read_baseline(file_of(out.str(), ".yaml"));
   if (back.entries.size() != b.entries.size()) throw std::logic_error("a written baseline reads back with other entries");
   for (std::size_t k = 0; k < b.entries.size(); ++k)
-    if (back.entries[k].rule != b.entries[k].rule || back.entries[k].failures != b.entries[k].failures)
+    if (back.entries[k].rule != b.entries[k].rule || back.entries[k].failures != b.entries[k].failures || back.entries[k].solver != b.entries[k].solver)
       throw std::logic_error("a written baseline reads back with another entry");
 }
 

@@ -68,6 +68,8 @@ void write_inferred(const std::string& file, const std::string& modeler, const K
                   {},
                   {},
                   std::vector<std::string>{},
+                  {},
+                  std::nullopt,
                   {}};
     Example e;
     e.map = "before";

@@ -8,11 +8,20 @@
 //     SewA2: consistent
 //     CutEdge: ["I(1)", "C(0,2)"]
 //     Weird: not checked
+//   solver:                      (check --solver --write-baseline)
+//     SewA2: {pos: breaks, color: false alarm}
+//
+// A solver class per embedding (solver_class_names): `holds` (the static
+// conditions hold, no host breaks it), `breaks` (a host breaks it in
+// dartcheck's algebra), `false alarm` (a condition fails, no host up to K
+// breaks it in either reading), `other algebra` (only an interpretation
+// other than dartcheck's breaks it), `unknown`.
 #pragma once
 
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/input_error.hpp"
@@ -24,7 +33,14 @@ struct BaselineEntry {
   /// The failing conditions ({} = consistent); unset for "not checked".
   std::optional<std::vector<std::string>> failures;
   SourceLocation location;
+  /// The solver's class per embedding, (embedding, class); unset when the
+  /// baseline has no solver entry for the rule.
+  std::optional<std::vector<std::pair<std::string, std::string>>> solver;
+  SourceLocation solver_location;
 };
+
+/// The classes a baseline's `solver` section may hold.
+const std::vector<std::string>& solver_class_names();
 
 struct Baseline {
   std::string file;

@@ -299,6 +299,8 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
                  {},
                  where(file, v),
                  {},
+                 {},
+                 std::nullopt,
                  {}};
   if (v["labels"] || v["parameters"] || v["instantiation"] || v["embeddings"] || base_terms) {
     if (c.signatures.size() != c.embeddings.size())

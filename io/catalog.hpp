@@ -50,6 +50,10 @@ struct CatalogRule : Operation {
   /// ("I(0)", "C(0,2)", ...), empty for "consistent"; unset if none.
   std::optional<std::vector<std::string>> expected_failures;
   SourceLocation verdict_location;
+  /// The solver's recorded class per embedding (a baseline's `solver`
+  /// section, io/baseline.hpp); unset if none.
+  std::optional<std::vector<std::pair<std::string, std::string>>> expected_solver;
+  SourceLocation solver_location;
 };
 
 struct Catalog {

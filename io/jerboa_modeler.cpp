@@ -355,6 +355,8 @@ void read_rule(Catalog& c, const Positions& p, const std::string& raw, const Mod
                  {},
                  at,
                  std::nullopt,
+                 {},
+                 std::nullopt,
                  {}};
   JerboaScope scope{&cr.rule.model(), ms.typed, {}, {}, {}};
   for (const auto& n : left.nodes) scope.nodes.push_back(n.name);

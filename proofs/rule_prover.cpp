@@ -458,6 +458,11 @@ RuleProof prove_rule(const Operation& entry, const ProveOptions& o) {
     eo.rlimit = o.rlimit;
     eo.stop = o.stop;
     p.embedding = prove_embeddings(entry, eo);
+    if (p.embedding->interrupted) {  // Ctrl-C: the topological queries are not started
+      p.interrupted = true;
+      p.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      return p;
+    }
   }
   if (!p.out_of_scope.empty()) {
     p.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -87,7 +87,7 @@ TEST(InferenceOutput, CatalogWithMapsAndExampleReadsBack) {
   Catalog c;
   c.maps.push_back({"before", cube.model(), cube, {}, {}, {}});
   c.maps.push_back({"after", after.model(), after, {}, {}, {}});
-  CatalogRule r{attempts[0].rule->operation, "note", {}, {}, std::vector<std::string>{}, {}};
+  CatalogRule r{attempts[0].rule->operation, "note", {}, {}, std::vector<std::string>{}, {}, std::nullopt, {}};
   r.examples.push_back({"before", {0}, "valid", std::nullopt, "after", {}});
   c.rules.push_back(r);
   const std::string file = temp_path("dartcheck-inferred.yaml");
