@@ -16,5 +16,5 @@ suites='MapYaml|Mesh|MeshWriter|Catalog|HostileInput|TetMeshIo|Jme|Jba|RuleDot|R
 # whole catalogs and meshes, and every example of docs/cli.md (which fuzzes
 # the embedding catalog and the Jerboa modelers with values: minutes under
 # ASan), which the Release suite runs.
-long='cli\.(docs_cli_examples|recombine_elephant|fuzz_jme|fuzz_events_.*|outputs_follow_schemas|verdicts_agree_across_commands|fuzz_embedding_catalog|prove_catalog|fuzz_subdivision_catalog)|campaign\.(parallel_equal|slurm_array)'
+long='cli\.(docs_cli_examples|check_solver_baseline_.*|recombine_elephant|fuzz_jme|fuzz_events_.*|outputs_follow_schemas|verdicts_agree_across_commands|fuzz_embedding_catalog|prove_catalog|fuzz_subdivision_catalog)|campaign\.(parallel_equal|slurm_array)'
 ctest --test-dir "$build" -j2 --output-on-failure -R "^(cli\.|compiled\.|campaign\.|($suites)\.)" -E "^($long)$"
