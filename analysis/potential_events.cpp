@@ -33,34 +33,35 @@ PotentialEvents decide_potential_events(const Operation& op, std::size_t max_dar
       if (k.claims[c].certainty == events::Certainty::potential) {
         asked.emplace_back(kinds.size() - 1, c);
         const auto& cl = k.claims[c];
-        out.events.push_back({k.kind.str(),
-                              fmt::format("{}: {}", events::rule_orbit_name(r, k, cl.event != events::Event::creation, cl.orbit),
-                                          events::claim_summary(r, k, cl)),
-                              false, 0, std::nullopt, {}});
+        out.events.push_back(
+            {k.kind.str(),
+             fmt::format("{}: {}", events::rule_orbit_name(r, k, cl.event != events::Event::creation, cl.orbit), events::claim_summary(r, k, cl)),
+             false,
+             0,
+             std::nullopt,
+             {}});
       }
   }
   if (asked.empty()) return out;
   std::size_t open = asked.size();
   Map h(op.rule.model());
-  const RootedHosts searched = for_each_rooted_host(
-      op, max_darts,
-      [&](const Map& g, std::span<const Dart> hooks) {
-        h = g;
-        auto t = dartcheck::apply(op, h, hooks);
-        if (!t.ok()) return !(stop && stop());
-        ++out.applications;
-        for (std::size_t a = 0; a < asked.size(); ++a) {
-          if (out.events[a].happens) continue;
-          const auto& k = kinds[asked[a].first];
-          const auto dyn = events::dynamic_log(g, h, op.rule, *t.value, k.kind);
-          const auto inst = events::instantiated_log(g, h, r, k, *t.value);
-          const auto cc = events::cross_check(r, k, g, h, *t.value, dyn, inst);
-          if (std::find(cc.happened.begin(), cc.happened.end(), asked[a].second) == cc.happened.end()) continue;
-          out.events[a] = {k.kind.str(), out.events[a].claim, true, g.size(), g, std::vector<Dart>(hooks.begin(), hooks.end())};
-          --open;
-        }
-        return open > 0 && !(stop && stop());
-      });
+  const RootedHosts searched = for_each_rooted_host(op, max_darts, [&](const Map& g, std::span<const Dart> hooks) {
+    h = g;
+    auto t = dartcheck::apply(op, h, hooks);
+    if (!t.ok()) return !(stop && stop());
+    ++out.applications;
+    for (std::size_t a = 0; a < asked.size(); ++a) {
+      if (out.events[a].happens) continue;
+      const auto& k = kinds[asked[a].first];
+      const auto dyn = events::dynamic_log(g, h, op.rule, *t.value, k.kind);
+      const auto inst = events::instantiated_log(g, h, r, k, *t.value);
+      const auto cc = events::cross_check(r, k, g, h, *t.value, dyn, inst);
+      if (std::find(cc.happened.begin(), cc.happened.end(), asked[a].second) == cc.happened.end()) continue;
+      out.events[a] = {k.kind.str(), out.events[a].claim, true, g.size(), g, std::vector<Dart>(hooks.begin(), hooks.end())};
+      --open;
+    }
+    return open > 0 && !(stop && stop());
+  });
   out.hosts = searched.hosts;
   out.interrupted = stop && stop();
   for (auto& e : out.events)

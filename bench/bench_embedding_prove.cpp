@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
   const std::string root = DARTCHECK_SOURCE_DIR;
   if (catalogs.empty()) {
     catalogs = {root + "/catalogs/embedding-operations.yaml", root + "/tests/data/embedding-readings.yaml"};
-    if (std::filesystem::exists(root + "/../shared/jerboa-samples/JerboaRebuilt2.jme")) catalogs.push_back(root + "/../shared/jerboa-samples/JerboaRebuilt2.jme");
+    if (std::filesystem::exists(root + "/../shared/jerboa-samples/JerboaRebuilt2.jme"))
+      catalogs.push_back(root + "/../shared/jerboa-samples/JerboaRebuilt2.jme");
   }
   fmt::print("{:<28} {:>6} {:>6} {:>9} {:>9} {:>10} {:>8} {:>9} {:>9}\n", "catalog", "K", "rules", "total s", "max s", "hosts", "queries", "Z3 s",
              "ms/query");

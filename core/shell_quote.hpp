@@ -10,7 +10,8 @@
 namespace dartcheck {
 
 inline std::string shell_quote(std::string_view word) {
-  const bool plain = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./:=@%+,-") == std::string_view::npos;
+  const bool plain =
+      !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./:=@%+,-") == std::string_view::npos;
   if (plain) return std::string(word);
   std::string out = "'";
   for (char c : word) {

@@ -155,9 +155,10 @@ std::optional<Derived> derive(const Operation& op, Applier& applier, const Map& 
       for (const NodeTerm& t : terms.right)
         for (std::size_t k = 0; k < terms.embeddings.size(); ++k)
           if (terms.embeddings[k].name == t.embedding)
-            writes[k].emplace_back(app.value->comatch[*op.rule.right().find(t.node)][p],
-                                   fault ? out.pool.unknown(t.embedding, terms.embeddings[k].type, 1'000'000 + static_cast<std::uint32_t>(writes[k].size()), no_dart)
-                                         : ev.value(t.term, L.names(), darts));
+            writes[k].emplace_back(
+                app.value->comatch[*op.rule.right().find(t.node)][p],
+                fault ? out.pool.unknown(t.embedding, terms.embeddings[k].type, 1'000'000 + static_cast<std::uint32_t>(writes[k].size()), no_dart)
+                      : ev.value(t.term, L.names(), darts));
     }
   } catch (const NoValue&) {
     return std::nullopt;
@@ -276,74 +277,73 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
         ++out.cached;
         continue;
       }
-      ValueEncoding enc(ctx, d->pool, s.answer.reading);
-      z3::solver solver(ctx);
-      solver.set(params);
-      for (const auto& [a, b] : d->equal) solver.add(enc.equal(a, b));
-      z3::expr_vector breaks(ctx);
-      if (q.valueless != no_dart) breaks.push_back(ctx.bool_val(true));
-      for (const auto& v : q.orbits)
-        for (std::size_t k = 1; k < v.size(); ++k) breaks.push_back(!enc.equal(v[0], v[k]));
-      solver.add(z3::mk_or(breaks));
-      for (const auto& p : enc.premises()) solver.add(p);
-      ++out.queries;
-      z3::check_result r = z3::unknown;
-      try {
+      try {  // a Z3 error (a literal it cannot read, memory) makes this answer unknown, not a crash
+        ValueEncoding enc(ctx, d->pool, s.answer.reading);
+        z3::solver solver(ctx);
+        solver.set(params);
+        for (const auto& [a, b] : d->equal) solver.add(enc.equal(a, b));
+        z3::expr_vector breaks(ctx);
+        if (q.valueless != no_dart) breaks.push_back(ctx.bool_val(true));
+        for (const auto& v : q.orbits)
+          for (std::size_t k = 1; k < v.size(); ++k) breaks.push_back(!enc.equal(v[0], v[k]));
+        solver.add(z3::mk_or(breaks));
+        for (const auto& p : enc.premises()) solver.add(p);
+        ++out.queries;
         const auto asked = Clock::now();
-        r = solver.check();
+        const z3::check_result r = solver.check();
         out.z3_seconds += std::chrono::duration<double>(Clock::now() - asked).count();
+        cache[key] = r;
+        for (const auto& f : enc.uninterpreted()) uninterpreted.insert(f);
+        if (r == z3::unknown) {
+          s.unknown = stopped() ? "interrupted (SIGINT or SIGTERM)"
+                                : fmt::format("Z3's rlimit of {} per query reached on a {}-dart host", o.rlimit, g.size());
+          continue;
+        }
+        if (r == z3::unsat) continue;
+        // A counterexample: prefer values doubles hold exactly.
+        EmbeddingAnswer& a = s.answer;
+        s.settled = true;
+        a.status = EmbeddingAnswer::Status::counterexample;
+        a.darts = g.size();
+        a.hooks.assign(hooks.begin(), hooks.end());
+        if (a.reading == Reading::arithmetic) {
+          solver.push();
+          for (const auto& c : enc.small_integers(16)) solver.add(c);
+          const bool small = solver.check() == z3::sat;
+          if (!small) solver.pop();
+          if (small || solver.check() == z3::sat) {
+            const z3::model m = solver.get_model();
+            a.host = valued_host(op, g, *d, enc, &m);
+          }
+        } else {
+          a.host = valued_host(op, g, *d, enc, nullptr);
+        }
+        // What breaks, in the solver's model.
+        const z3::model m = solver.get_model();
+        if (q.valueless != no_dart) {
+          a.why = fmt::format("dart {} of H has no {} value", q.valueless, a.embedding);
+        } else {
+          for (std::size_t k = 0; k < q.orbits.size() && a.why.empty(); ++k)
+            for (std::size_t j = 1; j < q.orbits[k].size() && a.why.empty(); ++j)
+              if (m.eval(!enc.equal(q.orbits[k][0], q.orbits[k][j]), true).is_true())
+                a.why = fmt::format("the {}-orbit of dart {} of H gets {} and {}", a.embedding, q.at[k], d->pool.str(q.orbits[k][0]),
+                                    d->pool.str(q.orbits[k][j]));
+        }
+        if (a.reading == Reading::arithmetic && a.host) {
+          // The library's own application must break the same embedding.
+          EmbeddedMap replay = *a.host;
+          const auto r2 = apply_embedded(rule, op.words, terms, replay, a.hooks, true);
+          if (!r2.ok()) {
+            a.replay = fmt::format("refused: {}", r2.why);
+          } else {
+            const auto c = check_embedding(replay.map, *replay.find(a.embedding), true);
+            a.replayed = !c.consistent();
+            a.replay = a.replayed ? c.conflicts.front().describe(a.embedding, terms.embeddings[s.embedding].orbit)
+                                  : fmt::format("the library's application leaves {} consistent", a.embedding);
+          }
+        }
       } catch (const z3::exception& e) {
         s.unknown = fmt::format("Z3: {}", e.msg());
-        continue;
-      }
-      cache[key] = r;
-      for (const auto& f : enc.uninterpreted()) uninterpreted.insert(f);
-      if (r == z3::unknown) {
-        s.unknown = stopped() ? "interrupted (SIGINT or SIGTERM)" : fmt::format("Z3's rlimit of {} per query reached on a {}-dart host", o.rlimit, g.size());
-        continue;
-      }
-      if (r == z3::unsat) continue;
-      // A counterexample: prefer values doubles hold exactly.
-      EmbeddingAnswer& a = s.answer;
-      s.settled = true;
-      a.status = EmbeddingAnswer::Status::counterexample;
-      a.darts = g.size();
-      a.hooks.assign(hooks.begin(), hooks.end());
-      if (a.reading == Reading::arithmetic) {
-        solver.push();
-        for (const auto& c : enc.small_integers(16)) solver.add(c);
-        const bool small = solver.check() == z3::sat;
-        if (!small) solver.pop();
-        if (small || solver.check() == z3::sat) {
-          const z3::model m = solver.get_model();
-          a.host = valued_host(op, g, *d, enc, &m);
-        }
-      } else {
-        a.host = valued_host(op, g, *d, enc, nullptr);
-      }
-      // What breaks, in the solver's model.
-      const z3::model m = solver.get_model();
-      if (q.valueless != no_dart) {
-        a.why = fmt::format("dart {} of H has no {} value", q.valueless, a.embedding);
-      } else {
-        for (std::size_t k = 0; k < q.orbits.size() && a.why.empty(); ++k)
-          for (std::size_t j = 1; j < q.orbits[k].size() && a.why.empty(); ++j)
-            if (m.eval(!enc.equal(q.orbits[k][0], q.orbits[k][j]), true).is_true())
-              a.why = fmt::format("the {}-orbit of dart {} of H gets {} and {}", a.embedding, q.at[k], d->pool.str(q.orbits[k][0]),
-                                  d->pool.str(q.orbits[k][j]));
-      }
-      if (a.reading == Reading::arithmetic && a.host) {
-        // The library's own application must break the same embedding.
-        EmbeddedMap replay = *a.host;
-        const auto r2 = apply_embedded(rule, op.words, terms, replay, a.hooks, true);
-        if (!r2.ok()) {
-          a.replay = fmt::format("refused: {}", r2.why);
-        } else {
-          const auto c = check_embedding(replay.map, *replay.find(a.embedding), true);
-          a.replayed = !c.consistent();
-          a.replay = a.replayed ? c.conflicts.front().describe(a.embedding, terms.embeddings[s.embedding].orbit)
-                                : fmt::format("the library's application leaves {} consistent", a.embedding);
-        }
       }
     }
   };
@@ -390,12 +390,11 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
       a.disagree = true;
       a.note = fmt::format("the solver's counterexample does not replay: {}", a.replay);
     } else if (a.status == EmbeddingAnswer::Status::none && out.applications == 0) {
-      a.note = fmt::format("no host up to {} darts admits an application (every match is refused whatever the values): nothing was decided",
-                           a.darts);
+      a.note = fmt::format("no host up to {} darts admits an application (every match is refused whatever the values): nothing was decided", a.darts);
     } else if (a.status == EmbeddingAnswer::Status::none && !holds) {
-      a.note = fmt::format("{} fails syntactically; no host up to {} darts breaks {}{}: a false alarm up to {} darts", fmt::join(a.static_failures, ", "),
-                           a.darts, a.embedding, a.reading == Reading::uninterpreted ? " for any interpretation of the operations" : " in real arithmetic",
-                           a.darts);
+      a.note = fmt::format("{} fails syntactically; no host up to {} darts breaks {}{}: a false alarm up to {} darts",
+                           fmt::join(a.static_failures, ", "), a.darts, a.embedding,
+                           a.reading == Reading::uninterpreted ? " for any interpretation of the operations" : " in real arithmetic", a.darts);
     }
   }
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -38,10 +38,10 @@ enum class Reading : std::uint8_t { uninterpreted, arithmetic };
 std::string_view reading_name(Reading r);
 
 struct EmbeddingProveOptions {
-  std::size_t max_darts = 6;  // K
-  unsigned rlimit = 20'000'000;   // Z3 resource units per query
+  std::size_t max_darts = 6;            // K
+  unsigned rlimit = 20'000'000;         // Z3 resource units per query
   std::size_t host_budget = 2'000'000;  // maps enumerated per rule, at most
-  std::function<bool()> stop;     // polled between queries (Ctrl-C)
+  std::function<bool()> stop;           // polled between queries (Ctrl-C)
   /// Tests only, planted encoding faults: `fresh_writes` reads every value
   /// R writes as a fresh unknown (counterexamples that do not replay);
   /// `no_breaks` never asks Z3 (`none` where fuzz breaks the embedding).
@@ -49,12 +49,12 @@ struct EmbeddingProveOptions {
 };
 
 struct EmbeddingAnswer {
-  std::string embedding;                 // pi
+  std::string embedding;                     // pi
   std::vector<std::string> static_failures;  // A(pi), C(pi), ... that fail
   Reading reading = Reading::uninterpreted;
   enum class Status : std::uint8_t { counterexample, none, unknown } status = Status::none;
-  std::size_t darts = 0;  // the counterexample's host size, or K searched
-  std::string why;        // unknown: the limit; counterexample: what breaks
+  std::size_t darts = 0;                   // the counterexample's host size, or K searched
+  std::string why;                         // unknown: the limit; counterexample: what breaks
   std::vector<std::string> uninterpreted;  // arithmetic reading: functions left uninterpreted
   std::vector<std::string> functions;      // the functions the embedding's terms call
   // A counterexample: the host with its values (arithmetic), the hooks,
@@ -74,7 +74,7 @@ std::string_view status_name(EmbeddingAnswer::Status s);
 struct EmbeddingProof {
   std::vector<EmbeddingAnswer> answers;  // per embedding R labels, uninterpreted then arithmetic
   std::size_t hosts = 0, applications = 0, queries = 0, cached = 0;
-  double z3_seconds = 0;  // inside Z3's checks
+  double z3_seconds = 0;     // inside Z3's checks
   std::string out_of_scope;  // why the rule is not encoded (no terms, ...)
   bool interrupted = false;
   double seconds = 0;

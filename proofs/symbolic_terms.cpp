@@ -35,7 +35,8 @@ std::uint32_t SymPool::literal(const Value& v) {
   return intern(std::move(e), fmt::format("{}:{}", type_name(v.type), v.str()));
 }
 
-std::uint32_t SymPool::call(const Function* f, std::vector<std::uint32_t> args, std::vector<std::vector<std::uint32_t>> bags, std::vector<bool> is_bag) {
+std::uint32_t SymPool::call(const Function* f, std::vector<std::uint32_t> args, std::vector<std::vector<std::uint32_t>> bags,
+                            std::vector<bool> is_bag) {
   for (auto& b : bags) std::sort(b.begin(), b.end());
   std::string key = fmt::format("{}/{}(", f->name, fmt::ptr(f));
   for (std::size_t k = 0; k < args.size(); ++k) {

@@ -33,8 +33,8 @@ struct SymExpr {
   enum class Kind : std::uint8_t { unknown, literal, call };
   Kind kind = Kind::literal;
   ValueType type = ValueType::real;
-  std::uint32_t unknown = 0;      // unknown: its number in the pool
-  Value literal;                  // literal
+  std::uint32_t unknown = 0;  // unknown: its number in the pool
+  Value literal;              // literal
   const Function* function = nullptr;
   /// call: one entry per parameter; a multiset parameter is the elements
   /// of `bags[k]`, sorted by index (a canonical order of the multiset).
@@ -109,8 +109,8 @@ class SymbolicEvaluator {
   const Map& g_;
   const std::vector<EmbeddingSignature>& embeddings_;
   SymPool& pool_;
-  std::vector<std::vector<std::uint32_t>> orbit_;  // per embedding: orbit of each dart
-  std::vector<std::vector<Dart>> first_;           // per embedding: smallest dart of each orbit
+  std::vector<std::vector<std::uint32_t>> orbit_;    // per embedding: orbit of each dart
+  std::vector<std::vector<Dart>> first_;             // per embedding: smallest dart of each orbit
   std::vector<std::pair<std::string, Dart>> scope_;  // bound names, innermost last
 };
 

@@ -1,14 +1,14 @@
 #include "proofs/value_encoding.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <fmt/format.h>
 
 namespace dartcheck::proofs {
 
-ValueEncoding::ValueEncoding(z3::context& ctx, const SymPool& pool, Reading reading)
-    : ctx_(ctx), pool_(pool), reading_(reading), premises_(ctx) {}
+ValueEncoding::ValueEncoding(z3::context& ctx, const SymPool& pool, Reading reading) : ctx_(ctx), pool_(pool), reading_(reading), premises_(ctx) {}
 
 int ValueEncoding::width(ValueType t) const {
   if (reading_ == Reading::uninterpreted) return 1;
@@ -65,7 +65,17 @@ z3::expr_vector ValueEncoding::literal(const Value& x) {
     v.push_back(ctx_.int_val(static_cast<std::int64_t>(-1'000'000 - (it - literals_.begin()))));
     return v;
   }
-  auto real = [&](double d) { return ctx_.real_val(fmt::format("{}", d).c_str()); };
+  // Z3 reads decimals, not exponents: a double in fixed notation is its
+  // exact value (every double is a finite decimal); a non-finite literal
+  // has no real value and is a constant of its own.
+  auto real = [&](double d) {
+    if (!std::isfinite(d)) {
+      uninterpreted_.insert(fmt::format("the literal {} (not a real number)", d));
+      return ctx_.real_const(fmt::format("literal_{}", d).c_str());
+    }
+    const std::string shortest = fmt::format("{}", d);
+    return ctx_.real_val((shortest.find_first_of("eE") == std::string::npos ? shortest : fmt::format("{:.1100f}", d)).c_str());
+  };
   switch (x.type) {
     case ValueType::integer:
     case ValueType::string:
@@ -185,8 +195,7 @@ z3::expr_vector ValueEncoding::arithmetic(const SymExpr& e, bool& done) {
     const auto size = static_cast<int>(e.bags[0].size());
     if (n == "count") return out.push_back(ctx_.int_val(size)), out;
     if (n == "sum") return geo_result ? coords([&](unsigned c) { return bag_sum(0, c); }) : (out.push_back(bag_sum(0, 0)), out);
-    if (n == "center" || n == "barycenter" || n == "mix")
-      return coords([&](unsigned c) { return bag_sum(0, c) / ctx_.real_val(size); });
+    if (n == "center" || n == "barycenter" || n == "mix") return coords([&](unsigned c) { return bag_sum(0, c) / ctx_.real_val(size); });
     done = false;
     return out;
   }

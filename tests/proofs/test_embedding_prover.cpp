@@ -79,8 +79,8 @@ TEST(ProveEmbeddings, CatalogAnswersAreDecidedAndReplayed) {
 // 2-neighbours at the same vertices; Fig. 19b's equal terms; the exploded
 // view's two nodes of one 2-orbit), so neither reading finds a host.
 TEST(ProveEmbeddings, FalseAlarmsOfTheCatalogHaveNoHost) {
-  for (const auto& [name, embedding] : {std::pair{"fig17b-vertex-insertion/two-terms", "pos"}, std::pair{"fig19b-triangulation-col/equal-terms", "col"},
-                                        std::pair{"exploded-view/two-nodes", "exp_pos"}}) {
+  for (const auto& [name, embedding] : {std::pair{"fig17b-vertex-insertion/two-terms", "pos"},
+                                        std::pair{"fig19b-triangulation-col/equal-terms", "col"}, std::pair{"exploded-view/two-nodes", "exp_pos"}}) {
     const Operation& e = rule_named(name);
     const EmbeddingProof p = prove_embeddings(e, at(e.rule.left().node_count() + 4));
     for (Reading r : {Reading::uninterpreted, Reading::arithmetic}) {
@@ -218,7 +218,8 @@ TEST(ProveEmbeddings, RandomRulesMatchBruteForceUpToK) {
       ASSERT_NE(a.status, EmbeddingAnswer::Status::unknown) << a.why;
       nones += a.status == EmbeddingAnswer::Status::none;
       if (found > 0) {
-        EXPECT_EQ(a.status, EmbeddingAnswer::Status::counterexample) << "rule " << k << " (" << reading_name(r) << "): brute force breaks at " << found;
+        EXPECT_EQ(a.status, EmbeddingAnswer::Status::counterexample)
+            << "rule " << k << " (" << reading_name(r) << "): brute force breaks at " << found;
         if (a.status == EmbeddingAnswer::Status::counterexample) {
           EXPECT_LE(a.darts, found) << k;
         }
@@ -256,7 +257,7 @@ TEST(ProveEmbeddings, PlantedFaultIsCaughtByTheReplay) {
 // (0, 1) breaks in both readings, and the arithmetic host replays.
 TEST(ProveEmbeddings, ReadingsDifferWhereOnlyTheAlgebraAgrees) {
   const Catalog c = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/tests/data/embedding-readings.yaml");
-  ASSERT_EQ(c.rules.size(), 2U);
+  ASSERT_EQ(c.rules.size(), 3U);
   const EmbeddingProof same = prove_embeddings(c.rules[0], at(6));
   EXPECT_EQ(answer(same, "pos", Reading::uninterpreted).status, EmbeddingAnswer::Status::counterexample);
   EXPECT_EQ(answer(same, "pos", Reading::arithmetic).status, EmbeddingAnswer::Status::none);
@@ -265,6 +266,11 @@ TEST(ProveEmbeddings, ReadingsDifferWhereOnlyTheAlgebraAgrees) {
   const auto& a = answer(shifted, "pos", Reading::arithmetic);
   EXPECT_EQ(a.status, EmbeddingAnswer::Status::counterexample);
   EXPECT_TRUE(a.replayed) << a.replay;
+  // A shift by 1e-05, a literal whose shortest text has an exponent.
+  const EmbeddingProof tiny = prove_embeddings(c.rules[2], at(6));
+  const auto& t = answer(tiny, "pos", Reading::arithmetic);
+  EXPECT_EQ(t.status, EmbeddingAnswer::Status::counterexample) << t.why;
+  EXPECT_TRUE(t.replayed) << t.replay;
 }
 
 // Item 4's second cross-check, with a planted fault: a solver that never
