@@ -8,6 +8,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -23,8 +24,11 @@ namespace {
 // The arguments /bin/sh gives to `dartcheck` in `line`, NUL-separated.
 std::vector<std::string> sh_argv(const std::string& line) {
   const std::string script = "dartcheck() { for a in \"$@\"; do printf '%s\\0' \"$a\"; done; }; " + line;
-  const std::string path = (std::filesystem::temp_directory_path() / "dartcheck-replay-test.sh").string();
-  if (std::FILE* f = std::fopen(path.c_str(), "wb")) {
+  // A file of its own: ctest runs the tests of this file in parallel.
+  std::string path = (std::filesystem::temp_directory_path() / "dartcheck-replay-XXXXXX").string();
+  const int fd = mkstemp(path.data());
+  if (fd < 0) return {};
+  if (std::FILE* f = fdopen(fd, "wb")) {
     std::fwrite(script.data(), 1, script.size(), f);
     std::fclose(f);
   }
@@ -41,6 +45,7 @@ std::vector<std::string> sh_argv(const std::string& line) {
     }
   }
   pclose(p);
+  std::filesystem::remove(path);
   return out;
 }
 
