@@ -1,6 +1,7 @@
 #include "analysis/rule_result.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -75,47 +76,69 @@ std::string RuleResult::solver_fuzz_contradiction() const {
   return {};
 }
 
+namespace {
+
+// The solver's class of one embedding from its two readings (io/baseline's
+// names), shared by the refined verdict's text and the baseline.
+enum class SolverClass { breaks, other_algebra, holds, false_alarm, unknown };
+constexpr std::array<const char*, 5> solver_class_text{"breaks", "other algebra", "holds", "false alarm", "unknown"};
+
+SolverClass solver_class(const proofs::EmbeddingAnswer& uf, const proofs::EmbeddingAnswer& ar) {
+  using Status = proofs::EmbeddingAnswer::Status;
+  if (ar.status == Status::counterexample) return SolverClass::breaks;
+  if (uf.status == Status::counterexample && ar.status == Status::none) return SolverClass::other_algebra;
+  if (uf.status == Status::none) return uf.static_failures.empty() ? SolverClass::holds : SolverClass::false_alarm;
+  return SolverClass::unknown;
+}
+
+// Calls f(uninterpreted, arithmetic) for each embedding's pair of answers.
+template <class F>
+void for_each_reading_pair(const RuleResult& r, F f) {
+  if (!r.proof || !r.proof->embedding) return;
+  const auto& answers = r.proof->embedding->answers;
+  for (std::size_t i = 0; i + 1 < answers.size(); i += 2) f(answers[i], answers[i + 1]);
+}
+
+}  // namespace
+
 std::vector<std::pair<std::string, std::string>> RuleResult::solver_classes() const {
   std::vector<std::pair<std::string, std::string>> out;
-  if (!proof || !proof->embedding) return out;
-  using Status = proofs::EmbeddingAnswer::Status;
-  const auto& answers = proof->embedding->answers;
-  for (std::size_t i = 0; i + 1 < answers.size(); i += 2) {
-    const auto &uf = answers[i], &ar = answers[i + 1];
-    const char* cls = ar.status == Status::counterexample                                ? "breaks"
-                      : uf.status == Status::counterexample && ar.status == Status::none ? "other algebra"
-                      : uf.status == Status::none && uf.static_failures.empty()           ? "holds"
-                      : uf.status == Status::none                                         ? "false alarm"
-                                                                                          : "unknown";
-    out.emplace_back(uf.embedding, cls);
-  }
+  for_each_reading_pair(*this, [&](const auto& uf, const auto& ar) {
+    out.emplace_back(uf.embedding, solver_class_text[static_cast<std::size_t>(solver_class(uf, ar))]);
+  });
   return out;
 }
 
 std::vector<std::string> RuleResult::solver_lines() const {
   std::vector<std::string> out;
-  if (!proof || !proof->embedding) return out;
-  using Status = proofs::EmbeddingAnswer::Status;
-  const auto& answers = proof->embedding->answers;
-  for (std::size_t i = 0; i + 1 < answers.size(); i += 2) {
-    const auto &uf = answers[i], &ar = answers[i + 1];
+  for_each_reading_pair(*this, [&](const proofs::EmbeddingAnswer& uf, const proofs::EmbeddingAnswer& ar) {
     const std::string head = uf.static_failures.empty() ? fmt::format("{} holds", uf.condition())
                                                         : fmt::format("fails {} syntactically", fmt::join(uf.static_failures, ", "));
-    const std::string ops = uf.functions.empty() ? std::string("whatever the values") : fmt::format("for every interpretation of {}", fmt::join(uf.functions, ", "));
+    const std::string ops =
+        uf.functions.empty() ? std::string("whatever the values") : fmt::format("for every interpretation of {}", fmt::join(uf.functions, ", "));
     std::string z3;
-    if (uf.disagree || ar.disagree)
+    if (uf.disagree || ar.disagree) {
       z3 = fmt::format("DISAGREE: {}", uf.disagree ? uf.note : ar.note);
-    else if (ar.status == Status::counterexample)
-      z3 = fmt::format("a {}-dart host breaks {} in dartcheck's algebra{}", ar.darts, ar.embedding, ar.replayed ? " (replayed)" : " (NOT replayed)");
-    else if (uf.status == Status::counterexample && ar.status == Status::none)
-      z3 = fmt::format("no host up to {} darts breaks {} in real arithmetic; another interpretation of {} would, on {} darts", ar.darts, ar.embedding,
-                       fmt::join(uf.functions, ", "), uf.darts);
-    else if (uf.status == Status::none)
-      z3 = fmt::format("no host up to {} darts breaks {}, {}", uf.darts, uf.embedding, ops);
-    else
-      z3 = fmt::format("unknown ({})", ar.status == Status::unknown ? ar.why : uf.why);
+    } else {
+      switch (solver_class(uf, ar)) {
+        case SolverClass::breaks:
+          z3 = fmt::format("a {}-dart host breaks {} in dartcheck's algebra{}", ar.darts, ar.embedding, ar.replayed ? " (replayed)" : " (NOT replayed)");
+          break;
+        case SolverClass::other_algebra:
+          z3 = fmt::format("no host up to {} darts breaks {} in real arithmetic; another interpretation of {} would, on {} darts", ar.darts,
+                           ar.embedding, fmt::join(uf.functions, ", "), uf.darts);
+          break;
+        case SolverClass::holds:
+        case SolverClass::false_alarm:
+          z3 = fmt::format("no host up to {} darts breaks {}, {}", uf.darts, uf.embedding, ops);
+          break;
+        case SolverClass::unknown:
+          z3 = fmt::format("unknown ({})", ar.status == proofs::EmbeddingAnswer::Status::unknown ? ar.why : uf.why);
+          break;
+      }
+    }
     out.push_back(fmt::format("solver: {}; Z3: {}", head, z3));
-  }
+  });
   return out;
 }
 
@@ -188,7 +211,7 @@ void run_embedding_solver(RuleResult& r, const std::function<bool()>& stop) {
   p.model = e.rule.model().name;
   p.scheme = e.words.scheme;
   proofs::EmbeddingProveOptions o;
-  o.max_darts = e.rule.left().node_count() + 4;
+  o.max_darts = proofs::embedding_host_darts(e.rule, 0);
   o.stop = stop;
   p.embedding = proofs::prove_embeddings(e, o);
   p.interrupted = p.embedding->interrupted;
@@ -251,7 +274,7 @@ void run_proof(RuleResult& r, const proofs::ProveOptions& options, const std::st
                                       : std::string());
   r.embedding_replays = std::move(embedding_replays);
   // Potential events (004) decided on the same hosts as the embeddings.
-  const std::size_t k = options.embedding_darts > 0 ? options.embedding_darts : e.rule.left().node_count() + 4;
+  const std::size_t k = proofs::embedding_host_darts(e.rule, options.embedding_darts);
   r.potential_events.reset();
   if (!proof.interrupted) {
     r.potential_events = decide_potential_events(e, k, options.stop);

@@ -82,4 +82,8 @@ struct EmbeddingProof {
 
 EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions& options);
 
+/// K for a rule: `asked` when set (prove --embedding-darts), else |L| + 4
+/// (the bound; the host budget bounds the work).
+inline std::size_t embedding_host_darts(const Rule& rule, std::size_t asked) { return asked > 0 ? asked : rule.left().node_count() + 4; }
+
 }  // namespace dartcheck::proofs

@@ -454,7 +454,7 @@ RuleProof prove_rule(const Operation& entry, const ProveOptions& o) {
   // topological encoding's scope is still answered.
   if (o.embeddings && entry.terms) {
     EmbeddingProveOptions eo;
-    eo.max_darts = o.embedding_darts > 0 ? o.embedding_darts : rule.left().node_count() + 4;
+    eo.max_darts = embedding_host_darts(rule, o.embedding_darts);
     eo.rlimit = o.rlimit;
     eo.stop = o.stop;
     p.embedding = prove_embeddings(entry, eo);
