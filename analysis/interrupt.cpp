@@ -11,6 +11,7 @@ namespace {
 
 volatile std::sig_atomic_t flag = 0;
 volatile std::sig_atomic_t first_second = 0;  // CLOCK_MONOTONIC seconds of the first signal
+volatile std::sig_atomic_t count_second = 0;  // count_second_interrupt() was called
 
 // say_on_early_interrupt's line: written before the handler that reads it
 // can run (both signals are blocked while it is copied).
@@ -41,7 +42,11 @@ extern "C" void on_signal(int) {
     flag = 1;
     return;
   }
-  if (now - first_second >= 2) exit_now();  // whole seconds: 2 means at least 1 s
+  if (now - first_second < 2) return;  // whole seconds: 2 means at least 1 s
+  if (count_second != 0)
+    flag = 2;
+  else
+    exit_now();
 }
 
 extern "C" void on_signal_exit(int) { exit_now(); }
@@ -85,5 +90,9 @@ void catch_interrupts() {
 }
 
 bool interrupted() { return flag != 0; }
+
+void count_second_interrupt() { count_second = 1; }
+
+bool interrupted_twice() { return flag == 2; }
 
 }  // namespace dartcheck::analysis

@@ -30,4 +30,12 @@ void say_on_early_interrupt(std::string_view line);
 /// Whether SIGINT or SIGTERM arrived since catch_interrupts().
 bool interrupted();
 
+/// For a parent of shard processes (--jobs): a second signal, a second or
+/// more after the first, is counted instead of ending the process at once,
+/// so that the parent can kill its shards and remove its files first.
+void count_second_interrupt();
+
+/// Whether a second signal arrived under count_second_interrupt().
+bool interrupted_twice();
+
 }  // namespace dartcheck::analysis

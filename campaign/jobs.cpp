@@ -3,8 +3,12 @@
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -32,7 +36,7 @@ std::vector<std::string>& command_line() {
 
 // The arguments of shard k: the command line without --jobs and --format
 // (both spellings), with the shard, its lines and the shared seed.
-std::vector<std::string> shard_arguments(std::size_t k, std::size_t shards, const JobsRun& run) {
+std::vector<std::string> shard_arguments(std::size_t k, std::size_t shards, const JobsRun& run, std::optional<double> budget) {
   std::vector<std::string> out;
   const auto& args = command_line();
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -48,6 +52,10 @@ std::vector<std::string> shard_arguments(std::size_t k, std::size_t shards, cons
   if (run.seed) {
     out.push_back("--seed");
     out.push_back(std::to_string(*run.seed));
+  }
+  if (budget) {
+    out.push_back("--shard-budget");
+    out.push_back(fmt::format("{}", *budget));
   }
   return out;
 }
@@ -75,9 +83,13 @@ int run_jobs(const JobsRun& run) {
   if (!run.shard.empty()) throw InputError("<command line>", 0, 0, "--jobs with --shard: run a shard on one job, or the whole run on several");
   if (command_line().empty()) throw std::logic_error("run_jobs: the command line was not saved");
   analysis::catch_interrupts();  // Ctrl-C reaches the shards too (one process group); they stop and say so
-  char dir_template[] = "/tmp/dartcheck-jobs-XXXXXX";
-  const char* dir = mkdtemp(dir_template);
-  if (!dir) throw std::runtime_error(fmt::format("--jobs: cannot create a directory in /tmp: {}", std::strerror(errno)));
+  analysis::count_second_interrupt();  // a second signal kills the shards before the parent goes
+  // The shards' files go in $TMPDIR (or /tmp), in a directory of this run's own.
+  const char* tmp = std::getenv("TMPDIR");
+  const std::string parent = tmp && *tmp ? tmp : "/tmp";
+  std::string dir_template = parent + "/dartcheck-jobs-XXXXXX";
+  const char* dir = mkdtemp(dir_template.data());
+  if (!dir) throw std::runtime_error(fmt::format("--jobs: cannot create a directory in {}: {}", printable(parent), std::strerror(errno)));
   struct Cleanup {
     std::string dir;
     ~Cleanup() {
@@ -95,15 +107,49 @@ int run_jobs(const JobsRun& run) {
   MergeRequest merge = run.merge;
   std::map<pid_t, std::size_t> running;
   int failed = 0;
-  for (std::size_t next = 0; next < shards || !running.empty();) {
-    if (next < shards && running.size() < run.jobs) {
+  bool forwarded = false;
+  const auto start = std::chrono::steady_clock::now();
+  const auto signal_shards = [&](int signal) {
+    for (const auto& [pid, k] : running) ::kill(pid, signal);
+  };
+  for (std::size_t next = 0; (next < shards && !analysis::interrupted()) || !running.empty();) {
+    if (analysis::interrupted_twice()) {
+      signal_shards(SIGKILL);
+      for (int status = 0; !running.empty();) {
+        const pid_t pid = waitpid(-1, &status, 0);
+        if (pid > 0)
+          running.erase(pid);
+        else if (errno != EINTR)
+          running.clear();  // no child left to wait for
+      }
+      fmt::print(stderr, "interrupted again: the shards were killed; nothing is merged\n");
+      return analysis::interrupted_exit;
+    }
+    // A signal to the parent alone (SIGTERM from a scheduler) reaches the shards too.
+    if (analysis::interrupted() && !forwarded) {
+      signal_shards(SIGTERM);
+      forwarded = true;
+    }
+    if (!analysis::interrupted() && next < shards && running.size() < run.jobs) {
+      std::optional<double> budget;
+      if (run.budget_seconds) {
+        const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const std::size_t waves = (shards - next + run.jobs - 1) / run.jobs;
+        budget = std::max(0.001, (*run.budget_seconds - spent) / static_cast<double>(waves));
+      }
       merge.shards.push_back(fmt::format("{}/{}.jsonl", dir, next));
-      running[spawn(shard_arguments(next, shards, run), merge.shards.back(), fmt::format("{}/{}.err", dir, next))] = next;
+      running[spawn(shard_arguments(next, shards, run, budget), merge.shards.back(), fmt::format("{}/{}.err", dir, next))] = next;
       ++next;
       continue;
     }
+    // Polled, not blocking: a signal must be seen while every shard runs.
     int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
+    const pid_t pid = waitpid(-1, &status, WNOHANG);
+    if (pid == 0) {
+      const timespec pause{0, 20'000'000};  // 20 ms
+      ::nanosleep(&pause, nullptr);
+      continue;
+    }
     if (pid < 0) {
       if (errno == EINTR) continue;
       throw std::runtime_error(fmt::format("--jobs: waiting for the shards: {}", std::strerror(errno)));
@@ -113,13 +159,17 @@ int run_jobs(const JobsRun& run) {
     const std::size_t k = it->second;
     running.erase(it);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    // 0, 1 and 3 are verdicts, which the merge reports; anything else stops it.
-    if (code != exit_status::ok && code != exit_status::violation && code != exit_status::soundness_bug) {
+    // 0, 1 and 3 are verdicts, which the merge reports; 130 and a signal
+    // are the stop this run asked for; anything else stops it.
+    const bool stopped = analysis::interrupted() && (code == analysis::interrupted_exit || code == 128 + SIGTERM);
+    if (code != exit_status::ok && code != exit_status::violation && code != exit_status::soundness_bug && !stopped) {
       fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, shards, code, read_input(fmt::format("{}/{}.err", dir, k)));
       if (!failed) failed = code;
     }
   }
   if (failed) return failed;
+  // After a signal: the finished shards' rules, and the interrupted shards' finished ones.
+  merge.incomplete = analysis::interrupted();
   return merge_shards(merge);
 }
 

@@ -24,11 +24,19 @@ struct JobsRun {
   MergeRequest merge;
   /// fuzz and report: the seed every shard must share (drawn here when not given).
   std::optional<std::uint64_t> seed;
+  /// fuzz --time and report --fuzz: the whole run's budget. Each shard is
+  /// started with what is left of it divided by the waves of shards still
+  /// to come (--shard-budget), so that the run takes the budget, not 4x it.
+  std::optional<double> budget_seconds;
 };
 
 /// Runs the saved command line as `jobs` shard processes and merges them.
 /// Returns the merged run's exit status, or the first failing shard's
-/// (with its error output).
+/// (with its error output). SIGINT or SIGTERM: no shard is started any
+/// more, the running ones are sent SIGTERM and reaped, and what finished
+/// is merged (merge --incomplete), exit 130; a second signal a second
+/// later kills the shards and returns 130 at once. The shards' directory
+/// is removed in every case.
 int run_jobs(const JobsRun& run);
 
 }  // namespace dartcheck::campaign

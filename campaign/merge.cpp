@@ -3,6 +3,8 @@
 // command's own renderers (reports/run_output.hpp). The static stage is
 // recomputed from the catalog, whose digest must be the shards'; the
 // costly stages come from the records (campaign/result_record.hpp).
+#include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <map>
 
@@ -10,10 +12,12 @@
 
 #include "analysis/verdict_record.hpp"
 #include "analysis/exit_status.hpp"
+#include "analysis/interrupt.hpp"
 #include "campaign/merge.hpp"
 #include "campaign/result_record.hpp"
 #include "campaign/shard_stream.hpp"
 #include "core/number_text.hpp"
+#include "core/wording.hpp"
 #include "reports/run_output.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
@@ -60,35 +64,45 @@ Catalog merged_catalog(const RunHeader& h, const std::string& override_path, std
 }
 
 // Every selected rule of the catalog from the shard its name belongs to,
-// in catalog order; an error for a rule that is missing or left over.
-Results merged_results(const Catalog& catalog, const std::vector<ShardFile>& shards) {
+// in catalog order; an error for a rule that is left over, or missing
+// unless the merge is incomplete (then `selected` counts it).
+Results merged_results(const Catalog& catalog, const std::vector<ShardFile>& shards, bool incomplete, std::size_t& selected) {
   const auto& h = shards.front().header;
   const RecordSource source = h.baseline.empty() ? RecordSource::catalog : RecordSource::baseline;
-  std::vector<std::map<std::string, const ShardRule*>> by_name(shards.size());
-  for (std::size_t k = 0; k < shards.size(); ++k)
-    for (const auto& r : shards[k].rules)
-      if (!by_name[k].emplace(r.name, &r).second) throw InputError(shards[k].file, r.line, 1, fmt::format("rule '{}' twice", printable(r.name)));
+  std::map<std::size_t, std::map<std::string, const ShardRule*>> by_name;  // by shard index
+  std::map<std::size_t, const ShardFile*> by_index;
+  for (const auto& f : shards) {
+    by_index[f.header.shard.index] = &f;
+    auto& names = by_name[f.header.shard.index];
+    for (const auto& r : f.rules)
+      if (!names.emplace(r.name, &r).second) throw InputError(f.file, r.line, 1, fmt::format("rule '{}' twice", printable(r.name)));
+  }
   Results results;
+  selected = 0;
   for (const auto& e : catalog.rules) {
     if (!h.rule.empty() && e.rule.name() != h.rule) continue;
+    ++selected;
     const std::size_t k = stable_hash(e.rule.name()) % h.shard.count;
-    const auto it = by_name[k].find(reports::replace_invalid_utf8(e.rule.name()));
-    if (it == by_name[k].end())
-      throw InputError(shards[k].file, 0, 0,
+    auto& names = by_name[k];
+    const auto it = names.find(reports::replace_invalid_utf8(e.rule.name()));
+    if (it == names.end()) {
+      if (incomplete) continue;
+      throw InputError(by_index.at(k)->file, 0, 0,
                        fmt::format("rule '{}' ({}) belongs to shard {}/{}, which has no line for it", printable(e.rule.name()), e.location.str(), k,
                                    h.shard.count));
+    }
     results.push_back(analyse_static(catalog, e, 0, {}, source));
     try {
       restore_record(results.back(), it->second->record);
     } catch (const RecordError& err) {
-      throw InputError(shards[k].file, it->second->line, 1, err.what());
+      throw InputError(by_index.at(k)->file, it->second->line, 1, err.what());
     }
-    by_name[k].erase(it);
+    names.erase(it);
   }
-  for (std::size_t k = 0; k < shards.size(); ++k)
-    if (!by_name[k].empty()) {
-      const auto* left = by_name[k].begin()->second;
-      throw InputError(shards[k].file, left->line, 1,
+  for (const auto& [k, names] : by_name)
+    if (!names.empty()) {
+      const auto* left = names.begin()->second;
+      throw InputError(by_index.at(k)->file, left->line, 1,
                        fmt::format("rule '{}' is not a rule of shard {} of {} in the catalog", printable(left->name), k, h.catalog));
     }
   return results;
@@ -106,8 +120,11 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
   int status = ok;
   Json runs = Json::array();
   std::string text;
+  bool incomplete = false;
   for (const auto& f : files) {
-    status = worse(status, f.summary.value("status", 0));
+    incomplete = incomplete || !f.finished;
+    if (f.input.is_null()) continue;  // killed before its result (merge --incomplete)
+    if (f.summary.is_object()) status = worse(status, f.summary.value("status", 0));
     runs.push_back(f.input["document"]);
     text += f.input["text"].get<std::string>();
   }
@@ -119,6 +136,10 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
     fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
     fmt::print("{}", printable(text));  // a shard file is input: no escape sequence reaches the terminal
+  }
+  if (incomplete) {
+    fmt::print(stderr, "incomplete: {} of {} runs finished; the results above are theirs\n", runs.size(), files.size());
+    if (status != soundness_bug) return analysis::interrupted_exit;
   }
   return status;
 }
@@ -132,15 +153,17 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
   for (std::size_t k = 0; k < catalog.rules.size(); ++k) order.emplace(reports::replace_invalid_utf8(catalog.rules[k].rule.name()), k);
   std::map<std::size_t, const Json*> fragments;
   int status = ok;
-  for (std::size_t k = 0; k < shards.size(); ++k) {
-    status = worse(status, shards[k].summary.value("status", 0));
-    for (const Json& f : shards[k].fragments) {
+  bool incomplete = shards.size() < h.shard.count;
+  for (const auto& shard : shards) {
+    const std::size_t k = shard.header.shard.index;
+    incomplete = incomplete || !shard.finished;
+    if (shard.summary.is_object()) status = worse(status, shard.summary.value("status", 0));
+    for (const Json& f : shard.fragments) {
       const std::string name = f["rule"].get<std::string>();
       const auto at = order.find(name);
       if (at == order.end() || stable_hash(catalog.rules[at->second].rule.name()) % h.shard.count != k)
-        throw InputError(shards[k].file, 0, 0,
-                         fmt::format("rule '{}' is not a rule of shard {} of {} in the catalog", printable(name), k, h.catalog));
-      if (!fragments.emplace(at->second, &f).second) throw InputError(shards[k].file, 0, 0, fmt::format("rule '{}' twice", printable(name)));
+        throw InputError(shard.file, 0, 0, fmt::format("rule '{}' is not a rule of shard {} of {} in the catalog", printable(name), k, h.catalog));
+      if (!fragments.emplace(at->second, &f).second) throw InputError(shard.file, 0, 0, fmt::format("rule '{}' twice", printable(name)));
     }
   }
   fmt::print(stderr, "dartcheck merge: {} shards of events {}, {} rules\n", shards.size(), h.catalog, fragments.size());
@@ -154,6 +177,11 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
   } else {
     for (const auto& [k, f] : fragments) fmt::print("{}", printable((*f)["text"].get<std::string>()));
   }
+  if (incomplete) {
+    fmt::print(stderr, "incomplete: {} of {} shards finished; the rules above are theirs\n",
+               std::count_if(shards.begin(), shards.end(), [](const ShardFile& f) { return f.finished; }), h.shard.count);
+    if (status != soundness_bug) return analysis::interrupted_exit;
+  }
   return status;
 }
 
@@ -161,8 +189,14 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
 
 int merge_shards(const MergeRequest& o) {
   std::vector<ShardFile> files;
-  for (const auto& f : o.shards) files.push_back(read_shard_file(f));
-  files = check_complete(std::move(files));
+  for (const auto& f : o.shards) {
+    // A shard killed before its header (--jobs stopped by a signal) has nothing to give.
+    std::error_code ec;
+    if (o.incomplete && std::filesystem::is_regular_file(f, ec) && std::filesystem::file_size(f, ec) == 0) continue;
+    files.push_back(read_shard_file(f, o.incomplete));
+  }
+  if (files.empty() && o.incomplete) throw InputError("<command line>", 0, 0, "merge --incomplete: every shard file is empty (no shard started)");
+  files = check_complete(std::move(files), o.incomplete);
   const RunHeader& h = files.front().header;
   if (per_input_command(h.command)) return merge_inputs(files, o.format);
   if (o.format == "html" && o.output.empty()) throw InputError("<command line>", 0, 0, "--format html: give -o DIR for the page");
@@ -173,15 +207,15 @@ int merge_shards(const MergeRequest& o) {
   std::vector<std::string> baseline_mismatches;
   const Catalog catalog = merged_catalog(h, o.catalog, baseline_mismatches);
   if (h.command == "events") return merge_events(catalog, files, o.format);
-  const Results results = merged_results(catalog, files);
-  // The run's figures: every shard's rules and seconds (the work done, not the wall clock).
   std::size_t selected = 0;
+  const Results results = merged_results(catalog, files, o.incomplete, selected);
+  // Incomplete: a shard stopped, killed or missing, so some rules may have no result.
+  const bool incomplete = files.size() < h.shard.count || std::any_of(files.begin(), files.end(), [](const ShardFile& f) { return !f.finished; });
+  // The run's seconds: every shard's (the work done, not the wall clock).
   double seconds = 0;
-  for (const auto& f : files) {
-    selected += f.summary.value("rules", std::size_t{0});
-    seconds += f.summary.value("seconds", 0.0);
-  }
-  fmt::print(stderr, "dartcheck merge: {} shards of {} {}, {} rules\n", files.size(), h.command, h.catalog, results.size());
+  for (const auto& f : files)
+    if (f.summary.is_object()) seconds += f.summary.value("seconds", 0.0);
+  fmt::print(stderr, "dartcheck merge: {} of {} {}, {}\n", counted(files.size(), "shard"), h.command, h.catalog, counted(results.size(), "rule"));
 
   if (o.format == "sarif" || o.format == "junit") {
     print_ci_format(o.format, h.command, h.catalog, results, baseline_mismatches);
@@ -203,7 +237,7 @@ int merge_shards(const MergeRequest& o) {
   } else if (h.command == "check") {
     print_check(o.format, h.catalog, catalog, results, baseline_mismatches, o.explain);
   } else if (h.command == "fuzz") {
-    print_fuzz(o.format, {h.catalog, parameter<std::uint64_t>(h, "seed"), seconds, selected, false, baseline_mismatches}, results);
+    print_fuzz(o.format, {h.catalog, parameter<std::uint64_t>(h, "seed"), seconds, selected, incomplete, baseline_mismatches}, results);
   } else if (h.command == "prove") {
     print_prove(o.format,
                 {h.catalog, parameter<std::size_t>(h, "max_darts"), parameter<unsigned>(h, "rlimit"), seconds, o.explain, baseline_mismatches},
@@ -211,7 +245,7 @@ int merge_shards(const MergeRequest& o) {
   } else {  // report, json (text refused above)
     fmt::print("{}\n", reports::json_text(reports::results_document("report", h.catalog, catalog, results, baseline_mismatches)));
   }
-  return finish_run(results, baseline_mismatches, selected);
+  return finish_run(results, baseline_mismatches, selected, incomplete || analysis::interrupted());
 }
 
 }  // namespace dartcheck::campaign

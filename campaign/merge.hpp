@@ -16,6 +16,10 @@ struct MergeRequest {
   std::vector<std::string> shards = {};  // files written by --format jsonl
   std::string format = "text", output = {}, catalog = {}, engine = "dot";
   bool explain = false;
+  /// Merge what there is: interrupted or killed shards, missing shards and
+  /// empty shard files; the result says how many rules are missing and the
+  /// exit status is 130 (interrupted) unless a soundness bug makes it 3.
+  bool incomplete = false;
 };
 
 /// Reads, checks (complete, one run, the same catalog) and merges the

@@ -135,7 +135,7 @@ void ShardWriter::line(const char* type, Json payload, std::optional<Json> recor
   std::fflush(stdout);  // a shard killed later keeps this line
 }
 
-ShardFile read_shard_file(const std::string& file) {
+ShardFile read_shard_file(const std::string& file, bool incomplete) {
   TextLines lines(read_input(file));
   ShardFile out;
   out.file = file;
@@ -158,6 +158,12 @@ ShardFile read_shard_file(const std::string& file) {
     }
     const std::string type = string_at(j, "type", file, line);
     const std::string format = string_at(j, "format", file, line);
+    // A line of another version may mean the same keys differently: refused, not guessed.
+    if (!j.contains("format_version") || j["format_version"] != reports::json_format_version)
+      throw InputError(file, line, 1,
+                       fmt::format("format_version {}: this dartcheck reads version {} (run the shard again with this version)",
+                                   j.contains("format_version") ? printable(j["format_version"].dump()) : std::string("missing"),
+                                   reports::json_format_version));
     if (!header && type != "header")
       throw InputError(file, line, 1, "the first line is not a header: shards are the output of --format jsonl with this version of dartcheck");
     if (!out.summary.is_null()) throw InputError(file, line, 1, "a line after the summary");
@@ -195,19 +201,28 @@ ShardFile read_shard_file(const std::string& file) {
       if (sum.contains("interrupted") && !sum["interrupted"].is_boolean()) bad("interrupted", "true or false");
       if (sum.contains("status") && !(sum["status"] == 0 || sum["status"] == 1 || sum["status"] == 3 || sum["status"] == 130))
         bad("status", "0, 1, 3 or 130");
-      if (out.summary.value("interrupted", false))
-        throw InputError(file, line, 1, "this shard was interrupted: run it again (its rules are not all there)");
+      // A signal stopped the run: its summary says so, or (recombine, query, events) its status is 130.
+      if (out.summary.value("interrupted", false) || out.summary.value("status", 0) == 130) {
+        if (!incomplete)
+          throw InputError(file, line, 1, "this shard was interrupted: run it again (its rules are not all there), or merge --incomplete");
+        out.finished = false;
+      }
     } else {
       throw InputError(file, line, 1, fmt::format("unknown line type '{}'", printable(type)));
     }
   }
   if (!header) throw InputError(file, 0, 0, "empty: no header line (did the shard start?)");
-  if (out.summary.is_null())
-    throw InputError(file, line, 0, fmt::format("no summary line: shard {} did not finish (killed, or out of time?)", out.header.shard.text()));
+  if (out.summary.is_null()) {
+    if (!incomplete)
+      throw InputError(file, line, 0,
+                       fmt::format("no summary line: shard {} did not finish (killed, or out of time?); merge --incomplete reads its finished rules",
+                                   out.header.shard.text()));
+    out.finished = false;
+  }
   return out;
 }
 
-std::vector<ShardFile> check_complete(std::vector<ShardFile> files) {
+std::vector<ShardFile> check_complete(std::vector<ShardFile> files, bool incomplete) {
   if (files.empty()) throw InputError("<command line>", 0, 0, "merge: no shard files given");
   const RunHeader& first = files.front().header;
   if (per_input_command(first.command)) {
@@ -217,7 +232,7 @@ std::vector<ShardFile> check_complete(std::vector<ShardFile> files) {
         throw InputError(f.file, 1, 1,
                          fmt::format("not a run of the same campaign as {}: {} {} against {} {}", files.front().file, f.header.command,
                                      f.header.parameters.dump(), first.command, first.parameters.dump()));
-      if (f.input.is_null()) throw InputError(f.file, 0, 0, "no input line: the run did not finish");
+      if (f.input.is_null() && !incomplete) throw InputError(f.file, 0, 0, "no input line: the run did not finish");
       const auto [it, fresh] = by_input.emplace(f.header.catalog, &f);
       if (!fresh)
         throw InputError(f.file, 1, 1, fmt::format("{} is also the input of {}: give each run once", printable(f.header.catalog), it->second->file));
@@ -232,7 +247,7 @@ std::vector<ShardFile> check_complete(std::vector<ShardFile> files) {
     const auto [it, fresh] = by_index.emplace(f.header.shard.index, &f);
     if (!fresh) throw InputError(f.file, 1, 1, fmt::format("shard {} is also {}: give each shard once", f.header.shard.text(), it->second->file));
   }
-  for (std::size_t k = 0; k < first.shard.count; ++k)
+  for (std::size_t k = 0; k < first.shard.count && !incomplete; ++k)
     if (!by_index.contains(k))
       throw InputError("<command line>", 0, 0,
                        fmt::format("merge: shard {}/{} is missing ({} of {} given)", k, first.shard.count, files.size(), first.shard.count));

@@ -57,18 +57,24 @@ struct ShardFile {
   reports::Json input;                   // a per-input command's {"document", "text"}
   std::vector<reports::Json> fragments;  // events: {"rule", "json", "text"} per rule
   reports::Json summary;
+  /// False for a shard a signal stopped (its summary says so) or that
+  /// ended without a summary (killed): read only with `incomplete`.
+  bool finished = true;
 };
 
 /// Reads a file written by --format jsonl. InputError with file:line on
-/// malformed lines, a missing header, and a missing or interrupted summary
-/// (a shard that did not finish cannot be merged as if it had).
-ShardFile read_shard_file(const std::string& file);
+/// malformed lines, a line of another format version, a missing header,
+/// and a missing or interrupted summary: a shard that did not finish
+/// cannot be merged as if it had. With `incomplete`, such a shard is read
+/// with `finished` false (merge --incomplete: a result marked incomplete).
+ShardFile read_shard_file(const std::string& file, bool incomplete = false);
 
 /// Checks that `files` are the N shards of one run, each exactly once;
 /// InputError naming the missing shard, the duplicated one (with both
 /// files) or the option that differs. Returns them ordered by shard. For
 /// a per-input command: runs with the same options, each input once,
-/// ordered by the input's path.
-std::vector<ShardFile> check_complete(std::vector<ShardFile> files);
+/// ordered by the input's path. With `incomplete`, missing shards are
+/// allowed (the caller marks the result incomplete).
+std::vector<ShardFile> check_complete(std::vector<ShardFile> files, bool incomplete = false);
 
 }  // namespace dartcheck::campaign

@@ -55,7 +55,7 @@ int check(const CheckOptions& o) {
   if (o.jobs > 1) {
     if (o.format == "jsonl" || !o.write_baseline.empty())
       throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl or --write-baseline (run the shards, then merge)");
-    return campaign::run_jobs({o.jobs, o.shard, {.format = o.format, .explain = o.explain}, std::nullopt});
+    return campaign::run_jobs({o.jobs, o.shard, {.format = o.format, .explain = o.explain}, std::nullopt, std::nullopt});
   }
   const std::string not_written = fmt::format("not written: {} (interrupted: a baseline records every rule)", o.write_baseline);
   if (!o.write_baseline.empty()) say_on_early_interrupt(not_written);  // Ctrl-C while the catalog is read

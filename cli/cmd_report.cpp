@@ -43,7 +43,8 @@ int report(const ReportOptions& o) {
     return campaign::run_jobs({o.jobs,
                                o.shard,
                                {.format = "html", .output = o.output, .engine = o.engine},
-                               seed ? std::optional<std::uint64_t>(std::random_device{}()) : std::nullopt});
+                               seed ? std::optional<std::uint64_t>(std::random_device{}()) : std::nullopt,
+                               o.fuzz.empty() ? std::nullopt : std::optional(parse_duration(o.fuzz, "--fuzz"))});
   }
   campaign::RuleRun run("report", {o.catalog, o.rule, o.shard, o.baseline, o.format == "jsonl"});
   ReportStages stages;
@@ -61,7 +62,7 @@ int report(const ReportOptions& o) {
   if (stages.fuzz_seconds) {
     if (!terminal().quiet)
       fmt::print(stderr, "dartcheck report: fuzzing {} for {} s, seed {}\n", counted(rows.size(), "rule"), *stages.fuzz_seconds, stages.seed);
-    fuzz_all(rows, run.catalog(), o.rule, *stages.fuzz_seconds, stages.seed, cx_dir, o.catalog, isatty(fileno(stderr)) != 0 && !terminal().quiet);
+    fuzz_all(rows, run.catalog(), o.rule, o.shard_budget ? *o.shard_budget : *stages.fuzz_seconds, stages.seed, cx_dir, o.catalog, isatty(fileno(stderr)) != 0 && !terminal().quiet);
   }
   if (stages.prove_darts > 0) {
     if (!terminal().quiet)

@@ -95,6 +95,12 @@ void add_campaign(CLI::App* command, std::string& shard, std::size_t& jobs) {
       ->transform(count_option(1, 256));
 }
 
+// --shard-budget S: the seconds --jobs gives one shard of a timed run
+// (campaign/jobs.hpp); hidden, as only run_jobs passes it.
+void add_shard_budget(CLI::App* command, std::optional<double>& seconds) {
+  command->add_option("--shard-budget", seconds, "seconds of the time budget for this shard (set by --jobs)")->group("");
+}
+
 void add_check(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<CheckOptions>();
   auto* c = app.add_subcommand("check", "Static consistency conditions of every rule (002 Def. 11-16), against the catalog's verdicts");
@@ -146,6 +152,7 @@ void add_fuzz(CLI::App& app, Commands& commands) {
   f->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   f->add_option("--rule", o->rule, "fuzz only this rule");
   f->add_option("--time", o->time, "time budget for the whole catalog (30s, 500ms, 2m), shared equally by the rules");
+  add_shard_budget(f, o->shard_budget);
   f->add_option("--runs", o->runs, "applications per rule (default 10000 without --time)")->transform(count_option(1));
   f->add_option("--event-checks", o->event_checks,
                 "applications per consistent rule whose event logs are set against its static events (004; 0: none)")
@@ -297,6 +304,7 @@ void add_report(CLI::App& app, Commands& commands) {
   rp->add_option("--rule", o->rule, "only this rule");
   rp->add_option("--baseline", o->baseline, "recorded verdicts from a YAML side file (as check --baseline)");
   rp->add_option("--fuzz", o->fuzz, "fuzz every rule within this total time (30s, 2m, ...) and draw the counterexamples");
+  add_shard_budget(rp, o->shard_budget);
   rp->add_option("--prove", o->prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->transform(host_darts());
   rp->add_option("--seed", o->seed, "random seed of --fuzz (default: drawn and printed)")->transform(counts());
   rp->add_option("--engine", o->engine, "Graphviz layout engine")->capture_default_str();
@@ -313,6 +321,8 @@ void add_merge(CLI::App& app, Commands& commands) {
   m->add_option("-o,--output", o->output, "directory of the html page");
   m->add_option("--catalog", o->catalog, "the catalog, where it is now (default: the path the shards name; it must be unchanged)");
   m->add_flag("--explain", o->explain, "as check --explain and prove --explain");
+  m->add_flag("--incomplete", o->incomplete,
+              "also merge interrupted, killed, empty or missing shards: the result says how many rules it lacks, exit 130");
   m->add_option("--engine", o->engine, "Graphviz layout engine of the html page")->capture_default_str();
   commands.push_back({m, [o] { return merge(*o); }});
 }

@@ -52,6 +52,7 @@ struct ReportOptions {
   std::size_t jobs = 1;         // processes, each a shard, merged (campaign/jobs.hpp)
   std::string baseline;         // recorded verdicts from a YAML side file (io/baseline.hpp)
   std::string fuzz;             // a duration: fuzz every rule within it (empty: no fuzzing)
+  std::optional<double> shard_budget;  // --jobs's share of `fuzz` for this shard (hidden)
   std::size_t prove_darts = 0;  // ask Z3 for counterexamples of up to this many darts (0: no)
   std::optional<std::uint64_t> seed;
 };
@@ -150,6 +151,7 @@ struct FuzzCommand {
   std::size_t max_darts = 128;
   std::size_t event_checks = 2'000;  // applications per consistent rule whose event logs are cross-checked (004)
   std::vector<std::string> maps;
+  std::optional<double> shard_budget;  // --jobs's share of `time` for this shard (hidden)
 };
 /// Exit 3 if a rule judged consistent broke a map or contradicted its
 /// static events, 0 otherwise (a

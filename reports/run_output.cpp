@@ -110,14 +110,15 @@ void write_report(const std::string& dir_name, const std::string& engine, const 
     fmt::print("wrote {} ({}, {} pictures, {} bytes) and {}\n", index, counted(rows.size(), "rule"), pictures.count(), page.size(), data);
 }
 
-int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected) {
+int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected,
+               bool interrupted) {
   for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", printable(m));
   for (const auto& line : mismatch_lines(results)) fmt::print(stderr, "{}\n", painted_diagnostic(line));
   const auto counts = analysis::count_results(results);
-  if (analysis::interrupted())
+  if (interrupted)
     fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), selected, selected == 1 ? "" : "s");
   if (counts.unsound || counts.events_contradicted) return exit_status::soundness_bug;
-  if (analysis::interrupted()) return analysis::interrupted_exit;
+  if (interrupted) return analysis::interrupted_exit;
   return counts.mismatches + baseline_mismatches.size() > 0 ? exit_status::violation : exit_status::ok;
 }
 

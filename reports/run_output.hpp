@@ -43,8 +43,10 @@ void write_report(const std::string& dir, const std::string& engine, const std::
 
 /// The end of a run of check, fuzz, prove or report: prints the baseline's
 /// disagreements and every mismatch line on stderr, says how many of
-/// `selected` rules finished if a signal stopped the run, and returns the
-/// exit status (3 a soundness bug, 130 interrupted, 1 a mismatch, 0).
-int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected);
+/// `selected` rules finished if the run was `interrupted` (a signal, or a
+/// merge of unfinished shards), and returns the exit status (3 a soundness
+/// bug, 130 interrupted, 1 a mismatch, 0).
+int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected,
+               bool interrupted);
 
 }  // namespace dartcheck::reports

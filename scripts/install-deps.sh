@@ -31,6 +31,9 @@ packages=(
   # Campaigns (docs/scale.md): GNU parallel runs shards in the tests; Slurm
   # (with munge) runs the job-array script on a one-node cluster.
   parallel slurm-wlm munge
+  # The signal tests find and signal shard processes (pgrep, pkill, kill -PGID)
+  # and start a run in a process group of its own (setsid).
+  procps util-linux
 )
 
 missing=()

@@ -74,6 +74,25 @@ cp tests/data/wrong-verdict.yaml "$WORK/catalog.yaml" && "$D" check "$WORK/catal
 echo "# changed" >> "$WORK/catalog.yaml"
 expect_error "a changed catalog" "not the catalog the shards ran on" "$D" merge "$WORK/moved.jsonl"
 
+# merge --incomplete (issue 62): the cut and the missing shard merge, the
+# result names how many rules finished and the exit status is 130.
+expect_incomplete() {  # label pattern command...
+  local label=$1 pattern=$2; shift 2
+  local rc=0
+  "$@" > "$WORK/out.txt" 2> "$WORK/err.txt" || rc=$?
+  if [ "$rc" -ne 130 ] || ! grep -Eq -- "$pattern" "$WORK/err.txt"; then
+    echo "FAIL: $label: exit $rc, expected 130 and '$pattern' in:" >&2; cat "$WORK/err.txt" >&2; fail=1
+  fi
+}
+expect_incomplete "--incomplete, a cut shard" "^interrupted: [0-9]+ of 82 rules finished" \
+  "$D" merge --incomplete "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$WORK/cut.jsonl" "$S/shard-3.jsonl"
+expect_incomplete "--incomplete, a missing shard" "^interrupted: [0-9]+ of 82 rules finished" \
+  "$D" merge --incomplete "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$S/shard-3.jsonl"
+# Another format version: refused, not read as if it were this one.
+sed 's/"format_version":[0-9]*/"format_version":99/' "$S/shard-1.jsonl" > "$WORK/version99.jsonl"
+expect_error "an unknown format version" "version99.jsonl:1:1: format_version 99: this dartcheck reads version" \
+  "$D" merge "$S/shard-0.jsonl" "$WORK/version99.jsonl" "$S/shard-2.jsonl" "$S/shard-3.jsonl"
+
 # recombine and query on many inputs, one GNU parallel job each: the merged
 # document holds each input's own document, in the order of their paths.
 meshes=(tests/data/two-tets.mesh tests/data/cube-5-tets.mesh)
@@ -94,4 +113,9 @@ then echo "FAIL: recombine: the merged runs differ from the single runs (in path
 expect_error "an input given twice" "is also the input of" "$D" merge "$WORK/recombine-1.jsonl" "$WORK/recombine-1.jsonl"
 "$D" recombine tests/data/folded-tets.mesh --format jsonl > "$WORK/recombine-folded.jsonl" 2> /dev/null || true
 expect_error "a run that failed" "recombine-folded.jsonl: empty: no header line" "$D" merge "$WORK"/recombine-*.jsonl
+rm "$WORK/recombine-folded.jsonl"
+# A run a signal stopped says so by its status (130): it used to merge as 0.
+sed 's/"summary":{"status":[0-9]*}/"summary":{"status":130}/' "$WORK/recombine-2.jsonl" > "$WORK/recombine-stopped.jsonl"
+expect_error "an interrupted input run" "recombine-stopped.jsonl:3:1: this shard was interrupted" "$D" merge "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
+expect_incomplete "--incomplete, an interrupted input run" "^incomplete: 2 of 2 runs" "$D" merge --incomplete "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
 exit $fail
