@@ -40,6 +40,7 @@ extern "C" void on_signal(int) {
   if (flag == 0) {
     first_second = static_cast<std::sig_atomic_t>(now);
     flag = 1;
+    ::alarm(grace_seconds);  // on_grace_over, unless interrupted() is asked first
     return;
   }
   if (now - first_second < 2) return;  // whole seconds: 2 means at least 1 s
@@ -50,6 +51,20 @@ extern "C" void on_signal(int) {
 }
 
 extern "C" void on_signal_exit(int) { exit_now(); }
+
+// The run did not look at the flag within the grace period.
+extern "C" void on_grace_over(int) {
+  constexpr char message[] = "(ended 2 s after the signal, inside one rule, map or example: nothing more is written)\n";
+  static_assert(grace_seconds == 2, "the message names the grace period");
+  if (note_size == 0) {
+    const std::size_t size = std::min(sizeof message - 1, sizeof note);
+    std::copy_n(message, size, note);
+    note_size = static_cast<std::sig_atomic_t>(size);
+  }
+  exit_now();
+}
+
+volatile std::sig_atomic_t seen = 0;  // interrupted() answered yes
 
 // sigaction rather than std::signal: the handler stays installed and both
 // signals are blocked while it runs, so SIGTERM cannot interleave with SIGINT.
@@ -83,13 +98,26 @@ void exit_on_interrupt() { install(on_signal_exit); }
 
 void catch_interrupts() {
   static const bool installed = [] {
+    struct sigaction grace {};
+    grace.sa_handler = on_grace_over;
+    sigemptyset(&grace.sa_mask);
+    sigaddset(&grace.sa_mask, SIGINT);
+    sigaddset(&grace.sa_mask, SIGTERM);
+    ::sigaction(SIGALRM, &grace, nullptr);
     install(on_signal);
     return true;
   }();
   (void)installed;
 }
 
-bool interrupted() { return flag != 0; }
+bool interrupted() {
+  if (flag == 0) return false;
+  if (seen == 0) {
+    seen = 1;
+    ::alarm(0);
+  }
+  return true;
+}
 
 void count_second_interrupt() { count_second = 1; }
 

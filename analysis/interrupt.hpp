@@ -2,7 +2,10 @@
 // the process, so that long runs (fuzz, prove, report) stop at their next
 // check, keep the results of the rules they finished, write them, and exit
 // with `interrupted_exit`. A second signal, a second or more after the first,
-// ends the process at once (timeout(1) delivers one request twice).
+// ends the process at once (timeout(1) delivers one request twice). A run
+// that does not look at the flag within `grace_seconds` of the signal (one
+// long rule, map or example between its checks) is ended then as if it had
+// not caught the signal: every signal is obeyed within seconds.
 #pragma once
 
 #include <string_view>
@@ -10,6 +13,7 @@
 namespace dartcheck::analysis {
 
 inline constexpr int interrupted_exit = 130;  // 128 + SIGINT, as shells report it
+inline constexpr unsigned grace_seconds = 2;
 
 /// Installs the handlers (once per process; later calls do nothing).
 void catch_interrupts();
@@ -27,7 +31,8 @@ void exit_on_interrupt();
 /// that the handler stays async-signal-safe; cut at 1,023 bytes.
 void say_on_early_interrupt(std::string_view line);
 
-/// Whether SIGINT or SIGTERM arrived since catch_interrupts().
+/// Whether SIGINT or SIGTERM arrived since catch_interrupts(). The first
+/// call that answers yes ends the grace period: the caller is stopping.
 bool interrupted();
 
 /// For a parent of shard processes (--jobs): a second signal, a second or

@@ -1,5 +1,7 @@
 #include "campaign/events_output.hpp"
 
+#include <cstdio>
+
 #include <fmt/format.h>
 
 #include "core/terminal.hpp"
@@ -41,8 +43,10 @@ void EventsOutput::rule(const CatalogRule& rule, const Json* json, const std::st
     lines_->fragment(rule.rule.name(), json ? *json : Json(nullptr), text);
   else if (format_ == "json" && json)
     rules_->array.push_back(*json);
-  else if (format_ != "json")
+  else if (format_ != "json") {
     fmt::print("{}", text);
+    std::fflush(stdout);  // a run ended by a signal inside the next rule keeps this one
+  }
 }
 
 void EventsOutput::finish(int status, std::size_t analysed, bool interrupted) {

@@ -1,6 +1,7 @@
 // `dartcheck run`: builds every map of a catalog, applies every rule to its
 // worked examples and compares each outcome with the recorded expectation.
 #include <algorithm>
+#include <cstdio>
 
 #include <fmt/format.h>
 
@@ -31,6 +32,7 @@ int run(const RunOptions& o) {
   }
   int failures = 0, examples = 0;
   fmt::print("\nrules (example: expected -> got)\n");
+  std::fflush(stdout);
   analysis::catch_interrupts();  // Ctrl-C: the examples run so far, their summary, exit 130
   for (const auto& r : catalog.rules) {
     if (analysis::interrupted()) break;
@@ -40,6 +42,7 @@ int run(const RunOptions& o) {
                                          counted(r.rule.right().node_count(), "node"), counted(r.rule.right().arc_count(), "arc")),
                              2));
     for (const auto& e : r.examples) {
+      if (analysis::interrupted()) break;  // a rule may have many examples on large maps
       ++examples;
       const ExampleOutcome got = run_example(catalog, built, r, e);
       const bool pass = got.got == e.expect;
@@ -48,6 +51,7 @@ int run(const RunOptions& o) {
       const std::string row = fmt::format("    {} {} at {}: {} -> {}", pass ? "ok  " : "FAIL", e.map, fmt::join(e.hooks, ","), e.expect, got.got);
       const std::string detail = fmt::format("({}){}", got.detail, pass ? "" : "  at " + e.location.str());
       fmt::print("{}", columns(row) + 2 + columns(detail) <= terminal().width ? row + "  " + detail + "\n" : row + "\n" + hanging("", detail, 9));
+      std::fflush(stdout);  // a run ended by a signal inside the next example keeps this row
     }
   }
   fmt::print("\n{}, {} passed, {} failed\n", counted(static_cast<std::size_t>(examples), "example"), examples - failures, failures);

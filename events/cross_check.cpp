@@ -2,20 +2,13 @@
 
 #include <algorithm>
 #include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 
 #include "core/orbit.hpp"
 
 namespace dartcheck::events {
-namespace {
-
-bool involves(const LoggedEvent& e, bool before, Dart rep) {
-  const auto& v = before ? e.before : e.after;
-  return std::find(v.begin(), v.end(), rep) != v.end();
-}
-
-}  // namespace
 
 CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, const Map& h, const Application& t, const EventLog& dynamic,
                        const EventLog& instantiated) {
@@ -44,9 +37,14 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
   for (NodeId y = 0; y < t.comatch.size(); ++y)
     for (Dart d : t.comatch[y]) touched_h[static_cast<std::size_t>(k.right.orbit_of[y])].insert(hrep[d]);
 
-  auto happened = [&](Event ev, bool before, Dart rep) {
-    return std::any_of(dynamic.events.begin(), dynamic.events.end(), [&](const LoggedEvent& e) { return e.event == ev && involves(e, before, rep); });
-  };
+  // Which (event, side, orbit) the dynamic log holds, indexed once: asked
+  // per claim and touched orbit, a scan of the log was quadratic on a large map.
+  std::set<std::tuple<Event, bool, Dart>> logged;
+  for (const LoggedEvent& e : dynamic.events) {
+    for (Dart d : e.before) logged.emplace(e.event, true, d);
+    for (Dart d : e.after) logged.emplace(e.event, false, d);
+  }
+  auto happened = [&](Event ev, bool before, Dart rep) { return logged.contains({ev, before, rep}); };
   auto claim_name = [&](const EventClaim& cl) {
     return fmt::format("{} {} of {}", certainty_name(cl.certainty), event_name(cl.event),
                        rule_orbit_name(r, k, cl.event != Event::creation, cl.orbit));
