@@ -23,15 +23,16 @@ namespace {
 
 // The default namespace: compiled_ and the catalog's file stem.
 std::string default_namespace(const std::string& catalog) {
-  return "compiled_" + compiler::function_name(std::filesystem::path(catalog).stem().string(), {});
+  return "compiled_" + compiler::function_name(std::filesystem::path(catalog).stem().string(), {}, {});
 }
 
 }  // namespace
 
 int compile(const CompileOptions& o) {
   const std::string ns = o.ns.empty() ? default_namespace(o.catalog) : o.ns;
-  if (!compiler::namespace_name(ns))
-    throw InputError("<command line>", 0, 0, fmt::format("--namespace: '{}' is not a C++ namespace name (identifiers joined by ::)", printable(ns)));
+  if (const auto why = compiler::namespace_conflict(ns))
+    throw InputError("<command line>", 0, 0,
+                     fmt::format("--namespace: '{}' {}", printable(ns), why->starts_with("is not ") ? *why : "cannot be used: " + *why));
   if (!o.output.empty()) {
     if (!o.output.ends_with(".hpp") && !o.output.ends_with(".h") && !o.output.ends_with(".hh"))
       throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a header name ending in .hpp, .hh or .h", o.output));
@@ -64,7 +65,9 @@ int compile(const CompileOptions& o) {
     }
     units.push_back({&r, r.location.str()});
   }
-  const std::string header = compiler::compile_header(units, ns, catalog.file);
+  const compiler::CompiledHeader compiled = compiler::compile_header(units, ns, catalog.file);
+  for (const std::string& line : compiled.renamed) fmt::print(stderr, "note: {}\n", printable(line));
+  const std::string& header = compiled.code;
   if (o.output.empty()) {
     fmt::print("{}", header);
   } else {

@@ -1,5 +1,7 @@
 #include "compiler/rule_compiler.hpp"
 
+#include "compiler/cpp_identifiers.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <iterator>
@@ -382,13 +384,47 @@ void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::
 
 std::optional<std::string> not_compilable(const Operation& op) { return terms_not_compilable(op); }
 
-std::string function_name(std::string_view rule_name, const std::vector<std::string>& taken) {
+std::string function_name(std::string_view rule_name, const std::set<std::string, std::less<>>& declared,
+                          const std::set<std::string, std::less<>>& used, std::string* why) {
   std::string base;
   for (const char c : rule_name) base += (std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 0x80) ? c : '_';
-  if (base.empty() || std::isdigit(static_cast<unsigned char>(base[0]))) base = "rule_" + base;
+  // "a--b" and "rule__Foo" would keep a reserved "__", "a-" would give a__everywhere.
+  const auto single_underscores = [](std::string& name) {
+    for (std::size_t at; (at = name.find("__")) != std::string::npos;) name.erase(at, 1);
+    while (name.size() > 1 && name.back() == '_') name.pop_back();
+  };
+  single_underscores(base);
+  std::string reason;
+  if (base.empty() || std::isdigit(static_cast<unsigned char>(base[0]))) {
+    base = "rule_" + base;
+  } else if (const auto conflict = identifier_conflict(base, used)) {
+    reason = fmt::format("'{}' is {}", base, *conflict);
+    base = "rule_" + base;
+  }
+  single_underscores(base);
+  const auto usable = [&](const std::string& name) {
+    return !declared.contains(name) && !declared.contains(name + "_everywhere") && !identifier_conflict(name, used) &&
+           !identifier_conflict(name + "_everywhere", used);
+  };
   std::string name = base;
-  for (int k = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++k) name = fmt::format("{}_{}", base, k);
+  for (int k = 2; !usable(name); ++k) name = fmt::format("{}_{}", base, k);
+  if (name != base && reason.empty()) reason = fmt::format("'{}' or '{}_everywhere' is declared already or used by the header", base, base);
+  if (why) *why = reason;
   return name;
+}
+
+std::optional<std::string> namespace_conflict(std::string_view ns) {
+  if (!namespace_name(ns)) return "is not a C++ namespace name (identifiers joined by ::)";
+  for (std::size_t start = 0; start <= ns.size();) {
+    const std::size_t end = std::min(ns.find("::", start), ns.size());
+    const std::string_view segment = ns.substr(start, end - start);
+    if (const auto conflict = identifier_conflict(segment, {})) return fmt::format("'{}' is {}", segment, *conflict);
+    if (start == 0 && (segment == "std" || segment == "dartcheck"))
+      return fmt::format("'{}' is the namespace of {} (the generated code may not declare names there)", segment,
+                         segment == "std" ? "the standard library" : "dartcheck's runtime");
+    start = end + 2;
+  }
+  return std::nullopt;
 }
 
 bool has_everywhere(const Operation& op) { return everywhere_applies(op, scheme_facts(op.rule, op.words)); }
@@ -425,7 +461,7 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
   return code;
 }
 
-std::string compile_header(const std::vector<CompileUnit>& units, std::string_view ns, std::string_view source) {
+CompiledHeader compile_header(const std::vector<CompileUnit>& units, std::string_view ns, std::string_view source) {
   std::string code;
   Out out(code);
   fmt::format_to(out,
@@ -446,10 +482,12 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
                  "using dartcheck::compiled::read;\nusing dartcheck::compiled::reserve_more;\nusing dartcheck::compiled::Source;\nusing dartcheck::compiled::TermWorkspace;\n"
                  "using dartcheck::compiled::unlabel;\nusing dartcheck::compiled::write_orbit;\n\n",
                  comment_text(source), ns);
+  // Each function is written under a placeholder (\x01k\x01, no identifier),
+  // so that the names are chosen knowing every identifier the code uses.
   std::vector<std::string> names;
-  for (const CompileUnit& u : units) {
-    names.push_back(function_name(u.operation->rule.name(), names));
-    code += compile_operation(u, names.back()) + "\n";
+  for (std::size_t k = 0; k < units.size(); ++k) {
+    names.push_back(fmt::format("\x01{}\x01", k));
+    code += compile_operation(units[k], names.back()) + "\n";
   }
   // Two tables: topological rules apply to a Map, rules with terms to an
   // EmbeddedMap.
@@ -475,7 +513,21 @@ std::string compile_header(const std::vector<CompileUnit>& units, std::string_vi
     fmt::format_to(out, "}}}};\n");
   }
   fmt::format_to(out, "\n}}  // namespace {}\n", ns);
-  return code;
+
+  CompiledHeader header;
+  const auto used = code_identifiers(code);
+  std::set<std::string, std::less<>> declared;
+  for (std::size_t k = 0; k < units.size(); ++k) {
+    const std::string& rule = units[k].operation->rule.name();
+    std::string why;
+    const std::string name = function_name(rule, declared, used, &why);
+    declared.insert(name);
+    declared.insert(name + "_everywhere");
+    if (!why.empty()) header.renamed.push_back(fmt::format("rule '{}' is compiled as {}: {}", rule, name, why));
+    for (std::size_t at = 0; (at = code.find(names[k], at)) != std::string::npos; at += name.size()) code.replace(at, names[k].size(), name);
+  }
+  header.code = std::move(code);
+  return header;
 }
 
 }  // namespace dartcheck::compiler

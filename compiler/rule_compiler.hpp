@@ -11,6 +11,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,8 +33,18 @@ struct CompileUnit {
 std::optional<std::string> not_compilable(const Operation& op);
 
 /// A C++ identifier for a rule name: letters, digits and '_' kept, every
-/// other byte '_', a leading digit prefixed, distinct from `taken`.
-std::string function_name(std::string_view rule_name, const std::vector<std::string>& taken);
+/// other byte '_' (a run of '_' made one where two would reserve it),
+/// `rule_` before a name that is no usable identifier (a keyword, a macro,
+/// reserved, or one of `used`: compiler/cpp_identifiers.hpp), and numbered
+/// (_2, _3...) until neither it nor its `_everywhere` is in `declared`.
+/// `why`, when given, receives the reason for a prefix or a number ("" if none).
+std::string function_name(std::string_view rule_name, const std::set<std::string, std::less<>>& declared,
+                          const std::set<std::string, std::less<>>& used, std::string* why = nullptr);
+
+/// Why `ns` cannot be the generated header's namespace ("is not" identifiers
+/// joined by ::, a segment that is no usable identifier, or std or
+/// dartcheck first), or nullopt.
+std::optional<std::string> namespace_conflict(std::string_view ns);
 
 /// The generated function for one compilable operation, named `function`:
 /// a comment with the rule's nodes and arcs, then an inline function
@@ -50,6 +61,12 @@ bool has_everywhere(const Operation& op);
 /// A whole header: the includes, the functions of `units` (each compilable)
 /// in namespace `ns`, and a table `operations` of {rule name, function} in
 /// catalog order. `source` names the catalog in the header's first line.
-std::string compile_header(const std::vector<CompileUnit>& units, std::string_view ns, std::string_view source);
+/// `renamed` says, per rule whose function is not its name's plain
+/// spelling, which name it got and why.
+struct CompiledHeader {
+  std::string code;
+  std::vector<std::string> renamed;
+};
+CompiledHeader compile_header(const std::vector<CompileUnit>& units, std::string_view ns, std::string_view source);
 
 }  // namespace dartcheck::compiler

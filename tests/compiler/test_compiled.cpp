@@ -44,6 +44,7 @@
 #include DARTCHECK_COMPILED_JERBOA_REBUILT
 #include DARTCHECK_COMPILED_JERBOA_REBUILT2
 #include DARTCHECK_COMPILED_HOSTILE
+#include DARTCHECK_COMPILED_HOSTILE_IDENTIFIERS
 
 namespace dartcheck {
 namespace {
@@ -470,6 +471,24 @@ TEST(CompiledOperations, HostileNamesCompileAndAgree) {
   ASSERT_EQ(ops.size(), 1U);  // the consistent one; "bad-...-utf8" fails I(1)
   EXPECT_EQ(std::string(ops[0].name), "r\"1\\\n\t\a\x1b[31m\xef\xbf\xbe");
   expect_agreement(compare_catalog(source("tests/data/hostile-names.yaml"), ops), ops.size());
+}
+
+// Rule names that are keywords, macros, reserved identifiers or names the
+// header uses, and a scheme q before a rule q_everywhere
+// (tests/data/hostile-identifiers.yaml): that this test compiles is the
+// first check (the header used to declare `int`, `NULL`, `Map` and two
+// q_everywhere); then every rule is in the table under its own name, in
+// catalog order, and agrees with the interpreter.
+TEST(CompiledOperations, HostileIdentifiersCompileAndAgree) {
+  const auto& ops = compiled_hostile_identifiers::operations;
+  const std::string file = source("tests/data/hostile-identifiers.yaml");
+  const Catalog catalog = read_catalog(file);
+  ASSERT_EQ(ops.size(), catalog.rules.size());
+  for (std::size_t k = 0; k < ops.size(); ++k) EXPECT_EQ(std::string(ops[k].name), catalog.rules[k].rule.name());
+  // q and the rule named q_everywhere are two functions; q's whole-map one is q's.
+  EXPECT_EQ(ops[ops.size() - 2].everywhere, &compiled_hostile_identifiers::q_everywhere);
+  EXPECT_EQ(ops.back().apply, &compiled_hostile_identifiers::q_everywhere_2);
+  expect_agreement(compare_catalog(file, ops), ops.size());
 }
 
 // Rules with embedding terms (003): the compiled function against the
