@@ -16,6 +16,8 @@ std::ifstream open_input(const std::string& file, std::ios::openmode mode) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const auto status = fs::status(file, ec);
+  if (ec == std::errc::too_many_symbolic_link_levels) throw InputError(file, 0, 0, "a loop of symbolic links, not a file");
+  if (ec && ec != std::errc::no_such_file_or_directory) throw InputError(file, 0, 0, fmt::format("cannot reach the file: {}", ec.message()));
   if (ec || !fs::exists(status)) throw InputError(file, 0, 0, "no such file");
   if (fs::is_directory(status)) throw InputError(file, 0, 0, "is a directory, not a file");
   if (fs::is_character_file(status) || fs::is_block_file(status)) throw InputError(file, 0, 0, "is a device, not a file");
@@ -43,6 +45,14 @@ std::string read_input(const std::string& file) {
   }
   if (in.bad()) throw InputError(file, 0, 0, fmt::format("read error: {}", std::strerror(errno)));
   return out;
+}
+
+void refuse_nul_bytes(const std::string& file, std::string_view text, std::string_view what) {
+  const std::size_t at = text.find('\0');
+  if (at == std::string_view::npos) return;
+  const std::size_t line_start = text.rfind('\n', at) == std::string_view::npos ? 0 : text.rfind('\n', at) + 1;
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n');
+  throw InputError(file, static_cast<int>(line), static_cast<int>(at - line_start + 1), fmt::format("a NUL byte: {} is text", what));
 }
 
 }  // namespace dartcheck

@@ -19,6 +19,11 @@ std::ifstream open_input(const std::string& file, std::ios::openmode mode = std:
 /// FIFO is read as it comes, a device is refused.
 std::string read_input(const std::string& file);
 
+/// Refuses a text with a NUL byte, at its line and column: `what` names
+/// the format ("a YAML file"). A NUL would end a name early in C strings
+/// or be read as another character.
+void refuse_nul_bytes(const std::string& file, std::string_view text, std::string_view what);
+
 /// The lines of a text held in memory, with their 1-based numbers; a
 /// final '\r' (Windows line ends) is dropped.
 class TextLines {

@@ -19,7 +19,7 @@ namespace {
 // Lines of the file with their numbers; every error names file:line.
 class Lines {
  public:
-  explicit Lines(const std::string& file) : file_(file), lines_(read_input(file)) {}
+  explicit Lines(const std::string& file) : file_(file), lines_(text(file)) {}
   // The next line (without '\r'); `what` names what was expected at the end.
   std::string next(std::string_view what) {
     const auto line = lines_.next();
@@ -31,6 +31,12 @@ class Lines {
   int number() const { return lines_.number(); }
 
  private:
+  static std::string text(const std::string& file) {
+    std::string t = read_input(file);
+    refuse_nul_bytes(file, t, "a .jba file");
+    return t;
+  }
+
   std::string file_;
   TextLines lines_;
 };
@@ -133,6 +139,10 @@ JbaFile read_jba(const std::string& file) {
   while (!lines.done()) {
     const auto head = words(lines.next("an embedding section"));
     if (head.empty()) continue;
+    if (head.size() == static_cast<std::size_t>(n) + 2 && std::all_of(head.begin(), head.end(), [](const std::string& w) {
+          return std::all_of(w.begin(), w.end(), [](char c) { return c >= '0' && c <= '9'; });
+        }))
+      lines.fail(fmt::format("a dart line after the {} darts the dart count announces: the count is smaller than the data", darts));
     if (head.size() != 2) lines.fail("expected '<embedding name> <record count>'");
     MapEmbedding* e = nullptr;
     for (auto& x : out.embeddings)

@@ -405,6 +405,7 @@ void read_rule(Catalog& c, const Positions& p, const std::string& raw, const Mod
 
 Catalog read_jme(const std::string& file) {
   const std::string text = read_input(file);
+  refuse_nul_bytes(file, text, "a .jme file");
   const Positions p(file, text);
   pugi::xml_document doc;
   const auto parsed = doc.load_buffer(text.data(), text.size());

@@ -102,6 +102,11 @@ Mesh read_off(const std::string& file) {
     mesh.face_lines.push_back(l->number);
   }
   if (mesh.faces.empty()) r.fail(counts.number, 0, "the mesh has no face");
+  // A count smaller than the data would drop the rest of the mesh unseen.
+  if (const auto extra = r.next())
+    r.fail(extra->number, extra->tokens[0].second,
+           fmt::format("data after the {} vertices and {} faces the counts announce (line {}): a count is smaller than the data", nv, nf,
+                       counts.number));
   return mesh;
 }
 

@@ -1,6 +1,7 @@
 #include "io/tet_mesh_io.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -47,6 +48,14 @@ double coordinate(const LineReader& r, const Line& l, std::size_t k, const char*
   return x;
 }
 
+// The end of a counted file: a count smaller than the data would drop the
+// rest unseen.
+void refuse_more(LineReader& r, long count, const char* what, int header_line) {
+  if (const auto extra = r.next())
+    r.fail(extra->number, extra->tokens[0].second,
+           fmt::format("data after the {} {} the header announces (line {}): the count is smaller than the data", count, what, header_line));
+}
+
 }  // namespace
 
 bool is_tet_mesh_path(const std::string& file) {
@@ -77,6 +86,7 @@ TetMesh read_tetgen(const std::string& file) {
         r.fail(l.number, l.tokens[0].second, fmt::format("point index {} out of sequence (expected {})", index, first_index + k));
       m.points.push_back({coordinate(r, l, 1, "x"), coordinate(r, l, 2, "y"), coordinate(r, l, 3, "z")});
     }
+    refuse_more(r, count, "points", h.number);
   }
   LineReader r(ele);
   const Line h = need_line(r, "the .ele header");
@@ -92,6 +102,7 @@ TetMesh read_tetgen(const std::string& file) {
     m.tets.push_back(t);
     m.tet_lines.push_back(l.number);
   }
+  refuse_more(r, count, "tetrahedra", h.number);
   return m;
 }
 
@@ -110,6 +121,12 @@ TetMesh read_medit(const std::string& file) {
   while (auto l = r.next()) {
     const std::string key(l->tokens[0].first);  // a copy: the next line overwrites the reader's buffer
     if (key == "End") break;
+    // Sections are named by words; a number here is an entry beyond its section's count.
+    if (!std::isalpha(static_cast<unsigned char>(key[0])))
+      r.fail(l->number, l->tokens[0].second,
+             fmt::format("'{}' where a section name (Vertices, Tetrahedra, ...) or End was expected: the previous section has more "
+                         "entries than its count",
+                         printable(key)));
     if (key == "MeshVersionFormatted" || key == "Dimension") {
       if (key == "Dimension") {
         const Line& d = l->tokens.size() > 1 ? *l : need_line(r, "the dimension");

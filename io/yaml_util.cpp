@@ -5,6 +5,11 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <fstream>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+#include <yaml-cpp/depthguard.h>
 
 #include "io/input_file.hpp"
 
@@ -15,13 +20,60 @@ void fail_at(const std::string& file, const YAML::Node& node, const std::string&
   throw InputError(file, m.line + 1, m.column + 1, message);
 }
 
+namespace {
+
+// What yaml-cpp accepts and a reader must not: a key given twice in one
+// mapping (yaml-cpp keeps both, lookups find the first), and a NUL
+// character written as an escape ("\0") in a string. Each collection is
+// visited once, aliases included (a chain of aliases shares its nodes).
+void check_tree(const std::string& file, const YAML::Node& root) {
+  std::set<std::pair<int, int>> visited;  // a collection's position and type: its identity
+  std::vector<YAML::Node> stack{root};
+  while (!stack.empty()) {
+    const YAML::Node n = stack.back();
+    stack.pop_back();
+    if (n.IsScalar()) {
+      if (n.Scalar().find('\0') != std::string::npos) fail_at(file, n, "a NUL character (\\0) in a string");
+      continue;
+    }
+    if (!n.IsMap() && !n.IsSequence()) continue;
+    if (!visited.emplace(n.Mark().pos, static_cast<int>(n.Type())).second) continue;
+    if (n.IsSequence()) {
+      for (const auto& item : n) stack.push_back(item);
+      continue;
+    }
+    std::map<std::string, YAML::Mark> keys;
+    for (const auto& kv : n) {
+      if (kv.first.IsScalar()) {
+        const auto [at, fresh] = keys.emplace(kv.first.Scalar(), kv.first.Mark());
+        if (!fresh)
+          fail_at(file, kv.first,
+                  fmt::format("duplicate key '{}' (first at line {}, column {}): a mapping names each key once", printable(kv.first.Scalar()),
+                              at->second.line + 1, at->second.column + 1));
+      }
+      stack.push_back(kv.first);
+      stack.push_back(kv.second);
+    }
+  }
+}
+
+}  // namespace
+
 YAML::Node load_yaml_file(const std::string& file) {
   const std::string text = read_input(file);
+  refuse_nul_bytes(file, text, "a YAML file");
+  YAML::Node root;
   try {
-    return YAML::Load(text);
+    root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp 0.7 words this "bad file".
+    throw InputError(file, e.mark.line + 1, e.mark.column + 1,
+                     fmt::format("malformed YAML: collections nested deeper than {} levels, the most yaml-cpp reads", e.depth()));
   } catch (const YAML::ParserException& e) {
     throw InputError(file, e.mark.line + 1, e.mark.column + 1, "malformed YAML: " + e.msg);
   }
+  check_tree(file, root);
+  return root;
 }
 
 InputError yaml_input_error(const std::string& file, const YAML::Exception& e) {
@@ -60,13 +112,16 @@ void allow_keys(const std::string& file, const YAML::Node& map, std::initializer
 long long as_int(const std::string& file, const YAML::Node& n, std::string_view what, long long lo, long long hi) {
   long long v = 0;
   if (!n.IsScalar() || !YAML::convert<long long>::decode(n, v))
-    fail_at(file, n, fmt::format("{}: expected an integer, got '{}'", what, n.IsScalar() ? n.Scalar() : std::string("a collection")));
+    fail_at(file, n,
+            n.IsScalar() ? fmt::format("{}: expected an integer, got '{}'", what, printable(n.Scalar()))
+                         : fmt::format("{}: expected an integer, got {}", what, n.IsNull() || !n.IsDefined() ? "nothing (a null)" : "a collection"));
   if (v < lo || v > hi) fail_at(file, n, fmt::format("{}: {} is out of range [{}, {}]", what, v, lo, hi));
   return v;
 }
 
 std::string as_string(const std::string& file, const YAML::Node& n, std::string_view what) {
-  if (!n.IsScalar()) fail_at(file, n, fmt::format("{}: expected a string", what));
+  if (!n.IsScalar())
+    fail_at(file, n, fmt::format("{}: expected a string, got {}", what, n.IsNull() || !n.IsDefined() ? "nothing (a null)" : "a collection"));
   return n.Scalar();
 }
 
