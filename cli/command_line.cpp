@@ -327,6 +327,16 @@ void add_merge(CLI::App& app, Commands& commands) {
   commands.push_back({m, [o] { return merge(*o); }});
 }
 
+// An empty value (`--time ''`, `--shard ''`) is refused for every option
+// and argument of every command: it used to be read as "not given".
+void refuse_empty_values(CLI::App& app) {
+  static const CLI::Validator non_empty(
+      [](const std::string& value) { return value.empty() ? std::string("expected a value, got an empty string") : std::string(); }, "");
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_size() != 0) option->check(non_empty);
+  for (CLI::App* command : app.get_subcommands({})) refuse_empty_values(*command);
+}
+
 void add_draw_map(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<DrawMapOptions>();
   auto* dm = app.add_subcommand("draw-map", "Draw a map: one node per dart, links colored by dimension, invalid darts highlighted");
@@ -447,6 +457,7 @@ int run_command_line(int argc, char** argv, const std::string& version) {
   add_report(app, commands);
   add_merge(app, commands);
   add_draw_map(app, commands);
+  refuse_empty_values(app);
 
   // SIGINT and SIGTERM end every command within a second, exit 130; the
   // long runs (check, fuzz, prove, report) install their own handler,

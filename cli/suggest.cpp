@@ -27,7 +27,10 @@ std::optional<int> help_request(const CommandTable& table, int argc, char** argv
 }
 
 int report_parse_error(const CommandTable& table, std::string_view what, int argc, char** argv) {
-  const std::string command = argc > 1 && is_command(table, argv[1]) ? argv[1] : "";
+  // The command: the first argument that names one (global options may come before it).
+  std::string command;
+  for (int k = 1; k < argc && command.empty(); ++k)
+    if (is_command(table, argv[k])) command = argv[k];
   // A mistyped command: the suggestion is the whole message.
   if (argc > 1 && argv[1][0] != '-' && command.empty()) {
     const std::string best = closest_name(argv[1], table.commands);
@@ -39,7 +42,7 @@ int report_parse_error(const CommandTable& table, std::string_view what, int arg
   static const std::vector<std::string> none;
   const auto known = table.options.find(command);
   const std::vector<std::string>& names = known == table.options.end() ? none : known->second;
-  for (int k = command.empty() ? 1 : 2; k < argc; ++k) {
+  for (int k = 1; k < argc; ++k) {
     const std::string_view arg = argv[k];
     const std::string typed(arg.substr(0, arg.find('=')));
     // Without a command CLI11 says only that one is missing: name the
