@@ -15,6 +15,7 @@
 #include "reports/infer_report.hpp"
 #include "checkers/map_validity.hpp"
 #include "core/input_error.hpp"
+#include "io/jerboa_modeler_writer.hpp"
 #include "inference/example_files.hpp"
 #include "core/output_file.hpp"
 #include "io/catalog.hpp"
@@ -51,6 +52,8 @@ int infer(const InferCommand& o) {
   if (!o.output.empty()) {
     const auto ext = std::filesystem::path(o.output).extension().string();
     if (ext != ".yaml" && ext != ".yml" && ext != ".jme") throw command_line(fmt::format("-o: expected a .yaml or .jme file, got '{}'", o.output));
+    if (const auto problem = xml_name_problem(o.name); problem && ext == ".jme")
+      throw command_line(fmt::format("--name '{}' cannot be written in a .jme (XML 1.0): it holds {}", printable(o.name), *problem));
     check_writable(o.output);  // before the work, not after it
   }
   const Model model = command_model(o.model);

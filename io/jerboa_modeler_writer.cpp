@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <ostream>
 #include <pugixml.hpp>
 #include <stdexcept>
+
+#include "core/input_error.hpp"
 
 namespace dartcheck {
 namespace {
@@ -76,7 +79,42 @@ void write_side(pugi::xml_node parent, const char* tag, const TopoGraph& g, cons
 
 }  // namespace
 
+std::optional<std::string> xml_name_problem(std::string_view name) {
+  for (std::size_t k = 0; k < name.size();) {
+    const auto c = static_cast<unsigned char>(name[k]);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') return fmt::format("a control character (\\x{:02x})", c);
+    if (c < 0x80) {
+      ++k;
+      continue;
+    }
+    // The length of a UTF-8 sequence and its code point, overlongs and surrogates refused.
+    const int length = c >= 0xf0 && c < 0xf5 ? 4 : c >= 0xe0 ? 3 : c >= 0xc2 && c < 0xe0 ? 2 : 0;
+    if (length == 0 || k + static_cast<std::size_t>(length) > name.size()) return std::string("invalid UTF-8");
+    std::uint32_t cp = c & (0xffU >> (length + 1));
+    for (int j = 1; j < length; ++j) {
+      const auto b = static_cast<unsigned char>(name[k + static_cast<std::size_t>(j)]);
+      if ((b & 0xc0) != 0x80) return std::string("invalid UTF-8");
+      cp = (cp << 6) | (b & 0x3fU);
+    }
+    if ((length == 3 && cp < 0x800) || (length == 4 && (cp < 0x10000 || cp > 0x10ffff)) || (cp >= 0xd800 && cp <= 0xdfff))
+      return std::string("invalid UTF-8");
+    if (cp == 0xfffe || cp == 0xffff) return fmt::format("the non-character U+{:04X}", cp);
+    k += static_cast<std::size_t>(length);
+  }
+  return std::nullopt;
+}
+
 void write_jme(std::ostream& out, const std::string& modeler, int dimension, const std::vector<const Operation*>& rules) {
+  const auto check_name = [](std::string_view what, const std::string& name) {
+    if (const auto problem = xml_name_problem(name))
+      throw std::invalid_argument(fmt::format("{} '{}' cannot be written in a .jme (XML 1.0): it holds {}", what, printable(name), *problem));
+  };
+  check_name("modeler name", modeler);
+  for (const Operation* op : rules) {
+    check_name("rule name", op->rule.name());
+    for (const TopoGraph* side : {&op->rule.left(), &op->rule.right()})
+      for (std::size_t v = 0; v < side->node_count(); ++v) check_name("node name", side->name(static_cast<NodeId>(v)));
+  }
   // The elements and attributes Jerboa's editor writes (compare
   // ../shared/jerboa-samples/JerboaRebuilt2.jme), so the file opens there
   // as a modeler, not only in dartcheck's reader.

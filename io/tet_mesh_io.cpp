@@ -88,6 +88,7 @@ TetMesh read_tetgen(const std::string& file) {
     }
     refuse_more(r, count, "points", h.number);
   }
+  m.numbered_from = static_cast<std::uint32_t>(first_index);
   LineReader r(ele);
   const Line h = need_line(r, "the .ele header");
   const auto count = number<long>(r, h, 0, "the number of tetrahedra");
@@ -110,6 +111,7 @@ TetMesh read_medit(const std::string& file) {
   LineReader r(file);
   TetMesh m;
   m.file = file;
+  m.numbered_from = 1;
   bool vertices = false;
   // A cell of N vertices (hexahedron, prism, pyramid), 1-based.
   auto cell = [&]<std::size_t N>(const Line& e, std::vector<std::array<std::uint32_t, N>>& into) {

@@ -18,6 +18,7 @@ struct TetMesh {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::uint32_t, 4>> tets;  // 0-based point indices
   std::vector<int> tet_lines;                      // 1-based line of each tetrahedron
+  std::uint32_t numbered_from = 0;                 // the file's first vertex and tetrahedron number (medit 1, TetGen 0 or 1)
   /// medit's Hexahedra (0-based, medit order: a bottom quad, then the top
   /// quad above it vertex by vertex). Read, not used by the tet readers'
   /// callers; written by the recombination.

@@ -26,7 +26,7 @@ TetInput load_tet_input(const std::string& path) {
   if (in.mesh.tets.size() > most_tets)
     throw InputError(tet_file, line_of(most_tets), 1, over_limit("darts", 12 * in.mesh.tets.size(), limits().darts, "--limit-darts"));
   try {
-    in.map = build_tet_map(in.mesh.tets, &in.mesh.points);
+    in.map = build_tet_map(in.mesh.tets, &in.mesh.points, in.mesh.numbered_from);
   } catch (const BuildError& e) {
     throw InputError(tet_file, e.culprit() == BuildError::Culprit::cell ? line_of(e.index()) : 0, 1, e.what());
   }

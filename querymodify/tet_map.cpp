@@ -54,7 +54,9 @@ struct FaceUse {
 
 }  // namespace
 
-TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, const std::vector<std::array<double, 3>>* points) {
+TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, const std::vector<std::array<double, 3>>* points,
+                     std::uint32_t numbered_from) {
+  const auto named = [numbered_from](std::uint64_t index) { return index + numbered_from; };  // as the file numbers it
   TetMap out;
   out.tets = input;
   const auto n = static_cast<std::uint32_t>(out.tets.size());
@@ -71,7 +73,7 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
     while (j < uses.size() && uses[j].key == uses[i].key) ++j;
     if (j - i > 2) {
       const Key& k = uses[i].key;
-      throw tet_error(uses[i + 2].tet, fmt::format("the face {} {} {} is shared by {} tetrahedra (at most 2)", k[0], k[1], k[2], j - i));
+      throw tet_error(uses[i + 2].tet, fmt::format("the face {} {} {} is shared by {} tetrahedra (at most 2)", named(k[0]), named(k[1]), named(k[2]), j - i));
     }
     if (j - i == 2) shared.emplace_back(i, i + 1);
     i = j;
@@ -92,13 +94,13 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
   if (points) {
     for (std::uint32_t t = 0; t < n; ++t) {
       const double o = orientation(out.tets[t], *points);
-      if (o == 0) throw tet_error(t, fmt::format("tetrahedron {} is flat", t));
+      if (o == 0) throw tet_error(t, fmt::format("tetrahedron {} is flat", named(t)));
       if (o < 0) std::swap(out.tets[t][2], out.tets[t][3]);
     }
     for (const auto& [a, b] : shared)
       if (!opposite(uses[a], uses[b]))
-        throw tet_error(uses[b].tet, fmt::format("tetrahedra {} and {} lie on the same side of their shared face (the mesh folds over)", uses[a].tet,
-                                                 uses[b].tet));
+        throw tet_error(uses[b].tet, fmt::format("tetrahedra {} and {} lie on the same side of their shared face (the mesh folds over)",
+                                                 named(uses[a].tet), named(uses[b].tet)));
   } else {
     // Propagate an orientation from each component's first tetrahedron.
     std::vector<std::vector<std::pair<std::size_t, std::size_t>>> around(n);  // (my use, the other's use)
@@ -120,7 +122,7 @@ TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& input, con
             if (!fixed[s2]) fixed[s2] = true, stack.push_back(s2);
             continue;
           }
-          if (fixed[s2]) throw tet_error(s2, fmt::format("the mesh is not orientable (tetrahedra {} and {})", t, s2));
+          if (fixed[s2]) throw tet_error(s2, fmt::format("the mesh is not orientable (tetrahedra {} and {})", named(t), named(s2)));
           std::swap(out.tets[s2][2], out.tets[s2][3]);
           fixed[s2] = true;
           stack.push_back(s2);

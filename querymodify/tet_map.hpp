@@ -28,8 +28,11 @@ struct TetMap {
 /// across shared faces (throws if the mesh is not orientable). Throws
 /// when a face is shared by more than two tetrahedra. Throws BuildError
 /// naming the tetrahedron (Culprit::cell, its index in the input); the
-/// map is glued by glue_cells (core/cell_gluing.hpp).
+/// map is glued by glue_cells (core/cell_gluing.hpp). Messages name
+/// vertices and tetrahedra as index + `numbered_from`: as the file numbers
+/// them (medit from 1, TetGen from its first index).
 /// O(T log T) for T tetrahedra.
-TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& tets, const std::vector<std::array<double, 3>>* points = nullptr);
+TetMap build_tet_map(const std::vector<std::array<std::uint32_t, 4>>& tets, const std::vector<std::array<double, 3>>* points = nullptr,
+                     std::uint32_t numbered_from = 0);
 
 }  // namespace dartcheck::querymodify

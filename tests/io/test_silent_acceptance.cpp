@@ -14,6 +14,7 @@
 #include "io/catalog.hpp"
 #include "io/jerboa_jba.hpp"
 #include "io/jerboa_modeler.hpp"
+#include "io/jerboa_modeler_writer.hpp"
 #include "io/mesh_io.hpp"
 #include "io/tet_mesh_io.hpp"
 #include "tests/io/io_support.hpp"
@@ -128,4 +129,16 @@ TEST(HostileInputSilent, MessagesNameWhatIsWrong) {
   std::filesystem::create_symlink(dir / "loop1", dir / "loop2");
   const auto loop = message_of([&] { read_catalog((dir / "loop1").string()); });
   EXPECT_NE(loop.find("a loop of symbolic links"), std::string::npos) << loop;
+}
+
+TEST(HostileInputSilent, NamesXmlCannotHoldAreNamed) {
+  // infer --name "a\x01b" -o x.jme wrote "&#1;", which no XML 1.0 reader accepts.
+  EXPECT_EQ(xml_name_problem("a\x01" "b"), "a control character (\\x01)");
+  EXPECT_EQ(xml_name_problem("\x7f"), std::nullopt);  // DEL is a character XML 1.0 allows
+  EXPECT_EQ(xml_name_problem("tab\tand line\nend\r"), std::nullopt);
+  EXPECT_EQ(xml_name_problem("Kaleidoscope \xc3\xa9\xe2\x82\xac\xf0\x9f\x98\x80"), std::nullopt);  // é, €, an emoji
+  EXPECT_EQ(xml_name_problem("\xef\xbf\xbe"), "the non-character U+FFFE");
+  EXPECT_EQ(xml_name_problem("\xef\xbf\xbf"), "the non-character U+FFFF");
+  for (const char* bad : {"\xff", "\xc3", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xe2\x82"})
+    EXPECT_EQ(xml_name_problem(bad), "invalid UTF-8") << printable(bad);
 }
