@@ -11,6 +11,7 @@
 #include "io/catalog_writer.hpp"
 #include "io/jerboa_jba.hpp"
 #include "io/jerboa_modeler_writer.hpp"
+#include "io/kappa_file.hpp"
 
 namespace dartcheck::inference {
 
@@ -26,6 +27,9 @@ std::pair<KappaSpec, std::string> example_kappa(const std::string& kappa, const 
       if (const auto it = index.find(g[d]); it != index.end()) spec.pairs.emplace_back(d, it->second);
     return {spec, "identity by the .jba files' dart ids"};
   }
+  // A result of `dartcheck apply -o` that deleted darts records which darts it kept.
+  if (const std::filesystem::path a(after_file); (a.extension() == ".yaml" || a.extension() == ".yml") && std::filesystem::is_regular_file(a))
+    if (auto recorded = read_recorded_kappa(after_file)) return {std::move(*recorded), fmt::format("apply's record in {}, key preserved", after_file)};
   if (after.size() < before.size())
     throw InputError(
         "<command line>", 0, 0,

@@ -8,6 +8,7 @@
 // Every error is an InputError with file:line:column.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,15 @@ struct KappaSpec {
 };
 
 KappaSpec read_kappa_file(const std::string& file, const Model& model);
+
+/// The darts an application preserved, as `dartcheck apply -o X.yaml`
+/// records them in the map file it writes when the application deleted
+/// darts (a key `preserved: [[before, after], ...]`): then equal ids do not
+/// mean the same dart. nullopt when the file has no such key.
+std::optional<KappaSpec> read_recorded_kappa(const std::string& map_file);
+
+/// The `preserved:` lines apply appends to a written map (comment first).
+std::string preserved_text(const std::vector<std::pair<Dart, Dart>>& pairs);
 
 /// The text of a κ file of explicit pairs (before dart, after dart), which
 /// read_kappa_file reads back; `comment` goes first, one "# " line each.

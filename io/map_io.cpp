@@ -135,7 +135,8 @@ Map read_map_file(const std::string& path) { return read_map(path, load_yaml_fil
 
 Map read_map(const std::string& file, const YAML::Node& node) {
   yaml::expect_map(file, node, "map");
-  yaml::allow_keys(file, node, {"model", "darts", "links", "pred"});
+  // `preserved`: written by apply beside the result, read by infer (io/kappa_file.hpp).
+  yaml::allow_keys(file, node, {"model", "darts", "links", "pred", "preserved"});
   try {
     return read_map_links(file, node, yaml::as_model(file, yaml::require(file, node, "model")));
   } catch (const YAML::Exception& e) {

@@ -110,6 +110,23 @@ void write_jba_result(const ApplyRequest& o, const JbaHost& j, const EmbeddedMap
   fmt::print("written: {}\n", o.output);
 }
 
+// The preserved darts (G dart, H dart) of an application.
+std::vector<std::pair<Dart, Dart>> preserved_pairs(const Renumbering& c, std::size_t g_size) {
+  std::vector<std::pair<Dart, Dart>> pairs;
+  for (Dart d = 0; d < g_size; ++d)
+    if (const Dart e = c.to_h(d); e != no_dart) pairs.emplace_back(d, e);
+  return pairs;
+}
+
+// H as YAML; when the application deleted darts, with the preserved
+// darts' correspondence (`preserved:`), which infer's identity κ reads:
+// a created dart may have taken a deleted dart's id (docs/inference.md).
+std::string result_yaml(const Map& h, const std::vector<std::pair<Dart, Dart>>& preserved, std::size_t g_size) {
+  std::ostringstream text;
+  write_map(text, h);
+  return text.str() + (preserved.size() < g_size ? preserved_text(preserved) : std::string());
+}
+
 int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const RuleTerms& terms = *rule.terms;
   std::mt19937 rng(1);
@@ -133,6 +150,7 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     fmt::print("values: {} drawn at random, one per <{}>-orbit (seed 1){}\n", e.name, fmt::join(e.orbit, ","),
                jba ? ": the file has no such embedding, and -o .jba does not write it" : "");
   }
+  const Map before = host->map;  // for the dart correspondence of a YAML result
   auto result = apply_embedded(rule.rule, rule.words, terms, *host, o.hooks);
   if (!result.ok()) {
     fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
@@ -177,9 +195,13 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     write_file(o.output, text.str());
     fmt::print("written: {} (positions from {})\n", o.output, pos->signature.name);
   } else if (!o.output.empty()) {
-    std::ostringstream text;
-    write_map(text, host->map);
-    write_file(o.output, text.str());
+    // The correspondence from the same application without values, whose
+    // H must be this one (the values do not change the topology).
+    Map topology = before;
+    const auto traced = dartcheck::apply(rule, topology, o.hooks);
+    if (!traced.ok() || !(topology == host->map))
+      throw std::logic_error(fmt::format("apply: rule '{}' gives another topology with its terms than without", rule.rule.name()));
+    write_file(o.output, result_yaml(host->map, preserved_pairs(traced.value->renumbering(rule.rule, topology.size()), before.size()), before.size()));
     fmt::print("written: {} (topology only; the values are printed above)\n", o.output);
   }
   return report.valid() && consistent ? ok : violation;
@@ -188,13 +210,9 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
 // The preserved darts' correspondence G -> H: said when ids moved (the
 // compaction after a deletion), written with --kappa-out.
 void write_kappa(const ApplyRequest& o, const Renumbering& c, std::size_t g_size) {
-  std::vector<std::pair<Dart, Dart>> pairs;
+  const std::vector<std::pair<Dart, Dart>> pairs = preserved_pairs(c, g_size);
   std::size_t moved = 0;
-  for (Dart d = 0; d < g_size; ++d)
-    if (const Dart e = c.to_h(d); e != no_dart) {
-      pairs.emplace_back(d, e);
-      moved += e != d;
-    }
+  for (const auto& [d, e] : pairs) moved += e != d;
   if (moved)
     fmt::print("darts renumbered: {} of the {} preserved darts have another id in the result{}\n", moved, pairs.size(),
                o.kappa_out.empty() ? " (--kappa-out FILE writes the correspondence for infer --kappa)" : "");
@@ -263,13 +281,12 @@ int apply_topology(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     fmt::print("applied: result has {} darts; comatch {}\n", map.size(), comatch);
   const auto report = check_map(map);
   print_validity(stdout, map, report, o.limit);
+  const Renumbering c = a.renumbering(rule.rule, map.size());
   if (!o.output.empty()) {
-    std::ostringstream text;
-    write_map(text, map);
-    write_file(o.output, text.str());
+    write_file(o.output, result_yaml(map, preserved_pairs(c, before_size), before_size));
     fmt::print("written: {}\n", o.output);
   }
-  write_kappa(o, a.renumbering(rule.rule, map.size()), before_size);
+  write_kappa(o, c, before_size);
   return report.valid() ? ok : violation;
 }
 
