@@ -1,7 +1,9 @@
-// The side files (a byte chooses): κ files of the inference
-// (io/kappa_file) and baselines (io/baseline). What reads is
-// written back by dartcheck's own writer and must read back equal: a
-// baseline's entries; a κ file's explicit pairs (kappa_file_text).
+// The side files (a byte chooses, modulo 3): baselines (io/baseline), κ
+// files of the inference (io/kappa_file) and the preserved darts apply
+// records in a written map (read_recorded_kappa). What reads is written
+// back by dartcheck's own writer and must read back equal: a baseline's
+// entries; a κ file's explicit pairs (kappa_file_text); a map with its
+// record (write_map and preserved_text).
 #include <sstream>
 #include <stdexcept>
 
@@ -9,6 +11,7 @@
 #include "fuzz/harness.hpp"
 #include "io/kappa_file.hpp"
 #include "io/baseline.hpp"
+#include "io/map_io.hpp"
 
 namespace {
 
@@ -36,16 +39,29 @@ void kappa_round_trip(const std::string& file) {
   if (back.pairs != k.pairs) throw std::logic_error("a written κ file reads back with other pairs");
 }
 
+void recorded_round_trip(const std::string& file) {
+  const auto recorded = read_recorded_kappa(file);
+  const Map map = read_map_file(file);  // the record sits in a map file that must read as one
+  if (!recorded) return;
+  std::ostringstream out;
+  write_map(out, map);
+  const std::string written = file_of(out.str() + preserved_text(recorded->pairs), ".yaml");
+  const auto back = read_recorded_kappa(written);
+  if (!back || back->pairs != recorded->pairs || !(read_map_file(written) == map))
+    throw std::logic_error("a written map with its preserved darts reads back otherwise");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   try {
     const std::string file = fuzzing::input_file(data + 1, size - 1, ".yaml");
-    if (data[0] & 1)
-      kappa_round_trip(file);
-    else
-      baseline_round_trip(file);
+    switch (data[0] % 3) {  // '0', '1' and '2' in the seeds
+      case 0: baseline_round_trip(file); break;
+      case 1: kappa_round_trip(file); break;
+      default: recorded_round_trip(file);
+    }
   } catch (const InputError&) {
   }
   return 0;

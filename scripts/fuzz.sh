@@ -41,6 +41,7 @@ done
 mkdir -p "$build/corpus/fuzz_side_files"
 for f in tests/data/*baseline*.yaml; do { printf '0'; cat "$f"; } > "$build/corpus/fuzz_side_files/$(basename "$f")"; done
 for f in tests/data/*kappa*.yaml; do { printf '1'; cat "$f"; } > "$build/corpus/fuzz_side_files/$(basename "$f")"; done
+for f in tests/data/*-after.yaml; do { printf '2'; cat "$f"; } > "$build/corpus/fuzz_side_files/$(basename "$f")"; done
 # The mesh harness reads a model byte first.
 mkdir -p "$build/corpus/fuzz_mesh"
 for f in catalogs/meshes/*.off tests/data/*.off /usr/share/assimp/models/OFF/*.off; do
