@@ -170,6 +170,7 @@ int run_jobs(const JobsRun& run) {
   if (failed) return failed;
   // After a signal: the finished shards' rules, and the interrupted shards' finished ones.
   merge.incomplete = analysis::interrupted();
+  merge.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return merge_shards(merge);
 }
 

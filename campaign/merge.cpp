@@ -211,10 +211,11 @@ int merge_shards(const MergeRequest& o) {
   const Results results = merged_results(catalog, files, o.incomplete, selected);
   // Incomplete: a shard stopped, killed or missing, so some rules may have no result.
   const bool incomplete = files.size() < h.shard.count || std::any_of(files.begin(), files.end(), [](const ShardFile& f) { return !f.finished; });
-  // The run's seconds: every shard's (the work done, not the wall clock).
+  // The run's seconds: the shards' summed (the work done), or a --jobs run's wall clock.
   double seconds = 0;
   for (const auto& f : files)
     if (f.summary.is_object()) seconds += f.summary.value("seconds", 0.0);
+  if (o.wall_seconds) seconds = *o.wall_seconds;
   fmt::print(stderr, "dartcheck merge: {} of {} {}, {}\n", counted(files.size(), "shard"), h.command, h.catalog, counted(results.size(), "rule"));
 
   if (o.format == "sarif" || o.format == "junit") {

@@ -7,6 +7,7 @@
 // (campaign/result_record.hpp).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct MergeRequest {
   /// empty shard files; the result says how many rules are missing and the
   /// exit status is 130 (interrupted) unless a soundness bug makes it 3.
   bool incomplete = false;
+  /// --jobs: the run's wall-clock seconds, printed as its time (the
+  /// shards' seconds summed are the work done, which a merge of shards
+  /// from many hosts prints instead).
+  std::optional<double> wall_seconds = std::nullopt;
 };
 
 /// Reads, checks (complete, one run, the same catalog) and merges the
