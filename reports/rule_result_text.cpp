@@ -269,8 +269,10 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
     if (cx.embedding_failures.size() > 4) out += fmt::format("{}H: ... {} more\n", under, cx.embedding_failures.size() - 4);
     if (!result.fuzz_replay.empty())
       out += fmt::format("{}replay: {}\n", under, printable(result.fuzz_replay));
-    else if (!result.entry->terms)
-      out += row_note(indent, "(--out DIR writes the host, the match and H, with a replay command)");
+    else if (!result.entry->terms)  // a command to paste, never wrapped: the rule's seed comes from the run's seed and its name
+      out += fmt::format("{}writes the host, the match and H with a replay command: {}\n", under,
+                         printable(fmt::format("dartcheck fuzz {} --rule {} --seed {} -o DIR", shell_quote(run.catalog), shell_quote(result.name()),
+                                               run.seed)));
   }
   const std::size_t bugs = classes[FuzzClass::soundness_bug], contradicted = count_results(results).events_contradicted;
   out += fmt::format(
