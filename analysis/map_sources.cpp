@@ -3,7 +3,9 @@
 #include <filesystem>
 #include <fmt/format.h>
 
+#include "core/closest_name.hpp"
 #include "core/input_error.hpp"
+#include "core/shell_quote.hpp"
 #include "io/jerboa_jba.hpp"
 #include "io/map_io.hpp"
 #include "io/mesh_io.hpp"
@@ -12,11 +14,29 @@
 
 namespace dartcheck::analysis {
 
+namespace {
+
+// "; did you mean 'X'?" for the closest of `names`, or "".
+std::string did_you_mean(const std::string& typed, const std::vector<std::string>& names) {
+  const std::string best = closest_name(typed, names);
+  return best.empty() ? std::string() : fmt::format("; did you mean '{}'?", printable(best));
+}
+
+}  // namespace
+
 Catalog read_rule_catalog(const std::string& file, const std::string& rule) {
   Catalog catalog = read_catalog(file);
-  if (!rule.empty() && !catalog.find_rule(rule))
-    throw InputError("<command line>", 0, 0, fmt::format("--rule: no rule named '{}' in {}", rule, file));
+  if (!rule.empty()) require_rule(catalog, file, rule);
   return catalog;
+}
+
+const CatalogRule& require_rule(const Catalog& catalog, const std::string& file, const std::string& rule) {
+  if (const CatalogRule* found = catalog.find_rule(rule)) return *found;
+  std::vector<std::string> names;
+  for (const auto& e : catalog.rules) names.push_back(e.rule.name());
+  throw InputError("<command line>", 0, 0,
+                   fmt::format("--rule: no rule named '{}' in {}{} (`dartcheck check {}` lists its {})", printable(rule), file,
+                               did_you_mean(rule, names), shell_quote(file), names.size() == 1 ? "rule" : fmt::format("{} rules", names.size())));
 }
 
 Map build_source(const MapSource& s) {
@@ -41,7 +61,17 @@ Map resolve_map(const std::string& target, const Model& model, const Catalog* ca
   try {
     return build_shape(model, parse_shape(target));
   } catch (const BuildError& e) {
-    throw InputError("<command line>", 0, 0, fmt::format("'{}' is not a catalog map, a map file or a shape: {}", target, e.what()));
+    // The names it may have meant: the catalog's maps and the shapes' names.
+    std::vector<std::string> names{"cube", "tetrahedron", "stacked-cubes", "polygon:4", "grid:2x2", "prism:3"};
+    std::string maps;
+    if (catalog)
+      for (const auto& m : catalog->maps) {
+        names.push_back(m.name);
+        maps += (maps.empty() ? "" : ", ") + printable(m.name);
+      }
+    throw InputError("<command line>", 0, 0,
+                     fmt::format("'{}' is not a catalog map, a map file or a shape: {}{}{}", printable(target), e.what(),
+                                 maps.empty() ? std::string() : fmt::format("; the catalog's maps: {}", maps), did_you_mean(target, names)));
   }
 }
 

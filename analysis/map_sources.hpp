@@ -13,6 +13,10 @@ namespace dartcheck::analysis {
 /// given, names none of its rules.
 Catalog read_rule_catalog(const std::string& file, const std::string& rule);
 
+/// The rule named `rule` of `catalog` (read from `file`), or an InputError
+/// that names the closest rule name (did you mean) and how to list them.
+const CatalogRule& require_rule(const Catalog& catalog, const std::string& file, const std::string& rule);
+
 /// Builds a catalog map: explicit, shape or mesh. Errors carry the map's
 /// position in the catalog.
 Map build_source(const MapSource& source);

@@ -23,8 +23,7 @@ int apply(const ApplyOptions& o) {
   for (const auto* out : {&o.output, &o.kappa_out})
     if (!out->empty()) check_writable(*out);  // before the work, not after it
   const Catalog catalog = read_catalog(o.catalog);
-  const CatalogRule* rule = catalog.find_rule(o.rule);
-  if (!rule) throw InputError(o.catalog, 0, 0, fmt::format("no rule named '{}'", o.rule));
+  const CatalogRule* rule = &analysis::require_rule(catalog, o.catalog, o.rule);
   Map map = analysis::resolve_map(o.map, rule->rule.model(), &catalog);
   if (!(map.model() == rule->rule.model()))
     throw InputError("<command line>", 0, 0,
