@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/terminal.hpp"
+#include "core/wording.hpp"
 #include "campaign/shard_stream.hpp"
 #include "reports/events_report.hpp"
 #include "reports/json_document.hpp"
@@ -30,11 +31,13 @@ void EventsOutput::analysed(const analysis::RuleEvents& r) {
 }
 
 void EventsOutput::not_analysed(const CatalogRule& rule, const std::string& why) {
+  ++not_analysed_;
   const Json json{{"rule", rule.rule.name()}, {"model", rule.rule.model().name}, {"analysed", false}, {"why", why}};
   this->rule(rule, &json, hanging(fmt::format("rule {} ({}): not analysed:", rule.rule.name(), rule.rule.model().name), why, 2));
 }
 
 void EventsOutput::skipped(const CatalogRule& rule, const std::string& why) {
+  ++skipped_;
   this->rule(rule, nullptr, hanging(fmt::format("rule {} ({}): skipped:", rule.rule.name(), rule.rule.model().name), why, 2));
 }
 
@@ -51,13 +54,21 @@ void EventsOutput::rule(const CatalogRule& rule, const Json* json, const std::st
 
 void EventsOutput::finish(int status, std::size_t analysed, bool interrupted) {
   if (lines_) {
-    lines_->summary(Json{{"status", status}, {"analysed", analysed}, {"interrupted", interrupted}});
+    lines_->summary(
+        Json{{"status", status}, {"analysed", analysed}, {"not_analysed", not_analysed_}, {"skipped", skipped_}, {"interrupted", interrupted}});
+  } else if (format_ == "text") {
+    fmt::print("{}", events_counts_line(analysed, not_analysed_, skipped_));
   } else if (format_ == "json") {
     Json doc = reports::json_document("events");
     doc["catalog"] = catalog_;
     doc["rules"] = std::move(rules_->array);
     fmt::print("{}\n", reports::json_text(std::move(doc)));
   }
+}
+
+std::string events_counts_line(std::size_t analysed, std::size_t not_analysed, std::size_t skipped) {
+  return fmt::format("\n{}: {} analysed, {} not analysed{}\n", counted(analysed + not_analysed + skipped, "rule"), analysed, not_analysed,
+                     skipped ? fmt::format(", {} skipped by --orbit", skipped) : std::string());
 }
 
 }  // namespace dartcheck::campaign

@@ -27,7 +27,8 @@ class EventsOutput {
   void not_analysed(const CatalogRule& rule, const std::string& why);
   /// A rule that --orbit does not fit: a line of text, nothing in JSON.
   void skipped(const CatalogRule& rule, const std::string& why);
-  /// The end of the run: the document (json) or the summary line (jsonl).
+  /// The end of the run: the document (json), the summary line (jsonl),
+  /// or the line of counts (text, events_counts_line).
   void finish(int status, std::size_t analysed, bool interrupted);
 
  private:
@@ -36,6 +37,11 @@ class EventsOutput {
   std::string format_, catalog_;
   std::optional<ShardWriter> lines_;
   std::unique_ptr<Rules> rules_;
+  std::size_t not_analysed_ = 0, skipped_ = 0;
 };
+
+/// The last line of events' text: how many rules were analysed, could not
+/// be, and were skipped by --orbit (a merge of shards prints the same).
+std::string events_counts_line(std::size_t analysed, std::size_t not_analysed, std::size_t skipped);
 
 }  // namespace dartcheck::campaign

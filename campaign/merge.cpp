@@ -4,6 +4,7 @@
 // recomputed from the catalog, whose digest must be the shards'; the
 // costly stages come from the records (campaign/result_record.hpp).
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -13,6 +14,7 @@
 #include "analysis/verdict_record.hpp"
 #include "analysis/exit_status.hpp"
 #include "analysis/interrupt.hpp"
+#include "campaign/events_output.hpp"
 #include "campaign/merge.hpp"
 #include "campaign/result_record.hpp"
 #include "campaign/shard_stream.hpp"
@@ -176,6 +178,11 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
     fmt::print("{}\n", reports::json_text(std::move(doc)));
   } else {
     for (const auto& [k, f] : fragments) fmt::print("{}", printable((*f)["text"].get<std::string>()));
+    std::size_t counts[3] = {0, 0, 0};  // analysed, not analysed, skipped: the shards' summaries
+    for (const auto& shard : shards)
+      if (shard.summary.is_object())
+        for (int c = 0; c < 3; ++c) counts[c] += shard.summary.value(std::array{"analysed", "not_analysed", "skipped"}[c], std::size_t{0});
+    fmt::print("{}", events_counts_line(counts[0], counts[1], counts[2]));
   }
   if (incomplete) {
     fmt::print(stderr, "incomplete: {} of {} shards finished; the rules above are theirs\n",
