@@ -12,6 +12,7 @@
 #include "analysis/rule_result.hpp"
 #include "analysis/verdict_record.hpp"
 #include "cli/commands.hpp"
+#include "core/terminal.hpp"
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
@@ -46,7 +47,7 @@ void write_baseline_file(const std::string& path, const std::string& catalog_fil
   std::ostringstream text;
   write_baseline(text, catalog_file, entries);
   write_file(path, text.str());
-  fmt::print(stderr, "wrote {} ({} verdicts, {} not checked)\n", path, results.size(), catalog.skipped.size());
+  if (!terminal().quiet) fmt::print(stderr, "wrote {} ({} verdicts, {} not checked)\n", path, results.size(), catalog.skipped.size());
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "analysis/map_sources.hpp"
 #include "analysis/rule_result.hpp"
 #include "cli/commands.hpp"
+#include "core/terminal.hpp"
 #include "cli/options.hpp"
 #include "compiler/cpp_text.hpp"
 #include "compiler/rule_compiler.hpp"
@@ -72,9 +73,10 @@ int compile(const CompileOptions& o) {
     fmt::print("{}", header);
   } else {
     write_file(o.output, header);
-    fmt::print("written: {} ({} in namespace {})\n", printable(o.output), counted(units.size(), "compiled rule"), ns);
+    if (!terminal().quiet) fmt::print("written: {} ({} in namespace {})\n", printable(o.output), counted(units.size(), "compiled rule"), ns);
   }
-  fmt::print(stderr, "{} compiled; {} skipped as inconsistent, {} with what the compiler does not handle\n", counted(units.size(), "rule"),
+  if (!terminal().quiet)
+    fmt::print(stderr, "{} compiled; {} skipped as inconsistent, {} with what the compiler does not handle\n", counted(units.size(), "rule"),
              inconsistent, unsupported);
   return ok;
 }

@@ -5,6 +5,7 @@
 
 #include "core/wording.hpp"
 #include "cli/commands.hpp"
+#include "core/terminal.hpp"
 #include "cli/options.hpp"
 #include "analysis/map_sources.hpp"
 #include "io/catalog_writer.hpp"
@@ -21,7 +22,8 @@ int convert(const ConvertOptions& o) {
     throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a file name ending in .yaml or .yml", o.output));
   const std::string text = catalog_yaml(catalog);
   write_file(o.output, text);
-  fmt::print("wrote {}: {}, {} skipped, {}\n", o.output, counted(catalog.rules.size(), "rule"), catalog.skipped.size(),
+  if (!terminal().quiet)
+    fmt::print("wrote {}: {}, {} skipped, {}\n", o.output, counted(catalog.rules.size(), "rule"), catalog.skipped.size(),
              counted(catalog.embeddings.size(), "embedding"));
   return ok;
 }

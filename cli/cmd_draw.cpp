@@ -8,6 +8,7 @@
 #include "checkers/graph_constraints.hpp"
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
+#include "core/terminal.hpp"
 #include "reports/embedding_picture.hpp"
 #include "cli/options.hpp"
 #include "analysis/embedding_checks.hpp"
@@ -33,7 +34,8 @@ int draw(const DrawOptions& o) {
   captions.insert(captions.end(), embedded.captions.begin(), embedded.captions.end());
   const std::string dot =
       reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms, captions);
-  fmt::print("wrote {} ({} bytes)\n", o.output, reports::write_picture(dot, o.output, o.engine));
+  const std::size_t bytes = reports::write_picture(dot, o.output, o.engine);
+  if (!terminal().quiet) fmt::print("wrote {} ({} bytes)\n", o.output, bytes);
   return ok;
 }
 
@@ -47,7 +49,8 @@ int draw_map(const DrawMapOptions& o) {
   for (const auto& v : report.violations)
     if (v.element < map.size()) p.highlight[v.element] = true;
   if (!report.valid()) p.highlight_label = fmt::format("filled: {} violations", report.violations.size());
-  fmt::print("wrote {} ({} bytes)\n", o.output, reports::write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, o.engine));
+  const std::size_t bytes = reports::write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, o.engine);
+  if (!terminal().quiet) fmt::print("wrote {} ({} bytes)\n", o.output, bytes);
   if (report.valid()) return ok;
   // Every non-zero exit says why.
   fmt::print(stderr, "INVALID {}: {} violation{} (drawn filled; validate-map lists them)\n", map.model().name, report.violations.size(),

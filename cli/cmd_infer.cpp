@@ -10,6 +10,7 @@
 
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
+#include "core/terminal.hpp"
 #include "io/jerboa_jba.hpp"
 #include "cli/options.hpp"
 #include "reports/infer_report.hpp"
@@ -105,7 +106,7 @@ int infer(const InferCommand& o) {
   // Nothing is written when nothing was inferred: an empty catalog is not a result.
   if (!o.output.empty() && inferred > 0) {
     write_inferred(o.output, o.name, *graph, attempts, {o.before, o.after, o.orbit});
-    fmt::print(o.format == "json" ? stderr : stdout, "written: {} ({} rule{})\n", o.output, inferred, inferred == 1 ? "" : "s");
+    if (!terminal().quiet) fmt::print(o.format == "json" ? stderr : stdout, "written: {} ({} rule{})\n", o.output, inferred, inferred == 1 ? "" : "s");
   } else if (!o.output.empty()) {
     fmt::print(stderr, "not written: {} (no rule inferred)\n", o.output);
   }

@@ -11,6 +11,7 @@
 #include "checkers/embedding_consistency.hpp"
 #include "checkers/map_validity.hpp"
 #include "core/input_error.hpp"
+#include "core/terminal.hpp"
 #include "core/output_file.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_embedding.hpp"
@@ -107,7 +108,7 @@ void write_jba_result(const ApplyRequest& o, const JbaHost& j, const EmbeddedMap
   std::ostringstream text;  // refused (not an n-G-map) before a file exists
   write_jba(text, out, o.output);
   write_file(o.output, text.str());
-  fmt::print("written: {}\n", o.output);
+  if (!terminal().quiet) fmt::print("written: {}\n", o.output);
 }
 
 // The preserved darts (G dart, H dart) of an application.
@@ -193,7 +194,7 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     std::ostringstream text;  // refused (a vertex without a position) before a file exists
     write_mesh(text, *host, pos->signature.name, o.output);
     write_file(o.output, text.str());
-    fmt::print("written: {} (positions from {})\n", o.output, pos->signature.name);
+    if (!terminal().quiet) fmt::print("written: {} (positions from {})\n", o.output, pos->signature.name);
   } else if (!o.output.empty()) {
     // The correspondence from the same application without values, whose
     // H must be this one (the values do not change the topology).
@@ -202,7 +203,7 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     if (!traced.ok() || !(topology == host->map))
       throw std::logic_error(fmt::format("apply: rule '{}' gives another topology with its terms than without", rule.rule.name()));
     write_file(o.output, result_yaml(host->map, preserved_pairs(traced.value->renumbering(rule.rule, topology.size()), before.size()), before.size()));
-    fmt::print("written: {} (topology only; the values are printed above)\n", o.output);
+    if (!terminal().quiet) fmt::print("written: {} (topology only; the values are printed above)\n", o.output);
   }
   return report.valid() && consistent ? ok : violation;
 }
@@ -219,7 +220,7 @@ void write_kappa(const ApplyRequest& o, const Renumbering& c, std::size_t g_size
   if (o.kappa_out.empty()) return;
   write_file(o.kappa_out, kappa_file_text(pairs, {"The dart correspondence of one application (dartcheck apply --kappa-out):",
                                                   "before dart (host), after dart (result), for every preserved dart."}));
-  fmt::print("written: {} ({} preserved darts)\n", o.kappa_out, pairs.size());
+  if (!terminal().quiet) fmt::print("written: {} ({} preserved darts)\n", o.kappa_out, pairs.size());
 }
 
 // -o X.jba: the result as a Jerboa G-map, with the embeddings a .jba input
@@ -257,7 +258,7 @@ int apply_to_jba(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   std::ostringstream text;  // refused (not an n-G-map) before a file exists
   write_jba(text, out, o.output);
   write_file(o.output, text.str());
-  fmt::print("written: {}\n", o.output);
+  if (!terminal().quiet) fmt::print("written: {}\n", o.output);
   return report.valid() ? ok : violation;
 }
 
@@ -284,7 +285,7 @@ int apply_topology(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const Renumbering c = a.renumbering(rule.rule, map.size());
   if (!o.output.empty()) {
     write_file(o.output, result_yaml(map, preserved_pairs(c, before_size), before_size));
-    fmt::print("written: {}\n", o.output);
+    if (!terminal().quiet) fmt::print("written: {}\n", o.output);
   }
   write_kappa(o, c, before_size);
   return report.valid() ? ok : violation;
