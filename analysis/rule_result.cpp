@@ -295,11 +295,11 @@ void compare_with_record(RuleResult& r) {
   const CatalogRule& e = *r.entry;
   r.mismatches.clear();
   const std::string_view source = r.record_source_name();
-  if (!matches_record(e, r.verdict, r.embedding))
-    r.mismatches.push_back(
-        e.expected_failures
-            ? fmt::format("the static verdict is '{}', the {} records '{}'", r.verdict_text(), source, r.recorded_text())
-            : fmt::format("the static verdict is '{}' and the {} records no verdict, so every condition must hold", r.verdict_text(), source));
+  r.verdict_differs = !matches_record(e, r.verdict, r.embedding);
+  if (r.verdict_differs)
+    r.mismatches.push_back(e.expected_failures
+                               ? fmt::format("the static verdict is '{}', the {} records '{}'", r.verdict_text(), source, r.recorded_text())
+                               : fmt::format("{}, and the {} records no verdict for it", r.verdict_text(), source));
   if (contradicts_record(e, r.broke_a_map())) {
     std::vector<std::string> how;
     if (r.host_search && r.host_search->host) how.push_back("the model-level search");
@@ -333,6 +333,7 @@ ResultCounts count_results(const std::vector<RuleResult>& results) {
     ++c.rules;
     (r.consistent() ? c.consistent : c.failing) += 1;
     c.mismatches += !r.matches_record();
+    c.first_run_findings += r.first_run_finding();
     c.unsound += r.unsound();
     c.events_contradicted += r.events_contradicted();
   }

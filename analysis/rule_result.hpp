@@ -63,6 +63,9 @@ struct RuleResult {
   /// How this run compares with the recorded verdict: one sentence per
   /// disagreement (empty: it matches). Filled by `compare_with_record`.
   std::vector<std::string> mismatches;
+  /// Whether mismatches[0] is the static verdict against the recorded one
+  /// (the other entries: a broken map, the solver, a soundness bug).
+  bool verdict_differs = false;
 
   const std::string& name() const { return entry->rule.name(); }
   bool consistent() const { return failures.empty(); }
@@ -78,6 +81,9 @@ struct RuleResult {
   /// Whether some stage broke a map of the model.
   bool broke_a_map() const;
   bool matches_record() const { return mismatches.empty(); }
+  /// A failing rule for which nothing is recorded (a modeler's first run):
+  /// a finding to record with --write-baseline, not a changed verdict.
+  bool first_run_finding() const { return verdict_differs && !entry->expected_failures; }
 
   /// "consistent" or "fails I(1) C(0,2)".
   std::string verdict_text() const;
@@ -139,6 +145,7 @@ void compare_with_record(RuleResult& r);
 /// Counts over a run's results, for every summary line.
 struct ResultCounts {
   std::size_t rules = 0, consistent = 0, failing = 0, mismatches = 0, unsound = 0, events_contradicted = 0;
+  std::size_t first_run_findings = 0;  // of the mismatches: failing rules with no verdict recorded
 };
 ResultCounts count_results(const std::vector<RuleResult>& results);
 

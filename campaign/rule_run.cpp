@@ -38,8 +38,8 @@ void RuleRun::finished(const analysis::RuleResult& r) {
   if (lines_) lines_->rule(r);
 }
 
-int RuleRun::finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, const reports::FuzzRun* fuzz) {
-  const int status = reports::finish_run(results, baseline_mismatches_, selected, analysis::interrupted());
+int RuleRun::finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, const reports::FuzzRun* fuzz, bool recording) {
+  const int status = reports::finish_run(results, baseline_mismatches_, selected, analysis::interrupted(), recording);
   if (lines_)
     lines_->summary(fuzz ? reports::fuzz_summary_json(*fuzz, results)
                          : run_summary(results, selected, analysis::interrupted(), seconds(), baseline_mismatches_));

@@ -50,7 +50,7 @@ class RuleRun {
   /// The exit status (reports::finish_run) of `results` out of `selected`
   /// rules; with --format jsonl, the summary line (fuzz's when `fuzz` is
   /// given, or the counts of check, prove and report).
-  int finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, const reports::FuzzRun* fuzz = nullptr);
+  int finish(const std::vector<analysis::RuleResult>& results, std::size_t selected, const reports::FuzzRun* fuzz = nullptr, bool recording = false);
 
  private:
   std::string command_;

@@ -76,7 +76,7 @@ int check(const CheckOptions& o) {
     if (o.solver) run_embedding_solver(results.back(), [] { return interrupted(); });
     run.finished(results.back());
   }
-  const int status = run.finish(results, rules.size());
+  const int status = run.finish(results, rules.size(), nullptr, !o.write_baseline.empty());
   if (!o.write_baseline.empty() && interrupted())
     fmt::print(stderr, "{}\n", not_written);
   else if (!o.write_baseline.empty())

@@ -247,7 +247,9 @@ std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed,
     if (embedded) out += embedding_cell(e.rule.name(), r.embedding);
     out += fmt::format(
         "<td>{}</td><td class=\"{}\">{}</td>", html_text(r.verdict_text()), r.matches_record() ? "ok" : "fails",
-        html_text(r.matches_record() ? std::string("matches") : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
+        html_text(r.matches_record()      ? std::string("matches")
+                  : r.first_run_finding() ? fmt::format("no verdict recorded (the {} records none)", r.record_source_name())
+                                          : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
     if (fuzzed) out += r.fuzz ? fuzz_cells(*r.fuzz) : "<td></td>";
     if (proved) out += r.proof ? prove_cell(*r.proof) : "<td></td>";
     out += "</tr>\n";
@@ -295,7 +297,9 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
                                 e.rule.left().node_count(), e.rule.right().node_count());
   if (!e.note.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_text(e.note));
   out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(r.verdict_text()), html_text(r.recorded_text()),
-                     r.matches_record() ? "" : " <span class=\"mismatch\">(MISMATCH)</span>");
+                     r.matches_record()      ? ""
+                     : r.first_run_finding() ? " <span class=\"mismatch\">(a finding: nothing recorded)</span>"
+                                             : " <span class=\"mismatch\">(MISMATCH)</span>");
   auto embedded = embedding_picture(e, r.embedding);
   auto witnesses = failed_witnesses(r.verdict);
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());

@@ -5,6 +5,7 @@
 #include "core/shell_quote.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <array>
 #include <map>
 
@@ -167,22 +168,46 @@ std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& resul
   return out;
 }
 
-std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results) {
+std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results, bool recording) {
   std::vector<std::string> lines;
   for (const auto& r : results) {
-    for (const auto& m : r.mismatches)
-      lines.push_back(
-          printable(fmt::format("{}: error: {}: {}{}", r.entry->location.str(), r.name(), m.rfind("SOUNDNESS", 0) == 0 ? "" : "MISMATCH: ", m)));
+    for (std::size_t k = 0; k < r.mismatches.size(); ++k) {
+      const std::string& m = r.mismatches[k];
+      const bool verdict = k == 0 && r.verdict_differs;
+      if (verdict && recording) continue;  // --write-baseline records this verdict
+      // A first run's finding is not a changed verdict: no "MISMATCH".
+      const char* tag = m.rfind("SOUNDNESS", 0) == 0 || (verdict && r.first_run_finding()) ? "" : "MISMATCH: ";
+      lines.push_back(printable(fmt::format("{}: error: {}: {}{}", r.entry->location.str(), r.name(), tag, m)));
+    }
     if (r.events_contradicted())
       lines.push_back(printable(fmt::format("{}: error: {}: {}", r.entry->location.str(), r.name(), event_outcome_text(*r.fuzz))));
   }
   return lines;
 }
 
+std::size_t changed_verdicts(const std::vector<RuleResult>& results) {
+  return static_cast<std::size_t>(std::count_if(results.begin(), results.end(), [](const RuleResult& r) {
+    return !r.matches_record() && !(r.first_run_finding() && r.mismatches.size() == 1);
+  }));
+}
+
 std::string mismatch_summary(const std::vector<RuleResult>& results) {
-  const std::size_t n = count_results(results).mismatches;
-  if (n == 0) return "";
-  return fmt::format("{} differ{} from the {}", plural(n, "verdict", "verdicts"), n == 1 ? "s" : "", results.front().record_source_name());
+  const std::size_t n = changed_verdicts(results), findings = count_results(results).first_run_findings;
+  std::string out;
+  if (n > 0) out = fmt::format("{} differ{} from the {}", plural(n, "verdict", "verdicts"), n == 1 ? "s" : "", results.front().record_source_name());
+  if (findings > 0)
+    out += fmt::format("{}{} fail{} with no verdict recorded", out.empty() ? "" : "; ", plural(findings, "rule", "rules"), findings == 1 ? "s" : "");
+  return out;
+}
+
+std::string first_run_hint(const std::vector<RuleResult>& results) {
+  const std::size_t findings = count_results(results).first_run_findings;
+  if (findings == 0) return {};
+  const std::string file = results.front().entry->location.file;
+  const std::string stem = std::filesystem::path(file).replace_extension().string() + ".baseline.yaml";
+  return printable(fmt::format("{}: note: no verdict is recorded for {} failing {}: a first run. `dartcheck check {} --write-baseline {}` "
+                               "records this run's verdicts; `--baseline {}` then reports only what changes",
+                               file, findings, findings == 1 ? "rule" : "rules", shell_quote(file), shell_quote(stem), shell_quote(stem)));
 }
 
 namespace {
@@ -270,7 +295,7 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
     if (!result.fuzz_replay.empty())
       out += fmt::format("{}replay: {}\n", under, printable(result.fuzz_replay));
     else if (!result.entry->terms)  // a command to paste, never wrapped: the rule's seed comes from the run's seed and its name
-      out += fmt::format("{}writes the host, the match and H with a replay command: {}\n", under,
+      out += fmt::format("{}to write the host, the match and H with a replay command, run: {}\n", under,
                          printable(fmt::format("dartcheck fuzz {} --rule {} --seed {} -o DIR", shell_quote(run.catalog), shell_quote(result.name()),
                                                run.seed)));
   }
@@ -358,7 +383,10 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
     out += row(own_line ? "" : t.names[k], t.models[k], t.cells[k], fmt::format("{:.2f}", r.static_ms), verdict.front(), true);
     for (std::size_t l = 1; l < verdict.size(); ++l) out += std::string(t.name + t.fixed(), ' ') + verdict[l] + "\n";
     if (!r.matches_record())
-      out += paint(row_note(indent, fmt::format("differs from the {}: see stderr", r.record_source_name())), Tone::error, colour);
+      out += paint(row_note(indent, r.first_run_finding() && r.mismatches.size() == 1
+                                        ? fmt::format("no verdict recorded in the {}: see stderr", r.record_source_name())
+                                        : fmt::format("differs from the {}: see stderr", r.record_source_name())),
+                   Tone::error, colour);
     for (const auto& caveat : r.entry->caveats) out += row_note(indent, "note: " + printable(caveat));
     for (const auto& x : r.entry->expressions) {
       if (!x.read())
@@ -403,13 +431,14 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
   if (read + opaque)
     out += fmt::format("\n{}: {} expressions read, {} opaque\n", catalog.modeler.empty() ? catalog.file : catalog.modeler, read, opaque);
   const auto counts = count_results(results);
-  const std::size_t mismatches = counts.mismatches + baseline_mismatches;
+  const std::size_t mismatches = changed_verdicts(results) + baseline_mismatches;
   const std::string_view source = results.empty() ? "catalog" : results.front().record_source_name();
   // The summary stays on one line, for the logs that grep it.
-  out += fmt::format("\n{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}\n", plural(counts.rules, "rule", "rules"),
+  out += fmt::format("\n{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}{}\n", plural(counts.rules, "rule", "rules"),
                      counts.consistent, counts.failing,
                      catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
-                     plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source);
+                     plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source,
+                     counts.first_run_findings ? fmt::format(", {} with none recorded", counts.first_run_findings) : std::string());
   return out;
 }
 

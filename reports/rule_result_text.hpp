@@ -11,11 +11,23 @@
 namespace dartcheck::reports {
 
 /// One line per mismatch, as compilers and CI annotators read them:
-/// "catalog.yaml:12:3: error: rule-name: MISMATCH: the static verdict is ...".
-std::vector<std::string> mismatch_lines(const std::vector<analysis::RuleResult>& results);
+/// "catalog.yaml:12:3: error: rule-name: MISMATCH: the static verdict is ...";
+/// a failing rule with nothing recorded (a first run) is not a MISMATCH:
+/// "...: error: rule-name: fails A(pos), and the catalog records no verdict
+/// for it". `recording` (--write-baseline) leaves out the verdicts it records.
+std::vector<std::string> mismatch_lines(const std::vector<analysis::RuleResult>& results, bool recording = false);
 
-/// "2 verdicts differ from the baseline" ("" when every result matches its record).
+/// The rules whose verdict differs from a recorded one (not the first
+/// run's findings, which have none).
+std::size_t changed_verdicts(const std::vector<analysis::RuleResult>& results);
+
+/// "2 verdicts differ from the baseline; 3 rules fail with no verdict
+/// recorded" ("" when every result matches its record).
 std::string mismatch_summary(const std::vector<analysis::RuleResult>& results);
+
+/// The hint after a first run's findings: how to record them as a
+/// baseline and compare with it ("" when there are none).
+std::string first_run_hint(const std::vector<analysis::RuleResult>& results);
 
 struct TableOptions {
   bool explain = false;  // every witness under its rule

@@ -111,9 +111,10 @@ void write_report(const std::string& dir_name, const std::string& engine, const 
 }
 
 int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected,
-               bool interrupted) {
+               bool interrupted, bool recording) {
   for (const auto& m : baseline_mismatches) fmt::print(stderr, "baseline: {}\n", printable(m));
-  for (const auto& line : mismatch_lines(results)) fmt::print(stderr, "{}\n", painted_diagnostic(line));
+  for (const auto& line : mismatch_lines(results, recording)) fmt::print(stderr, "{}\n", painted_diagnostic(line));
+  if (const std::string hint = first_run_hint(results); !hint.empty() && !recording && !terminal().quiet) fmt::print(stderr, "{}\n", hint);
   const auto counts = analysis::count_results(results);
   if (interrupted)
     fmt::print(stderr, "interrupted: {} of {} rule{} finished; the results above are theirs\n", results.size(), selected, selected == 1 ? "" : "s");

@@ -45,8 +45,10 @@ void write_report(const std::string& dir, const std::string& engine, const std::
 /// disagreements and every mismatch line on stderr, says how many of
 /// `selected` rules finished if the run was `interrupted` (a signal, or a
 /// merge of unfinished shards), and returns the exit status (3 a soundness
-/// bug, 130 interrupted, 1 a mismatch, 0).
+/// bug, 130 interrupted, 1 a mismatch, 0). A first run's findings get a
+/// hint (first_run_hint); `recording` (--write-baseline) prints neither
+/// them nor the verdicts that differ: the baseline records them.
 int finish_run(const std::vector<analysis::RuleResult>& results, const std::vector<std::string>& baseline_mismatches, std::size_t selected,
-               bool interrupted);
+               bool interrupted, bool recording = false);
 
 }  // namespace dartcheck::reports

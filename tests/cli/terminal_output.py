@@ -73,11 +73,12 @@ def fits(text, width, what):
         while ESC in plain:  # drop colour codes: they take no columns
             k = plain.index(ESC)
             plain = plain[:k] + plain[plain.index("m", k) + 1:]
-        # A diagnostic stays on one line for the tools that parse it, a
-        # replay command for the mouse that copies it.
+        # A diagnostic (error or note) stays on one line for the tools that
+        # parse it, a replay command or a command to run for the mouse that
+        # copies it.
         # The closing summary ("82 rules, ...") is one line for the logs that grep it.
         summary = re.match(r"\d+ rules?([,:] | \()", plain)
-        if len(plain) > width and len(plain.split()) > 1 and ": error: " not in plain and "replay: " not in plain and not summary:
+        if len(plain) > width and len(plain.split()) > 1 and ": error: " not in plain and ": note: " not in plain and "replay: " not in plain and "run: dartcheck " not in plain and not summary:
             problems.append(f"{what}: line of {len(plain)} columns over {width}: {plain!r}")
 
 
