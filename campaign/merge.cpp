@@ -140,7 +140,8 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
     fmt::print("{}", printable(text));  // a shard file is input: no escape sequence reaches the terminal
   }
   if (incomplete) {
-    fmt::print(stderr, "incomplete: {} of {} runs finished; the results above are theirs\n", runs.size(), files.size());
+    fmt::print(stderr, "incomplete: {} of {} runs finished; the results above are theirs and those of the runs a signal stopped\n",
+               std::count_if(files.begin(), files.end(), [](const ShardFile& f) { return f.finished; }), files.size());
     if (status != soundness_bug) return analysis::interrupted_exit;
   }
   return status;

@@ -117,5 +117,5 @@ rm "$WORK/recombine-folded.jsonl"
 # A run a signal stopped says so by its status (130): it used to merge as 0.
 sed 's/"summary":{"status":[0-9]*}/"summary":{"status":130}/' "$WORK/recombine-2.jsonl" > "$WORK/recombine-stopped.jsonl"
 expect_error "an interrupted input run" "recombine-stopped.jsonl:3:1: this shard was interrupted" "$D" merge "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
-expect_incomplete "--incomplete, an interrupted input run" "^incomplete: 2 of 2 runs" "$D" merge --incomplete "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
+expect_incomplete "--incomplete, an interrupted input run" "^incomplete: 1 of 2 runs finished" "$D" merge --incomplete "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
 exit $fail
