@@ -482,7 +482,7 @@ CompiledHeader compile_header(const std::vector<CompileUnit>& units, std::string
                  "using dartcheck::compiled::read;\nusing dartcheck::compiled::reserve_more;\nusing dartcheck::compiled::Source;\nusing dartcheck::compiled::TermWorkspace;\n"
                  "using dartcheck::compiled::unlabel;\nusing dartcheck::compiled::write_orbit;\n\n",
                  comment_text(source), ns);
-  // Each function is written under a placeholder (\x01k\x01, no identifier),
+  // Each function is written under a stand-in name (\x01k\x01, no identifier),
   // so that the names are chosen knowing every identifier the code uses.
   std::vector<std::string> names;
   for (std::size_t k = 0; k < units.size(); ++k) {

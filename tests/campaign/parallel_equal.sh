@@ -31,14 +31,15 @@ PY
   then echo "FAIL: $1: merged JSON differs from the single run" >&2; fail=1; fi
 }
 
-expect_error() {  # label pattern command...
-  local label=$1 pattern=$2; shift 2
+expect_exit() {  # status label pattern command...
+  local status=$1 label=$2 pattern=$3; shift 3
   local rc=0
   "$@" > "$WORK/out.txt" 2> "$WORK/err.txt" || rc=$?
-  if [ "$rc" -ne 2 ] || ! grep -q -- "$pattern" "$WORK/err.txt"; then
-    echo "FAIL: $label: exit $rc, expected 2 and '$pattern' in:" >&2; cat "$WORK/err.txt" >&2; fail=1
+  if [ "$rc" -ne "$status" ] || ! grep -Eq -- "$pattern" "$WORK/err.txt"; then
+    echo "FAIL: $label: exit $rc, expected $status and '$pattern' in:" >&2; cat "$WORK/err.txt" >&2; fail=1
   fi
 }
+expect_error() { expect_exit 2 "$@"; }
 
 for run in "check" "fuzz --runs 300 --seed 7" "prove --max-darts 3"; do
   read -r -a args <<< "$run"
@@ -76,14 +77,7 @@ expect_error "a changed catalog" "not the catalog the shards ran on" "$D" merge 
 
 # merge --incomplete (issue 62): the cut and the missing shard merge, the
 # result names how many rules finished and the exit status is 130.
-expect_incomplete() {  # label pattern command...
-  local label=$1 pattern=$2; shift 2
-  local rc=0
-  "$@" > "$WORK/out.txt" 2> "$WORK/err.txt" || rc=$?
-  if [ "$rc" -ne 130 ] || ! grep -Eq -- "$pattern" "$WORK/err.txt"; then
-    echo "FAIL: $label: exit $rc, expected 130 and '$pattern' in:" >&2; cat "$WORK/err.txt" >&2; fail=1
-  fi
-}
+expect_incomplete() { expect_exit 130 "$@"; }
 expect_incomplete "--incomplete, a cut shard" "^interrupted: [0-9]+ of 82 rules finished" \
   "$D" merge --incomplete "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$WORK/cut.jsonl" "$S/shard-3.jsonl"
 expect_incomplete "--incomplete, a missing shard" "^interrupted: [0-9]+ of 82 rules finished" \

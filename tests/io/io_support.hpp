@@ -36,4 +36,15 @@ inline std::string error_of(const std::string& text, bool catalog = false) {
   return "no error";
 }
 
+// The message of the InputError that `read` throws, or "no error".
+template <class Read>
+std::string message_of(Read read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 }  // namespace dartcheck::testing_support

@@ -27,16 +27,6 @@ std::string temp_path(const std::string& ext) {
       .string();
 }
 
-template <class Read>
-std::string message_of(Read read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 bool has_control_bytes(const std::string& s) {
   for (unsigned char c : s)
     if (c < 0x20 || c == 0x7f) return true;

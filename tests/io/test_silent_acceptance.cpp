@@ -34,16 +34,6 @@ std::string file_with(const std::string& name, const std::string& text) {
   return path;
 }
 
-template <class Read>
-std::string message_of(Read read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 const std::string rule_text =
     "rules:\n"
     "  - name: r\n"
