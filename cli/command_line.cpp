@@ -347,10 +347,22 @@ void add_draw_map(CLI::App& app, Commands& commands) {
   commands.push_back({dm, [o] { return draw_map(*o); }});
 }
 
+// `dartcheck --help` lists the commands first, then the options, then the
+// input limits, which few runs need; a command's help keeps CLI11's order.
+class CommandsFirst : public CLI::Formatter {
+ public:
+  std::string make_help(const CLI::App* app, std::string name, CLI::AppFormatMode mode) const override {
+    if (mode == CLI::AppFormatMode::Sub || app->get_parent() != nullptr) return Formatter::make_help(app, std::move(name), mode);
+    return make_description(app) + make_usage(app, std::move(name)) + make_positionals(app) + make_subcommands(app, mode) +
+           make_groups(app, mode) + '\n' + make_footer(app);
+  }
+};
+
 // The global options: input limits (core/limits.hpp), for the whole run,
 // set before any input is read.
 void add_limits(CLI::App& app) {
   auto& lim = limits();
+  app.option_defaults()->group("Input limits");
   app.add_option("--limit-darts", lim.darts, "largest map read or built, in darts")->capture_default_str()->transform(count_option(1, no_dart - 1));
   app.add_option("--limit-file-bytes", lim.file_bytes, "largest input file read, in bytes")->capture_default_str()->transform(count_option(1));
   app.add_option("--limit-term-length", lim.term_length, "longest embedding term, in characters")->capture_default_str()->transform(count_option(1));
@@ -373,6 +385,7 @@ struct OutputOptions {
 };
 
 void add_output_options(CLI::App& app, OutputOptions& o) {
+  app.option_defaults()->group("Options");
   app.add_option("--color", o.color, "colour the text on a terminal: auto (not under NO_COLOR or TERM=dumb), always, never")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "always", "never"}));
@@ -435,6 +448,7 @@ int run_command_line(int argc, char** argv, const std::string& version) {
     return text;
   });
   app.fallthrough();  // the global options (limits) also after the command's name
+  app.formatter(std::make_shared<CommandsFirst>());
   add_limits(app);
   OutputOptions output;
   add_output_options(app, output);

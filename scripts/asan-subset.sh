@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build-asan}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DDARTCHECK_SANITIZE=ON -DDARTCHECK_BENCH=OFF >/dev/null
-cmake --build "$build" -j2 --target dartcheck dartcheck_man test_io test_jerboa test_reports test_campaign test_compiled test_compiled_mutant test_compiled_shortcut_mutant >/dev/null
+cmake --build "$build" -j2 --target dartcheck test_io test_jerboa test_reports test_campaign test_compiled test_compiled_mutant test_compiled_shortcut_mutant >/dev/null
 suites='MapYaml|Mesh|MeshWriter|Catalog|HostileInput|TetMeshIo|Jme|Jba|RuleDot|RuleSvg|MapSvg|Render|CounterexampleDot|Shard|ResultRecord|CompiledOperations'
 # Over 30 s each under the sanitizers: fuzzing, proving and recombining
 # whole catalogs and meshes, and every example of docs/cli.md (which fuzzes

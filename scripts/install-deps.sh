@@ -1,27 +1,43 @@
 #!/usr/bin/env bash
 # Installs dartcheck's build and test dependencies from Debian 12 packages.
 # Idempotent: does nothing (and prints nothing) when everything is present.
+# scripts/install-deps.sh           what dartcheck needs to build and run
+# scripts/install-deps.sh --tests   that, and what its tests, benchmarks,
+#                                   fuzzing and campaigns need (CI)
 set -euo pipefail
 
-packages=(
+case "${1:-}" in
+  "") with_tests=false ;;
+  --tests) with_tests=true ;;
+  *) echo "usage: scripts/install-deps.sh [--tests]" >&2; exit 2 ;;
+esac
+
+# The program: tests/cli/runtime_packages.sh checks that every header it
+# includes and every library it loads comes from these or their dependencies.
+runtime=(
   build-essential cmake pkg-config
   # Compiler output cached across builds and clones (CI time).
   ccache
-  libgtest-dev libgmock-dev librapidcheck-dev
   libz3-dev libfmt-dev libyaml-cpp-dev libcli11-dev libpugixml-dev
+  # Pictures through libgvc; the graphviz package registers its plugins.
   libgraphviz-dev graphviz
-  # JSON outputs are built with nlohmann::json (valid for any names); their
-  # JSON Schemas (docs/schema/) are checked by python3-jsonschema in tests.
-  nlohmann-json3-dev python3-jsonschema
-  # The HTML report's test: headless Chromium screenshots the page, libpng
-  # reads the screenshot.
-  chromium libpng-dev
-  libbenchmark-dev
+  # JSON outputs are built with nlohmann::json (valid for any names).
+  nlohmann-json3-dev
   # The man page that `cmake --install` installs, made from --help.
   help2man
   # Exact rationals for the orientation predicate of the recombination
   # (querymodify/orientation.cpp), when its floating-point filter is unsure.
   libgmp-dev
+)
+tests=(
+  libgtest-dev libgmock-dev librapidcheck-dev
+  # The JSON Schemas of the outputs (docs/schema/) are checked by
+  # python3-jsonschema.
+  python3-jsonschema
+  # The HTML report's test: headless Chromium screenshots the page, libpng
+  # reads the screenshot.
+  chromium libpng-dev
+  libbenchmark-dev
   # The libFuzzer harnesses (fuzz/, scripts/fuzz.sh): clang and its runtime.
   clang libclang-rt-14-dev
   # Oracles, peers and real data for tests and benchmarks only.
@@ -34,7 +50,11 @@ packages=(
   # The signal tests find and signal shard processes (pgrep, pkill, kill -PGID)
   # and start a run in a process group of its own (setsid).
   procps util-linux
+  # The man page's test renders it in UTF-8 and ASCII.
+  groff-base
 )
+packages=("${runtime[@]}")
+$with_tests && packages+=("${tests[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
@@ -49,6 +69,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+$with_tests || exit 0
 # Images that exclude /usr/share/doc from installs drop CGAL's mesh archive,
 # which the tests read: take it out of the package itself.
 # The package ships it in libcgal-dev's documentation folder.

@@ -21,6 +21,22 @@ for c in $commands; do
   grep -q "^\.SS $c\$" "$page" || fail "the man page has no section for $c"
 done
 grep -q -- "--write-baseline" "$page" || fail "the man page lacks check's --write-baseline"
+# A conventional page (issue 64): its sections, and the Greek letters of the
+# help texts in UTF-8 with ASCII fallbacks (help2man alone wrote '??').
+for section in "EXIT STATUS" ENVIRONMENT EXAMPLES "SEE ALSO"; do
+  grep -q "^\.SH \"\?$section\"\?\$" "$page" || fail "the man page has no $section section"
+done
+if grep -q '??' "$page"; then fail "the man page has '??' for a character"; fi
+ascii=$(groff -man -Tascii -P-cbou -rLL=200n "$page" 2>/dev/null)
+utf8=$(groff -man -Tutf8 -P-cbou -rLL=200n "$page" 2>/dev/null)
+grep -q -- "the kappa file" <<< "$ascii" || fail "the ASCII page lacks the kappa fallback"
+grep -q -- "boundary (eps), interior (~eps) or no-link (<->)" <<< "$ascii" || fail "the ASCII page lacks the epsilon fallbacks"
+grep -q -- "the κ file" <<< "$utf8" || fail "the UTF-8 page lacks κ"
+grep -q -- "boundary (ε), interior (ε̄) or no-link (↔)" <<< "$utf8" || fail "the UTF-8 page lacks ε, ε̄ or ↔"
+grep -q -- "^ *130 *interrupted" <<< "$utf8" || fail "EXIT STATUS does not list 130"
+# --help lists the commands before the options, the input limits last.
+order=$(dartcheck --help | grep -n -e '^Subcommands:' -e '^Options:' -e '^Input limits:' | cut -d: -f2 | tr '\n' ',')
+[ "$order" = "Subcommands,Options,Input limits," ] || fail "--help lists its parts as $order"
 
 # shellcheck source=/dev/null
 source "$prefix/share/bash-completion/completions/dartcheck"

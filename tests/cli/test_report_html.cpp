@@ -211,7 +211,7 @@ PngStats png_stats(const fs::path& file) {
 }  // namespace
 
 TEST(ReportHtml, HeadlessChromiumRendersANonBlankPage) {
-  if (std::system("command -v chromium > /dev/null 2>&1") != 0) GTEST_SKIP() << "chromium is not installed (scripts/install-deps.sh installs it)";
+  if (std::system("command -v chromium > /dev/null 2>&1") != 0) GTEST_SKIP() << "chromium is not installed (scripts/install-deps.sh --tests installs it)";
   const fs::path shot = fresh_dir("report-shot").string() + ".png";
   // --no-sandbox: CI runs as root; the page needs no network.
   const std::string cmd = fmt::format(
