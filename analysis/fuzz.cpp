@@ -435,6 +435,7 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
       }
     }
     FuzzReport e = fuzz_embedded_rule(entry, seeds, o);
+    e.checked = "topology and values";
     if (t) {  // both phases' applications were checked
       e.event_checks = t->event_checks;
       e.event_contradiction = std::move(t->event_contradiction);
@@ -449,6 +450,7 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
   }
   FuzzReport out;
   out.rule = entry.rule.name();
+  if (!entry.expressions.empty()) out.checked = "topology; values not computed";
   const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);
   out.static_failures = static_failures(verdict);
   const bool static_holds = out.static_failures.empty();
@@ -481,13 +483,14 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
 
 std::string outcome_text(const FuzzReport& r) {
   switch (r.verdict) {
-    case FuzzClass::consistent:
-      return r.reason.empty()
-                 ? fmt::format("consistent (checked {} on {} of up to {} darts{})", counted(r.applications, "application"), counted(r.hosts, "map"),
-                               r.largest_host, r.event_checks ? fmt::format("; events of {} cross-checked", r.event_checks) : "")
-                 : fmt::format("consistent; {}", r.reason);
+    case FuzzClass::consistent:  // the static verdict is beside it: say only what the run saw
+      return r.reason.empty() ? fmt::format("no counterexample in {} on {} of up to {} darts ({}{})", counted(r.applications, "application"),
+                                            counted(r.hosts, "map"), r.largest_host, r.checked,
+                                            r.event_checks ? fmt::format("; events of {} cross-checked", r.event_checks) : "")
+                              : fmt::format("no counterexample: {}", r.reason);
     case FuzzClass::unconfirmed:
-      return fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason);
+      return r.applications == 0 ? fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason)
+                                 : fmt::format("{}: {} ({})", fuzz_class_name(r.verdict), r.reason, r.checked);
     case FuzzClass::confirmed:
     case FuzzClass::soundness_bug: {
       const auto& cx = *r.counterexample;
@@ -504,6 +507,20 @@ std::string event_outcome_text(const FuzzReport& r) {
   return fmt::format("EVENT ANALYSIS CONTRADICTED: at hook{} {} of a {}-dart map, {}", cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","),
                      cx.host.size(), cx.event_contradictions.front());
 }
+
+namespace {
+
+// A finished rule's line in a log: its class, and for a rule without a
+// counterexample what the applications checked (never "consistent" alone).
+std::string finished_line(const FuzzReport& r) {
+  const std::string applications = counted(r.applications, "application");
+  if (r.counterexample) return fmt::format("{}, {}", fuzz_class_name(r.verdict), applications);
+  const std::string_view verdict = r.verdict == FuzzClass::consistent ? "consistent statically" : fuzz_class_name(r.verdict);
+  if (r.applications == 0) return fmt::format("{}, never applied", verdict);
+  return fmt::format("{}, no counterexample in {} ({})", verdict, applications, r.checked);
+}
+
+}  // namespace
 
 std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, const std::vector<Map>& seeds, FuzzOptions o,
                                    std::optional<double> seconds, bool progress,
@@ -533,8 +550,7 @@ std::vector<FuzzReport> fuzz_rules(const std::vector<const Operation*>& rules, c
     const auto& r = reports.back();
     // Without a terminal (CI logs), a line per finished rule instead.
     if (!progress && !quiet)
-      fmt::print(stderr, "[{}/{}] {}: {}, {}, {:.2f} s\n", k + 1, rules.size(), r.rule, fuzz_class_name(r.verdict),
-                 counted(r.applications, "application"), r.seconds);
+      fmt::print(stderr, "[{}/{}] {}: {}, {:.2f} s\n", k + 1, rules.size(), r.rule, finished_line(r), r.seconds);
     if (finished) finished(k, r);
   }
   if (progress && !quiet) fmt::print(stderr, "\r\033[K");

@@ -89,6 +89,12 @@ struct FuzzReport {
   std::size_t exhaustive_darts = 0;             // every host of up to this many darts was tried (0: none completely)
   std::map<std::string, std::size_t> refusals;  // refusal name -> count (no-match, dangling, ...)
   std::size_t event_checks = 0;                 // applications whose event logs were cross-checked
+  /// What each application checked: "topology" (a rule without embedding
+  /// values), "topology and values" (the embedded fuzzer evaluated every
+  /// term), or "topology; values not computed" (a rule whose expressions
+  /// dartcheck does not all read): the text never calls a rule consistent
+  /// on more than this.
+  std::string checked = "topology";
   bool out_of_time = false;
   double seconds = 0;
   std::optional<Counterexample> counterexample;

@@ -83,6 +83,7 @@ Json fuzz_record(const FuzzReport& f) {
               {"static_failures", f.static_failures},
               {"verdict", static_cast<int>(f.verdict)},
               {"reason", f.reason},
+              {"checked", f.checked},
               {"applications", f.applications},
               {"hosts", f.hosts},
               {"largest_host", f.largest_host},
@@ -335,6 +336,7 @@ FuzzReport read_fuzz(const In& in) {
   f.static_failures = in["static_failures"].strings();
   f.verdict = static_cast<analysis::FuzzClass>(in["verdict"].integer(0, static_cast<int>(analysis::FuzzClass::soundness_bug)));
   f.reason = in["reason"].str();
+  f.checked = in["checked"].str();
   f.applications = in["applications"].count();
   f.hosts = in["hosts"].count();
   f.largest_host = in["largest_host"].count();

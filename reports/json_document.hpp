@@ -13,10 +13,10 @@ namespace dartcheck::reports {
 
 /// The version of dartcheck's JSON and JSONL formats: documents carry it
 /// as "format_version"; docs/schema/ holds one JSON Schema per document.
-inline constexpr int json_format_version = 3;
+inline constexpr int json_format_version = 4;  // 4: fuzz "checked"
 
 /// An object that starts a document of `command` ("check", "fuzz", ...):
-/// {"format": "dartcheck-check", "format_version": 3}.
+/// {"format": "dartcheck-check", "format_version": 4}.
 Json json_document(std::string_view command);
 
 /// The document as text, on one line (indent < 0) or indented. Strings that

@@ -83,6 +83,7 @@ Json fuzz_json(const FuzzReport& f, const std::string& replay, const std::string
          {"seconds", f.seconds},
          {"out_of_time", f.out_of_time},
          {"reason", f.reason},
+         {"checked", f.checked},
          {"outcome", outcome_text(f)}};
   if (f.counterexample) {
     const auto& cx = *f.counterexample;

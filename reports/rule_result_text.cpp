@@ -301,7 +301,7 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
   }
   const std::size_t bugs = classes[FuzzClass::soundness_bug], contradicted = count_results(results).events_contradicted;
   out += fmt::format(
-      "\n{}: {} consistent, {} confirmed, {} unconfirmed, {}, {} contradicted; {} in {:.1f} s "
+      "\n{}: {} consistent statically with no counterexample, {} confirmed, {} unconfirmed, {}, {} contradicted; {} in {:.1f} s "
       "({:.0f}/s); seed {}\n",
       counted(results.size(), "rule"), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed],
       counted(bugs, "soundness bug"), counted(contradicted, "event analysis", "event analyses"), counted(applications, "application"), run.seconds,

@@ -134,7 +134,7 @@ TEST(Fuzz, SeedCatalogAgainstHandVerdicts) {
 // reported. Every broken variant whose only failing family is that one is
 // then called consistent, and the fuzzer must print SOUNDNESS BUG for it.
 // (Weakening the dangling condition is not caught this way: those rules
-// never apply, which the fuzzer reports as "consistent; never applied".)
+// never apply, which the fuzzer reports as "no counterexample: never applied".)
 TEST(Fuzz, PlantedCheckerBugsAreCaught) {
   const auto maps = catalog_maps();
   for (RuleCondition family : {RuleCondition::incident_arcs, RuleCondition::non_orientation, RuleCondition::cycle}) {
