@@ -219,11 +219,12 @@ int merge_shards(const MergeRequest& o) {
   const Results results = merged_results(catalog, files, o.incomplete, selected);
   // Incomplete: a shard stopped, killed or missing, so some rules may have no result.
   const bool incomplete = files.size() < h.shard.count || std::any_of(files.begin(), files.end(), [](const ShardFile& f) { return !f.finished; });
-  // The run's seconds: the shards' summed (the work done), or a --jobs run's wall clock.
-  double seconds = 0;
+  // The run's seconds: a --jobs run's wall clock, else the shards' summed
+  // time (the work done), which the text says it is.
+  double shard_seconds = 0;
   for (const auto& f : files)
-    if (f.summary.is_object()) seconds += f.summary.value("seconds", 0.0);
-  if (o.wall_seconds) seconds = *o.wall_seconds;
+    if (f.summary.is_object()) shard_seconds += f.summary.value("seconds", 0.0);
+  const double seconds = o.wall_seconds.value_or(shard_seconds);
   fmt::print(stderr, "dartcheck merge: {} of {} {}, {}\n", counted(files.size(), "shard"), h.command, h.catalog, counted(results.size(), "rule"));
 
   if (o.format == "sarif" || o.format == "junit") {
@@ -246,7 +247,9 @@ int merge_shards(const MergeRequest& o) {
   } else if (h.command == "check") {
     print_check(o.format, h.catalog, catalog, results, baseline_mismatches, o.explain);
   } else if (h.command == "fuzz") {
-    print_fuzz(o.format, {h.catalog, parameter<std::uint64_t>(h, "seed"), seconds, selected, incomplete, baseline_mismatches}, results);
+    print_fuzz(o.format,
+               {h.catalog, parameter<std::uint64_t>(h, "seed"), seconds, selected, incomplete, baseline_mismatches, shard_seconds, o.wall_seconds.has_value()},
+               results);
   } else if (h.command == "prove") {
     print_prove(o.format,
                 {h.catalog, parameter<std::size_t>(h, "max_darts"), parameter<unsigned>(h, "rlimit"), seconds, o.explain, baseline_mismatches},

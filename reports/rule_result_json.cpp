@@ -249,7 +249,7 @@ Json fuzz_summary_json(const FuzzRun& run, const std::vector<RuleResult>& result
   std::map<FuzzClass, std::size_t> classes;
   std::size_t applications = 0;
   for (const auto& r : results) ++classes[r.fuzz->verdict], applications += r.fuzz->applications;
-  return Json{{"catalog", run.catalog},
+  Json summary{{"catalog", run.catalog},
               {"seed", run.seed},
               {"seconds", run.seconds},
               {"rules", run.rules},
@@ -262,6 +262,9 @@ Json fuzz_summary_json(const FuzzRun& run, const std::vector<RuleResult>& result
               {"interrupted", run.interrupted},
               {"counts", counts_json(count_results(results))},
               {"baseline_mismatches", run.baseline_mismatches}};
+  summary["wall_clock"] = run.wall_clock;
+  if (run.shard_seconds) summary["shard_seconds"] = *run.shard_seconds;
+  return summary;
 }
 
 Json prove_document(const ProveRun& run, const std::vector<RuleResult>& results) {

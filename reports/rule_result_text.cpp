@@ -300,12 +300,15 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
                                                run.seed)));
   }
   const std::size_t bugs = classes[FuzzClass::soundness_bug], contradicted = count_results(results).events_contradicted;
-  out += fmt::format(
-      "\n{}: {} consistent statically with no counterexample, {} confirmed, {} unconfirmed, {}, {} contradicted; {} in {:.1f} s "
-      "({:.0f}/s); seed {}\n",
-      counted(results.size(), "rule"), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed],
-      counted(bugs, "soundness bug"), counted(contradicted, "event analysis", "event analyses"), counted(applications, "application"), run.seconds,
-      run.seconds > 0 ? double(applications) / run.seconds : 0.0, run.seed);
+  // The time by the wall clock, and the rate by it; a merge's shards'
+  // summed time apart (a --jobs run works more seconds than it lasts).
+  std::string time = fmt::format("{:.1f} s{} ({:.0f}/s)", run.seconds, run.wall_clock ? "" : " summed over the shards",
+                                 run.seconds > 0 ? double(applications) / run.seconds : 0.0);
+  if (run.shard_seconds && run.wall_clock) time += fmt::format(", the shards working {:.1f} s in all", *run.shard_seconds);
+  out += fmt::format("\n{}: {} consistent statically with no counterexample, {} confirmed, {} unconfirmed, {}, {} contradicted; {} in {}; seed {}\n",
+                     counted(results.size(), "rule"), classes[FuzzClass::consistent], classes[FuzzClass::confirmed], classes[FuzzClass::unconfirmed],
+                     counted(bugs, "soundness bug"), counted(contradicted, "event analysis", "event analyses"), counted(applications, "application"),
+                     time, run.seed);
   if (const auto line = mismatch_summary(results); !line.empty()) out += line + "\n";
   return out;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,10 +62,14 @@ std::string prove_text(const ProveRun& run, const std::vector<analysis::RuleResu
 struct FuzzRun {
   std::string catalog;
   std::uint64_t seed = 0;
-  double seconds = 0;
+  double seconds = 0;     // by the wall clock, unless `shard_seconds` is all a merge knows
   std::size_t rules = 0;  // selected; the results hold the finished ones
   bool interrupted = false;
   std::vector<std::string> baseline_mismatches;
+  /// A merge's shards' summed times (the work done, CPU-like); `seconds`
+  /// is then the wall clock of a --jobs run, or this sum for a bare merge.
+  std::optional<double> shard_seconds = std::nullopt;
+  bool wall_clock = true;  // false: `seconds` is the shards' sum, no wall clock is known
 };
 
 /// fuzz's table: each rule's static verdict and fuzz outcome, where its

@@ -4,7 +4,7 @@
 # the unsharded run's output. Checked here on the seed catalog for check,
 # fuzz and prove, with 4 shards run by GNU parallel (scripts/campaign/
 # parallel.sh) and with --jobs 2: the JSON documents are equal once the
-# wall-clock fields ("seconds", "static_ms") are dropped, and SARIF equal
+# timing fields ("seconds", "static_ms", "wall_clock", "shard_seconds") are dropped, and SARIF equal
 # byte for byte; events (3 shards) equal byte for byte as text and JSON;
 # recombine on two meshes, one job each, gathered. Then merge's refusals: a missing, duplicated, unfinished
 # or foreign shard, and a catalog changed since the shards ran.
@@ -19,7 +19,7 @@ same_json() {  # label a b
   if ! python3 - "$2" "$3" <<'PY'
 import json, sys
 def norm(o):
-    if isinstance(o, dict): return {k: norm(v) for k, v in o.items() if k not in ("seconds", "static_ms")}
+    if isinstance(o, dict): return {k: norm(v) for k, v in o.items() if k not in ("seconds", "static_ms", "wall_clock", "shard_seconds")}
     if isinstance(o, list): return [norm(x) for x in o]
     return o
 a, b = (norm(json.load(open(p))) for p in sys.argv[1:3])

@@ -27,7 +27,7 @@ for run in "check" "fuzz --runs 300 --seed 7"; do
   python3 - "$WORK/$name.single.json" "$WORK/$name.merged.json" <<'PY' || { echo "FAIL: $name: the merged Slurm run differs from the single run" >&2; fail=1; }
 import json, sys
 def norm(o):
-    if isinstance(o, dict): return {k: norm(v) for k, v in o.items() if k not in ("seconds", "static_ms")}
+    if isinstance(o, dict): return {k: norm(v) for k, v in o.items() if k not in ("seconds", "static_ms", "wall_clock", "shard_seconds")}
     if isinstance(o, list): return [norm(x) for x in o]
     return o
 a, b = (norm(json.load(open(p))) for p in sys.argv[1:3])
