@@ -8,12 +8,16 @@ namespace dartcheck::analysis {
 
 StageProgress::StageProgress(std::size_t units, bool terminal) : units_(units), terminal_(terminal) {}
 
-StageProgress::~StageProgress() {
-  if (terminal_ && !terminal().quiet) fmt::print(stderr, "\r\033[K");
+StageProgress::~StageProgress() { clear(); }
+
+void StageProgress::clear() {
+  if (terminal_ && drawn_ && !terminal().quiet) fmt::print(stderr, "\r\033[K");
+  drawn_ = false;
 }
 
 void StageProgress::start(std::size_t k, const std::string& what) {
   if (terminal_ && !terminal().quiet) fmt::print(stderr, "\r\033[K[{}/{}] {}", k + 1, units_, what);
+  drawn_ = true;
 }
 
 void StageProgress::finished(std::size_t k, const std::string& line) {

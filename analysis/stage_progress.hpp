@@ -16,6 +16,9 @@ class StageProgress {
   /// `units` to go through; `terminal`: whether stderr is one.
   StageProgress(std::size_t units, bool terminal);
   ~StageProgress();  // clears the status line
+  /// Clears the status line (before anything else is printed: a result,
+  /// the final table); the next start() draws it again.
+  void clear();
   StageProgress(const StageProgress&) = delete;
   StageProgress& operator=(const StageProgress&) = delete;
 
@@ -27,6 +30,7 @@ class StageProgress {
  private:
   std::size_t units_;
   bool terminal_;
+  bool drawn_ = false;  // a status line is on the terminal
 };
 
 /// A rule's proof in one line: "rule: 5 agree, 0 disagree, 1 unresolved,

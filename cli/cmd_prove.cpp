@@ -51,19 +51,34 @@ int prove(const ProveCommand& c) {
   std::vector<RuleResult> results;
   const auto rules = run.rules();
   StageProgress progress(rules.size(), isatty(fileno(stderr)) != 0 && !terminal().quiet);
+  // The text streams: each rule's part as it finishes, the totals at the end.
+  const bool stream = c.format == "text" && !run.writes_lines() && !terminal().quiet;
+  const reports::ProveRun layout{c.catalog, o.max_darts, o.rlimit, 0, c.explain, {}};
   for (std::size_t k = 0; k < rules.size() && !interrupted(); ++k) {  // a rule's queries finish; the next ones do not start
     progress.start(
         k, fmt::format("{}: asking Z3 for a host up to {} darts", rules[k]->rule.name(), rules[k]->words.scheme ? o.scheme_darts : o.max_darts));
     results.push_back(analyse_static(run.catalog(), *rules[k], 0, {}, run.source()));
     run_proof(results.back(), o, c.out, c.catalog);
-    if (results.back().proof) progress.finished(k, proof_line(*results.back().proof));
+    if (results.back().proof) {
+      progress.finished(k, proof_line(*results.back().proof));
+      if (stream) {
+        progress.clear();
+        fmt::print("{}", reports::prove_rule_text(layout, results.back()));
+        std::fflush(stdout);
+      }
+    }
     run.finished(results.back());
   }
+  progress.clear();
   if (!results.empty() && results.back().proof && results.back().proof->interrupted)
     fmt::print(stderr, "interrupted during the solver queries of {}: the queries it did not finish say 'interrupted'\n",
                results.back().entry->rule.name());
   const int status = run.finish(results, rules.size());
-  if (!run.writes_lines()) print_prove(c.format, {c.catalog, o.max_darts, o.rlimit, run.seconds(), c.explain, run.baseline_mismatches()}, results);
+  const reports::ProveRun done{c.catalog, o.max_darts, o.rlimit, run.seconds(), c.explain, run.baseline_mismatches()};
+  if (stream)
+    fmt::print("{}", reports::prove_totals_text(done, results));
+  else if (!run.writes_lines())
+    print_prove(c.format, done, results);
   return status;
 }
 

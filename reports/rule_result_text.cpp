@@ -119,53 +119,57 @@ std::string potential_events_text(const RuleResult& r) {
 
 }  // namespace
 
-std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& results) {
+std::string prove_rule_text(const ProveRun& run, const RuleResult& result) {
+  const auto& p = *result.proof;
+  const std::string name = fmt::format("{} ({}):", printable(p.rule), printable(p.model));
+  const std::string embeddings =
+      (p.embedding ? embedding_proof_text(*p.embedding, result.embedding_replays) : std::string()) + potential_events_text(result);
+  if (!p.out_of_scope.empty()) return hanging(name, fmt::format("out of the solver's scope: {}", p.out_of_scope), 2) + embeddings;
+  std::string out = hanging(
+      name, fmt::format("static {}; {:.2f} s", p.static_failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(p.static_failures, " ")), p.seconds),
+      2);
+  for (std::size_t i = 0; i < p.constraints.size(); ++i) {
+    const auto& cp = p.constraints[i];
+    // The theorem's answer, the maps' answer and the agreement: padded
+    // columns when the row fits the terminal, else each field where it
+    // fits, the next lines indented under the first field.
+    const std::string theorem = cp.theorem ? answer_text(*cp.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)";
+    const std::string head = fmt::format("  {:<11} static {:<5}  ", cp.constraint.name(), cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-");
+    const std::string row = fmt::format("theorem: {:<36}  maps: {:<32}  {}", theorem, answer_text(cp.model), proofs::agreement_name(cp.agreement));
+    out += columns(head) + columns(row) <= terminal().width
+               ? head + row + "\n"
+               : fields_under(head, {fmt::format("theorem: {}", theorem), fmt::format("maps: {}", answer_text(cp.model)),
+                                     std::string(proofs::agreement_name(cp.agreement))});
+    if (!cp.note.empty()) out += hanging("", cp.note, 14);
+    if (cp.theorem && cp.theorem->status == proofs::Status::counterexample && run.explain)
+      out += hanging(fmt::format("  {:<11} theorem host: ", ""), arcs_text(cp.theorem->host_graph), 28) +
+             hanging(fmt::format("  {:<11} H: ", ""), arcs_text(cp.theorem->result_graph), 17);
+    if (!result.proof_replays[i].empty()) out += fmt::format("  {:<11} replay: {}\n", "", printable(result.proof_replays[i]));
+  }
+  return out + embeddings;
+}
+
+std::string prove_totals_text(const ProveRun& run, const std::vector<RuleResult>& results) {
   using proofs::Agreement;
-  std::string out;
   std::size_t counts[4] = {}, scoped = 0;
   for (const auto& result : results) {
     const auto& p = *result.proof;
     scoped += p.out_of_scope.empty();
     for (auto a : {Agreement::agree, Agreement::disagree, Agreement::unresolved, Agreement::not_compared}) counts[static_cast<int>(a)] += p.count(a);
-    const std::string name = fmt::format("{} ({}):", printable(p.rule), printable(p.model));
-    const std::string embeddings =
-        (p.embedding ? embedding_proof_text(*p.embedding, result.embedding_replays) : std::string()) + potential_events_text(result);
-    if (!p.out_of_scope.empty()) {
-      out += hanging(name, fmt::format("out of the solver's scope: {}", p.out_of_scope), 2) + embeddings;
-      continue;
-    }
-    out += hanging(name,
-                   fmt::format("static {}; {:.2f} s",
-                               p.static_failures.empty() ? "consistent" : fmt::format("fails {}", fmt::join(p.static_failures, " ")), p.seconds),
-                   2);
-    for (std::size_t i = 0; i < p.constraints.size(); ++i) {
-      const auto& cp = p.constraints[i];
-      // The theorem's answer, the maps' answer and the agreement: padded
-      // columns when the row fits the terminal, else each field where it
-      // fits, the next lines indented under the first field.
-      const std::string theorem = cp.theorem ? answer_text(*cp.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)";
-      const std::string head =
-          fmt::format("  {:<11} static {:<5}  ", cp.constraint.name(), cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-");
-      const std::string row = fmt::format("theorem: {:<36}  maps: {:<32}  {}", theorem, answer_text(cp.model), proofs::agreement_name(cp.agreement));
-      out += columns(head) + columns(row) <= terminal().width
-                 ? head + row + "\n"
-                 : fields_under(head, {fmt::format("theorem: {}", theorem), fmt::format("maps: {}", answer_text(cp.model)),
-                                       std::string(proofs::agreement_name(cp.agreement))});
-      if (!cp.note.empty()) out += hanging("", cp.note, 14);
-      if (cp.theorem && cp.theorem->status == proofs::Status::counterexample && run.explain)
-        out += hanging(fmt::format("  {:<11} theorem host: ", ""), arcs_text(cp.theorem->host_graph), 28) +
-               hanging(fmt::format("  {:<11} H: ", ""), arcs_text(cp.theorem->result_graph), 17);
-      if (!result.proof_replays[i].empty()) out += fmt::format("  {:<11} replay: {}\n", "", printable(result.proof_replays[i]));
-    }
-    out += embeddings;
   }
-  out += fmt::format(
+  std::string out = fmt::format(
       "\n{} ({} in the solver's scope); {} agree, {} disagree, {} unresolved, {} not compared; up to {} darts, rlimit {}; "
       "{:.1f} s\n",
       counted(results.size(), "rule"), scoped, counted(counts[0], "constraint"), counts[1], counts[2], counts[3], run.max_darts, run.rlimit,
       run.seconds);
   if (const auto line = mismatch_summary(results); !line.empty()) out += line + "\n";
   return out;
+}
+
+std::string prove_text(const ProveRun& run, const std::vector<RuleResult>& results) {
+  std::string out;
+  for (const auto& result : results) out += prove_rule_text(run, result);
+  return out + prove_totals_text(run, results);
 }
 
 std::vector<std::string> mismatch_lines(const std::vector<RuleResult>& results, bool recording) {

@@ -57,6 +57,10 @@ struct ProveRun {
 /// prove's text: per rule and constraint, the static verdict, the theorem
 /// class's and the model's answers and their agreement, then the totals.
 std::string prove_text(const ProveRun& run, const std::vector<analysis::RuleResult>& results);
+/// One rule's part of prove's text, and the totals that end it: `prove`
+/// prints each rule's part as it finishes (prove_text is their sum).
+std::string prove_rule_text(const ProveRun& run, const analysis::RuleResult& result);
+std::string prove_totals_text(const ProveRun& run, const std::vector<analysis::RuleResult>& results);
 
 /// A fuzz run as its renderers see it.
 struct FuzzRun {
