@@ -1,6 +1,10 @@
 // dartcheck recombine: tetrahedra -> hexahedra by query-modify (001 Sec.
 // 7.1), the run querymodify/recombined_mesh does, rendered by reports/.
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -8,10 +12,48 @@
 #include "cli/commands.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
+#include "core/terminal.hpp"
 #include "querymodify/recombined_mesh.hpp"
 #include "reports/querymodify_report.hpp"
 
 namespace dartcheck::cli {
+
+namespace {
+
+// On a terminal, a status line naming the stage at work and, in the
+// candidate search, how many vertices are done (at most 5 redraws a
+// second); cleared before the report. Nothing off a terminal or under -q.
+class StatusLine {
+ public:
+  StatusLine() : shown_(isatty(fileno(stderr)) != 0 && !terminal().quiet) {}
+  ~StatusLine() { clear(); }
+  StatusLine(const StatusLine&) = delete;
+  StatusLine& operator=(const StatusLine&) = delete;
+
+  querymodify::Progress progress() {
+    if (!shown_) return {};
+    return [this](std::string_view stage, std::size_t done, std::size_t total) {
+      const auto now = std::chrono::steady_clock::now();
+      if (done > 0 && now - last_ < std::chrono::milliseconds(200)) return;
+      last_ = now;
+      if (total > 0)
+        fmt::print(stderr, "\r\033[Krecombine: {}: vertex {} of {} ({:.0f}%)", stage, done, total, 100.0 * double(done) / double(total));
+      else
+        fmt::print(stderr, "\r\033[Krecombine: {}", stage);
+      drawn_ = true;
+    };
+  }
+  void clear() {
+    if (drawn_) fmt::print(stderr, "\r\033[K");
+    drawn_ = false;
+  }
+
+ private:
+  bool shown_, drawn_ = false;
+  std::chrono::steady_clock::time_point last_{};
+};
+
+}  // namespace
 
 int recombine(const RecombineOptions& o) {
   // Before the work, as the output file.
@@ -20,7 +62,9 @@ int recombine(const RecombineOptions& o) {
   if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".mesh")
     throw InputError("<command line>", 0, 0, fmt::format("-o: expected a medit .mesh file, got '{}'", o.output));
   if (!o.output.empty()) check_writable(o.output);
-  const auto run = querymodify::recombine_mesh(o.mesh, o.strategy, o.min_quality, o.output, o.search, o.conforming, o.cells);
+  StatusLine status_line;
+  const auto run = querymodify::recombine_mesh(o.mesh, o.strategy, o.min_quality, o.output, o.search, o.conforming, o.cells, status_line.progress());
+  status_line.clear();
   if (!run.input_valid) {
     fmt::print(stderr, "BUG: the map of {} is not a valid open 3-O-map\n", o.mesh);
     return soundness_bug;

@@ -96,8 +96,11 @@ class Search {
     for (std::size_t k = 0; k < candidate_tets().size(); ++k) candidate_index_[candidate_tets()[k]] = static_cast<int>(k);
   }
 
-  HexCandidates run() {
-    for (std::uint32_t v0 = 0; v0 < vertices_; ++v0) from_corner(v0);
+  HexCandidates run(const Progress& progress) {
+    for (std::uint32_t v0 = 0; v0 < vertices_; ++v0) {
+      if (progress && v0 % 16384 == 0) progress("searching hex candidates", v0, vertices_);
+      from_corner(v0);
+    }
     return std::move(out_);
   }
 
@@ -306,8 +309,10 @@ class Search {
 
 }  // namespace
 
-HexCandidates find_hex_candidates(const std::vector<Tet>& tets, const std::vector<std::array<double, 3>>* points, double min_quality) {
-  return Search(tets, points, min_quality).run();
+HexCandidates find_hex_candidates(const std::vector<Tet>& tets, const std::vector<std::array<double, 3>>* points, double min_quality,
+                                  const Progress& progress) {
+  if (progress) progress("indexing the tetrahedra", 0, 0);
+  return Search(tets, points, min_quality).run(progress);
 }
 
 }  // namespace dartcheck::querymodify

@@ -33,6 +33,8 @@
 #include <span>
 #include <vector>
 
+#include "querymodify/progress.hpp"
+
 namespace dartcheck::querymodify {
 
 /// One candidate: its tetrahedra (sorted mesh indices, in the pool of
@@ -68,7 +70,8 @@ struct HexCandidates {
 /// readings of a candidate share its corner 0, so each is judged as soon
 /// as its corner 0 is done). O(V + T) memory besides the kept candidates,
 /// one pass over the vertices.
+/// `progress` hears how many corner-0 vertices are done, every 16,384.
 HexCandidates find_hex_candidates(const std::vector<std::array<std::uint32_t, 4>>& tets, const std::vector<std::array<double, 3>>* points = nullptr,
-                                  double min_quality = -std::numeric_limits<double>::infinity());
+                                  double min_quality = -std::numeric_limits<double>::infinity(), const Progress& progress = {});
 
 }  // namespace dartcheck::querymodify

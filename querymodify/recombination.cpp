@@ -157,9 +157,10 @@ std::vector<Chosen> by_words(const TetMap& mesh, const std::vector<HexQuery>& qu
 // with Contacts::conforming, meets one in more than a vertex, an edge or a
 // face of both).
 std::vector<Chosen> by_vertices(const TetMap& mesh, const std::vector<std::array<double, 3>>* points, double min_quality, Contacts contacts,
-                                Recombination& r) {
+                                Recombination& r, const Progress& progress) {
   auto t = Clock::now();
-  HexCandidates found = find_hex_candidates(mesh.tets, points, min_quality);
+  HexCandidates found = find_hex_candidates(mesh.tets, points, min_quality, progress);
+  if (progress) progress("selecting hexes", 0, 0);
   r.readings = found.readings;
   r.candidates = found.found;
   r.match_seconds = since(t);
@@ -275,14 +276,15 @@ void add_quads(const Corners& c, const Faces& faces, std::vector<std::array<std:
 }  // namespace
 
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy, const std::vector<std::array<double, 3>>* points,
-                        double min_quality, Search search, Contacts contacts, Cells cells) {
+                        double min_quality, Search search, Contacts contacts, Cells cells, const Progress& progress) {
   Recombination r;
   r.search = strategy == Strategy::greedy ? Search::words : search;
   r.contacts = contacts;
   if (contacts == Contacts::conforming && r.search == Search::words)
     throw std::invalid_argument("recombine: conforming contacts need the global strategy's vertex search");
-  const std::vector<Chosen> chosen =
-      r.search == Search::words ? by_words(mesh, queries, strategy, points, min_quality, r) : by_vertices(mesh, points, min_quality, contacts, r);
+  if (progress && r.search == Search::words) progress("matching the hex queries' words", 0, 0);
+  const std::vector<Chosen> chosen = r.search == Search::words ? by_words(mesh, queries, strategy, points, min_quality, r)
+                                                               : by_vertices(mesh, points, min_quality, contacts, r, progress);
   std::vector<bool> used(mesh.tets.size(), false);
   for (const auto& h : chosen) {
     r.hex_tets.push_back(h.tets);
@@ -307,6 +309,7 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   // Pyramids on the quads so far that face two free tetrahedra with one
   // apex.
   auto pyramids_on_quads = [&](const std::vector<std::array<std::uint32_t, 4>>& on) {
+    if (progress) progress("selecting pyramids", 0, 0);
     const auto t = Clock::now();
     const std::size_t before = r.pyramids.cells.size();
     select_cells(find_pyramid_candidates(mesh.tets, faces, used, on, points, min_quality), pyramid_shape(), used, points, conforming, r.pyramids);
@@ -330,6 +333,7 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   if (cells.pyramids) pyramids_on_quads(quads);
   std::vector<std::array<std::uint32_t, 4>> prism_quads;
   if (cells.prisms) {
+    if (progress) progress("selecting prisms", 0, 0);
     const auto t = Clock::now();
     select_cells(find_prism_candidates(mesh.tets, faces, used, points, min_quality), prism_shape(), used, points, conforming, r.prisms);
     for (auto& c : r.prisms.cells) {
@@ -348,6 +352,7 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   r.quads_facing_triangles = quads_facing_triangles(quads, faces);
   for (std::size_t k = 0; k < used.size(); ++k)
     if (!used[k]) r.remaining_tets.push_back(k);
+  if (progress) progress("merging the cells' tetrahedra", 0, 0);
   const auto t = Clock::now();
   // Merge the selected hexes; renumberings shift later hexes' darts.
   std::vector<Dart> where(mesh.map.size());

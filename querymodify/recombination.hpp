@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "querymodify/progress.hpp"
 #include "querymodify/annotation.hpp"
 #include "querymodify/cell_search.hpp"
 #include "querymodify/hex_quality.hpp"
@@ -108,8 +109,9 @@ struct Recombination {
 /// after the hexes (Cells), each pass by the global order (best quality
 /// first, above `min_quality`) on the tetrahedra still free; with
 /// Contacts::conforming each cell conforms to every cell selected before.
+/// `progress` hears each stage and the vertex search's count.
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy,
                         const std::vector<std::array<double, 3>>* points = nullptr, double min_quality = 0.0, Search search = Search::vertices,
-                        Contacts contacts = Contacts::any, Cells cells = {});
+                        Contacts contacts = Contacts::any, Cells cells = {}, const Progress& progress = {});
 
 }  // namespace dartcheck::querymodify

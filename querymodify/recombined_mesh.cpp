@@ -82,7 +82,10 @@ TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
 }
 
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
-                            const std::string& search, bool conforming, const std::string& cells) {
+                            const std::string& search, bool conforming, const std::string& cells, const Progress& progress) {
+  const auto stage = [&](std::string_view what) {
+    if (progress) progress(what, 0, 0);
+  };
   RecombineRun run;
   run.mesh = mesh;
   run.strategy = strategy;
@@ -94,12 +97,14 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   run.cells = cells;
   const auto start = Clock::now();
   auto t = Clock::now();
+  stage("reading the mesh");
   TetInput in = load_tet_input(mesh);
   run.read_seconds = since(t);
   run.points = in.mesh.points.size();
   run.tets = in.mesh.tets.size();
   run.input_darts = in.map.map.size();
   t = Clock::now();
+  stage("checking the input map");
   run.input_valid = check_3map(in.map.map).valid();
   run.input_check_seconds = since(t);
   if (!run.input_valid) return run;
@@ -110,14 +115,16 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   run.queries = queries.size();
   run.query_seconds = since(t);
   run.result = recombine(in.map, queries, chosen, &in.mesh.points, min_quality, searched, conforming ? Contacts::conforming : Contacts::any,
-                         made);
+                         made, progress);
   run.search = run.result.search == Search::words ? "words" : "vertices";
   t = Clock::now();
+  stage("checking the recombined map");
   run.valid = check_3map(in.map.map).valid();
   run.output_check_seconds = since(t);
   run.darts = in.map.map.size();
   run.expected_darts = 36 * run.result.hexes + 24 * run.result.prisms.cells.size() + 18 * run.result.pyramids.cells.size() + 12 * run.result.tets;
   if (!output.empty()) {
+    stage("writing the mesh");
     std::ostringstream text;
     write_medit(text, recombined_mesh(in.mesh, run.result));
     write_file(output, text.str());

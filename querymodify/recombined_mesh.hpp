@@ -47,8 +47,10 @@ struct RecombineRun {
 /// `conforming` (hex_contacts.hpp) needs the global strategy's vertex
 /// search; InputError otherwise.
 /// `cells` (parse_cells) adds prisms and pyramids after the hexes.
+/// `progress` hears each stage (recombination.hpp).
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
-                            const std::string& search = "vertices", bool conforming = false, const std::string& cells = "hex");
+                            const std::string& search = "vertices", bool conforming = false, const std::string& cells = "hex",
+                            const Progress& progress = {});
 
 /// The hexes, prisms and pyramids of `r` (medit's corner orders) and the
 /// tetrahedra it left, on `input`'s points.
