@@ -13,6 +13,17 @@ namespace dartcheck::analysis {
 
 using namespace events;
 
+void check_orbit_syntax(const std::vector<std::string>& texts) {
+  if (texts.size() == 1 && texts[0] == "all") return;
+  for (const std::string& t : texts) {
+    try {
+      orbit_kind_entries(t);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("<command line>", 0, 0, fmt::format("--orbit: {}", e.what()));
+    }
+  }
+}
+
 std::vector<OrbitKind> requested_orbit_kinds(const std::vector<std::string>& texts, const Model& model) {
   if (texts.empty() || (texts.size() == 1 && texts[0] == "all")) return all_orbit_kinds(model);
   std::vector<OrbitKind> out;

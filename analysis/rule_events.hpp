@@ -46,6 +46,9 @@ struct RuleEvents {
 /// The orbit types --orbit names ("<0,1>", repeated; none or "all": every
 /// orbit type of the model); InputError naming --orbit otherwise.
 std::vector<events::OrbitKind> requested_orbit_kinds(const std::vector<std::string>& texts, const Model& model);
+/// The syntax of every --orbit text, whatever the model: InputError naming
+/// --orbit, before any rule is analysed.
+void check_orbit_syntax(const std::vector<std::string>& texts);
 
 /// Applies `rule` to a copy of `g` (the map --map `map_name` names) at
 /// `hooks`, with H's validity; or why it did not apply. `g` must be a valid map of the rule's model

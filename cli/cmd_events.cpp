@@ -38,11 +38,27 @@ int events_command(const EventsOptions& o) {
   if (!o.map.empty() && o.rule.empty()) throw InputError("<command line>", 0, 0, "--map needs --rule: an event log is for one rule");
   if (o.map.empty() && (!o.hooks.empty() || o.dynamic))
     throw InputError("<command line>", 0, 0, "--hook and --dynamic need --map: they concern one application");
+  // --orbit: its syntax, and that it fits some rule's model, once before
+  // any rule (a shard may hold only rules it does not fit); a rule whose
+  // model lacks one of its dimensions is skipped.
+  check_orbit_syntax(o.orbits);
+  if (o.rule.empty() && shard.whole() && !catalog.rules.empty()) {
+    std::optional<std::string> misfit;
+    for (const CatalogRule& rule : catalog.rules) {
+      try {
+        requested_orbit_kinds(o.orbits, rule.rule.model());
+        misfit.reset();
+        break;
+      } catch (const InputError& e) {
+        if (!misfit) misfit = e.what();
+      }
+    }
+    if (misfit) throw InputError("<command line>", 0, 0, misfit->substr(misfit->find("--orbit")));
+  }
   std::vector<std::string> hooks;
   for (Dart h : o.hooks) hooks.push_back(std::to_string(h));
   campaign::EventsOutput out(o.format, o.catalog, o.rule, shard, {{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}});
   int status = ok;
-  std::optional<std::string> first_orbit_error;
   std::size_t analysed = 0;
   analysis::catch_interrupts();  // Ctrl-C: the rules analysed so far are printed, exit 130
   for (const CatalogRule& rule : catalog.rules) {
@@ -61,7 +77,6 @@ int events_command(const EventsOptions& o) {
       kinds = requested_orbit_kinds(o.orbits, rule.rule.model());
     } catch (const InputError& e) {
       if (!o.rule.empty()) throw;
-      if (!first_orbit_error) first_orbit_error = e.what();
       out.skipped(rule, e.what());
       continue;
     }
@@ -72,9 +87,6 @@ int events_command(const EventsOptions& o) {
     status = std::max(status, events_status(r));
     out.analysed(r);
   }
-  // A shard may hold only rules that --orbit does not fit: not an error there.
-  if (analysed == 0 && first_orbit_error && shard.whole())
-    throw InputError("<command line>", 0, 0, first_orbit_error->substr(first_orbit_error->find("--orbit")));
   if (analysis::interrupted()) {
     fmt::print(stderr, "interrupted: {} analysed; the output holds them\n", counted(analysed, "rule"));
     status = analysis::interrupted_exit;

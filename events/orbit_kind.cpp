@@ -29,9 +29,14 @@ std::string OrbitKind::str() const {
   return out + '>';
 }
 
-OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
-  const std::vector<OrbitEntry> entries = orbit_entries(text);  // std::invalid_argument with the byte
+std::vector<OrbitEntry> orbit_kind_entries(std::string_view text) {
+  std::vector<OrbitEntry> entries = orbit_entries(text);  // std::invalid_argument with the byte
   if (entries.empty()) throw std::invalid_argument(fmt::format("orbit type '{}' is empty: give at least one dimension", text));
+  return entries;
+}
+
+OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
+  const std::vector<OrbitEntry> entries = orbit_kind_entries(text);
   OrbitKind kind;
   for (const OrbitEntry& e : entries) {
     const std::string& entry = e.text;

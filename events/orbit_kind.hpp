@@ -10,6 +10,7 @@
 
 #include "core/model.hpp"
 #include "core/orbit.hpp"
+#include "core/orbit_notation.hpp"
 
 namespace dartcheck::events {
 
@@ -29,6 +30,12 @@ struct OrbitKind {
 /// each a dimension of the model (G-maps) or a word of one-digit
 /// dimensions (O-maps). Throws std::invalid_argument naming the entry.
 OrbitKind parse_orbit_kind(std::string_view text, const Model& model);
+
+/// The entries of an orbit type, whatever the model: the syntax that
+/// parse_orbit_kind checks first (std::invalid_argument naming the byte,
+/// or an empty type), so that a command refuses a malformed --orbit once,
+/// before any work, and skips only the rules whose model it does not fit.
+std::vector<OrbitEntry> orbit_kind_entries(std::string_view text);
 
 /// The orbit types `events` analyses by default: every non-empty subset
 /// of D for a G-map (004 Table 1 lists them for n = 2); for an O-map the
