@@ -43,12 +43,18 @@ CLI::Validator darts() { return count_option(0, no_dart - 1); }
 // Bounds past which a search only runs out of time: as prove's --max-darts.
 CLI::Validator host_darts() { return count_option(0, 256); }
 
+// --format, one of `choices` (CLI11 names them on a mistake).
+void add_format(CLI::App* command, std::string& format, const std::vector<std::string>& choices, const std::string& help) {
+  command->add_option("--format", format, help)->capture_default_str()->check(CLI::IsMember(choices));
+}
+
 void add_validate(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<ValidateOptions>();
   auto* v = app.add_subcommand("validate-map", "Check a map against its model: cells and every violation");
   v->add_option("map", o->target, fmt::format("a map file (.yaml, .jba, .off, .obj) or a shape ({})", shape_usage()))->required();
   v->add_option("--model", o->model, "model for meshes and shapes (2-gmap, 3-gmap, 2-omap, ...)")->capture_default_str();
   v->add_option("--limit", o->limit, "violations to print (0 = all)")->capture_default_str()->transform(counts());
+  add_format(v, o->format, {"text", "json"}, "text, or json (docs/schema/validate-map.schema.json)");
   commands.push_back({v, [o] { return validate_map(*o); }});
 }
 
@@ -74,11 +80,6 @@ void add_run(CLI::App& app, Commands& commands) {
   auto* r = app.add_subcommand("run", "Build every catalog map and check every rule example against its expected outcome");
   r->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   commands.push_back({r, [o] { return run(*o); }});
-}
-
-// --format, one of `choices` (CLI11 names them on a mistake).
-void add_format(CLI::App* command, std::string& format, const std::vector<std::string>& choices, const std::string& help) {
-  command->add_option("--format", format, help)->capture_default_str()->check(CLI::IsMember(choices));
 }
 
 // --shard K/N, as check, fuzz, prove, report and events take it.

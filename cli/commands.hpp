@@ -22,6 +22,7 @@ struct ValidateOptions {
   std::string target;
   std::string model = "2-gmap";
   std::size_t limit = 50;
+  std::string format = "text";
 };
 int validate_map(const ValidateOptions& o);
 

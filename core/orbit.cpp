@@ -104,6 +104,21 @@ long long CellCounts::euler() const {
   return chi;
 }
 
+std::vector<LinkCount> count_links(const Map& map) {
+  std::vector<LinkCount> out;
+  for (Dim i : map.model().dims) {
+    LinkCount c{i, 0, 0};
+    for (Dart d = 0; d < map.size(); ++d) {
+      const Dart e = map.link(i, d);
+      if (e == no_dart) continue;
+      ++c.arcs;
+      c.loops += e == d;
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
 CellCounts count_cells(const Map& map) {
   CellCounts c;
   OrbitWalker walker(map);

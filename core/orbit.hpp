@@ -89,4 +89,12 @@ struct CellCounts {
 
 CellCounts count_cells(const Map& map);
 
+/// The links of one dimension: arcs (darts with a partner) and loops.
+struct LinkCount {
+  Dim dim = 0;
+  std::size_t arcs = 0, loops = 0;
+};
+
+std::vector<LinkCount> count_links(const Map& map);
+
 }  // namespace dartcheck

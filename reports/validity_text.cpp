@@ -23,16 +23,7 @@ std::string cells_sentence(const Map& map) {
 
 void print_validity(std::FILE* out, const Map& map, const ValidityReport& r, std::size_t limit) {
   std::string links;
-  for (Dim i : map.model().dims) {
-    std::size_t loops = 0, arcs = 0;
-    for (Dart d = 0; d < map.size(); ++d) {
-      const Dart e = map.link(i, d);
-      if (e == no_dart) continue;
-      ++arcs;
-      loops += e == d;
-    }
-    links += fmt::format("{}{}: {} arcs ({} loops)", links.empty() ? "" : ", ", i, arcs, loops);
-  }
+  for (const LinkCount& c : count_links(map)) links += fmt::format("{}{}: {} arcs ({} loops)", links.empty() ? "" : ", ", c.dim, c.arcs, c.loops);
   fmt::print(out, "links: {}\n", links);
   if (r.valid()) {
     fmt::print(out, "cells: {}\n", cells_sentence(map));

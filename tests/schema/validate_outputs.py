@@ -179,6 +179,10 @@ check_json(["events", "catalogs/event-operations.yaml", "--rule", "sew2", "--map
 check_json(["events", "catalogs/seed-operations.yaml", "--rule", "insert-vertex-sewn-edge-one-side", "--map", "cube", "--hook", "0", "--format", "json"], 1,
            "https://dartcheck.invalid/schema/events.schema.json")
 check_json(["query", "tests/data/cube-5-tets.mesh", "--hex", "--format", "json"], 0, "https://dartcheck.invalid/schema/query.schema.json")
+VALIDATE = "https://dartcheck.invalid/schema/validate-map.schema.json"
+check_json(["validate-map", "cube", "--format", "json"], 0, VALIDATE)
+check_json(["validate-map", "tests/data/corrupt-square.yaml", "--format", "json"], 1, VALIDATE)
+check_json(["validate-map", "../shared/jerboa-samples/cube.jba", "--format", "json"], 0, VALIDATE)
 check_json(["recombine", "tests/data/cube-5-tets.mesh", "--strategy", "greedy", "--format", "json"], 0, "https://dartcheck.invalid/schema/recombine.schema.json")
 check_json(["recombine", "tests/data/prism-3-tets.mesh", "--cells", "hex,prism,pyramid", "--format", "json"], 0, "https://dartcheck.invalid/schema/recombine.schema.json")
 check_json(["infer", "--before", "polygon:3", "--after", "polygon:6", "--orbit", "<0,1,2>", "--kappa", "tests/data/kappa-edge-split.yaml",
