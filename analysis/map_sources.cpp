@@ -1,5 +1,6 @@
 #include "analysis/map_sources.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -47,6 +48,14 @@ Map build_source(const MapSource& s) {
   } catch (const BuildError& e) {
     throw InputError(s.location.file, s.location.line, s.location.column, fmt::format("map '{}': {}", s.name, e.what()));
   }
+}
+
+std::vector<Map> confirmation_maps(const Catalog& catalog, std::size_t confirm_darts) {
+  std::vector<Map> maps;
+  const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.words.scheme; });
+  if (confirm_darts > 0 && schemes)
+    for (const auto& source : catalog.maps) maps.push_back(build_source(source));
+  return maps;
 }
 
 Map resolve_map(const std::string& target, const Model& model, const Catalog* catalog) {

@@ -21,6 +21,11 @@ const CatalogRule& require_rule(const Catalog& catalog, const std::string& file,
 /// position in the catalog.
 Map build_source(const MapSource& source);
 
+/// The maps a rule scheme's model-level confirmation runs on (check and
+/// report): the catalog's maps when it has a scheme, none otherwise or
+/// when `confirm_darts` is 0 (no confirmation).
+std::vector<Map> confirmation_maps(const Catalog& catalog, std::size_t confirm_darts);
+
 /// A map named by TARGET: a name in `catalog` (if given), a .yaml/.yml map
 /// file, an .off/.obj mesh, or a shape spec such as grid:3x4. `model` is
 /// used for meshes and shapes. Throws InputError.

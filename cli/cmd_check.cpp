@@ -30,13 +30,6 @@ using namespace analysis;
 
 namespace {
 
-// The catalog's maps of the rules' models: a scheme's confirmation runs on them.
-std::vector<Map> catalog_maps(const Catalog& catalog) {
-  std::vector<Map> maps;
-  for (const auto& source : catalog.maps) maps.push_back(build_source(source));
-  return maps;
-}
-
 void write_baseline_file(const std::string& path, const std::string& catalog_file, const Catalog& catalog, const std::vector<RuleResult>& results) {
   std::vector<BaselineEntry> entries;
   for (const auto& r : results) {
@@ -66,8 +59,7 @@ int check(const CheckOptions& o) {
     throw InputError("<command line>", 0, 0, "--write-baseline: a baseline records every rule, not a shard's");
   run.open_lines({{"confirm_darts", o.confirm_darts}, {"solver", o.solver}});
   const Catalog& catalog = run.catalog();
-  const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.words.scheme; });
-  const std::vector<Map> maps = o.confirm_darts > 0 && schemes ? catalog_maps(catalog) : std::vector<Map>{};
+  const std::vector<Map> maps = confirmation_maps(catalog, o.confirm_darts);
   std::vector<RuleResult> results;
   const auto rules = run.rules();
   for (const CatalogRule* entry : rules) {

@@ -22,6 +22,7 @@
 #include "campaign/jobs.hpp"
 #include "campaign/rule_run.hpp"
 #include "cli/options.hpp"
+#include "analysis/map_sources.hpp"
 #include "reports/run_output.hpp"
 #include "core/terminal.hpp"
 #include "core/wording.hpp"
@@ -57,7 +58,9 @@ int report(const ReportOptions& o) {
   ensure_directory(o.output);  // before the work, not after it
   const std::string cx_dir = (fs::path(o.output) / "counterexamples").string();
   std::vector<RuleResult> rows;
-  for (const CatalogRule* e : run.rules()) rows.push_back(analyse_static(run.catalog(), *e, 0, {}, run.source()));
+  // The model-level confirmation as check runs it (--confirm-darts).
+  const std::vector<Map> maps = confirmation_maps(run.catalog(), o.confirm_darts);
+  for (const CatalogRule* e : run.rules()) rows.push_back(analyse_static(run.catalog(), *e, o.confirm_darts, maps, run.source()));
   const std::size_t selected = rows.size();
   if (stages.fuzz_seconds) {
     if (!terminal().quiet)

@@ -308,6 +308,9 @@ void add_report(CLI::App& app, Commands& commands) {
   add_shard_budget(rp, o->shard_budget);
   rp->add_option("--prove", o->prove_darts, "ask Z3 for counterexamples of up to K darts and draw them")->transform(host_darts());
   rp->add_option("--seed", o->seed, "random seed of --fuzz (default: drawn and printed)")->transform(counts());
+  rp->add_option("--confirm-darts", o->confirm_darts, "as check: for a failing rule, try every map of its model with up to this many darts beyond L (0: skip)")
+      ->capture_default_str()
+      ->transform(host_darts());
   rp->add_option("--engine", o->engine, "Graphviz layout engine")->capture_default_str();
   add_format(rp, o->format, {"html", "jsonl"}, "html (the page in -o DIR) or jsonl (a shard's lines on stdout, for merge)");
   add_campaign(rp, o->shard, o->jobs);

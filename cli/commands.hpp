@@ -56,6 +56,7 @@ struct ReportOptions {
   std::optional<double> shard_budget;  // --jobs's share of `fuzz` for this shard (hidden)
   std::size_t prove_darts = 0;  // ask Z3 for counterexamples of up to this many darts (0: no)
   std::optional<std::uint64_t> seed;
+  std::size_t confirm_darts = 2;  // as check --confirm-darts
 };
 /// DIR/index.html and the SVG pictures; 3 on a soundness bug or a
 /// solver disagreement, 1 if a static verdict differs from the catalog's,

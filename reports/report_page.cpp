@@ -166,8 +166,8 @@ std::string kind_of(const CatalogRule& e) {
 
 std::string fuzz_cell(const FuzzReport& f) {
   switch (f.verdict) {
-    case FuzzClass::consistent:
-      return fmt::format("<td class=\"ok\">consistent ({})</td>", counted(f.applications, "application"));
+    case FuzzClass::consistent:  // what the run checked, never "consistent" alone
+      return fmt::format("<td class=\"ok\">no counterexample ({}; {})</td>", counted(f.applications, "application"), html_text(f.checked));
     case FuzzClass::confirmed:
       return fmt::format("<td class=\"fails\">confirmed ({} darts)</td>", f.counterexample->host.size());
     case FuzzClass::unconfirmed:
@@ -176,6 +176,15 @@ std::string fuzz_cell(const FuzzReport& f) {
       return "<td class=\"bug\">SOUNDNESS BUG</td>";
   }
   return "<td></td>";
+}
+
+// The model-level confirmation in a cell: confirmed (the host's darts), not
+// found (up to how many darts), or nothing for a rule it did not run on.
+std::string confirmation_cell(const RuleResult& r) {
+  if (!r.host_search && !r.scheme_search) return "<td class=\"none\">-</td>";
+  if (r.unsound()) return fmt::format("<td class=\"bug\">{}</td>", html_text(r.confirmation_text()));
+  const bool found = r.scheme_search ? r.scheme_search->counterexample.has_value() : r.host_search->host.has_value();
+  return fmt::format("<td class=\"{}\">{}</td>", found ? "fails" : "skipped", html_text(r.confirmation_text()));
 }
 
 // The event contradiction goes next to the verdict, never in its place.
@@ -226,7 +235,10 @@ std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed,
   std::string out = "<table class=\"verdicts\">\n<tr><th>rule</th><th>model</th>";
   for (const auto& [kind, name] : kinds) out += fmt::format("<th>{}</th>", name);
   if (embedded) out += "<th>embedding</th>";
+  // check's model-level confirmation of the failing rules (--confirm-darts).
+  const bool confirmed = std::any_of(rows.begin(), rows.end(), [](const RuleResult& r) { return r.host_search || r.scheme_search; });
   out += "<th>static verdict</th><th>recorded</th>";
+  if (confirmed) out += "<th>confirmation</th>";
   if (fuzzed) out += "<th>fuzz</th>";
   if (proved) out += "<th>prove</th>";
   out += "</tr>\n";
@@ -250,6 +262,7 @@ std::string verdict_table_html(const std::vector<RuleResult>& rows, bool fuzzed,
         html_text(r.matches_record()      ? std::string("matches")
                   : r.first_run_finding() ? fmt::format("no verdict recorded (the {} records none)", r.record_source_name())
                                           : fmt::format("MISMATCH: {} records {}", r.record_source_name(), r.recorded_text())));
+    if (confirmed) out += confirmation_cell(r);
     if (fuzzed) out += r.fuzz ? fuzz_cells(*r.fuzz) : "<td></td>";
     if (proved) out += r.proof ? prove_cell(*r.proof) : "<td></td>";
     out += "</tr>\n";
@@ -300,6 +313,8 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
                      r.matches_record()      ? ""
                      : r.first_run_finding() ? " <span class=\"mismatch\">(a finding: nothing recorded)</span>"
                                              : " <span class=\"mismatch\">(MISMATCH)</span>");
+  if (const std::string c = r.confirmation_text(); !c.empty())
+    out += fmt::format("<p>Model-level confirmation (as check's): {}</p>\n", html_text(c));
   auto embedded = embedding_picture(e, r.embedding);
   auto witnesses = failed_witnesses(r.verdict);
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
