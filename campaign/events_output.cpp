@@ -3,7 +3,9 @@
 #include <cstdio>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "core/input_error.hpp"
 #include "core/terminal.hpp"
 #include "core/wording.hpp"
 #include "campaign/shard_stream.hpp"
@@ -28,6 +30,17 @@ EventsOutput::~EventsOutput() = default;
 void EventsOutput::analysed(const analysis::RuleEvents& r) {
   const Json json = reports::events_json(r);
   rule(*r.rule, &json, reports::events_text(r));
+  if (format_ == "text" && terminal().quiet) {
+    // -q: what makes the exit status non-zero, one diagnostic line each.
+    const std::string where = fmt::format("{}: error: {}", r.rule->location.str(), printable(r.rule->rule.name()));
+    if (const auto& a = r.application; a && !a->applied())
+      fmt::print(stderr, "{}: does not apply to {} at {}: {} ({})\n", where, a->host, fmt::join(a->hooks, ","), a->refusal, a->why);
+    else if (a && !a->validity.valid())
+      fmt::print(stderr, "{}: the result of its application to {} is not a valid {}\n", where, a->host, r.rule->rule.model().name);
+    for (const auto& k : r.kinds)
+      if (k.check)
+        for (const auto& c : k.check->contradictions) fmt::print(stderr, "{}: SOUNDNESS BUG: {}\n", where, printable(c));
+  }
 }
 
 void EventsOutput::not_analysed(const CatalogRule& rule, const std::string& why) {
@@ -46,7 +59,7 @@ void EventsOutput::rule(const CatalogRule& rule, const Json* json, const std::st
     lines_->fragment(rule.rule.name(), json ? *json : Json(nullptr), text);
   else if (format_ == "json" && json)
     rules_->array.push_back(*json);
-  else if (format_ != "json") {
+  else if (format_ != "json" && !terminal().quiet) {
     fmt::print("{}", text);
     std::fflush(stdout);  // a run ended by a signal inside the next rule keeps this one
   }
@@ -56,7 +69,7 @@ void EventsOutput::finish(int status, std::size_t analysed, bool interrupted) {
   if (lines_) {
     lines_->summary(
         Json{{"status", status}, {"analysed", analysed}, {"not_analysed", not_analysed_}, {"skipped", skipped_}, {"interrupted", interrupted}});
-  } else if (format_ == "text") {
+  } else if (format_ == "text" && !terminal().quiet) {
     fmt::print("{}", events_counts_line(analysed, not_analysed_, skipped_));
   } else if (format_ == "json") {
     Json doc = reports::json_document("events");

@@ -1,3 +1,4 @@
+#include "core/terminal.hpp"
 #include "campaign/shard_stream.hpp"
 
 #include <algorithm>
@@ -265,7 +266,7 @@ void print_input_run(const std::string& format, const std::string& command, cons
     lines.summary(Json{{"status", status}});
   } else if (format == "json") {
     fmt::print("{}\n", reports::json_text(std::move(document)));
-  } else {
+  } else if (!terminal().quiet) {  // -q: the report is a summary; files and the exit status stay
     fmt::print("{}", text);
   }
 }

@@ -11,6 +11,7 @@
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
 #include "core/terminal.hpp"
+#include "core/wording.hpp"
 #include "io/jerboa_jba.hpp"
 #include "cli/options.hpp"
 #include "reports/infer_report.hpp"
@@ -86,14 +87,15 @@ int infer(const InferCommand& o) {
   }
   const reports::InferRun run{o.before,           o.after,   orbit_type_str(OrbitType(orbit.begin(), orbit.end())), g_size, h_size,
                               graph->preserved(), kappa_text};
+  const bool quiet = terminal().quiet;  // -q: the text report is a summary
   if (o.format == "json")
     fmt::print("{}\n", reports::infer_json(run, *graph, attempts));
-  else
+  else if (!quiet)
     fmt::print("{}", reports::infer_text(run, attempts));
   // A Jerboa example's values: 000 infers the topology and leaves the
   // embedding computations aside ("the inferred rule scheme will have no
   // embedding computation"; its examples add them by hand), so say so.
-  if (o.format != "json" && o.after.ends_with(".jba")) {
+  if (o.format != "json" && !quiet && o.after.ends_with(".jba")) {
     std::vector<std::string> names;
     for (const auto& e : read_jba(o.after).embeddings) names.push_back(fmt::format("{} <{}>", e.name, fmt::join(e.orbit, ",")));
     if (!names.empty())
@@ -109,6 +111,11 @@ int infer(const InferCommand& o) {
     if (!terminal().quiet) fmt::print(o.format == "json" ? stderr : stdout, "written: {} ({} rule{})\n", o.output, inferred, inferred == 1 ? "" : "s");
   } else if (!o.output.empty()) {
     fmt::print(stderr, "not written: {} (no rule inferred)\n", o.output);
+  }
+  if (quiet && o.format != "json") {  // what makes the exit status non-zero
+    if (contradiction) fmt::print(stderr, "error: SOUNDNESS BUG: an inferred rule does not give the example back (run without -q for the details)\n");
+    if (inferred == 0)
+      fmt::print(stderr, "error: no rule inferred from {} (run without -q for each start's failure)\n", counted(attempts.size(), "start"));
   }
   if (contradiction) return 3;
   return inferred ? 0 : 1;
