@@ -191,8 +191,9 @@ RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std:
     for (const Map& m : catalog_maps)
       if (m.model() == entry.rule.model()) extra.push_back(m);
     FuzzOptions fo;
-    fo.runs = 2000;
-    fo.max_darts = 64;
+    fo.seed = 1;
+    fo.runs = scheme_confirmation_runs;
+    fo.max_darts = scheme_confirmation_darts;
     fo.event_checks = 0;  // check is about consistency; events are `fuzz` and `events`
     fo.static_check = [&](const Operation&) { return r.verdict; };
     r.scheme_search = fuzz_rule(entry, extra, fo);

@@ -111,6 +111,12 @@ struct RuleResult {
 /// hosts of up to |L| + confirm_darts darts; every scheme through the
 /// fuzzer with a small fixed budget, on `catalog_maps` too). Compares
 /// with the record.
+/// The budget of a scheme's model-level confirmation: the fuzzer with seed
+/// 1, this many applications, random hosts up to this many darts, no event
+/// checks (`dartcheck fuzz --seed 1 --runs 2000 --max-darts 64
+/// --event-checks 0` finds the same hosts).
+inline constexpr std::size_t scheme_confirmation_runs = 2000, scheme_confirmation_darts = 64;
+
 RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std::size_t confirm_darts, const std::vector<Map>& catalog_maps = {},
                           RecordSource source = RecordSource::catalog);
 

@@ -247,8 +247,18 @@ int merge_shards(const MergeRequest& o) {
   } else if (h.command == "check") {
     print_check(o.format, h.catalog, catalog, results, baseline_mismatches, o.explain);
   } else if (h.command == "fuzz") {
+    // The hints' commands carry the options that decide the hosts.
+    const auto runs = h.parameters.find("runs");
+    std::vector<std::string> maps;
+    if (const auto m = h.parameters.find("maps"); m != h.parameters.end() && m->is_array())
+      for (const auto& x : *m)
+        if (x.is_string()) maps.push_back(x.get<std::string>());
+    const std::string search = reports::fuzz_search_options(
+        runs != h.parameters.end() && runs->is_number_unsigned() ? std::optional(runs->get<std::size_t>()) : std::nullopt,
+        parameter<std::size_t>(h, "max_darts"), parameter<std::size_t>(h, "event_checks"), maps);
     print_fuzz(o.format,
-               {h.catalog, parameter<std::uint64_t>(h, "seed"), seconds, selected, incomplete, baseline_mismatches, shard_seconds, o.wall_seconds.has_value()},
+               {h.catalog, parameter<std::uint64_t>(h, "seed"), seconds, selected, incomplete, baseline_mismatches, shard_seconds,
+                o.wall_seconds.has_value(), search},
                results);
   } else if (h.command == "prove") {
     print_prove(o.format,

@@ -88,7 +88,8 @@ int fuzz(const FuzzCommand& c) {
     run.finished(results.back());
   };
   fuzz_rules(targets.rules, targets.seeds, o, seconds, isatty(fileno(stderr)) != 0 && !terminal().quiet, finished);
-  const reports::FuzzRun fuzz_run{c.catalog, o.seed, run.seconds(), selected, interrupted(), run.baseline_mismatches(), std::nullopt, true};
+  const reports::FuzzRun fuzz_run{c.catalog,          o.seed,       run.seconds(), selected, interrupted(), run.baseline_mismatches(), std::nullopt,
+                                  true,               reports::fuzz_search_options(c.runs, o.max_darts, o.event_checks, c.maps)};
   const int status = run.finish(results, selected, &fuzz_run);
   if (!run.writes_lines()) print_fuzz(c.format, fuzz_run, results);
   return status;

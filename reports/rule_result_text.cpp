@@ -254,6 +254,19 @@ std::string row_note(std::size_t indent, const std::string& text) { return hangi
 
 }  // namespace
 
+std::string fuzz_search_options(std::optional<std::size_t> runs, std::size_t max_darts, std::size_t event_checks, const std::vector<std::string>& maps) {
+  const analysis::FuzzOptions defaults;
+  std::string out;
+  if (runs && *runs != defaults.runs) out += fmt::format(" --runs {}", *runs);
+  if (max_darts != defaults.max_darts) out += fmt::format(" --max-darts {}", max_darts);
+  if (event_checks != defaults.event_checks) out += fmt::format(" --event-checks {}", event_checks);
+  if (!maps.empty()) {
+    out += " --maps";
+    for (const auto& m : maps) out += fmt::format(" {}", shell_quote(m));
+  }
+  return out;
+}
+
 std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& results) {
   std::string out;
   std::size_t name = 4, verdict = 6, applications = 0;
@@ -300,8 +313,8 @@ std::string fuzz_table(const FuzzRun& run, const std::vector<RuleResult>& result
       out += fmt::format("{}replay: {}\n", under, printable(result.fuzz_replay));
     else if (!result.entry->terms)  // a command to paste, never wrapped: the rule's seed comes from the run's seed and its name
       out += fmt::format("{}to write the host, the match and H with a replay command, run: {}\n", under,
-                         printable(fmt::format("dartcheck fuzz {} --rule {} --seed {} -o DIR", shell_quote(run.catalog), shell_quote(result.name()),
-                                               run.seed)));
+                         printable(fmt::format("dartcheck fuzz {} --rule {} --seed {}{} -o DIR", shell_quote(run.catalog), shell_quote(result.name()),
+                                               run.seed, run.search_options)));
   }
   const std::size_t bugs = classes[FuzzClass::soundness_bug], contradicted = count_results(results).events_contradicted;
   // The time by the wall clock, and the rate by it; a merge's shards'
@@ -413,9 +426,13 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
       for (const auto& e : r.embedding)
         for (const auto& w : e.witnesses)
           out += row_note(indent + 2, fmt::format("{}{}: {}", e.name, e.required ? "" : " (not required)", printable(w.text)));
-      if (r.scheme_search && r.scheme_search->counterexample)
-        out += row_note(indent + 2, printable(fmt::format("host: {} (`dartcheck fuzz {} --rule {} --out DIR` writes it with a replay command)",
-                                                          r.scheme_search->counterexample->origin, shell_quote(o.catalog), shell_quote(r.name()))));
+      if (r.scheme_search && r.scheme_search->counterexample) {
+        out += row_note(indent + 2, fmt::format("host: {}", printable(r.scheme_search->counterexample->origin)));
+        // A command to paste, never wrapped: the same search, written out.
+        out += fmt::format("{:{}}to write it with the match, H and a replay command, run: {}\n", "", indent + 2,
+                           printable(fmt::format("dartcheck fuzz {} --rule {} --seed 1{} -o DIR", shell_quote(o.catalog), shell_quote(r.name()),
+                                                 fuzz_search_options(scheme_confirmation_runs, scheme_confirmation_darts, 0, {}))));
+      }
       if (r.host_search && r.host_search->host) {
         out += row_note(indent + 2, "host G: " + printable(arcs_text(*r.host_search->host)));
         out += row_note(indent + 2, "result H: " + printable(arcs_text(*r.host_search->result)));

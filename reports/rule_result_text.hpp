@@ -74,7 +74,15 @@ struct FuzzRun {
   /// is then the wall clock of a --jobs run, or this sum for a bare merge.
   std::optional<double> shard_seconds = std::nullopt;
   bool wall_clock = true;  // false: `seconds` is the shards' sum, no wall clock is known
+  /// The options besides the seed that decide which host a rule's search
+  /// finds (fuzz_search_options), for the hints' commands.
+  std::string search_options = {};
 };
+
+/// " --runs 200 --max-darts 64 --maps a.off" (shell-quoted): the options
+/// of a fuzz run that differ from the defaults and change its hosts, so
+/// that a printed command finds the same counterexample.
+std::string fuzz_search_options(std::optional<std::size_t> runs, std::size_t max_darts, std::size_t event_checks, const std::vector<std::string>& maps);
 
 /// fuzz's table: each rule's static verdict and fuzz outcome, where its
 /// counterexample was found and how to replay it, then the summary line.
