@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -17,10 +18,51 @@ using namespace analysis;
 
 namespace {
 
-Json sarif_location(const std::string& file, const SourceLocation& at) {
+// Where SARIF's paths start: the repository (the nearest folder with a
+// .git above the catalog) whose root %SRCROOT% names, so that code scanning
+// finds the files in its checkout; without one, the directory dartcheck
+// ran in. A file outside that root gets an absolute file:// URI.
+struct SourceRoot {
+  std::filesystem::path root;
+  bool repository = false;
+
+  explicit SourceRoot(const std::string& catalog) {
+    std::error_code ec;
+    const auto cwd = std::filesystem::current_path(ec);
+    root = cwd;
+    for (auto dir = std::filesystem::absolute(catalog, ec).parent_path(); !ec && !dir.empty(); dir = dir.parent_path()) {
+      if (std::filesystem::exists(dir / ".git", ec)) {
+        root = dir;
+        repository = true;
+        break;
+      }
+      if (dir == dir.root_path()) break;
+    }
+  }
+
+  Json artifact(const std::string& path) const {
+    std::error_code ec;
+    const auto absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+    const auto relative = absolute.lexically_relative(std::filesystem::weakly_canonical(root, ec));
+    const std::string text = relative.generic_string();
+    if (!path.empty() && !ec && !relative.empty() && !text.starts_with(".."))
+      return Json{{"uri", uri_path(text)}, {"uriBaseId", "%SRCROOT%"}};
+    return Json{{"uri", "file://" + uri_path(absolute.generic_string())}};
+  }
+
+  Json base_ids() const {
+    std::error_code ec;
+    std::string uri = "file://" + uri_path(std::filesystem::weakly_canonical(root, ec).generic_string());
+    if (uri.back() != '/') uri += '/';
+    return Json{{"%SRCROOT%", Json{{"uri", uri},
+                                   {"description", Json{{"text", repository ? "the root of the repository that holds the catalog"
+                                                                            : "the directory dartcheck ran in (the catalog is in no git repository)"}}}}}};
+  }
+};
+
+Json sarif_location(const SourceRoot& root, const std::string& file, const SourceLocation& at) {
   const std::string path = at.file.empty() ? file : at.file;
-  Json artifact{{"uri", uri_path(path)}};
-  if (!path.empty() && path.front() != '/') artifact["uriBaseId"] = "SRCROOT";
+  Json artifact = root.artifact(path);
   return Json::array(
       {Json{{"physicalLocation", Json{{"artifactLocation", std::move(artifact)},
                                       {"region", Json{{"startLine", std::max(at.line, 1)}, {"startColumn", std::max(at.column, 1)}}}}}}});
@@ -68,13 +110,21 @@ std::string uri_path(const std::string& path) {
 std::string sarif_document(const std::string& catalog, const std::vector<RuleResult>& results, const std::string& version) {
   Json sarif_results = Json::array();
   std::vector<std::string> ids;
-  auto add = [&](const std::string& id, bool error, const std::string& text, const RuleResult& r) {
+  const SourceRoot root(catalog);
+  // A failure the catalog (or baseline) records is expected: a suppressed
+  // result, which code scanning does not open as an alert.
+  auto add = [&](const std::string& id, bool unexpected, const std::string& text, const RuleResult& r) {
     if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
-    sarif_results.push_back(Json{{"ruleId", id},
-                                 {"level", error ? "error" : "note"},
-                                 {"message", Json{{"text", text}}},
-                                 {"locations", sarif_location(catalog, r.entry->location)},
-                                 {"properties", Json{{"rule", r.name()}, {"recorded", r.recorded_text()}, {"solver", r.solver_lines()}}}});
+    Json result{{"ruleId", id},
+                {"level", "error"},
+                {"message", Json{{"text", text}}},
+                {"locations", sarif_location(root, catalog, r.entry->location)},
+                {"properties", Json{{"rule", r.name()}, {"recorded", r.recorded_text()}, {"solver", r.solver_lines()}}}};
+    if (!unexpected)
+      result["suppressions"] = Json::array({Json{{"kind", "external"},
+                                                 {"status", "accepted"},
+                                                 {"justification", fmt::format("the {} records this failure: an expected verdict", r.record_source_name())}}});
+    sarif_results.push_back(std::move(result));
   };
   for (const RuleResult& r : results) {
     const auto& recorded = r.entry->expected_failures;
@@ -95,13 +145,16 @@ std::string sarif_document(const std::string& catalog, const std::vector<RuleRes
   // One reportingDescriptor per condition met, linked to its definition.
   for (const auto& id : ids) {
     const ConditionHelp& help = condition_help(id);
-    rules.push_back(Json{{"id", id},
-                         {"shortDescription", Json{{"text", std::string(help.summary)}}},
-                         {"fullDescription", Json{{"text", fmt::format("{} ({})", help.summary, help.source)}}},
-                         {"helpUri", condition_help_uri(id)}});
+    const std::string markdown = condition_help_markdown(id);
+    Json rule{{"id", id},
+              {"shortDescription", Json{{"text", std::string(help.summary)}}},
+              {"fullDescription", Json{{"text", fmt::format("{} ({})", help.summary, help.source)}}},
+              {"help", Json{{"text", markdown}, {"markdown", markdown}}}};
+    if (const std::string uri = condition_help_uri(id); !uri.empty()) rule["helpUri"] = uri;
+    rules.push_back(std::move(rule));
   }
   Json run{{"tool", Json{{"driver", Json{{"name", "dartcheck"}, {"version", version}, {"rules", std::move(rules)}}}}},
-           {"originalUriBaseIds", Json{{"SRCROOT", Json{{"description", Json{{"text", "the directory dartcheck ran in"}}}}}}},
+           {"originalUriBaseIds", root.base_ids()},
            {"results", std::move(sarif_results)}};
   Json doc{{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"}, {"version", "2.1.0"}, {"runs", Json::array({std::move(run)})}};
   return json_text(std::move(doc));

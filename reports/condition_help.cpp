@@ -3,6 +3,8 @@
 #include <array>
 #include <cctype>
 
+#include <fmt/format.h>
+
 namespace dartcheck::reports {
 
 namespace {
@@ -67,8 +69,22 @@ const ConditionHelp& condition_help(std::string_view name) {
 
 std::string condition_help_uri(std::string_view name) {
   std::string base = DARTCHECK_DOCS_URL;
-  if (!base.empty() && base.back() != '/') base += '/';
+  if (!base.starts_with("http://") && !base.starts_with("https://")) return {};
+  if (base.back() != '/') base += '/';
   return base + "conditions.md#" + std::string(condition_help(name).anchor);
+}
+
+std::string condition_help_markdown(std::string_view name) {
+  struct Section {
+    std::string_view anchor, markdown;
+  };
+  static constexpr Section sections[] = {
+#include "condition_docs.inc"
+  };
+  const ConditionHelp& help = condition_help(name);
+  for (const Section& s : sections)
+    if (s.anchor == help.anchor) return std::string(s.markdown);
+  return fmt::format("{} ({})", help.summary, help.source);
 }
 
 }  // namespace dartcheck::reports

@@ -20,8 +20,13 @@ struct ConditionHelp {
 const ConditionHelp& condition_help(std::string_view name);
 
 /// The address of its section: DARTCHECK_DOCS_URL (a CMake cache variable,
-/// by default the installed docs, file://PREFIX/share/doc/dartcheck/)
-/// followed by conditions.md#anchor.
+/// an http or https address where the docs are published) followed by
+/// conditions.md#anchor; empty when the variable is not set (a file:// link
+/// would be dead wherever the SARIF is read).
 std::string condition_help_uri(std::string_view name);
+
+/// Its section of docs/conditions.md, as Markdown (built in at compile
+/// time); the summary and source when the page has no such section.
+std::string condition_help_markdown(std::string_view name);
 
 }  // namespace dartcheck::reports

@@ -88,7 +88,12 @@ Json json_document(std::string_view command) {
 
 std::string json_text(Json document, int indent) {
   const std::size_t changed = sanitise(document);
-  if (changed > 0 && document.is_object()) document["replaced_invalid_utf8"] = changed;
+  if (changed > 0 && document.is_object()) {
+    // SARIF allows no property of its own at the top: the count goes in
+    // the run's property bag there (OASIS 2.1.0 Sec. 3.8).
+    const bool sarif = document.contains("runs") && document["runs"].is_array() && !document["runs"].empty();
+    (sarif ? document["runs"][0]["properties"] : document)["replaced_invalid_utf8"] = changed;
+  }
   return document.dump(indent);
 }
 

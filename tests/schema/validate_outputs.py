@@ -5,7 +5,8 @@ Usage: validate_outputs.py DARTCHECK SOURCE_DIR WORK_DIR
 
 Runs the commands below from SOURCE_DIR and checks each output:
 JSON and JSONL documents against docs/schema/*.schema.json (python3-jsonschema,
-draft 2020-12), SARIF against docs/schema/sarif-subset.schema.json, JUnit and
+draft 2020-12), SARIF against docs/schema/sarif-subset.schema.json and the OASIS
+SARIF 2.1.0 schema (tests/data/sarif-2.1.0-rtm.5.json, draft-04), JUnit and
 .jme as XML (xml.etree), YAML (baselines, converted catalogs) by reading them
 back with dartcheck's own yaml-cpp reader. The hostile catalog's names hold
 quotes, backslashes, newlines, control characters, an ESC sequence, U+FFFE
@@ -71,6 +72,22 @@ def check_json(args, expect, schema_id, jsonl=False):
     return docs
 
 
+# The OASIS SARIF 2.1.0 schema (draft-04), shipped in tests/data: from the
+# npm package @microsoft/jest-sarif 1.0.0-beta.0 (MIT),
+# lib/schemas/sarif-2.1.0-rtm.5.json, the schema of the OASIS standard.
+with open(os.path.join(SOURCE, "tests", "data", "sarif-2.1.0-rtm.5.json"), encoding="utf-8") as f:
+    OASIS_SARIF = jsonschema.Draft4Validator(json.load(f))
+
+
+def check_sarif(args, expect):
+    """SARIF against dartcheck's subset schema and the OASIS one."""
+    docs = check_json(args, expect, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
+    for doc in docs:
+        for e in sorted(OASIS_SARIF.iter_errors(doc), key=lambda e: list(e.path))[:5]:
+            failures.append(f"{' '.join(args)}: OASIS SARIF 2.1.0: {'/'.join(map(str, e.path))}: {e.message[:300]}")
+    return docs
+
+
 def check_xml(args, expect):
     out = run(args, expect)
     try:
@@ -92,7 +109,7 @@ if doc:
     expect_equal("check json: model name", doc["rules"][0]["model"], HOSTILE_MODEL)
     expect_equal("check json: says invalid UTF-8 was replaced", doc.get("replaced_invalid_utf8", 0) >= 1, True)
     expect_equal("check json: verdicts", [r["failures"] for r in doc["rules"]], [[], ["I(1)"]])
-check_json(["check", HOSTILE, "--format", "sarif"], 0, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
+check_sarif(["check", HOSTILE, "--format", "sarif"], 0)
 root = check_xml(["check", HOSTILE, "--format", "junit"], 0)
 if root is not None:
     # XML 1.0 cannot carry U+0007, ESC, U+0001 or U+FFFE: each becomes U+FFFD.
@@ -151,8 +168,24 @@ check_json(["check", "catalogs/embedding-operations.yaml", "--format", "json"], 
 check_json(["check", "tests/data/jerboa-opaque-expression.jme", "--format", "json"], 0, "https://dartcheck.invalid/schema/check.schema.json")
 check_json(["check", "../shared/jerboa-samples/JerboaRebuilt2.jme", "--format", "json", "--confirm-darts", "0"], 1,
            "https://dartcheck.invalid/schema/check.schema.json")
-check_json(["check", "catalogs/seed-operations.yaml", "--format", "sarif"], 0, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
-check_json(["check", "tests/data/wrong-verdict.yaml", "--format", "sarif"], 1, "https://dartcheck.invalid/schema/sarif-subset.schema.json")
+# Code scanning (issue 64): the failures the catalog records are suppressed
+# (75 on the seed catalog: its 59 failing rules' conditions), a changed one
+# is not; paths are relative to the repository's root, %SRCROOT%.
+[doc] = check_sarif(["check", "catalogs/seed-operations.yaml", "--format", "sarif"], 0) or [None]
+if doc:
+    results = doc["runs"][0]["results"]
+    expect_equal("sarif: every recorded failure suppressed", [len(r.get("suppressions", [])) for r in results], [1] * len(results))
+    expect_equal("sarif: results", len(results), 75)
+    expect_equal("sarif: the catalog's path", {r["locations"][0]["physicalLocation"]["artifactLocation"]["uri"] for r in results},
+                 {"catalogs/seed-operations.yaml"})
+    expect_equal("sarif: %SRCROOT% is the repository", doc["runs"][0]["originalUriBaseIds"]["%SRCROOT%"]["uri"],
+                 "file://" + os.path.realpath(SOURCE) + "/")
+    expect_equal("sarif: help embedded", all(d["help"]["markdown"].startswith("### ") for d in doc["runs"][0]["tool"]["driver"]["rules"]), True)
+[doc] = check_sarif(["check", "tests/data/wrong-verdict.yaml", "--format", "sarif"], 1) or [None]
+if doc:
+    unexpected = [r for r in doc["runs"][0]["results"] if "suppressions" not in r]
+    expect_equal("sarif: a failure the catalog does not record is an open error", [r["level"] for r in unexpected] != [] and
+                 all(r["level"] == "error" for r in unexpected), True)
 check_json(["fuzz", "catalogs/event-operations.yaml", "--runs", "100", "--seed", "1", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json",
            jsonl=True)
 check_json(["check", "catalogs/seed-operations.yaml", "--shard", "1/3", "--format", "jsonl"], 0, "https://dartcheck.invalid/schema/jsonl.schema.json", jsonl=True)
