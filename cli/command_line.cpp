@@ -48,6 +48,15 @@ void add_format(CLI::App* command, std::string& format, const std::vector<std::s
   command->add_option("--format", format, help)->capture_default_str()->check(CLI::IsMember(choices));
 }
 
+// Hidden (no group): the bash completion's source of rule and map names.
+void add_complete(CLI::App& app, Commands& commands) {
+  auto o = std::make_shared<CompleteOptions>();
+  auto* c = app.add_subcommand("__complete", "words for the bash completion")->group("");
+  c->add_option("what", o->what, "rules, maps, models or cells")->required();
+  c->add_option("catalog", o->catalog, "the catalog the command line names");
+  commands.push_back({c, [o] { return complete(*o); }});
+}
+
 void add_validate(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<ValidateOptions>();
   auto* v = app.add_subcommand("validate-map", "Check a map against its model: cells and every violation");
@@ -257,11 +266,14 @@ void add_recombine(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<RecombineOptions>();
   auto* rc = app.add_subcommand("recombine", "Recombine a tetrahedral mesh into hexahedra by query-modify (001 Sec. 7.1) and check the result");
   rc->add_option("mesh", o->mesh, "tetrahedral mesh: TetGen .node/.ele or medit .mesh")->required();
-  rc->add_option("--strategy", o->strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")->capture_default_str();
+  rc->add_option("--strategy", o->strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"greedy", "global"}));
   rc->add_option("--search", o->search,
                  "vertices (hexes from mesh vertices and edges) or words (001's query words from every dart, the definition; slower); "
                  "greedy always matches words")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::IsMember({"vertices", "words"}));
   rc->add_option("--cells", o->cells,
                  "the cells to make: hex, or hex with prism and/or pyramid (comma-separated): after the hexes, pyramids on their quads "
                  "that face two tetrahedra with one apex, prisms from the tetrahedra left, pyramids on the prisms' quads")
@@ -428,6 +440,7 @@ CommandTable command_table(const CLI::App& app) {
   };
   long_names(app, table.options[""]);
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (sub->get_group().empty()) continue;  // hidden (__complete): never suggested
     table.commands.push_back(sub->get_name());
     auto& names = table.options[sub->get_name()];
     long_names(app, names);
@@ -475,6 +488,7 @@ int run_command_line(int argc, char** argv, const std::string& version) {
   add_report(app, commands);
   add_merge(app, commands);
   add_draw_map(app, commands);
+  add_complete(app, commands);
   refuse_empty_values(app);
 
   // SIGINT and SIGTERM end every command within a second, exit 130; the

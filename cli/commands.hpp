@@ -18,6 +18,13 @@ namespace dartcheck::cli {
 
 using namespace exit_status;  // ok, violation, bad_input, soundness_bug, output_error
 
+/// The hidden completion helper (cmd_complete.cpp): WHAT is rules, maps,
+/// models or cells.
+struct CompleteOptions {
+  std::string what, catalog;
+};
+int complete(const CompleteOptions& o);
+
 struct ValidateOptions {
   std::string target;
   std::string model = "2-gmap";

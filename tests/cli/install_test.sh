@@ -3,10 +3,13 @@
 # command the binary lists, and a bash completion that completes commands,
 # options (also a command's and the global ones after a global option's
 # value) and the choices of --format, all read back from the binary itself.
-# Usage: install_test.sh BUILD_DIR SCRATCH_DIR
+# Rule and map names complete from the catalog on the line, models, cells
+# and every option's choices from the binary (issue 64).
+# Usage: install_test.sh BUILD_DIR SCRATCH_DIR SOURCE_DIR
 set -euo pipefail
 build=$1
 prefix=$2
+source_dir=$3
 rm -rf "$prefix"
 cmake --install "$build" --prefix "$prefix" > /dev/null
 export PATH="$prefix/bin:$PATH"
@@ -60,4 +63,15 @@ expect "--format " dartcheck check --form
 expect "json jsonl junit " dartcheck check --format j
 expect "--limit-darts " dartcheck check --limit-da
 expect "--write-baseline " dartcheck check --write-b
+events=$source_dir/catalogs/event-operations.yaml
+mkdir -p "$prefix/empty" && cd "$prefix/empty"  # --map also completes files: none here
+expect "delete-edge " dartcheck events "$events" --rule del
+expect "collapse-edge " dartcheck events --orbit "<0>" "$events" --rule co
+expect "grid-2x2 grid-3x3 grid: " dartcheck apply "$events" --rule sew2 --map grid
+expect "cube " dartcheck apply "$events" --rule sew2 --map cu
+expect "3-closed-gmap 3-gmap 3-omap 3-open-omap " dartcheck validate-map cube --model 3
+expect "hex,prism hex,prism,pyramid " dartcheck recombine x.mesh --cells hex,pr
+expect "global greedy " dartcheck recombine x.mesh --strategy g
+expect "vertices words " dartcheck recombine x.mesh --search ""
+expect " " dartcheck check /nonexistent.yaml --rule a  # nothing (printf prints one empty line)
 echo "install: man page documents $(printf "%s\n" "$commands" | wc -l) commands; completion ok"
