@@ -6,7 +6,6 @@
 #include "checkers/map_validity.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
-#include "reports/json_document.hpp"
 #include "reports/validity_json.hpp"
 #include "reports/validity_text.hpp"
 #include "analysis/map_sources.hpp"
@@ -27,22 +26,15 @@ int validate_map(const ValidateOptions& o) {
     const bool jba = o.target.ends_with(".jba");
     const std::optional<JbaFile> f = jba ? std::optional(read_jba(o.target)) : std::nullopt;
     const Map map = jba ? f->map : resolve_map(o.target, model, nullptr);
-    const reports::Json doc = reports::validity_document(o.target, "", map, check_map(map), o.limit, jba ? &*f : nullptr);
-    for (const auto& v : doc["violations"])
-      fmt::print(stderr, "{}: error: dart {}: {}\n", printable(o.target), v["dart"].get<std::size_t>(), v["message"].get<std::string>());
-    if (jba)
-      for (const auto& e : doc["jerboa"]["embeddings"])
-        for (const auto& c : e["conflicts"]) fmt::print(stderr, "{}: error: embedding {}: {}\n", printable(o.target), printable(e["name"].get<std::string>()), printable(c.get<std::string>()));
-    const bool good = jba ? doc["jerboa"]["consistently_embedded"].get<bool>() : doc["valid"].get<bool>();
-    return good ? ok : violation;
+    return reports::print_validity_diagnostics(stderr, o.target, map, check_map(map), o.limit, jba ? &*f : nullptr) ? ok : violation;
   }
   if (o.target.ends_with(".jba")) {
     const JbaFile f = read_jba(o.target);
     const std::string description = fmt::format("{} (Jerboa, written by {})", describe_target(o.target, f.map), f.name);
     if (json) {
-      const reports::Json doc = reports::validity_document(o.target, description, f.map, check_map(f.map), o.limit, &f);
-      fmt::print("{}\n", reports::json_text(doc));
-      return doc["jerboa"]["consistently_embedded"].get<bool>() ? ok : violation;
+      const auto report = check_map(f.map);
+      fmt::print("{}\n", reports::validity_json_text(o.target, description, f.map, report, o.limit, &f));
+      return reports::consistently_embedded(f, report) ? ok : violation;
     }
     fmt::print("map: {}\n", description);
     return reports::print_jba_validity(stdout, f, o.limit) ? ok : violation;
@@ -50,7 +42,7 @@ int validate_map(const ValidateOptions& o) {
   const Map map = resolve_map(o.target, model, nullptr);
   const auto report = check_map(map);
   if (json) {
-    fmt::print("{}\n", reports::json_text(reports::validity_document(o.target, describe_target(o.target, map), map, report, o.limit)));
+    fmt::print("{}\n", reports::validity_json_text(o.target, describe_target(o.target, map), map, report, o.limit));
   } else {
     fmt::print("map: {}\n", describe_target(o.target, map));
     print_validity(stdout, map, report, o.limit);

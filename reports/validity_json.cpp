@@ -58,4 +58,9 @@ Json validity_document(const std::string& target, const std::string& description
   return doc;
 }
 
+std::string validity_json_text(const std::string& target, const std::string& description, const Map& map, const ValidityReport& report,
+                               std::size_t limit, const JbaFile* jba) {
+  return json_text(validity_document(target, description, map, report, limit, jba));
+}
+
 }  // namespace dartcheck::reports

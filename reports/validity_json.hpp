@@ -17,5 +17,8 @@ namespace dartcheck::reports {
 /// first line says it; `jba` adds the embeddings' consistency (003 Def. 6).
 Json validity_document(const std::string& target, const std::string& description, const Map& map, const ValidityReport& report,
                        std::size_t limit, const JbaFile* jba = nullptr);
+/// The same document as one line of text (what validate-map prints).
+std::string validity_json_text(const std::string& target, const std::string& description, const Map& map, const ValidityReport& report,
+                               std::size_t limit, const JbaFile* jba = nullptr);
 
 }  // namespace dartcheck::reports

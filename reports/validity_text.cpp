@@ -1,5 +1,7 @@
 #include "reports/validity_text.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
@@ -37,6 +39,29 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& r, std
     fmt::print(out, "  dart {}: {}\n", v.element, describe(v, fmt::format("dart {}", v.element)));
   }
   if (shown < r.violations.size()) fmt::print(out, "  ... and {} more (use --limit 0 to list all)\n", r.violations.size() - shown);
+}
+
+bool print_validity_diagnostics(std::FILE* out, const std::string& target, const Map& map, const ValidityReport& r, std::size_t limit,
+                                const JbaFile* jba) {
+  const std::size_t shown = limit == 0 ? r.violations.size() : std::min(limit, r.violations.size());
+  for (std::size_t k = 0; k < shown; ++k) {
+    const auto& v = r.violations[k];
+    fmt::print(out, "{}: error: dart {}: {}\n", printable(target), v.element, describe(v, fmt::format("dart {}", v.element)));
+  }
+  if (!jba) return r.valid();
+  for (const auto& e : jba->embeddings) {
+    const auto c = check_embedding(map, e);
+    for (std::size_t k = 0; k < c.conflicts.size() && (limit == 0 || k < limit); ++k)
+      fmt::print(out, "{}: error: embedding {}: {}\n", printable(target), printable(e.name), printable(c.conflicts[k].describe(e)));
+  }
+  return consistently_embedded(*jba, r);
+}
+
+bool consistently_embedded(const JbaFile& f, const ValidityReport& report) {
+  if (!report.valid()) return false;
+  for (const auto& e : f.embeddings)
+    if (!check_embedding(f.map, e).consistent()) return false;
+  return true;
 }
 
 bool print_jba_validity(std::FILE* out, const JbaFile& f, std::size_t limit) {

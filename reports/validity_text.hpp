@@ -20,6 +20,15 @@ void print_validity(std::FILE* out, const Map& map, const ValidityReport& report
 /// embedded G-map.
 bool print_jba_validity(std::FILE* out, const JbaFile& file, std::size_t limit);
 
+/// validate-map -q: each violation (up to `limit`) and, for a .jba, each
+/// embedding conflict as a `target: error: ...` line; whether the map is
+/// valid (and consistently embedded).
+bool print_validity_diagnostics(std::FILE* out, const std::string& target, const Map& map, const ValidityReport& report, std::size_t limit,
+                                const JbaFile* jba);
+
+/// Valid, and every embedding of the .jba consistent (003 Def. 6).
+bool consistently_embedded(const JbaFile& file, const ValidityReport& report);
+
 /// "8 vertices, 12 edges, 6 faces"
 std::string cells_sentence(const Map& map);
 
