@@ -1,8 +1,13 @@
 // `dartcheck compile` (issue 41): the consistent rules of a catalog as C++
 // functions on dartcheck's Map (compiler/rule_compiler.hpp). A rule the
 // static checker does not call consistent is refused with its failing
-// conditions: the generated code is only as consistent as the rule.
+// conditions: the generated code is only as consistent as the rule. With
+// --with-embedding-failures a rule whose topology holds is compiled even
+// when an embedding condition fails (Jerboa modelers: an embedding no rule
+// computes, or a term the syntactic conditions cannot prove copy-invariant);
+// its code gives the interpreter's values and says which conditions fail.
 
+#include <algorithm>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -39,33 +44,44 @@ int compile(const CompileOptions& o) {
       throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a header name ending in .hpp, .hh or .h", o.output));
     check_writable(o.output);
   }
-  const Catalog catalog = analysis::read_rule_catalog(o.catalog, o.rule);
+  const Catalog catalog = analysis::read_rule_catalog(o.catalog, "");
+  for (const std::string& name : o.rules) analysis::require_rule(catalog, o.catalog, name);
+  const auto named = [&](const std::string& name) { return std::find(o.rules.begin(), o.rules.end(), name) != o.rules.end(); };
   std::vector<compiler::CompileUnit> units;
-  std::size_t inconsistent = 0, unsupported = 0;
+  std::size_t inconsistent = 0, unsupported = 0, with_failures = 0;
+  int refused = ok;  // the first refusal of a rule --rule names
   for (const CatalogRule& r : catalog.rules) {
-    if (!o.rule.empty() && r.rule.name() != o.rule) continue;
+    if (!o.rules.empty() && !named(r.rule.name())) continue;
     // The failing conditions as `check` gives them (002, and 003 for terms).
-    if (const std::string fails = fmt::format("{}", fmt::join(analysis::analyse_static(catalog, r, 0).failures, " ")); !fails.empty()) {
+    const analysis::RuleResult result = analysis::analyse_static(catalog, r, 0);
+    const std::string fails = fmt::format("{}", fmt::join(result.failures, " "));
+    const bool embedding_only = !result.consistent() && !result.topological_failure();
+    if (!result.consistent() && !(o.embedding_failures && embedding_only)) {
       ++inconsistent;
-      if (!o.rule.empty()) {
-        fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled\n",
-                   printable(r.rule.name()), printable(r.location.str()), fails);
-        return violation;
+      if (!o.rules.empty()) {
+        fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled{}\n",
+                   printable(r.rule.name()), printable(r.location.str()), fails,
+                   embedding_only ? " (its topology holds: --with-embedding-failures compiles it with the interpreter's values)" : "");
+        if (refused == ok) refused = violation;
+        continue;
       }
       fmt::print(stderr, "skipped {} ({}): fails {}\n", printable(r.rule.name()), printable(r.location.str()), fails);
       continue;
     }
     if (const auto why = compiler::not_compilable(r)) {
       ++unsupported;
-      if (!o.rule.empty()) {
+      if (!o.rules.empty()) {
         fmt::print(stderr, "error: compile: rule '{}' ({}) is not compiled: {}\n", printable(r.rule.name()), printable(r.location.str()), *why);
-        return bad_input;
+        if (refused == ok) refused = bad_input;
+        continue;
       }
       fmt::print(stderr, "skipped {} ({}): {}\n", printable(r.rule.name()), printable(r.location.str()), *why);
       continue;
     }
-    units.push_back({&r, r.location.str()});
+    if (!result.consistent()) ++with_failures;
+    units.push_back({&r, r.location.str(), result.consistent() ? std::string() : fails});
   }
+  if (refused != ok) return refused;
   const compiler::CompiledHeader compiled = compiler::compile_header(units, ns, catalog.file);
   for (const std::string& line : compiled.renamed) fmt::print(stderr, "note: {}\n", printable(line));
   const std::string& header = compiled.code;
@@ -76,8 +92,8 @@ int compile(const CompileOptions& o) {
     if (!terminal().quiet) fmt::print("written: {} ({} in namespace {})\n", printable(o.output), counted(units.size(), "compiled rule"), ns);
   }
   if (!terminal().quiet)
-    fmt::print(stderr, "{} compiled; {} skipped as inconsistent, {} with what the compiler does not handle\n", counted(units.size(), "rule"),
-             inconsistent, unsupported);
+    fmt::print(stderr, "{} compiled{}; {} skipped as inconsistent, {} with what the compiler does not handle\n", counted(units.size(), "rule"),
+               with_failures ? fmt::format(" ({} with failing embedding conditions)", with_failures) : "", inconsistent, unsupported);
   return ok;
 }
 

@@ -230,9 +230,13 @@ void add_compile(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<CompileOptions>();
   auto* cc = app.add_subcommand("compile", "Generate C++ that applies the catalog's consistent rules on dartcheck's Map, as the interpreter does");
   cc->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
-  cc->add_option("--rule", o->rule, "compile this rule only (refused, naming its failing conditions, if it is not consistent)");
+  cc->add_option("--rule", o->rules, "compile this rule only (repeat for several; refused, naming its failing conditions, if it is not consistent)")
+      ->allow_extra_args(false);  // one name per --rule: a catalog after it stays the positional
   cc->add_option("-o,--output", o->output, "the C++ header to write (default: standard output)");
   cc->add_option("--namespace", o->ns, "namespace of the generated functions (default: compiled_ and the catalog's file stem)");
+  cc->add_flag("--with-embedding-failures", o->embedding_failures,
+               "also compile the rules whose topological conditions hold and an embedding condition fails (003 Thm 4 then does not "
+               "apply: the code gives the interpreter's values, conflicts counted, a new dart no term labels left without a value)");
   commands.push_back({cc, [o] { return compile(*o); }});
 }
 

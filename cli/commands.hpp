@@ -46,10 +46,12 @@ struct ConvertOptions {
 int convert(const ConvertOptions& o);
 
 struct CompileOptions {
-  std::string catalog, rule, output;
+  std::string catalog, output;
+  std::vector<std::string> rules;  // only these (repeatable --rule)
   std::string ns;  // the generated code's namespace (default: compiled_ and the catalog's stem)
+  bool embedding_failures = false;  // also rules whose topology holds and an embedding condition fails
 };
-/// The consistent rules as C++ (compiler/rule_compiler.hpp); 1 if the
+/// The consistent rules as C++ (compiler/rule_compiler.hpp); 1 if a
 /// --rule named is not consistent, 2 if it cannot be compiled.
 int compile(const CompileOptions& o);
 

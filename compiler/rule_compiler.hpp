@@ -25,6 +25,10 @@ namespace dartcheck::compiler {
 struct CompileUnit {
   const Operation* operation = nullptr;
   std::string origin;  // "catalogs/seed-operations.yaml:384:5"
+  /// The embedding conditions the static checker finds failing ("A(pos)
+  /// label(norm)"), for a rule compiled although they fail; empty for a
+  /// consistent rule.
+  std::string embedding_failures = {};
 };
 
 /// Why an operation cannot be compiled (yet), or nullopt when it can.

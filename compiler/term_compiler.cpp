@@ -36,6 +36,12 @@ std::string double_literal(double x) {
   return fmt::format("{:a}", x);  // hexadecimal: exact
 }
 
+// Two more spaces before every line of generated code.
+void indent(std::string& code) {
+  for (std::size_t i = 0; i < code.size(); ++i)
+    if (i == 0 || code[i - 1] == '\n') code.insert(i, "  ");
+}
+
 struct Grouping {
   bool grouped = true;
   std::vector<std::size_t> group_of;
@@ -47,14 +53,7 @@ struct Grouping {
 std::optional<std::string> terms_not_compilable(const Operation& op) {
   if (!op.terms) return std::nullopt;
   std::optional<std::string> why;
-  // Jerboa's loops and lists (each, [..]) are evaluated by the interpreter
-  // only: the generator has no code for them yet.
-  auto loops = [](const Term& t, const auto& self) -> bool {
-    return t.kind == Term::Kind::each || t.kind == Term::Kind::list || std::any_of(t.args.begin(), t.args.end(), [&](const Term& a) { return self(a, self); });
-  };
   auto check = [&](const NodeTerm& t) {
-    if (!why && loops(t.term, loops))
-      why = fmt::format("its term {} has a loop over an orbit or a list (each, [...]), which the compiler does not generate yet", t.term.str());
     for_each_call(t.term, [&](const Term& c) {
       if (!why && (!c.function || c.function->cpp.empty()))
         why = fmt::format("its term {} calls {}, a function with no C++ text (not one of the built-in algebra's)", t.term.str(), c.name);
@@ -76,6 +75,8 @@ struct TermCode::Plan {
   std::vector<std::string> embeddings;      // every embedding a term names: e0, e1, ...
   std::map<const Term*, std::size_t> site;  // collect -> CollectSite number (and bag)
   std::vector<const Term*> sites;
+  std::map<const Term*, std::size_t> each_site;  // each -> EachSite number
+  std::vector<const Term*> each_sites;
   std::vector<Grouping> right_groups;  // per used embedding
   std::vector<std::vector<NodeId>> kept_at;  // per used embedding and group: kept_groups
 
@@ -86,6 +87,10 @@ struct TermCode::Plan {
       if (t.kind == Term::Kind::collect) {
         site[&t] = sites.size();
         sites.push_back(&t);
+      }
+      if (t.kind == Term::Kind::each) {
+        each_site[&t] = each_sites.size();
+        each_sites.push_back(&t);
       }
       for (const Term& a : t.args) self(a, self);
     };
@@ -132,13 +137,21 @@ struct TermCode::Plan {
   }
   bool extended() const { return terms.instantiation == Instantiation::extended; }
 
-  // The dart of a Node term at pattern position p.
-  std::string node(const Term& t) const {
+  // The dart variables of the each loops around a term being generated,
+  // outermost first: (name, C++ variable).
+  using Bound = std::vector<std::pair<std::string, std::string>>;
+
+  // The dart of a Node term at pattern position p. A name is L's node
+  // first, then an each's dart variable (the evaluator's order of names;
+  // the checker refuses a dart variable that hides a node).
+  std::string node(const Term& t, const Bound& bound = {}) const {
     if (t.kind == Term::Kind::variable) {
       if (const auto x = op.rule.left().find(t.name)) return fmt::format("match[{} * np + p]", *x);
+      for (const auto& [name, var] : bound)
+        if (name == t.name) return var;
       return fmt::format("(throw EvaluationError({}), no_dart)", cpp_literal(fmt::format("node variable '{}' is not bound", t.name)));
     }
-    return fmt::format("neighbour(g, {}, {}, {})", t.dim, node(t.args[0]), cpp_literal(t.str()));
+    return fmt::format("neighbour(g, {}, {}, {})", t.dim, node(t.args[0], bound), cpp_literal(t.str()));
   }
 
   // The class a term of R is evaluated for in an everywhere function
@@ -180,55 +193,94 @@ struct TermCode::Plan {
   // Statements computing the value of t into a fresh variable; its name.
   // `seen` (the collects of the term so far, by text) lets a collect that
   // the term repeats, as count(x) beside center(x), reuse the first one's
-  // bag instead of walking the orbit again.
+  // bag instead of walking the orbit again. `bound`: the dart variables
+  // of the each loops around t. A multiset (collect, each, list) is a
+  // span or a vector of values, which the bag functions take as a span.
   std::string value(const Term& t, std::string& code, int& next, const Along* along = nullptr,
-                    std::map<std::string, std::string>* seen = nullptr) const {
+                    std::map<std::string, std::string>* seen = nullptr, const Bound& bound = {}) const {
     if (t.kind == Term::Kind::collect && seen)
       if (const auto it = seen->find(t.str()); it != seen->end()) return it->second;
     const std::string v = fmt::format("v{}", next++);
     if (t.kind == Term::Kind::collect && seen) (*seen)[t.str()] = v;
+    auto out = std::back_inserter(code);
     switch (t.kind) {
       case Term::Kind::literal:
       case Term::Kind::parameter: {
         const Value& x = t.literal;
         if (x.type == ValueType::string)
-          fmt::format_to(std::back_inserter(code), "    const Value {} = Value::text({});\n", v, cpp_literal(x.string()));
+          fmt::format_to(out, "    const Value {} = Value::text({});\n", v, cpp_literal(x.string()));
         else
-          fmt::format_to(std::back_inserter(code), "    const Value {} = Value{{ValueType::{}, {{{}, {}, {}}}, {}}};  // {}\n", v, type_name(x.type),
+          fmt::format_to(out, "    const Value {} = Value{{ValueType::{}, {{{}, {}, {}}}, {}}};  // {}\n", v, type_name(x.type),
                          double_literal(x.x[0]), double_literal(x.x[1]), double_literal(x.x[2]), x.i, comment_text(t.str()));
         return v;
       }
       case Term::Kind::access:
-        fmt::format_to(std::back_inserter(code), "    const Value {} = read(e{}, {}, {}, {});\n", v, index_of(t.name), node(t.args[0]),
-                       cpp_literal(t.name), cpp_literal(t.str()));
+        fmt::format_to(out, "    const Value {} = read(e{}, {}, {}, {});\n", v, index_of(t.name), node(t.args[0], bound), cpp_literal(t.name),
+                       cpp_literal(t.str()));
         return v;
       case Term::Kind::collect: {
         const std::size_t s = site.at(&t);
         if (const auto ab = collect_along(t, along)) {
-          fmt::format_to(std::back_inserter(code),
+          fmt::format_to(out,
                          "    const std::span<const Value> {0} = alternated{1}_{2}  // {3}: the class of p is this orbit\n"
                          "        ? tw.collect_class({4}, site{4}, g, e{5}, static_cast<std::uint32_t>(p), ws.shift[{6}].data(), ws.shift[{7}].data())\n"
                          "        : tw.collect({4}, site{4}, g, e{5}, {8});\n",
-                         v, along->u, along->g, comment_text(t.str()), s, index_of(t.name), ab->first, ab->second, node(t.args[0]));
+                         v, along->u, along->g, comment_text(t.str()), s, index_of(t.name), ab->first, ab->second, node(t.args[0], bound));
           return v;
         }
-        fmt::format_to(std::back_inserter(code), "    const std::span<const Value> {} = tw.collect({}, site{}, g, e{}, {});  // {}\n", v, s, s,
-                       index_of(t.name), node(t.args[0]), comment_text(t.str()));
+        fmt::format_to(out, "    const std::span<const Value> {} = tw.collect({}, site{}, g, e{}, {});  // {}\n", v, s, s, index_of(t.name),
+                       node(t.args[0], bound), comment_text(t.str()));
         return v;
       }
       case Term::Kind::call: {
         fmt::dynamic_format_arg_store<fmt::format_context> args;
-        for (const Term& a : t.args) args.push_back(value(a, code, next, along, seen));
-        fmt::format_to(std::back_inserter(code), "    const Value {} = {};  // {}\n", v, fmt::vformat(t.function->cpp, args), comment_text(t.str()));
+        for (const Term& a : t.args) args.push_back(value(a, code, next, along, seen, bound));
+        fmt::format_to(out, "    const Value {} = {};  // {}\n", v, fmt::vformat(t.function->cpp, args), comment_text(t.str()));
+        return v;
+      }
+      case Term::Kind::each: {
+        // The evaluator's each_bag: the body once per dart of the orbit,
+        // in its walk's order, then each_values. The body's code is a
+        // block of its own: what it declares, its collects included, is
+        // not seen after the loop.
+        const std::size_t s = each_site.at(&t);
+        const std::string orbit = fmt::format("orbit{}", v), x = fmt::format("x{}", v);
+        fmt::format_to(out,
+                       "    std::vector<Value> {0};  // {1}\n"
+                       "    {{\n"
+                       "    const std::vector<Dart> {2} = tw.each_orbit(g, {3}, each{4});\n"
+                       "    {0}.reserve({2}.size());\n"
+                       "    for ([[maybe_unused]] const Dart {5} : {2}) {{  // a body may not read its dart\n",
+                       v, comment_text(t.str()), orbit, node(t.args[0], bound), s, x);
+        Bound inner = bound;
+        inner.emplace_back(t.name, x);
+        std::map<std::string, std::string> body_seen = seen ? *seen : std::map<std::string, std::string>{};
+        std::string body;
+        const std::string b = value(t.args[1], body, next, along, &body_seen, inner);
+        indent(body);
+        code += body;
+        fmt::format_to(out, "      {}.push_back({});\n    }}\n    tw.each_finish({}, {}, g, each{});\n    }}\n", v, b, v, orbit, s);
+        return v;
+      }
+      case Term::Kind::list: {
+        // The evaluator's list: values and multisets' elements, sorted.
+        std::vector<std::string> parts;
+        for (const Term& a : t.args) parts.push_back(value(a, code, next, along, seen, bound));
+        fmt::format_to(out, "    std::vector<Value> {};  // {}\n", v, comment_text(t.str()));
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+          if (t.args[k].sort.kind == Sort::multiset)
+            fmt::format_to(out, "    {0}.insert({0}.end(), {1}.begin(), {1}.end());\n", v, parts[k]);
+          else
+            fmt::format_to(out, "    {}.push_back({});\n", v, parts[k]);
+        }
+        fmt::format_to(out, "    std::sort({0}.begin(), {0}.end(), [](const Value& a, const Value& b) {{ return value_less(a, b); }});\n", v);
         return v;
       }
       case Term::Kind::variable:
       case Term::Kind::neighbour:
-      case Term::Kind::each:  // refused by terms_not_compilable
-      case Term::Kind::list:
         break;
     }
-    fmt::format_to(std::back_inserter(code), "    const Value {} = (throw EvaluationError({}), Value{{}});\n", v,
+    fmt::format_to(out, "    const Value {} = (throw EvaluationError({}), Value{{}});\n", v,
                    cpp_literal(fmt::format("'{}' is a node, not a value", t.str())));
     return v;
   }
@@ -396,6 +448,11 @@ void TermCode::lookups(Out out) const {
   }
   for (std::size_t s = 0; s < p.sites.size(); ++s)
     fmt::format_to(out, "  static const CollectSite site{}({}, {{{}}});\n", s, cpp_literal(p.sites[s]->name), fmt::join(p.sites[s]->orbit, ", "));
+  for (std::size_t s = 0; s < p.each_sites.size(); ++s) {
+    const Term& t = *p.each_sites[s];
+    fmt::format_to(out, "  static const EachSite each{}({{{}}}, {{{}}}, {}, {});\n", s, fmt::join(t.orbit, ", "), fmt::join(t.sub_orbit, ", "),
+                   t.per_sub, cpp_literal(t.str()));
+  }
   for (std::size_t u = 0; u < p.kept_at.size(); ++u)
     for (std::size_t g = 0; g < p.kept_at[u].size(); ++g)
       if (p.kept_at[u][g] != no_node) fmt::format_to(out, "  bool kept{}_{} = false;  // the kept-label shortcut taken\n", u, g);
@@ -489,9 +546,7 @@ void TermCode::before_rewrite(Out out, bool everywhere) const {
         const Plan::Along along{u, p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0};
         std::map<std::string, std::string> seen;
         const std::string v = p.value(t.term, code, next, everywhere && p.extended() && p.right_groups[u].grouped ? &along : nullptr, &seen);
-        for (std::size_t i = 0; i < code.size(); ++i) {  // one more indent
-          if (i == 0 || code[i - 1] == '\n') code.insert(i, "  ");
-        }
+        indent(code);  // one more level
         out = std::copy(code.begin(), code.end(), out);
         fmt::format_to(out, "      here = {{static_cast<std::uint32_t>(tw.evaluated.size()), false}};\n      tw.evaluated.push_back({});\n", v);
       }

@@ -13,6 +13,14 @@ namespace dartcheck::compiled {
 CollectSite::CollectSite(std::string embedding, std::vector<Dim> orbit)
     : name(std::move(embedding)), dims(std::move(orbit)), outer(dims_generators(dims)) {}
 
+EachSite::EachSite(std::vector<Dim> orbit, std::vector<Dim> sub_orbit, bool per, std::string term)
+    : outer(dims_generators(orbit)), sub_dims(std::move(sub_orbit)), per_sub(per), text(std::move(term)) {
+  std::vector<Dim> within;  // <s> ∩ <o>: the sub-orbits inside the orbit, as the evaluator's
+  for (Dim i : sub_dims)
+    if (std::find(orbit.begin(), orbit.end(), i) != orbit.end()) within.push_back(i);
+  sub = dims_generators(within);
+}
+
 void TermWorkspace::prepare(std::size_t used, std::size_t sites) {
   if (bags.size() < sites) bags.resize(sites);
   if (within.size() < sites) within.resize(sites);
@@ -170,6 +178,17 @@ bool TermWorkspace::alternate(const Map& g, Dim a, Dim b, Dart d) {
 const std::vector<Dart>& TermWorkspace::orbit(const Map& g, Dart d, std::span<const OrbitWord> generators) {
   walkers_for(g);
   return writer_->orbit(d, generators);
+}
+
+std::vector<Dart> TermWorkspace::each_orbit(const Map& g, Dart d, const EachSite& site) {
+  walkers_for(g);
+  const std::vector<Dart>& o = outer_->orbit(d, site.outer);
+  return {o.begin(), o.end()};
+}
+
+void TermWorkspace::each_finish(std::vector<Value>& values, std::span<const Dart> orbit, const Map& g, const EachSite& site) {
+  walkers_for(g);
+  each_values(values, orbit, site.per_sub, site.sub, *inner_, site.text, site.sub_dims);
 }
 
 const Value& read(const Embedding* e, Dart d, const char* embedding, const char* term) {

@@ -43,6 +43,18 @@ struct CollectSite {
   std::vector<OrbitWord> outer;
 };
 
+/// An each(x in <o>(y): t) or each(x in <o>_<s>(y): t) of a term (Jerboa's
+/// loop over an orbit's darts), known when the code is generated: the
+/// generators of <o> and of <s> ∩ <o>, and the term's text and <s> for
+/// the message of a sub-orbit whose darts give two values. Immutable.
+struct EachSite {
+  EachSite(std::vector<Dim> orbit, std::vector<Dim> sub_orbit, bool per_sub, std::string text);
+  std::vector<OrbitWord> outer, sub;
+  std::vector<Dim> sub_dims;
+  bool per_sub;
+  std::string text;
+};
+
 /// The tables of an application's terms, kept from one application to the
 /// next (a member of compiled::Workspace).
 struct TermWorkspace {
@@ -117,6 +129,12 @@ struct TermWorkspace {
   /// no involution to check (alternating_classes checked them).
   std::span<const Value> collect_class(std::size_t bag, const CollectSite& site, const Map& g, const Embedding* e, std::uint32_t p,
                                        const std::uint32_t* a, const std::uint32_t* b);
+  /// The darts of d's <o>-orbit for `site`, in the evaluator's order (a
+  /// copy: the body's collects walk while the loop runs).
+  std::vector<Dart> each_orbit(const Map& g, Dart d, const EachSite& site);
+  /// The each's multiset from its body's values on `orbit` (each_values,
+  /// the evaluator's own): one per sub-orbit where the site says, sorted.
+  void each_finish(std::vector<Value>& values, std::span<const Dart> orbit, const Map& g, const EachSite& site);
   /// The darts of d's orbit under `generators` in H (a walk).
   const std::vector<Dart>& orbit(const Map& g, Dart d, std::span<const OrbitWord> generators);
 

@@ -197,6 +197,31 @@ void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Da
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [](const Value& a, const Value& b) { return value_less(a, b); });
 }
 
+void each_values(std::vector<Value>& values, std::span<const Dart> orbit, bool per_sub, std::span<const OrbitWord> sub, OrbitWalker& walker,
+                 const std::string& text, const std::vector<Dim>& sub_dims) {
+  if (per_sub) {
+    // One value per <s>-orbit: every dart of it must give the same one.
+    std::unordered_map<Dart, std::size_t> at;
+    for (std::size_t k = 0; k < orbit.size(); ++k) at.emplace(orbit[k], k);
+    std::vector<bool> seen(orbit.size());
+    std::vector<Value> one;
+    for (std::size_t k = 0; k < orbit.size(); ++k) {
+      if (seen[k]) continue;
+      for (Dart z : walker.orbit(orbit[k], sub)) {
+        const std::size_t j = at.at(z);
+        seen[j] = true;
+        if (!(values[j] == values[k]))
+          throw EvaluationError(fmt::format("{}: the body gives {} at dart {} and {} at dart {} of one <{}>-orbit: its value depends on the dart "
+                                            "Jerboa's traversal picks",
+                                            text, values[k].str(), orbit[k], values[j].str(), z, fmt::join(sub_dims, ",")));
+      }
+      one.push_back(values[k]);
+    }
+    values = std::move(one);
+  }
+  std::sort(values.begin(), values.end(), [](const Value& x, const Value& y) { return value_less(x, y); });
+}
+
 std::size_t TermEvaluator::memo_for(const std::string& name, std::size_t e, const std::vector<Dim>& orbit) {
   for (std::size_t k = 0; k < memo_.size(); ++k)
     if (memo_[k].embedding == e && memo_[k].name == name && memo_[k].orbit == orbit) return k;
@@ -288,31 +313,9 @@ std::uint32_t TermEvaluator::each_bag(const CompiledTerm& c, const CompiledTerm:
     bound.back() = x;
     values.push_back(run(*b.program, bound));
   }
-  std::vector<Value> bag;
-  if (!t.per_sub) {
-    bag = std::move(values);
-  } else {
-    // One value per <s>-orbit: every dart of it must give the same one
-    // (Jerboa takes the dart its traversal meets first).
-    std::unordered_map<Dart, std::size_t> at;
-    for (std::size_t k = 0; k < orbit.size(); ++k) at.emplace(orbit[k], k);
-    std::vector<bool> seen(orbit.size());
-    for (std::size_t k = 0; k < orbit.size(); ++k) {
-      if (seen[k]) continue;
-      for (Dart z : inner_.orbit(orbit[k], b.sub)) {
-        const std::size_t j = at.at(z);
-        seen[j] = true;
-        if (!(values[j] == values[k]))
-          throw EvaluationError(fmt::format("{}: the body gives {} at dart {} and {} at dart {} of one <{}>-orbit: its value depends on the dart "
-                                            "Jerboa's traversal picks",
-                                            t.str(), values[k].str(), orbit[k], values[j].str(), z, fmt::join(t.sub_orbit, ",")));
-      }
-      bag.push_back(values[k]);
-    }
-  }
-  std::sort(bag.begin(), bag.end(), [](const Value& x, const Value& y) { return value_less(x, y); });
+  each_values(values, orbit, t.per_sub, b.sub, inner_, t.str(), t.sub_orbit);
   CollectMemo& m = memo_[s.target];
-  m.elements.insert(m.elements.end(), bag.begin(), bag.end());
+  m.elements.insert(m.elements.end(), values.begin(), values.end());
   m.start.push_back(static_cast<std::uint32_t>(m.elements.size()));
   return static_cast<std::uint32_t>(m.start.size() - 2);
 }

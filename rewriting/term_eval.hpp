@@ -20,6 +20,17 @@ namespace dartcheck {
 
 class TermEvaluator;
 
+/// The multiset of each(x in <o>(y): t) or each(x in <o>_<s>(y): t) from
+/// its body's values on a walk `orbit` of y's <o>-orbit (`values[k]` at
+/// `orbit[k]`), in place: every value, or with `per_sub` one per <s>-orbit
+/// inside it (`sub`: the generators of <s> ∩ <o>, walked with `walker`),
+/// each dart of a sub-orbit giving the same value or EvaluationError
+/// (Jerboa takes the dart its traversal meets first); sorted by value_less.
+/// `text` and `sub_dims` (<s>) name the term in the message. The evaluator
+/// and compiled rules both finish an each through it.
+void each_values(std::vector<Value>& values, std::span<const Dart> orbit, bool per_sub, std::span<const OrbitWord> sub, OrbitWalker& walker,
+                 const std::string& text, const std::vector<Dim>& sub_dims);
+
 /// The multiset of a collect pi<o'>(x) (003 Def. 9) from a walk `orbit` of
 /// x's <o'>-orbit: one value per pi-orbit inside it (that of its smallest
 /// labeled dart), each pi-orbit taken through `inner`, the generators of
@@ -45,18 +56,6 @@ class CompiledTerm {
  private:
   friend class TermEvaluator;
 
-  /// The multiset of a collect pi<o'>(x) (003 Def. 9) from a walk `orbit` of
-  /// x's <o'>-orbit: one value per pi-orbit inside it, each pi-orbit taken
-  /// through `inner`, the generators of <o> ∩ <o'> (walked with
-  /// `inner_walker`), appended to `out` in a canonical order (value_less),
-  /// so the multiset is the same from any dart of the orbit. `done` holds one
-  /// bit per dart, clear before and after. Throws EvaluationError, naming
-  /// pi (`name`) and <o'> (`dims`), when a pi-orbit has no value. The
-  /// evaluator and compiled rules (rewriting/compiled_terms.hpp) both
-  /// collect through it.
-  void collect_orbit_values(const Map& map, const Embedding& e, std::span<const Dart> orbit, std::span<const OrbitWord> inner,
-                            OrbitWalker& inner_walker, std::vector<std::uint64_t>& done, std::vector<Value>& out, const std::string& name,
-                            const std::vector<Dim>& dims);
   struct Step {
     enum class Op : std::uint8_t { literal, access, collect, call, each, list, fail };
     Op op = Op::literal;
