@@ -59,11 +59,12 @@ int recombine(const RecombineOptions& o) {
   // Before the work, as the output file.
   querymodify::check_contacts(querymodify::parse_strategy(o.strategy), querymodify::parse_search(o.search), o.conforming);
   querymodify::parse_cells(o.cells);
-  if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".mesh")
-    throw InputError("<command line>", 0, 0, fmt::format("-o: expected a medit .mesh file, got '{}'", o.output));
+  if (!o.output.empty() && !is_volume_mesh_output(o.output))
+    throw InputError("<command line>", 0, 0, fmt::format("-o: expected a {} file, got '{}'", volume_mesh_outputs, o.output));
   if (!o.output.empty()) check_writable(o.output);
   StatusLine status_line;
-  const auto run = querymodify::recombine_mesh(o.mesh, o.strategy, o.min_quality, o.output, o.search, o.conforming, o.cells, status_line.progress());
+  const auto run = querymodify::recombine_mesh(o.mesh, o.strategy, o.min_quality, o.output, o.search, o.conforming, o.cells, status_line.progress(),
+                                               o.msh_version == "2.2" ? GmshVersion::v22 : GmshVersion::v41);
   status_line.clear();
   if (!run.input_valid) {
     fmt::print(stderr, "BUG: the map of {} is not a valid open 3-O-map\n", o.mesh);
@@ -76,6 +77,12 @@ int recombine(const RecombineOptions& o) {
                             status);
   if (status != ok)
     fmt::print(stderr, "BUG: the recombined map is {} ({} darts, {} expected)\n", run.valid ? "valid" : "invalid", run.darts, run.expected_darts);
+  // Accepted is not good: the threshold keeps valid cells, not cells a
+  // solver is happy with.
+  if (run.quality.poor > 0 && !terminal().quiet)
+    fmt::print(stderr, "{}: warning: {} of the {} recombined cells have a scaled Jacobian under {} (the worst {:.3g}), poor for a simulation; "
+                       "`--min-quality {}` refuses them\n",
+               printable(o.mesh), run.quality.poor, run.quality.cells, querymodify::poor_quality, run.quality.quantiles[0], querymodify::poor_quality);
   return status;
 }
 

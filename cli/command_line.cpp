@@ -269,7 +269,7 @@ void add_infer(CLI::App& app, Commands& commands) {
 void add_recombine(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<RecombineOptions>();
   auto* rc = app.add_subcommand("recombine", "Recombine a tetrahedral mesh into hexahedra by query-modify (001 Sec. 7.1) and check the result");
-  rc->add_option("mesh", o->mesh, "tetrahedral mesh: TetGen .node/.ele or medit .mesh")->required();
+  rc->add_option("mesh", o->mesh, "tetrahedral mesh: TetGen .node/.ele, medit .mesh or gmsh .msh (4.1 or 2.2, ASCII)")->required();
   rc->add_option("--strategy", o->strategy, "greedy (first match from each dart) or global (best scaled Jacobian first)")
       ->capture_default_str()
       ->check(CLI::IsMember({"greedy", "global"}));
@@ -288,7 +288,12 @@ void add_recombine(CLI::App& app, Commands& commands) {
   rc->add_flag("--conforming", o->conforming,
                "select only cells that meet the others in nothing, a vertex, an edge or a face of both (a conforming mesh; "
                "the global strategy's vertex search)");
-  rc->add_option("-o,--output", o->output, "write the hexes and the remaining tetrahedra as a medit .mesh");
+  rc->add_option("-o,--output", o->output,
+                 "write the cells and the remaining tetrahedra as .mesh (medit), .vtu or .vtk (VTK: ParaView) or .msh (gmsh), "
+                 "with each cell's scaled Jacobian where the format carries cell data");
+  rc->add_option("--msh-version", o->msh_version, "gmsh's format for -o X.msh: 4.1, or 2.2 for older readers")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"4.1", "2.2"}));
   add_format(rc, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (one run of a campaign over many meshes, for merge)");
   commands.push_back({rc, [o] { return recombine(*o); }});
 }

@@ -124,6 +124,7 @@ int infer(const InferCommand& o);
 
 struct RecombineOptions {
   std::string mesh, strategy = "global", search = "vertices", output, format = "text", cells = "hex";
+  std::string msh_version = "4.1";  // gmsh's format for -o X.msh
   double min_quality = 0.0;  // cells must have a scaled Jacobian above it
   bool conforming = false;   // cells meet only in a vertex, an edge or a face of both
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "io/gmsh_msh.hpp"
 #include "io/line_reader.hpp"
 
 namespace dartcheck {
@@ -60,7 +61,7 @@ void refuse_more(LineReader& r, long count, const char* what, int header_line) {
 
 bool is_tet_mesh_path(const std::string& file) {
   const auto e = extension(file);
-  return e == ".node" || e == ".ele" || e == ".mesh";
+  return e == ".node" || e == ".ele" || e == ".mesh" || e == ".msh";
 }
 
 TetMesh read_tetgen(const std::string& file) {
@@ -194,7 +195,8 @@ TetMesh read_tet_mesh(const std::string& file) {
   const auto e = extension(file);
   if (e == ".mesh") return read_medit(file);
   if (e == ".node" || e == ".ele") return read_tetgen(file);
-  throw InputError(file, 0, 0, "unknown tetrahedral mesh type (expected .node, .ele or .mesh)");
+  if (e == ".msh") return read_gmsh(file);
+  throw InputError(file, 0, 0, "unknown tetrahedral mesh type (expected .node, .ele, .mesh or .msh)");
 }
 
 }  // namespace dartcheck

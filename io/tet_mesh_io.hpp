@@ -41,7 +41,7 @@ TetMesh read_medit(const std::string& file);
 /// Hexahedra, Prisms and Pyramids (each written only when not empty),
 /// reference 0 everywhere.
 void write_medit(std::ostream& out, const TetMesh& m);
-/// By extension: .node, .ele, .mesh.
+/// By extension: .node, .ele, .mesh, .msh (gmsh, io/gmsh_msh.hpp).
 TetMesh read_tet_mesh(const std::string& file);
 bool is_tet_mesh_path(const std::string& file);
 

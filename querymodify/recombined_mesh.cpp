@@ -3,7 +3,6 @@
 #include <sys/resource.h>
 
 #include <chrono>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -82,7 +81,7 @@ TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {
 }
 
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
-                            const std::string& search, bool conforming, const std::string& cells, const Progress& progress) {
+                            const std::string& search, bool conforming, const std::string& cells, const Progress& progress, GmshVersion gmsh) {
   const auto stage = [&](std::string_view what) {
     if (progress) progress(what, 0, 0);
   };
@@ -123,11 +122,14 @@ RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy
   run.output_check_seconds = since(t);
   run.darts = in.map.map.size();
   run.expected_darts = 36 * run.result.hexes + 24 * run.result.prisms.cells.size() + 18 * run.result.pyramids.cells.size() + 12 * run.result.tets;
+  const TetMesh result = recombined_mesh(in.mesh, run.result);
+  const std::vector<double> quality = cell_qualities(result);
+  run.quality = summarize_quality(result, quality);
   if (!output.empty()) {
     stage("writing the mesh");
-    std::ostringstream text;
-    write_medit(text, recombined_mesh(in.mesh, run.result));
-    write_file(output, text.str());
+    std::vector<double> types;
+    for (CellKind k : volume_cells(result, CornerConvention::vtk).kind) types.push_back(vtk_type(k));
+    write_file(output, volume_mesh_text(result, output, {{"scaled_jacobian", quality, false}, {"vtk_cell_type", types, true}}, gmsh));
     run.output = output;
   }
   run.total_seconds = since(start);

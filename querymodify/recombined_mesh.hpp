@@ -1,12 +1,15 @@
 // The recombination of a tetrahedral mesh file (`dartcheck recombine`):
-// read, checked, recombined (001 Sec. 7.1), checked again and written as
-// a medit mesh of hexahedra and the tetrahedra left, with the time of
-// each phase.
+// read, checked, recombined (001 Sec. 7.1), checked again, its quality
+// measured and written (medit, VTK or gmsh: io/volume_mesh_writer.hpp)
+// with the hexahedra, prisms, pyramids and the tetrahedra left, with the
+// time of each phase.
 #pragma once
 
 #include <string>
 
 #include "io/tet_mesh_io.hpp"
+#include "io/volume_mesh_writer.hpp"
+#include "querymodify/mesh_quality.hpp"
 #include "querymodify/recombination.hpp"
 
 namespace dartcheck::querymodify {
@@ -35,14 +38,18 @@ struct RecombineRun {
   bool valid = false;
   double read_seconds = 0, input_check_seconds = 0, query_seconds = 0, output_check_seconds = 0, total_seconds = 0;
   double peak_mib = 0;  // the process's peak resident memory
+  /// The output mesh's quality (of every cell, hexahedra first as written).
+  QualitySummary quality;
   /// The result is a valid map of 36 darts per hex (its 12 boundary
   /// triangles), 24 per prism (8), 18 per pyramid (6) and 12 per
   /// tetrahedron.
   bool sound() const { return input_valid && valid && darts == expected_darts; }
 };
 
-/// Recombines the mesh in `mesh` (TetGen .node/.ele or medit .mesh) and
-/// writes the result to `output` unless it is empty. With an invalid input
+/// Recombines the mesh in `mesh` (TetGen .node/.ele, medit .mesh or gmsh
+/// .msh) and writes the result to `output` unless it is empty, in the
+/// format its extension names (gmsh's version `gmsh` for .msh), with each
+/// cell's scaled Jacobian and VTK type as cell data where the format has it. With an invalid input
 /// map (a defect of the reader) nothing is recombined.
 /// `conforming` (hex_contacts.hpp) needs the global strategy's vertex
 /// search; InputError otherwise.
@@ -50,7 +57,7 @@ struct RecombineRun {
 /// `progress` hears each stage (recombination.hpp).
 RecombineRun recombine_mesh(const std::string& mesh, const std::string& strategy, double min_quality, const std::string& output,
                             const std::string& search = "vertices", bool conforming = false, const std::string& cells = "hex",
-                            const Progress& progress = {});
+                            const Progress& progress = {}, GmshVersion gmsh = GmshVersion::v41);
 
 /// The hexes, prisms and pyramids of `r` (medit's corner orders) and the
 /// tetrahedra it left, on `input`'s points.

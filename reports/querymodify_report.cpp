@@ -43,6 +43,39 @@ double tets_per_second(const RecombineRun& run) { return run.total_seconds > 0 ?
 
 Json number_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
+// The output's quality: quantiles and a histogram of the recombined
+// cells' scaled Jacobian, and the share of the volume per kind of cell.
+std::string quality_text(const querymodify::QualitySummary& s) {
+  std::string out;
+  if (s.cells > 0) {
+    out += fmt::format("cells       scaled Jacobian of the {} recombined cells:", s.cells);
+    for (std::size_t k = 0; k < s.quantiles.size(); ++k) out += fmt::format("{} {} {:.3f}", k ? "," : "", querymodify::quantile_names[k], s.quantiles[k]);
+    out += "\n";
+    const std::size_t most = *std::max_element(s.histogram.begin(), s.histogram.end());
+    for (std::size_t k = 0; k < s.histogram.size(); ++k) {
+      const std::size_t bar = most ? (s.histogram[k] * 40 + most - 1) / most : 0;  // rounded up: a bin with cells shows
+      out += fmt::format("            {:<11} {:>8} {}\n", querymodify::histogram_labels[k], s.histogram[k], std::string(bar, '#'));
+    }
+  }
+  out += fmt::format("volume      hexahedra {:.1f}%, prisms {:.1f}%, pyramids {:.1f}%, tetrahedra {:.1f}% of the mesh's volume\n",
+                     100 * s.volume_share[0], 100 * s.volume_share[1], 100 * s.volume_share[2], 100 * s.volume_share[3]);
+  return out;
+}
+
+Json quality_document(const querymodify::QualitySummary& s) {
+  Json quantiles = Json::object();
+  for (std::size_t k = 0; k < s.quantiles.size(); ++k) quantiles[querymodify::quantile_names[k]] = number_or_null(s.quantiles[k]);
+  Json bins = Json::array();
+  for (std::size_t k = 0; k < s.histogram.size(); ++k) bins.push_back(Json{{"bin", querymodify::histogram_labels[k]}, {"cells", s.histogram[k]}});
+  return Json{{"recombined_cells", s.cells},
+              {"quantiles", quantiles},
+              {"histogram", bins},
+              {"poor_threshold", querymodify::poor_quality},
+              {"poor_cells", s.poor},
+              {"volume_share", Json{{"hexahedra", s.volume_share[0]}, {"prisms", s.volume_share[1]}, {"pyramids", s.volume_share[2]},
+                                    {"tetrahedra", s.volume_share[3]}}}};
+}
+
 }  // namespace
 
 std::string recombine_text(const RecombineRun& run) {
@@ -76,6 +109,7 @@ std::string recombine_text(const RecombineRun& run) {
   if (with_pyramids(run)) out += fmt::format(" ({} with the pyramids left as tetrahedra)", r.quads_facing_triangles_before_pyramids);
   out += "\n";
   out += fmt::format("merge       {:.3f} s\n", r.merge_seconds);
+  out += quality_text(run.quality);
   if (with_prisms(run) || with_pyramids(run))
     out += fmt::format(
         "result      {} hexes, {} prisms, {} pyramids, {} tetrahedra; {} darts ({} expected: 36 per hex + 24 per prism + 18 per pyramid + 12 per "
@@ -138,6 +172,7 @@ Json recombine_document(const RecombineRun& run) {
   doc["quads_facing_triangles_before_pyramids"] = with_pyramids(run) ? Json(r.quads_facing_triangles_before_pyramids) : Json(nullptr);
   doc["quality_min"] = number_or_null(q.min);
   doc["quality_median"] = number_or_null(q.median);
+  doc["quality"] = quality_document(run.quality);
   doc["seconds"] = Json{{"read", run.read_seconds},
                         {"check_input", run.input_check_seconds},
                         {"queries", run.query_seconds},

@@ -44,6 +44,9 @@ tests=(
   libcgal-dev libcgal-demo geomview assimp-testmodels libopenmesh-dev
   # Tetrahedral meshes of CGAL's surfaces for the tet -> hex recombination.
   tetgen
+  # Independent readers of the meshes recombine writes (VTK, gmsh, medit),
+  # and gmsh's own tetrahedral meshes as its input (tests/cli/mesh_outputs.py).
+  gmsh python3-meshio
   # Campaigns (docs/scale.md): GNU parallel runs shards in the tests; Slurm
   # (with munge) runs the job-array script on a one-node cluster.
   parallel slurm-wlm munge

@@ -1,0 +1,21 @@
+// Volume meshes as VTK files, which ParaView and VisIt open: the XML
+// unstructured grid (.vtu) and the legacy format (.vtk), ASCII. Cells are
+// numbered as every mesh writer numbers them (io/volume_cells.hpp:
+// hexahedra, prisms, pyramids, tetrahedra) with VTK's corner conventions;
+// per-cell values go along as cell data.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "io/volume_cells.hpp"
+
+namespace dartcheck {
+
+/// Throws std::logic_error when a field has not one value per cell
+/// (a caller's defect: the fields are computed from the same mesh).
+void write_vtu(std::ostream& out, const TetMesh& m, const std::vector<CellField>& fields = {});
+void write_legacy_vtk(std::ostream& out, const TetMesh& m, const std::vector<CellField>& fields = {});
+
+}  // namespace dartcheck
