@@ -55,7 +55,7 @@ RunHeader read_header(const Json& j, const std::string& file, int line) {
   try {
     h.shard = parse_shard(string_at(j, "shard", file, line), "shard");
   } catch (const InputError& e) {
-    throw InputError(file, line, 1, e.what());
+    throw InputError(file, line, 1, e.message());
   }
   if (!j.contains("parameters") || !j["parameters"].is_object()) throw InputError(file, line, 1, "expected an object \"parameters\" in the header");
   h.parameters = j["parameters"];

@@ -32,6 +32,11 @@ std::string default_namespace(const std::string& catalog) {
   return "compiled_" + compiler::function_name(std::filesystem::path(catalog).stem().string(), {}, {});
 }
 
+// A line about a rule at its place in the catalog, in gcc's style.
+std::string at(const CatalogRule& r, std::string_view severity, const std::string& message) {
+  return painted_diagnostic(diagnostic(severity, printable(r.location.file), r.location.line, r.location.column, message));
+}
+
 }  // namespace
 
 int compile(const CompileOptions& o) {
@@ -59,23 +64,23 @@ int compile(const CompileOptions& o) {
     if (!result.consistent() && !(o.embedding_failures && embedding_only)) {
       ++inconsistent;
       if (!o.rules.empty()) {
-        fmt::print(stderr, "error: compile: rule '{}' ({}) fails {}: only a rule the static checker calls consistent is compiled{}\n",
-                   printable(r.rule.name()), printable(r.location.str()), fails,
-                   embedding_only ? " (its topology holds: --with-embedding-failures compiles it with the interpreter's values)" : "");
+        fmt::print(stderr, "{}\n",
+                   at(r, "error", fmt::format("rule '{}' fails {}: only a rule the static checker calls consistent is compiled{}", printable(r.rule.name()),
+                                              fails, embedding_only ? " (its topology holds: --with-embedding-failures compiles it with the interpreter's values)" : "")));
         if (refused == ok) refused = violation;
         continue;
       }
-      fmt::print(stderr, "skipped {} ({}): fails {}\n", printable(r.rule.name()), printable(r.location.str()), fails);
+      if (!terminal().quiet) fmt::print(stderr, "{}\n", at(r, "note", fmt::format("rule '{}' skipped: fails {}", printable(r.rule.name()), fails)));
       continue;
     }
     if (const auto why = compiler::not_compilable(r)) {
       ++unsupported;
       if (!o.rules.empty()) {
-        fmt::print(stderr, "error: compile: rule '{}' ({}) is not compiled: {}\n", printable(r.rule.name()), printable(r.location.str()), *why);
+        fmt::print(stderr, "{}\n", at(r, "error", fmt::format("rule '{}' is not compiled: {}", printable(r.rule.name()), *why)));
         if (refused == ok) refused = bad_input;
         continue;
       }
-      fmt::print(stderr, "skipped {} ({}): {}\n", printable(r.rule.name()), printable(r.location.str()), *why);
+      if (!terminal().quiet) fmt::print(stderr, "{}\n", at(r, "note", fmt::format("rule '{}' skipped: {}", printable(r.rule.name()), *why)));
       continue;
     }
     if (!result.consistent()) ++with_failures;

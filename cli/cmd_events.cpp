@@ -50,10 +50,10 @@ int events_command(const EventsOptions& o) {
         misfit.reset();
         break;
       } catch (const InputError& e) {
-        if (!misfit) misfit = e.what();
+        if (!misfit) misfit = e.message();
       }
     }
-    if (misfit) throw InputError("<command line>", 0, 0, misfit->substr(misfit->find("--orbit")));
+    if (misfit) throw InputError("<command line>", 0, 0, *misfit);
   }
   std::vector<std::string> hooks;
   for (Dart h : o.hooks) hooks.push_back(std::to_string(h));

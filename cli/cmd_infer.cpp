@@ -113,9 +113,9 @@ int infer(const InferCommand& o) {
     fmt::print(stderr, "not written: {} (no rule inferred)\n", o.output);
   }
   if (quiet && o.format != "json") {  // what makes the exit status non-zero
-    if (contradiction) fmt::print(stderr, "error: SOUNDNESS BUG: an inferred rule does not give the example back (run without -q for the details)\n");
+    if (contradiction) fmt::print(stderr, "dartcheck: error: SOUNDNESS BUG: an inferred rule does not give the example back (run without -q for the details)\n");
     if (inferred == 0)
-      fmt::print(stderr, "error: no rule inferred from {} (run without -q for each start's failure)\n", counted(attempts.size(), "start"));
+      fmt::print(stderr, "dartcheck: error: no rule inferred from {} (run without -q for each start's failure)\n", counted(attempts.size(), "start"));
   }
   if (contradiction) return 3;
   return inferred ? 0 : 1;

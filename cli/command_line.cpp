@@ -425,16 +425,16 @@ int run_command(const Commands& commands) {
     for (const auto& [sub, run] : commands)
       if (*sub) return run();
   } catch (const InputError& e) {
-    fmt::print(stderr, "{}\n", painted_diagnostic(fmt::format("error: {}", e.what())));
+    fmt::print(stderr, "{}\n", painted_diagnostic(e.diagnostic()));
     return bad_input;
   } catch (const OutputError& e) {
-    fmt::print(stderr, "{}\n", painted_diagnostic("error: " + printable(e.what())));
+    fmt::print(stderr, "{}\n", painted_diagnostic(diagnostic("error", "", 0, 0, printable(e.what()))));
     return output_error;
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "error: out of memory (the input is larger than this machine can hold; see --limit-darts)\n");
+    fmt::print(stderr, "dartcheck: error: out of memory (the input is larger than this machine can hold; see --limit-darts)\n");
     return bad_input;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "{}\n", painted_diagnostic("error: " + printable(e.what())));
+    fmt::print(stderr, "{}\n", painted_diagnostic(diagnostic("error", "", 0, 0, printable(e.what()))));
     return bad_input;
   }
   return bad_input;

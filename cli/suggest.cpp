@@ -22,7 +22,7 @@ std::optional<int> help_request(const CommandTable& table, int argc, char** argv
     return 0;
   }
   const std::string best = closest_name(argv[2], table.commands);
-  fmt::print(stderr, "error: 'help {}': no such command{}\n", printable(argv[2]), best.empty() ? "" : fmt::format("; did you mean '{}'?", best));
+  fmt::print(stderr, "dartcheck: error: 'help {}': no such command{}\n", printable(argv[2]), best.empty() ? "" : fmt::format("; did you mean '{}'?", best));
   return 2;
 }
 
@@ -34,7 +34,7 @@ int report_parse_error(const CommandTable& table, std::string_view what, int arg
   // A mistyped command: the suggestion is the whole message.
   if (argc > 1 && argv[1][0] != '-' && command.empty()) {
     const std::string best = closest_name(argv[1], table.commands);
-    fmt::print(stderr, "error: '{}' is not a dartcheck command{} (dartcheck --help lists them)\n", printable(argv[1]),
+    fmt::print(stderr, "dartcheck: error: '{}' is not a dartcheck command{} (dartcheck --help lists them)\n", printable(argv[1]),
                best.empty() ? "" : fmt::format("; did you mean '{}'?", best));
     return 2;
   }
@@ -50,15 +50,15 @@ int report_parse_error(const CommandTable& table, std::string_view what, int arg
     if (!arg.starts_with("--") || (!command.empty() && what.find(typed) == std::string_view::npos)) continue;
     if (std::find(names.begin(), names.end(), typed) != names.end()) continue;
     const std::string best = closest_name(typed, names);
-    fmt::print(stderr, "error: {}: unknown option {}{} ({} lists them)\n", command.empty() ? "dartcheck" : command, printable(typed),
+    fmt::print(stderr, "dartcheck: error: {}unknown option {}{} ({} lists them)\n", command.empty() ? "" : command + ": ", printable(typed),
                best.empty() ? "" : fmt::format("; did you mean {}?", best), command.empty() ? "dartcheck --help" : "dartcheck help " + command);
     return 2;
   }
   if (command.empty()) {
-    fmt::print(stderr, "error: no command given (dartcheck --help lists them)\n");
+    fmt::print(stderr, "dartcheck: error: no command given (dartcheck --help lists them)\n");
     return 2;
   }
-  fmt::print(stderr, "error: {}: {}\n", command, printable(what));
+  fmt::print(stderr, "dartcheck: error: {}: {}\n", command, printable(what));
   return 2;
 }
 

@@ -38,7 +38,18 @@ std::string printable(std::string_view text) {
 
 // Messages may quote the input: they are made printable here, once for all.
 InputError::InputError(std::string file, int line, int column, const std::string& message)
-    : std::runtime_error(printable(position(file, line, column)) + ": " + printable(message)), file_(std::move(file)), line_(line), column_(column) {}
+    : std::runtime_error(printable(position(file, line, column)) + ": " + printable(message)),
+      file_(std::move(file)),
+      message_(printable(message)),
+      line_(line),
+      column_(column) {}
+
+std::string InputError::diagnostic() const { return dartcheck::diagnostic("error", printable(file_), line_, column_, message_); }
+
+std::string diagnostic(std::string_view severity, std::string_view file, int line, int column, std::string_view message) {
+  if (file.empty() || file == command_line) return fmt::format("dartcheck: {}: {}", severity, message);
+  return fmt::format("{}: {}: {}", position(std::string(file), line, column), severity, message);
+}
 
 std::string SourceLocation::str() const { return fmt::format("{}:{}:{}", file, line, column); }
 

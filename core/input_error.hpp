@@ -8,16 +8,31 @@
 
 namespace dartcheck {
 
+/// The file name of errors in the command's arguments and options.
+inline constexpr std::string_view command_line = "<command line>";
+
+/// A diagnostic line in gcc's style, which editors and CI problem matchers
+/// read: "file:line:column: SEVERITY: message" ("file:line:" without a
+/// column, "file:" without a line), or "dartcheck: SEVERITY: message" when
+/// the file is empty or the command line. `severity` is error, warning or
+/// note; the message is written as given (make it printable first).
+std::string diagnostic(std::string_view severity, std::string_view file, int line, int column, std::string_view message);
+
 class InputError : public std::runtime_error {
  public:
-  /// `line` and `column` are 1-based; 0 means unknown.
+  /// `line` and `column` are 1-based; 0 means unknown. what() is
+  /// "file:line:column: message".
   InputError(std::string file, int line, int column, const std::string& message);
   const std::string& file() const { return file_; }
   int line() const { return line_; }
   int column() const { return column_; }
+  /// The message without its position (printable).
+  const std::string& message() const { return message_; }
+  /// As dartcheck prints it: diagnostic("error", ...).
+  std::string diagnostic() const;
 
  private:
-  std::string file_;
+  std::string file_, message_;
   int line_, column_;
 };
 

@@ -70,7 +70,7 @@ expect_error "an unfinished shard" "no summary line: shard 2/4 did not finish" "
 expect_error "a shard of another seed" "not a shard of the same run" "$D" merge "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$WORK/seed8.jsonl" "$S/shard-3.jsonl"
 expect_error "a shard of another command" "not a shard of the same run" "$D" merge "$S/shard-0.jsonl" "$WORK/check-shards/shard-1.jsonl"
 sed 's/"applications":[0-9]*,"hosts"/"applications":-1,"hosts"/g' "$S/shard-1.jsonl" > "$WORK/damaged.jsonl"
-expect_error "a damaged record" "damaged.jsonl:[0-9]*:1: record.fuzz.applications" "$D" merge "$S/shard-0.jsonl" "$WORK/damaged.jsonl" "$S/shard-2.jsonl" "$S/shard-3.jsonl"
+expect_error "a damaged record" "damaged.jsonl:[0-9]*:1: error: record.fuzz.applications" "$D" merge "$S/shard-0.jsonl" "$WORK/damaged.jsonl" "$S/shard-2.jsonl" "$S/shard-3.jsonl"
 cp tests/data/wrong-verdict.yaml "$WORK/catalog.yaml" && "$D" check "$WORK/catalog.yaml" --shard 0/1 --format jsonl > "$WORK/moved.jsonl" 2> /dev/null || true
 echo "# changed" >> "$WORK/catalog.yaml"
 expect_error "a changed catalog" "not the catalog the shards ran on" "$D" merge "$WORK/moved.jsonl"
@@ -84,7 +84,7 @@ expect_incomplete "--incomplete, a missing shard" "^interrupted: [0-9]+ of 82 ru
   "$D" merge --incomplete "$S/shard-0.jsonl" "$S/shard-1.jsonl" "$S/shard-3.jsonl"
 # Another format version: refused, not read as if it were this one.
 sed 's/"format_version":[0-9]*/"format_version":99/' "$S/shard-1.jsonl" > "$WORK/version99.jsonl"
-expect_error "an unknown format version" "version99.jsonl:1:1: format_version 99: this dartcheck reads version" \
+expect_error "an unknown format version" "version99.jsonl:1:1: error: format_version 99: this dartcheck reads version" \
   "$D" merge "$S/shard-0.jsonl" "$WORK/version99.jsonl" "$S/shard-2.jsonl" "$S/shard-3.jsonl"
 
 # recombine and query on many inputs, one GNU parallel job each: the merged
@@ -106,10 +106,10 @@ PY
 then echo "FAIL: recombine: the merged runs differ from the single runs (in path order)" >&2; fail=1; fi
 expect_error "an input given twice" "is also the input of" "$D" merge "$WORK/recombine-1.jsonl" "$WORK/recombine-1.jsonl"
 "$D" recombine tests/data/folded-tets.mesh --format jsonl > "$WORK/recombine-folded.jsonl" 2> /dev/null || true
-expect_error "a run that failed" "recombine-folded.jsonl: empty: no header line" "$D" merge "$WORK"/recombine-*.jsonl
+expect_error "a run that failed" "recombine-folded.jsonl: error: empty: no header line" "$D" merge "$WORK"/recombine-*.jsonl
 rm "$WORK/recombine-folded.jsonl"
 # A run a signal stopped says so by its status (130): it used to merge as 0.
 sed 's/"summary":{"status":[0-9]*}/"summary":{"status":130}/' "$WORK/recombine-2.jsonl" > "$WORK/recombine-stopped.jsonl"
-expect_error "an interrupted input run" "recombine-stopped.jsonl:3:1: this shard was interrupted" "$D" merge "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
+expect_error "an interrupted input run" "recombine-stopped.jsonl:3:1: error: this shard was interrupted" "$D" merge "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
 expect_incomplete "--incomplete, an interrupted input run" "^incomplete: 1 of 2 runs finished" "$D" merge --incomplete "$WORK/recombine-1.jsonl" "$WORK/recombine-stopped.jsonl"
 exit $fail

@@ -151,7 +151,7 @@ with open(broken, "w") as f:
     f.write("\n".join(text))
 r = run(dartcheck, "recombine", broken)
 column = len(" ".join(fields[:-1])) + 2
-check(r.returncode == 2 and f"broken.msh:{last + 1}:{column}: node tag 999999 is not in $Nodes" in r.stderr,
+check(r.returncode == 2 and f"broken.msh:{last + 1}:{column}: error: node tag 999999 is not in $Nodes" in r.stderr,
       f"broken .msh: exit {r.returncode}, {r.stderr.strip()}")
 
 print(f"{len(failures)} failures; {tets_in} tetrahedra from gmsh, recombined into {counts}, read back by meshio and gmsh")

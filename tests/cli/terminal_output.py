@@ -103,7 +103,7 @@ for mode in ["never", "auto"]:
     r = run(["check", WRONG, "--color", mode])
     expect(ESC not in r.stdout + r.stderr, f"--color {mode} off a terminal: colour codes")
 r = run(["check", SEED, "--color", "sometimes"])
-expect(r.returncode == 2 and r.stderr.startswith("error:"), f"--color sometimes: {r.returncode} {r.stderr[:200]!r}")
+expect(r.returncode == 2 and r.stderr.startswith("dartcheck: error:"), f"--color sometimes: {r.returncode} {r.stderr[:200]!r}")
 
 status, out = run_pty(["check", WRONG], 72)
 expect(status == 1 and ESC in out, f"on a terminal, auto colours: {status} {out[:200]!r}")
