@@ -424,6 +424,11 @@ int run_command(const Commands& commands) {
   try {
     for (const auto& [sub, run] : commands)
       if (*sub) return run();
+  } catch (const InputErrors& e) {
+    for (const InputError& one : e.all()) fmt::print(stderr, "{}\n", painted_diagnostic(one.diagnostic()));
+    if (e.stopped())
+      fmt::print(stderr, "{}\n", diagnostic("note", printable(e.file()), 0, 0, fmt::format("stopped after {} errors", e.all().size())));
+    return bad_input;
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", painted_diagnostic(e.diagnostic()));
     return bad_input;

@@ -44,6 +44,8 @@ InputError::InputError(std::string file, int line, int column, const std::string
       line_(line),
       column_(column) {}
 
+InputErrors::InputErrors(std::vector<InputError> all, bool stopped) : InputError(all.at(0)), all_(std::move(all)), stopped_(stopped) {}
+
 std::string InputError::diagnostic() const { return dartcheck::diagnostic("error", printable(file_), line_, column_, message_); }
 
 std::string diagnostic(std::string_view severity, std::string_view file, int line, int column, std::string_view message) {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace dartcheck {
 
@@ -34,6 +35,22 @@ class InputError : public std::runtime_error {
  private:
   std::string file_, message_;
   int line_, column_;
+};
+
+/// Several errors of one input, for a reader that goes on after an error
+/// where the rest does not depend on what failed (a catalog's maps and
+/// rules, each on its own), up to a bound. It is the first of them, so a
+/// caller that wants one error sees that one; all() lists them in order.
+class InputErrors : public InputError {
+ public:
+  explicit InputErrors(std::vector<InputError> all, bool stopped);
+  const std::vector<InputError>& all() const { return all_; }
+  /// Whether the reader stopped at the bound, with more input unread.
+  bool stopped() const { return stopped_; }
+
+ private:
+  std::vector<InputError> all_;
+  bool stopped_;
 };
 
 /// `text` with control characters and bytes that are not UTF-8 written as

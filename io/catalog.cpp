@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -415,9 +416,25 @@ static Catalog read_yaml_catalog(const std::string& file) {
     return *default_model;
   };
 
+  // Each map and each rule is read on its own: an error in one is kept and
+  // the next is read, up to `max_errors` (the rest of the file then unread).
+  constexpr std::size_t max_errors = 20;
+  std::vector<InputError> errors;
+  std::set<std::string> failed_maps;  // their examples' "no map named" would only repeat the error
+  auto each = [&](const auto& entry, const auto& read) {
+    if (errors.size() >= max_errors) return;
+    try {
+      read(entry);
+    } catch (const InputError& e) {
+      errors.push_back(e);
+    } catch (const YAML::Exception& e) {
+      errors.push_back(yaml_input_error(file, e));
+    }
+  };
   if (const auto maps = root["maps"]) {
     yaml::expect_map(file, maps, "maps");
-    for (const auto& kv : maps) {
+    for (const auto& entry : maps) each(entry, [&](const auto& kv) {
+      failed_maps.insert(kv.first.Scalar());
       const YAML::Node& n = kv.second;
       yaml::expect_map(file, n, "map");
       yaml::allow_keys(file, n, {"model", "darts", "links", "pred", "shape", "file"});
@@ -434,13 +451,14 @@ static Catalog read_yaml_catalog(const std::string& file) {
         }
       }
       if (n["darts"]) m.map = read_map_links(file, n, m.model);
+      failed_maps.erase(m.name);
       c.maps.push_back(std::move(m));
-    }
+    });
   }
 
   if (const auto rules = root["rules"]) {
     yaml::expect_sequence(file, rules, "rules");
-    for (const auto& n : rules) {
+    for (const auto& entry : rules) each(entry, [&](const YAML::Node& n) {
       yaml::expect_map(file, n, "rule");
       yaml::allow_keys(file, n,
                        {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats", "labels",
@@ -456,7 +474,7 @@ static Catalog read_yaml_catalog(const std::string& file) {
         yaml::expect_sequence(file, ex, "examples");
         for (const auto& e : ex) {
           base.examples.push_back(read_example(file, e));
-          if (!c.find_map(base.examples.back().map))
+          if (!c.find_map(base.examples.back().map) && !failed_maps.count(base.examples.back().map))
             fail_at(file, e["map"], fmt::format("example of rule '{}': no map named '{}' under 'maps'", name, base.examples.back().map));
           if (const auto& iso = base.examples.back().isomorphic_to; !iso.empty() && !c.find_map(iso))
             fail_at(file, e["isomorphic-to"], fmt::format("example of rule '{}': isomorphic-to names '{}', which is not under 'maps'", name, iso));
@@ -476,7 +494,12 @@ static Catalog read_yaml_catalog(const std::string& file) {
                    base_terms ? &*base_terms : nullptr);
         }
       }
-    }
+    });
+  }
+  if (errors.size() == 1) throw errors.front();
+  if (!errors.empty()) {
+    const bool stopped = errors.size() >= max_errors;
+    throw InputErrors(std::move(errors), stopped);
   }
   return c;
 }

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <string_view>
 #include <set>
 #include <utility>
 #include <vector>
@@ -57,6 +59,52 @@ void check_tree(const std::string& file, const YAML::Node& root) {
   }
 }
 
+// The 1-based line and column of the innermost flow bracket `open` ('[' or
+// '{') still open at byte `end` of `text`: brackets inside quoted scalars
+// and comments are skipped. Nullopt when there is none (the caller keeps
+// yaml-cpp's position).
+std::optional<std::pair<int, int>> unclosed_bracket(std::string_view text, char open, int end) {
+  struct Open {
+    char c;
+    int line, column;
+  };
+  std::vector<Open> stack;
+  int line = 1, column = 1;
+  char quote = 0;
+  bool comment = false;
+  const auto stop = static_cast<std::size_t>(std::clamp(end, 0, static_cast<int>(text.size())));
+  for (std::size_t k = 0; k < stop; ++k) {
+    const char c = text[k];
+    if (c == '\n') {
+      ++line;
+      column = 1;
+      comment = false;
+      continue;
+    }
+    if (comment) {
+    } else if (quote) {
+      if (c == '\\' && quote == '"') {
+        ++k;
+        ++column;
+      } else if (c == quote) {
+        quote = 0;
+      }
+    } else if (c == '#' && (k == 0 || text[k - 1] == ' ' || text[k - 1] == '\t')) {
+      comment = true;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '[' || c == '{') {
+      stack.push_back({c, line, column});
+    } else if ((c == ']' || c == '}') && !stack.empty()) {
+      stack.pop_back();
+    }
+    ++column;
+  }
+  for (auto it = stack.rbegin(); it != stack.rend(); ++it)
+    if (it->c == open) return std::pair{it->line, it->column};
+  return std::nullopt;
+}
+
 }  // namespace
 
 YAML::Node load_yaml_file(const std::string& file) {
@@ -70,6 +118,14 @@ YAML::Node load_yaml_file(const std::string& file) {
     throw InputError(file, e.mark.line + 1, e.mark.column + 1,
                      fmt::format("malformed YAML: collections nested deeper than {} levels, the most yaml-cpp reads", e.depth()));
   } catch (const YAML::ParserException& e) {
+    // yaml-cpp places an unclosed [ or { where it gave up (the end of the
+    // file, often): the bracket is what the user has to find.
+    const bool sequence = e.msg.find("end of sequence flow not found") != std::string::npos;
+    if (sequence || e.msg.find("end of map flow not found") != std::string::npos)
+      if (const auto at = unclosed_bracket(text, sequence ? '[' : '{', e.mark.pos))
+        throw InputError(file, at->first, at->second,
+                         fmt::format("malformed YAML: this '{}' is never closed (yaml-cpp stopped at line {}, column {})", sequence ? '[' : '{',
+                                     e.mark.line + 1, e.mark.column + 1));
     throw InputError(file, e.mark.line + 1, e.mark.column + 1, "malformed YAML: " + e.msg);
   }
   check_tree(file, root);
