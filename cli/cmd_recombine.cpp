@@ -79,10 +79,12 @@ int recombine(const RecombineOptions& o) {
     fmt::print(stderr, "BUG: the recombined map is {} ({} darts, {} expected)\n", run.valid ? "valid" : "invalid", run.darts, run.expected_darts);
   // Accepted is not good: the threshold keeps valid cells, not cells a
   // solver is happy with.
-  if (run.quality.poor > 0 && !terminal().quiet)
+  if (run.quality.poor > 0 && !terminal().quiet) {
+    std::fflush(stdout);  // after the report it is about, in a stream that merges both
     fmt::print(stderr, "{}: warning: {} of the {} recombined cells have a scaled Jacobian under {} (the worst {:.3g}), poor for a simulation; "
                        "`--min-quality {}` refuses them\n",
                printable(o.mesh), run.quality.poor, run.quality.cells, querymodify::poor_quality, run.quality.quantiles[0], querymodify::poor_quality);
+  }
   return status;
 }
 
