@@ -13,6 +13,24 @@ bool is_command(const CommandTable& table, std::string_view name) {
   return std::find(table.commands.begin(), table.commands.end(), name) != table.commands.end();
 }
 
+// CLI11's refusal of a value outside an option's choices ends in
+// "VALUE not in {a,b,c}": the closest choice, as for commands and options.
+std::string choice_suggestion(std::string_view what) {
+  const std::size_t not_in = what.rfind(" not in {");
+  if (not_in == std::string_view::npos || what.back() != '}') return "";
+  const std::size_t start = what.rfind(' ', not_in - 1);
+  const std::string_view typed = what.substr(start == std::string_view::npos ? 0 : start + 1, not_in - (start == std::string_view::npos ? 0 : start + 1));
+  std::vector<std::string> choices;
+  std::string_view list = what.substr(not_in + 9, what.size() - not_in - 10);
+  while (!list.empty()) {
+    const std::size_t comma = list.find(',');
+    choices.emplace_back(list.substr(0, comma));
+    list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
+  }
+  const std::string best = closest_name(typed, choices);
+  return best.empty() ? "" : fmt::format("; did you mean '{}'?", best);
+}
+
 }  // namespace
 
 std::optional<int> help_request(const CommandTable& table, int argc, char** argv) {
@@ -58,7 +76,7 @@ int report_parse_error(const CommandTable& table, std::string_view what, int arg
     fmt::print(stderr, "dartcheck: error: no command given (dartcheck --help lists them)\n");
     return 2;
   }
-  fmt::print(stderr, "dartcheck: error: {}: {}\n", command, printable(what));
+  fmt::print(stderr, "dartcheck: error: {}: {}{}\n", command, printable(what), choice_suggestion(what));
   return 2;
 }
 

@@ -25,20 +25,22 @@ CounterexampleFigure counterexample_figure(const Rule& rule, const ArcWords& wor
                                            const CounterexamplePicture& p, const JerboaLabels* labels) {
   CounterexampleFigure f;
   std::string caption = fmt::format("<tr><td><b>{}</b></td></tr>", html_text(p.title));
-  for (const auto& line : p.captions) caption += fmt::format(R"(<tr><td><font color="{}">{}</font></td></tr>)", deleted_color, html_text(line));
+  for (const auto& text : p.captions)
+    for (const auto& line : caption_lines(text)) caption += fmt::format(R"(<tr><td><font color="{}">{}</font></td></tr>)", deleted_color, html_text(line));
   f.head = fmt::format(
       "digraph {} {{\n  fontname=\"Helvetica\"; labelloc=t; labeljust=l;\n"
       "  label=<<table border=\"0\" cellspacing=\"1\">{}<tr><td align=\"left\">{}</td></tr></table>>;\n}}\n",
-      quote(p.title), caption, rule_legend(rule.model(), !witnesses.empty(), {}));
+      quote(p.title), caption, rule_legend(rule.model(), !witnesses.empty(), {}, true));
   // Maps are drawn top to bottom: their panels stay narrow, so that G and
   // H fit side by side; the rule keeps L beside R.
-  GraphPicture g{"G:", fmt::format("G: host map, {} dart{}", p.host->size(), p.host->size() == 1 ? "" : "s"), {}, p.match_label, p.match_tags};
+  GraphPicture g{"G:", fmt::format("G: host map, {} dart{}", p.host->size(), p.host->size() == 1 ? "" : "s"), {}, p.match_label, p.match_tags,
+                 match_fill, match_line};
   g.highlight.resize(p.host->size());
   for (std::size_t d = 0; d < p.match_tags.size() && d < g.highlight.size(); ++d) g.highlight[d] = !p.match_tags[d].empty();
   f.host = panel("G", "TB", graph_cluster(to_graph(*p.host), p.host->model(), g));
   if (p.result) {
     GraphPicture h{"H:", fmt::format("H: result, {} dart{}", p.result->size(), p.result->size() == 1 ? "" : "s"), p.broken, p.broken_label,
-                   p.result_tags};
+                   p.result_tags, broken_fill, broken_line};
     f.result = panel("H", "TB", graph_cluster(to_graph(*p.result), p.result->model(), h));
   } else {
     f.result = panel("H", "TB",

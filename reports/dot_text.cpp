@@ -19,6 +19,11 @@ std::string quote(std::string_view s) {
   return out + '"';
 }
 
+std::string_view loop_port(std::size_t k) {
+  static constexpr std::string_view ports[] = {"n", "s", "w", "e"};
+  return ports[k % 4];
+}
+
 std::string_view dimension_color(Dim d) {
   static constexpr std::array<std::string_view, 8> colors = {"black", "#d32f2f", "#1565c0", "#2e7d32", "#6a1b9a", "#ef6c00", "#00838f", "#795548"};
   return colors[static_cast<std::size_t>(d) % colors.size()];

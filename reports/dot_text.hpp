@@ -17,14 +17,24 @@ std::string quote(std::string_view s);
 std::string_view dimension_color(Dim d);
 
 /// Rule elements: preserved, deleted, added, and the highlight of
-/// witnesses and counterexample darts.
+/// witnesses. One fill, one meaning: amber for a rule's witnesses, blue for
+/// the match in a host G, red for the darts of a result H that break a
+/// constraint (the legends say which).
 inline constexpr std::string_view preserved_color = "black";
 inline constexpr std::string_view deleted_color = "#d32f2f";
 inline constexpr std::string_view added_color = "#2e7d32";
 inline constexpr std::string_view highlight_fill = "#ffd54f";
 inline constexpr std::string_view highlight_line = "#ff6f00";
+inline constexpr std::string_view match_fill = "#90caf9";
+inline constexpr std::string_view match_line = "#1565c0";
+inline constexpr std::string_view broken_fill = "#ef9a9a";
+inline constexpr std::string_view broken_line = "#b71c1c";
 /// The terms under an embedded rule's nodes.
 inline constexpr std::string_view term_color = "#455a64";
+
+/// The compass point of a node's k-th loop (n, s, w, e, then again):
+/// Graphviz stacks a node's loops on one side, where their labels overlap.
+std::string_view loop_port(std::size_t k);
 
 /// An HTML-like label (for `label=<...>`) with one colored entry per
 /// dimension of the model.

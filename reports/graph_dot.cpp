@@ -14,10 +14,11 @@ std::string graph_cluster(const TopoGraph& g, const Model& model, const GraphPic
     const bool tagged = v < p.tags.size() && !p.tags[v].empty();
     out += fmt::format(
         "    {} [label={}{}];\n", quote(p.prefix + g.name(v)), quote(tagged ? g.name(v) + "\n" + p.tags[v] : g.name(v)),
-        lit ? fmt::format(", style=filled, fillcolor=\"{}\", color=\"{}\", penwidth=2, highlight=\"true\"", highlight_fill, highlight_line) : "");
+        lit ? fmt::format(", style=filled, fillcolor=\"{}\", color=\"{}\", penwidth=2, highlight=\"true\"", p.fill, p.line) : "");
   }
   // A non-oriented dimension's arc and its reverse are one edge.
   std::vector<bool> drawn(g.arc_count(), false);
+  std::vector<std::size_t> loops(g.node_count(), 0);  // drawn so far per node: each takes the next side
   for (ArcId e = 0; e < g.arc_count(); ++e) {
     if (drawn[e]) continue;
     drawn[e] = true;
@@ -30,8 +31,9 @@ std::string graph_cluster(const TopoGraph& g, const Model& model, const GraphPic
         if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source) drawn[f] = pair = true;
       }
     }
-    out += fmt::format("    {} -> {} [color=\"{}\", fontcolor=\"{}\", label={}{}];\n", quote(p.prefix + g.name(a.source)),
-                       quote(p.prefix + g.name(a.target)), dimension_color(a.label), dimension_color(a.label), quote(std::to_string(a.label)),
+    const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++)) : "";
+    out += fmt::format("    {}{} -> {}{} [color=\"{}\", fontcolor=\"{}\", label={}{}];\n", quote(p.prefix + g.name(a.source)), port,
+                       quote(p.prefix + g.name(a.target)), port, dimension_color(a.label), dimension_color(a.label), quote(std::to_string(a.label)),
                        pair ? ", dir=none" : "");
   }
   return out + "  }\n";

@@ -17,6 +17,8 @@ struct GraphPicture {
   std::vector<bool> highlight;    // per node: drawn filled, with the attribute highlight="true"
   std::string highlight_label;    // what the highlight means, for the panel's label
   std::vector<std::string> tags;  // per node: text under the dart's number (e.g. the L node it matches), may be empty
+  /// The highlight's fill and border (dot_text.hpp: one colour per meaning).
+  std::string_view fill = "#ef9a9a", line = "#b71c1c";
 };
 
 /// A cluster subgraph holding the graph (to embed in a larger picture).

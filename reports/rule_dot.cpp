@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "core/terminal.hpp"
 #include "reports/dot_text.hpp"
 
 namespace dartcheck::reports {
@@ -100,6 +101,7 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
                        lit ? fmt::format(", fillcolor=\"{}\", witness=\"true\"", highlight_fill) : "");
   }
   std::vector<bool> drawn(g.arc_count(), false);
+  std::vector<std::size_t> loops(g.node_count(), 0);  // drawn so far per node: each takes the next side
   for (ArcId e = 0; e < g.arc_count(); ++e) {
     if (drawn[e]) continue;
     drawn[e] = true;
@@ -121,8 +123,9 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     const bool lit = lit_arc(e) || lit_arc(partner);
     // A Jerboa node's orbit type already says what its implicit loops say.
     if (labels && a.source == a.target && !w.empty() && !lit) continue;
-    out += fmt::format("      {} -> {} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", quote(prefix + side + ":" + g.name(a.source)),
-                       quote(prefix + side + ":" + g.name(a.target)),
+    const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++)) : "";
+    out += fmt::format("      {}{} -> {}{} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", quote(prefix + side + ":" + g.name(a.source)), port,
+                       quote(prefix + side + ":" + g.name(a.target)), port,
                        quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
                        lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, change_style(kept, left),
                        pair ? ", dir=none" : "", lit ? ", witness=\"true\"" : "");
@@ -164,11 +167,10 @@ std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vec
 
 std::string failure_caption(const std::string& head, const std::vector<RuleWitness>& witnesses) {
   if (witnesses.empty()) return head;
-  constexpr std::size_t width = 90;  // a caption line, not a paragraph
-  std::string text = witnesses.front().text;
-  if (text.size() > width) text = text.substr(0, width - 3) + "...";
-  return fmt::format("{}: {}{}", head, text, witnesses.size() > 1 ? fmt::format(" (and {} more)", witnesses.size() - 1) : "");
+  return fmt::format("{}: {}{}", head, witnesses.front().text, witnesses.size() > 1 ? fmt::format(" (and {} more)", witnesses.size() - 1) : "");
 }
+
+std::vector<std::string> caption_lines(const std::string& caption, std::size_t width) { return wrap_words(caption, width); }
 
 std::vector<std::string> failure_captions(const RuleVerdict& v) {
   std::vector<std::string> out;
@@ -177,12 +179,15 @@ std::vector<std::string> failure_captions(const RuleVerdict& v) {
   return out;
 }
 
-std::string rule_legend(const Model& model, bool witnesses, const TermLines& terms) {
+std::string rule_legend(const Model& model, bool witnesses, const TermLines& terms, bool maps) {
   // One cell per clause: Graphviz spaces the pieces of a line by its own
   // font metrics, which a browser's font does not match, so pieces of
   // different colours in one cell can touch.
   std::string clauses = "<td>lines: solid preserved, dashed deleted, bold added;</td><td>double border: hook</td>";
-  if (witnesses) clauses += fmt::format(R"(<td><font color="{}">filled: witness</font></td>)", highlight_line);
+  if (witnesses) clauses += fmt::format(R"(<td><font color="{}">amber: witness in the rule</font></td>)", highlight_line);
+  if (maps)
+    clauses += fmt::format(R"(<td><font color="{}">blue: the match in G</font></td><td><font color="{}">red: darts of H breaking a constraint</font></td>)",
+                           match_line, broken_line);
   if (terms.terms) {
     clauses += "<td>embedding: term</td>";
     if (!terms.failing.empty()) clauses += fmt::format(R"(<td><font color="{}"><b>bold: failing</b></font></td>)", highlight_line);
@@ -195,7 +200,8 @@ std::string rule_legend(const Model& model, bool witnesses, const TermLines& ter
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,
                      const TermLines& terms, const std::vector<std::string>& captions) {
   std::string caption = fmt::format("<tr><td><b>{}</b></td></tr>", html_text(rule.name()));
-  for (const auto& line : captions) caption += fmt::format(R"(<tr><td><font color="{}">{}</font></td></tr>)", deleted_color, html_text(line));
+  for (const auto& text : captions)
+    for (const auto& line : caption_lines(text)) caption += fmt::format(R"(<tr><td><font color="{}">{}</font></td></tr>)", deleted_color, html_text(line));
   return fmt::format(
       "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; labelloc=t;\n"
       "  label=<<table border=\"0\" cellspacing=\"1\">{}<tr><td>{}</td></tr></table>>;\n"

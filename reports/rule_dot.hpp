@@ -55,7 +55,13 @@ std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<
                      const TermLines& terms = {}, const std::vector<std::string>& captions = {});
 
 /// The legend of rule pictures: the line styles, the hooks, the witnesses
-/// and the model's dimension colours, as an HTML-like label cell.
-std::string rule_legend(const Model& model, bool witnesses, const TermLines& terms);
+/// and the model's dimension colours, as an HTML-like label cell; with
+/// `maps`, also the fills of the match in G and of the broken darts in H
+/// (a counterexample's panels).
+std::string rule_legend(const Model& model, bool witnesses, const TermLines& terms, bool maps = false);
+
+/// A caption as lines of at most `width` columns, broken between words
+/// (never cut: a caption's point is often at its end).
+std::vector<std::string> caption_lines(const std::string& caption, std::size_t width = 90);
 
 }  // namespace dartcheck::reports

@@ -151,6 +151,44 @@ TEST(RuleDot, StyleSaysWhatHappensColourSaysTheDimensionCaptionSaysWhatFails) {
   EXPECT_GT(captions, 40);
 }
 
+// Pictures that read at a glance (issue 64 item 11). Property: a caption is
+// wrapped, never cut: every failing condition's whole first witness text
+// is in the picture's label, word for word, and no caption line is longer
+// than 90 columns unless it is one word; a node's loops leave it on
+// different sides (Graphviz stacks loops of one side, labels over labels).
+TEST(RuleDot, CaptionsWrapAndLoopsSpread) {
+  int wrapped = 0, spread = 0;
+  for (const auto& e : seed_catalog().rules) {
+    const RuleVerdict v = check_rule(e.rule, e.words);
+    const std::vector<std::string> captions = reports::failure_captions(v);
+    const Graph g = parse(reports::rule_dot(e.rule, e.words, reports::failed_witnesses(v), nullptr, {}, captions));
+    ASSERT_TRUE(g) << e.rule.name();
+    std::string label = agget(g.get(), const_cast<char*>("label"));
+    for (const std::string& caption : captions) {
+      const auto lines = reports::caption_lines(caption);
+      std::string joined;
+      for (const auto& line : lines) {
+        EXPECT_TRUE(line.size() <= 90 || line.find(' ') == std::string::npos) << e.rule.name() << ": " << line;
+        joined += (joined.empty() ? "" : " ") + line;
+      }
+      EXPECT_EQ(joined, caption) << e.rule.name();
+      wrapped += lines.size() > 1;
+      for (const auto& line : lines) EXPECT_NE(label.find(reports::html_text(line)), std::string::npos) << e.rule.name() << ": " << line;
+    }
+    for (Agnode_t* n = agfstnode(g.get()); n; n = agnxtnode(g.get(), n)) {
+      std::vector<std::string> ports;
+      for (Agedge_t* x = agfstout(g.get(), n); x; x = agnxtout(g.get(), x))
+        if (aghead(x) == agtail(x)) ports.push_back(agget(x, const_cast<char*>("tailport")));
+      if (ports.size() < 2 || ports.size() > 4) continue;
+      std::sort(ports.begin(), ports.end());
+      EXPECT_EQ(std::adjacent_find(ports.begin(), ports.end()), ports.end()) << e.rule.name() << ": " << agnameof(n) << " has two loops on one side";
+      ++spread;
+    }
+  }
+  EXPECT_GT(wrapped, 5);  // witnesses of over 90 columns (a W-label's cycle, a path)
+  EXPECT_GT(spread, 20);
+}
+
 // Embedded rules (issue 8): each node's label lists its terms, one line
 // "pi: term" per embedding; the witness nodes of a failing embedding
 // condition are highlighted and their lines of that embedding are bold.
