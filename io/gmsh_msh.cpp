@@ -127,31 +127,42 @@ class Reader {
     end("Nodes", n, "nodes", h.number);
   }
 
-  void nodes_v4() {
-    const Line h = need("the $Nodes header");
-    const long blocks = count(h, 0, "the number of entity blocks"), n = count(h, 1, "the number of nodes");
+  // A 4.1 section: a header "blocks total min max", then blocks whose
+  // header line gives at token 3 how many entries follow it; `read` reads
+  // a block's entries from its header line. The totals must agree.
+  template <class Read>
+  void blocks_v4(const std::string& section, const char* entries, const Read& read) {
+    const Line h = need(fmt::format("the ${} header", section));
+    const long blocks = count(h, 0, "the number of entity blocks"), n = count(h, 1, fmt::format("the number of {}", entries));
     long seen = 0;
     for (long b = 0; b < blocks; ++b) {
-      const Line bl = need(fmt::format("entity block {} of {}", b + 1, blocks));
-      const int dim = number<int>(r_, bl, 0, "the entity's dimension");
-      const bool parametric = number<int>(r_, bl, 2, "the parametric flag") != 0;
-      const long in_block = count(bl, 3, "the number of nodes in the block");
+      const Line bl = need(fmt::format("entity block {} of {} in ${}", b + 1, blocks, section));
+      const long in_block = count(bl, 3, fmt::format("the number of {} in the block", entries));
       if (seen + in_block > n)
-        r_.fail(bl.number, bl.tokens[3].second, fmt::format("the blocks hold more than the {} nodes the header announces (line {})", n, h.number));
+        r_.fail(bl.number, bl.tokens[3].second, fmt::format("the blocks hold more than the {} {} the header announces (line {})", n, entries, h.number));
+      read(bl, b, in_block);
+      seen += in_block;
+    }
+    if (seen != n) r_.fail(h.number, h.tokens[1].second, fmt::format("the header announces {} {}, the blocks hold {}", n, entries, seen));
+    end(section, blocks, "entity blocks", h.number);
+  }
+
+  void nodes_v4() {
+    blocks_v4("Nodes", "nodes", [&](const Line& bl, long b, long in_block) {
+      const int dim = number<int>(r_, bl, 0, "the entity's dimension");
+      if (dim < 0 || dim > 3) r_.fail(bl.number, bl.tokens[0].second, fmt::format("an entity of dimension {} (0 to 3)", dim));
+      const bool parametric = number<int>(r_, bl, 2, "the parametric flag") != 0;
       for (long k = 0; k < in_block; ++k) {
         const Line l = need(fmt::format("node tag {} of block {}", k + 1, b + 1));
         add_node(l, 0, number<std::uint64_t>(r_, l, 0, "a node tag"));
       }
       for (long k = 0; k < in_block; ++k) {
         const Line l = need(fmt::format("the coordinates of node {} of block {}", k + 1, b + 1));
-        if (l.tokens.size() != 3 + (parametric ? static_cast<std::size_t>(std::max(dim, 0)) : 0))
+        if (l.tokens.size() != 3 + (parametric ? static_cast<std::size_t>(dim) : 0))
           r_.fail(l.number, l.tokens[0].second, fmt::format("expected {} numbers (x y z{}), got {}", 3 + (parametric ? dim : 0), parametric ? " and the parameters" : "", l.tokens.size()));
         m_.points.push_back(coordinates(l, 0));
       }
-      seen += in_block;
-    }
-    if (seen != n) r_.fail(h.number, h.tokens[1].second, fmt::format("the header announces {} nodes, the blocks hold {}", n, seen));
-    end("Nodes", blocks, "entity blocks", h.number);
+    });
   }
 
   // One element line: its nodes from token `first` on, read as a cell of
@@ -201,19 +212,10 @@ class Reader {
   }
 
   void elements_v4() {
-    const Line h = need("the $Elements header");
-    const long blocks = count(h, 0, "the number of entity blocks"), n = count(h, 1, "the number of elements");
-    long seen = 0;
-    for (long b = 0; b < blocks; ++b) {
-      const Line bl = need(fmt::format("element block {} of {}", b + 1, blocks));
-      const long type = number<long>(r_, bl, 2, "the element type"), in_block = count(bl, 3, "the number of elements in the block");
-      if (seen + in_block > n)
-        r_.fail(bl.number, bl.tokens[3].second, fmt::format("the blocks hold more than the {} elements the header announces (line {})", n, h.number));
+    blocks_v4("Elements", "elements", [&](const Line& bl, long b, long in_block) {
+      const long type = number<long>(r_, bl, 2, "the element type");
       for (long k = 0; k < in_block; ++k) element(need(fmt::format("element {} of block {}", k + 1, b + 1)), type, 1);
-      seen += in_block;
-    }
-    if (seen != n) r_.fail(h.number, h.tokens[1].second, fmt::format("the header announces {} elements, the blocks hold {}", n, seen));
-    end("Elements", blocks, "entity blocks", h.number);
+    });
   }
 
   LineReader r_;

@@ -33,7 +33,7 @@ seeds fuzz_term fuzz/seeds/term/*
 seeds fuzz_jerboa_expression fuzz/seeds/jerboa/*
 seeds fuzz_word fuzz/seeds/word/*
 seeds fuzz_shard fuzz/seeds/shard/*
-seeds fuzz_tet_mesh tests/data/*.mesh
+seeds fuzz_tet_mesh tests/data/*.mesh tests/data/*.msh
 for n in tests/data/*.node; do
   [ -f "${n%.node}.ele" ] && { cat "$n"; printf '\n%%%%\n'; cat "${n%.node}.ele"; } > "$build/corpus/fuzz_tet_mesh/$(basename "$n").pair" || true
 done

@@ -109,6 +109,12 @@ TEST(GmshMsh, ErrorsArePositioned) {
   const std::string short_nodes = message_of(head + "$Nodes\n5\n1 0 0 0\n$EndNodes\n");
   EXPECT_NE(short_nodes.find(":7:1: expected a node tag, got '$EndNodes'"), std::string::npos) << short_nodes;
   EXPECT_NE(message_of(head + nodes).find("no tetrahedra, hexahedra, prisms or pyramids"), std::string::npos);
+  // 4.1: a block holding more nodes than the header announces, an entity of no dimension.
+  const std::string v41 = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  const std::string over = message_of(v41 + "$Nodes\n1 1 1 1\n3 1 0 2\n1\n2\n0 0 0\n1 0 0\n$EndNodes\n");
+  EXPECT_NE(over.find(":6:7: the blocks hold more than the 1 nodes the header announces (line 5)"), std::string::npos) << over;
+  const std::string dimension = message_of(v41 + "$Nodes\n1 1 1 1\n7 1 0 1\n1\n0 0 0\n$EndNodes\n");
+  EXPECT_NE(dimension.find(":6:1: an entity of dimension 7 (0 to 3)"), std::string::npos) << dimension;
   EXPECT_NE(message_of("$Nodes\n").find(":1:1: a .msh file starts with $MeshFormat"), std::string::npos);
   // Boundary elements are skipped, tetrahedra of 10 nodes read by their first 4.
   const TetMesh m = read_gmsh(written("dartcheck-gmsh-tet10.msh",
