@@ -19,9 +19,9 @@ std::string quote(std::string_view s) {
   return out + '"';
 }
 
-std::string_view loop_port(std::size_t k) {
-  static constexpr std::string_view ports[] = {"n", "s", "w", "e"};
-  return ports[k % 4];
+std::string_view loop_port(std::size_t k, bool left_to_right) {
+  static constexpr std::string_view across[] = {"n", "s", "w", "e"}, down[] = {"e", "w", "n", "s"};
+  return (left_to_right ? across : down)[k % 4];
 }
 
 std::string_view dimension_color(Dim d) {

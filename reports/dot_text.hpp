@@ -32,9 +32,11 @@ inline constexpr std::string_view broken_line = "#b71c1c";
 /// The terms under an embedded rule's nodes.
 inline constexpr std::string_view term_color = "#455a64";
 
-/// The compass point of a node's k-th loop (n, s, w, e, then again):
-/// Graphviz stacks a node's loops on one side, where their labels overlap.
-std::string_view loop_port(std::size_t k);
+/// The compass point of a node's k-th loop: Graphviz stacks a node's loops
+/// on one side, where their labels overlap. The sides across the layout's
+/// flow come first (n, s, then w, e for a left-to-right picture; e, w, then
+/// n, s top to bottom), where the edges between nodes do not run.
+std::string_view loop_port(std::size_t k, bool left_to_right);
 
 /// An HTML-like label (for `label=<...>`) with one colored entry per
 /// dimension of the model.

@@ -31,7 +31,7 @@ std::string graph_cluster(const TopoGraph& g, const Model& model, const GraphPic
         if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source) drawn[f] = pair = true;
       }
     }
-    const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++)) : "";
+    const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++, false)) : "";
     out += fmt::format("    {}{} -> {}{} [color=\"{}\", fontcolor=\"{}\", label={}{}];\n", quote(p.prefix + g.name(a.source)), port,
                        quote(p.prefix + g.name(a.target)), port, dimension_color(a.label), dimension_color(a.label), quote(std::to_string(a.label)),
                        pair ? ", dir=none" : "");

@@ -123,7 +123,7 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     const bool lit = lit_arc(e) || lit_arc(partner);
     // A Jerboa node's orbit type already says what its implicit loops say.
     if (labels && a.source == a.target && !w.empty() && !lit) continue;
-    const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++)) : "";
+    const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++, true)) : "";
     out += fmt::format("      {}{} -> {}{} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", quote(prefix + side + ":" + g.name(a.source)), port,
                        quote(prefix + side + ":" + g.name(a.target)), port,
                        quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
@@ -185,16 +185,20 @@ std::string rule_legend(const Model& model, bool witnesses, const TermLines& ter
   // different colours in one cell can touch.
   std::string clauses = "<td>lines: solid preserved, dashed deleted, bold added;</td><td>double border: hook</td>";
   if (witnesses) clauses += fmt::format(R"(<td><font color="{}">amber: witness in the rule</font></td>)", highlight_line);
-  if (maps)
-    clauses += fmt::format(R"(<td><font color="{}">blue: the match in G</font></td><td><font color="{}">red: darts of H breaking a constraint</font></td>)",
-                           match_line, broken_line);
+  // A counterexample's fills on a row of their own: one row would be
+  // wider than the three panels.
+  const std::string fills =
+      maps ? fmt::format(R"(<tr><td><table border="0" cellspacing="4" cellpadding="0"><tr><td><font color="{}">blue: the match in G</font></td>)"
+                         R"(<td><font color="{}">red: darts of H breaking a constraint</font></td></tr></table></td></tr>)",
+                         match_line, broken_line)
+           : "";
   if (terms.terms) {
     clauses += "<td>embedding: term</td>";
     if (!terms.failing.empty()) clauses += fmt::format(R"(<td><font color="{}"><b>bold: failing</b></font></td>)", highlight_line);
   }
   return fmt::format(R"(<table border="0" cellspacing="2"><tr><td><table border="0" cellspacing="4" cellpadding="0"><tr>{}</tr></table></td></tr>)"
-                     R"(<tr><td>{}</td></tr></table>)",
-                     clauses, dimension_legend(model));
+                     R"({}<tr><td>{}</td></tr></table>)",
+                     clauses, fills, dimension_legend(model));
 }
 
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,
