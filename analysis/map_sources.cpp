@@ -58,6 +58,35 @@ std::vector<Map> confirmation_maps(const Catalog& catalog, std::size_t confirm_d
   return maps;
 }
 
+std::optional<std::vector<std::array<double, 3>>> dart_points(const std::string& target, const Model& model) {
+  const auto ext = std::filesystem::path(target).extension().string();
+  std::vector<std::array<double, 3>> out;
+  if (is_mesh_path(target)) {
+    for (Dim i : model.dims)
+      if (model.is_oriented(i)) return std::nullopt;  // mesh_with_positions builds G-maps
+    const EmbeddedMap m = mesh_with_positions(model, read_mesh(target), EmbeddingSignature{"pos", ValueType::point3, {1, 2}});
+    for (Dart d = 0; d < m.map.size(); ++d) {
+      const Value* v = m.embeddings[0].value(d);
+      if (!v) return std::nullopt;
+      out.push_back(v->x);
+    }
+    return out;
+  }
+  if (ext != ".jba") return std::nullopt;
+  const JbaFile f = read_jba(target);
+  for (MapEmbedding e : f.embeddings) {
+    e.type = "point3";  // Vec3, Point3 or a modeler's own class: three numbers or not
+    std::string why;
+    const auto typed = typed_embedding(e, &why);
+    if (!typed) continue;
+    out.clear();
+    for (Dart d = 0; d < f.map.size() && out.size() == d; ++d)
+      if (const Value* v = typed->value(d)) out.push_back(v->x);
+    if (out.size() == f.map.size()) return out;
+  }
+  return std::nullopt;
+}
+
 Map resolve_map(const std::string& target, const Model& model, const Catalog* catalog) {
   if (catalog)
     if (const MapSource* s = catalog->find_map(target)) return build_source(*s);

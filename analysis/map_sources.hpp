@@ -2,6 +2,9 @@
 // fuzz engine run rules on.
 #pragma once
 
+#include <array>
+#include <optional>
+
 #include <string>
 
 #include "io/catalog.hpp"
@@ -30,6 +33,13 @@ std::vector<Map> confirmation_maps(const Catalog& catalog, std::size_t confirm_d
 /// file, an .off/.obj mesh, or a shape spec such as grid:3x4. `model` is
 /// used for meshes and shapes. Throws InputError.
 Map resolve_map(const std::string& target, const Model& model, const Catalog* catalog);
+
+/// The position of each dart's vertex when TARGET is a file that has them
+/// (an .off/.obj mesh: its vertices; a .jba: its first embedding whose
+/// values are three numbers), in resolve_map's numbering; nullopt otherwise
+/// (a shape, a YAML map, a catalog map). Throws InputError for a file that
+/// does not read.
+std::optional<std::vector<std::array<double, 3>>> dart_points(const std::string& target, const Model& model);
 
 /// A short human label for a target ("cube (2-gmap)").
 std::string describe_target(const std::string& target, const Map& map);

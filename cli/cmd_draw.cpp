@@ -17,6 +17,7 @@
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "reports/graph_dot.hpp"
+#include "reports/map_layout.hpp"
 #include "reports/render.hpp"
 #include "reports/rule_dot.hpp"
 
@@ -49,7 +50,14 @@ int draw_map(const DrawMapOptions& o) {
   for (const auto& v : report.violations)
     if (v.element < map.size()) p.highlight[v.element] = true;
   if (!report.valid()) p.highlight_label = fmt::format("filled: {} violations", report.violations.size());
-  const std::size_t bytes = reports::write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, o.engine);
+  // A map with vertex positions (a mesh, a .jba) is drawn as an exploded
+  // view, its darts pinned where they lie: neato honours the pins.
+  std::string engine = o.engine;
+  if (const auto points = dart_points(o.target, model); points && points->size() == map.size()) {
+    p.positions = reports::exploded_layout(map, *points);
+    if (engine == "dot") engine = "neato";
+  }
+  const std::size_t bytes = reports::write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, engine);
   if (!terminal().quiet) fmt::print("wrote {} ({} bytes)\n", o.output, bytes);
   if (report.valid()) return ok;
   // Every non-zero exit says why.

@@ -12,8 +12,9 @@ std::string graph_cluster(const TopoGraph& g, const Model& model, const GraphPic
   for (NodeId v = 0; v < g.node_count(); ++v) {
     const bool lit = v < p.highlight.size() && p.highlight[v];
     const bool tagged = v < p.tags.size() && !p.tags[v].empty();
+    const std::string pinned = v < p.positions.size() ? fmt::format(", pos=\"{:.4f},{:.4f}!\"", p.positions[v][0], p.positions[v][1]) : "";
     out += fmt::format(
-        "    {} [label={}{}];\n", quote(p.prefix + g.name(v)), quote(tagged ? g.name(v) + "\n" + p.tags[v] : g.name(v)),
+        "    {} [label={}{}{}];\n", quote(p.prefix + g.name(v)), quote(tagged ? g.name(v) + "\n" + p.tags[v] : g.name(v)), pinned,
         lit ? fmt::format(", style=filled, fillcolor=\"{}\", color=\"{}\", penwidth=2, highlight=\"true\"", p.fill, p.line) : "");
   }
   // A non-oriented dimension's arc and its reverse are one edge.

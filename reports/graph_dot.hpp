@@ -3,6 +3,7 @@
 // arcs drawn once as an undirected edge, oriented arcs as arrows.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct GraphPicture {
   std::vector<std::string> tags;  // per node: text under the dart's number (e.g. the L node it matches), may be empty
   /// The highlight's fill and border (dot_text.hpp: one colour per meaning).
   std::string_view fill = "#ef9a9a", line = "#b71c1c";
+  /// Per node, where to pin it (inches; map_layout.hpp), for an engine
+  /// that honours positions (neato); empty: the engine lays it out.
+  std::vector<std::array<double, 2>> positions = {};
 };
 
 /// A cluster subgraph holding the graph (to embed in a larger picture).
