@@ -20,8 +20,9 @@ std::string quote(std::string_view s) {
 }
 
 std::string_view loop_port(std::size_t k, bool left_to_right) {
-  static constexpr std::string_view across[] = {"n", "s", "w", "e"}, down[] = {"e", "w", "n", "s"};
-  return (left_to_right ? across : down)[k % 4];
+  // Across a left-to-right flow, then across a top-to-bottom one.
+  static constexpr std::array<std::string_view, 8> ports = {"n", "s", "w", "e", "e", "w", "n", "s"};
+  return ports[(left_to_right ? 0 : 4) + k % 4];
 }
 
 std::string_view dimension_color(Dim d) {
