@@ -9,6 +9,7 @@
 
 #include "core/graph.hpp"
 #include "core/model.hpp"
+#include "reports/dot_text.hpp"
 
 namespace dartcheck::reports {
 
@@ -19,7 +20,7 @@ struct GraphPicture {
   std::string highlight_label;    // what the highlight means, for the panel's label
   std::vector<std::string> tags;  // per node: text under the dart's number (e.g. the L node it matches), may be empty
   /// The highlight's fill and border (dot_text.hpp: one colour per meaning).
-  std::string_view fill = "#ef9a9a", line = "#b71c1c";
+  std::string_view fill = broken_fill, line = broken_line;
   /// Per node, where to pin it (inches; map_layout.hpp), for an engine
   /// that honours positions (neato); empty: the engine lays it out.
   std::vector<std::array<double, 2>> positions = {};
