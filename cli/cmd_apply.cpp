@@ -8,17 +8,17 @@
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 #include "io/catalog.hpp"
-#include "io/mesh_io.hpp"
+#include "io/mesh_writer.hpp"
 
 namespace dartcheck::cli {
 
 int apply(const ApplyOptions& o) {
-  // The writers are YAML, Jerboa .jba and OFF/OBJ: a result under another
-  // extension would be a file that its readers reject.
-  if (!o.output.empty() && !o.output.ends_with(".jba") && !is_mesh_path(o.output) && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
-    throw InputError(
-        "<command line>", 0, 0,
-        fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or OFF/OBJ meshes (.off, .obj)", o.output));
+  // The writers are YAML, Jerboa .jba and polygon meshes: a result under
+  // another extension would be a file that its readers reject.
+  if (!o.output.empty() && !o.output.ends_with(".jba") && !is_polygon_mesh_output(o.output) && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
+    throw InputError("<command line>", 0, 0,
+                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or meshes (.off, .obj, .vtu, .vtk, .msh)",
+                                 o.output));
   check_distinct_outputs({{"-o", o.output}, {"--kappa-out", o.kappa_out}});
   for (const auto* out : {&o.output, &o.kappa_out})
     if (!out->empty()) check_writable(*out);  // before the work, not after it

@@ -18,6 +18,10 @@
 #include "io/catalog.hpp"
 #include "querymodify/hex_queries.hpp"
 #include "querymodify/overlap.hpp"
+#include "querymodify/selection_cells.hpp"
+#include "io/volume_mesh_writer.hpp"
+#include "core/output_file.hpp"
+#include "core/terminal.hpp"
 
 namespace dartcheck::cli {
 
@@ -31,7 +35,19 @@ int query(const QueryOptions& o) {
   const Model model = command_model(o.model);
   const std::optional<Catalog> catalog = optional_catalog(o.catalog);
   const Catalog* cat = catalog ? &*catalog : nullptr;
-  const Map input = analysis::load_query_map(o.map, model, cat);
+  // -o: the selection as cell data of the tetrahedral mesh searched,
+  // checked before the work.
+  std::optional<TetInput> tets;
+  if (!o.output.empty()) {
+    if (!is_volume_mesh_output(o.output) || o.output.ends_with(".mesh"))
+      throw InputError("<command line>", 0, 0, fmt::format("-o: expected a .vtu, .vtk or .msh file (medit .mesh carries no cell data), got '{}'", o.output));
+    if (!is_tet_mesh_path(o.map))
+      throw InputError("<command line>", 0, 0,
+                       fmt::format("-o: the selection is written as cell data of a tetrahedral mesh (.node, .ele, .mesh, .msh); '{}' is not one", o.map));
+    check_writable(o.output);
+    tets = load_tet_input(o.map);
+  }
+  const Map input = tets ? tets->map.map : analysis::load_query_map(o.map, model, cat);
   const auto queries = analysis::named_queries(o.queries, o.hex, o.start, input, model, cat, free_links);
   const analysis::QuerySearch found = analysis::search_queries(input, queries, o.strategy);
   reports::QueryRun run{o.map,        input.model().name, o.free,           o.strategy, o.queries.empty() ? "" : boundary_symbol(free_links),
@@ -50,6 +66,16 @@ int query(const QueryOptions& o) {
                              {"start", o.start},
                              {"limit", o.limit}},
                             run, status);
+  if (tets) {
+    // The tetrahedra as the map has them (oriented, in the file's order),
+    // without the file's other cells: one value per tetrahedron.
+    TetMesh mesh;
+    mesh.points = tets->mesh.points;
+    mesh.tets = tets->map.tets;
+    write_file(o.output, volume_mesh_text(mesh, o.output, selection_fields(mesh.tets.size(), found.shown)));
+    if (!terminal().quiet && o.format == "text")
+      fmt::print("written: {} ({} tetrahedra; cell data match, query, matches)\n", o.output, mesh.tets.size());
+  }
   return status;
 }
 

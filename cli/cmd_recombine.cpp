@@ -15,6 +15,7 @@
 #include "core/terminal.hpp"
 #include "querymodify/recombined_mesh.hpp"
 #include "reports/querymodify_report.hpp"
+#include "reports/recombine_report.hpp"
 
 namespace dartcheck::cli {
 
@@ -62,6 +63,7 @@ int recombine(const RecombineOptions& o) {
   if (!o.output.empty() && !is_volume_mesh_output(o.output))
     throw InputError("<command line>", 0, 0, fmt::format("-o: expected a {} file, got '{}'", volume_mesh_outputs, o.output));
   if (!o.output.empty()) check_writable(o.output);
+  if (!o.report.empty()) ensure_directory(o.report);
   StatusLine status_line;
   const auto run = querymodify::recombine_mesh(o.mesh, o.strategy, o.min_quality, o.output, o.search, o.conforming, o.cells, status_line.progress(),
                                                o.msh_version == "2.2" ? GmshVersion::v22 : GmshVersion::v41);
@@ -75,6 +77,12 @@ int recombine(const RecombineOptions& o) {
   campaign::print_input_run(o.format, o.mesh,
                             {{"strategy", o.strategy}, {"search", run.search}, {"min_quality", o.min_quality}, {"conforming", o.conforming}, {"cells", o.cells}}, run,
                             status);
+  if (!o.report.empty()) {
+    const std::filesystem::path dir(o.report);
+    write_file((dir / "quality.svg").string(), reports::quality_histogram_svg(run.quality));
+    write_file((dir / "index.html").string(), reports::recombine_html(run));
+    if (!terminal().quiet && o.format == "text") fmt::print("report      {}\n", (dir / "index.html").string());
+  }
   if (status != ok)
     fmt::print(stderr, "BUG: the recombined map is {} ({} darts, {} expected)\n", run.valid ? "valid" : "invalid", run.darts, run.expected_darts);
   // Accepted is not good: the threshold keeps valid cells, not cells a

@@ -76,7 +76,7 @@ void add_apply(CLI::App& app, Commands& commands) {
   a->add_option("--hook", o->hooks, "hook dart, one per hook of the rule (repeat)")->transform(darts());
   a->add_option("-o,--output", o->output,
                 "write the result map here, in the format its extension names: .yaml, .jba (n-G-maps; embeddings carried from a .jba "
-                "input), .off or .obj (an embedded rule on a mesh with positions)");
+                "input), .off, .obj, .vtu, .vtk or .msh (an embedded rule on a mesh with positions)");
   a->add_option(
       "--kappa-out", o->kappa_out,
       "write the dart correspondence G -> H of the preserved darts here (the κ file `infer --kappa` reads; ids move when darts are deleted)");
@@ -291,6 +291,7 @@ void add_recombine(CLI::App& app, Commands& commands) {
   rc->add_option("-o,--output", o->output,
                  "write the cells and the remaining tetrahedra as .mesh (medit), .vtu or .vtk (VTK: ParaView) or .msh (gmsh), "
                  "with each cell's scaled Jacobian where the format carries cell data");
+  rc->add_option("--report", o->report, "write DIR/index.html (the run, the quality's histogram and quantiles) and DIR/quality.svg");
   rc->add_option("--msh-version", o->msh_version, "gmsh's format for -o X.msh: 4.1, or 2.2 for older readers")
       ->capture_default_str()
       ->check(CLI::IsMember({"4.1", "2.2"}));
@@ -301,7 +302,7 @@ void add_recombine(CLI::App& app, Commands& commands) {
 void add_query(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<QueryOptions>();
   auto* qy = app.add_subcommand("query", "Find query maps in a map by query words (001 Sec. 5): every match, or a selection without overlap");
-  qy->add_option("map", o->map, "the map: map file (.yaml, .jba, .off, .obj), tetrahedral mesh (.node, .ele, .mesh), catalog map name or shape")
+  qy->add_option("map", o->map, "the map: map file (.yaml, .jba, .off, .obj), tetrahedral mesh (.node, .ele, .mesh, .msh), catalog map name or shape")
       ->required();
   qy->add_option("--query", o->queries, "a query map, same forms (repeat); connected");
   qy->add_flag("--hex", o->hex, "add the 322 hex patterns of the tet -> hex recombination (open 3-O-maps)");
@@ -314,6 +315,8 @@ void add_query(CLI::App& app, Commands& commands) {
   qy->add_option("--catalog", o->catalog, "catalog whose maps the map and queries may name");
   qy->add_option("--model", o->model, "model for meshes and shapes")->capture_default_str();
   qy->add_option("--limit", o->limit, "matches printed")->capture_default_str()->transform(counts());
+  qy->add_option("-o,--output", o->output,
+                 "on a tetrahedral mesh: write it as .vtu, .vtk or .msh with the shown matches as cell data (match, query, matches)");
   add_format(qy, o->format, {"text", "json", "jsonl"}, "text, json or jsonl (one run of a campaign over many maps, for merge)");
   commands.push_back({qy, [o] { return query(*o); }});
 }

@@ -125,6 +125,7 @@ int infer(const InferCommand& o);
 struct RecombineOptions {
   std::string mesh, strategy = "global", search = "vertices", output, format = "text", cells = "hex";
   std::string msh_version = "4.1";  // gmsh's format for -o X.msh
+  std::string report;               // a directory for index.html and quality.svg
   double min_quality = 0.0;  // cells must have a scaled Jacobian above it
   bool conforming = false;   // cells meet only in a vertex, an edge or a face of both
 };
@@ -134,7 +135,7 @@ struct RecombineOptions {
 int recombine(const RecombineOptions& o);
 
 struct QueryOptions {
-  std::string map, model = "2-gmap", catalog, free = "any", strategy = "all", format = "text";
+  std::string map, model = "2-gmap", catalog, free = "any", strategy = "all", format = "text", output;
   std::vector<std::string> queries;
   bool hex = false;
   Dart start = 0;

@@ -247,12 +247,18 @@ TetMesh read_gmsh(const std::string& file) {
 }
 
 void write_gmsh(std::ostream& out, const TetMesh& m, GmshVersion version, const std::vector<CellField>& fields) {
-  const VolumeCells cells = volume_cells(m, CornerConvention::gmsh);
-  const std::size_t n = m.points.size(), e = cells.size();
+  write_gmsh(out, m.points, volume_cells(m, CornerConvention::gmsh), 3, version, fields);
+}
+
+void write_gmsh(std::ostream& out, const Points& points, const VolumeCells& cells, int dimension, GmshVersion version,
+                const std::vector<CellField>& fields) {
+  for (CellKind k : cells.kind)
+    if (gmsh_type(k) == 0) throw std::logic_error(fmt::format("gmsh has no element for a {}", cell_name(k)));
+  const std::size_t n = points.size(), e = cells.size();
   if (version == GmshVersion::v22) {
     out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
     out << fmt::format("$Nodes\n{}\n", n);
-    for (std::size_t k = 0; k < n; ++k) out << fmt::format("{} {} {} {}\n", k + 1, m.points[k][0], m.points[k][1], m.points[k][2]);
+    for (std::size_t k = 0; k < n; ++k) out << fmt::format("{} {} {} {}\n", k + 1, points[k][0], points[k][1], points[k][2]);
     out << fmt::format("$EndNodes\n$Elements\n{}\n", e);
     for (std::size_t k = 0; k < e; ++k) {
       // Two tags: physical group 0, elementary entity 1.
@@ -264,18 +270,22 @@ void write_gmsh(std::ostream& out, const TetMesh& m, GmshVersion version, const 
     element_data(out, fields, e);
     return;
   }
-  // 4.1: one volume entity (tag 1) holding every node and element.
+  // 4.1: one entity of the mesh's dimension (tag 1) holding every node
+  // and element.
   std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
   for (std::size_t k = 0; k < n; ++k)
     for (int c = 0; c < 3; ++c) {
-      lo[c] = k ? std::min(lo[c], m.points[k][c]) : m.points[k][c];
-      hi[c] = k ? std::max(hi[c], m.points[k][c]) : m.points[k][c];
+      lo[c] = k ? std::min(lo[c], points[k][c]) : points[k][c];
+      hi[c] = k ? std::max(hi[c], points[k][c]) : points[k][c];
     }
+  std::array<int, 4> entities{0, 0, 0, 0};
+  entities[static_cast<std::size_t>(dimension)] = 1;
   out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-  out << fmt::format("$Entities\n0 0 0 1\n1 {} {} {} {} {} {} 0 0\n$EndEntities\n", lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
-  out << fmt::format("$Nodes\n1 {} {} {}\n3 1 0 {}\n", n, n ? 1 : 0, n, n);
+  out << fmt::format("$Entities\n{} {} {} {}\n1 {} {} {} {} {} {} 0 0\n$EndEntities\n", entities[0], entities[1], entities[2], entities[3], lo[0],
+                     lo[1], lo[2], hi[0], hi[1], hi[2]);
+  out << fmt::format("$Nodes\n1 {} {} {}\n{} 1 0 {}\n", n, n ? 1 : 0, n, dimension, n);
   for (std::size_t k = 0; k < n; ++k) out << k + 1 << '\n';
-  for (const auto& p : m.points) out << fmt::format("{} {} {}\n", p[0], p[1], p[2]);
+  for (const auto& p : points) out << fmt::format("{} {} {}\n", p[0], p[1], p[2]);
   out << "$EndNodes\n";
   std::size_t blocks = 0;
   for (std::size_t k = 0; k < e; ++k) blocks += k == 0 || cells.kind[k] != cells.kind[k - 1];
@@ -283,7 +293,7 @@ void write_gmsh(std::ostream& out, const TetMesh& m, GmshVersion version, const 
   for (std::size_t k = 0; k < e;) {
     std::size_t j = k;
     while (j < e && cells.kind[j] == cells.kind[k]) ++j;
-    out << fmt::format("3 1 {} {}\n", gmsh_type(cells.kind[k]), j - k);
+    out << fmt::format("{} 1 {} {}\n", dimension, gmsh_type(cells.kind[k]), j - k);
     for (; k < j; ++k) {
       out << k + 1;
       for (std::uint32_t v : cells.corners(k)) out << ' ' << v + 1;

@@ -35,5 +35,11 @@ enum class GmshVersion { v41, v22 };
 /// field as an $ElementData view. Throws std::logic_error when a field has
 /// not one value per cell.
 void write_gmsh(std::ostream& out, const TetMesh& m, GmshVersion version = GmshVersion::v41, const std::vector<CellField>& fields = {});
+/// The same for any cells over `points` in gmsh's corner order, in one
+/// entity of `dimension` (2 for a polygon mesh's faces, 3 for volumes).
+/// Throws std::logic_error for a polygon of more than 4 corners, which
+/// gmsh has no element for (callers refuse it first).
+void write_gmsh(std::ostream& out, const Points& points, const VolumeCells& cells, int dimension, GmshVersion version = GmshVersion::v41,
+                const std::vector<CellField>& fields = {});
 
 }  // namespace dartcheck

@@ -1,13 +1,17 @@
 #include "io/mesh_writer.hpp"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
 #include "core/input_error.hpp"
 #include "core/orbit.hpp"
+#include "io/gmsh_msh.hpp"
+#include "io/vtk_writer.hpp"
 
 namespace dartcheck {
 
-void write_mesh(std::ostream& out, const EmbeddedMap& m, const std::string& position, const std::string& path) {
+PolygonMesh polygon_mesh(const EmbeddedMap& m, const std::string& position, const std::string& path) {
   const Map& map = m.map;
   const Model& model = map.model();
   auto fail = [&](const std::string& why) { throw InputError(path, 0, 0, why); };
@@ -22,7 +26,8 @@ void write_mesh(std::ostream& out, const EmbeddedMap& m, const std::string& posi
   // Vertices, numbered in order of their smallest dart.
   constexpr std::uint32_t unset = 0xffffffffU;
   std::vector<std::uint32_t> vertex(map.size(), unset);
-  std::vector<std::array<double, 3>> points;
+  PolygonMesh out;
+  auto& points = out.points;
   OrbitWalker walker(map);
   const auto vertex_generators = cell_generators(model, 0);
   for (Dart d = 0; d < map.size(); ++d) {
@@ -39,11 +44,12 @@ void write_mesh(std::ostream& out, const EmbeddedMap& m, const std::string& posi
     points.push_back(v->x);
   }
   // Faces: walk alpha1 alpha0 around each <0,1>-orbit from its smallest dart.
-  std::vector<std::vector<std::uint32_t>> faces;
+  auto& faces = out.faces;
   std::vector<char> seen(map.size(), 0);
   for (Dart d = 0; d < map.size(); ++d) {
     if (seen[d]) continue;
     std::vector<std::uint32_t> face;
+    out.first_dart.push_back(d);
     Dart e = d;
     do {
       face.push_back(vertex[e]);
@@ -52,7 +58,36 @@ void write_mesh(std::ostream& out, const EmbeddedMap& m, const std::string& posi
     } while (e != d);
     faces.push_back(std::move(face));
   }
-  if (path.ends_with(".obj")) {
+  return out;
+}
+
+bool is_polygon_mesh_output(const std::string& path) {
+  const std::string e = std::filesystem::path(path).extension().string();
+  return e == ".off" || e == ".obj" || e == ".vtu" || e == ".vtk" || e == ".msh";
+}
+
+void write_mesh(std::ostream& out, const EmbeddedMap& m, const std::string& position, const std::string& path) {
+  const PolygonMesh mesh = polygon_mesh(m, position, path);
+  const auto& points = mesh.points;
+  const auto& faces = mesh.faces;
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".vtu" || ext == ".vtk") {
+    if (ext == ".vtu")
+      write_vtu(out, points, polygon_cells(faces));
+    else
+      write_legacy_vtk(out, points, polygon_cells(faces));
+    return;
+  }
+  if (ext == ".msh") {
+    for (std::size_t k = 0; k < faces.size(); ++k)
+      if (faces[k].size() > 4)
+        throw InputError(path, 0, 0,
+                         fmt::format("gmsh has no element for a face of {} corners (face {}, from dart {}); write .vtu, .vtk, .off or .obj", faces[k].size(), k,
+                                     mesh.first_dart[k]));
+    write_gmsh(out, points, polygon_cells(faces), 2);
+    return;
+  }
+  if (ext == ".obj") {
     out << "# written by dartcheck: " << points.size() << " vertices, " << faces.size() << " faces\n";
     for (const auto& p : points) out << fmt::format("v {} {} {}\n", p[0], p[1], p[2]);
     for (const auto& f : faces) {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 namespace dartcheck {
 namespace {
@@ -39,16 +42,27 @@ VolumeCells volume_cells(const TetMesh& m, CornerConvention convention) {
   return out;
 }
 
+VolumeCells polygon_cells(const std::vector<std::vector<std::uint32_t>>& faces) {
+  VolumeCells out;
+  for (const auto& f : faces) {
+    if (f.size() < 3) throw std::logic_error(fmt::format("a face of {} corners", f.size()));
+    out.kind.push_back(f.size() == 3 ? CellKind::triangle : f.size() == 4 ? CellKind::quadrangle : CellKind::polygon);
+    out.connectivity.insert(out.connectivity.end(), f.begin(), f.end());
+    out.offset.push_back(static_cast<std::uint32_t>(out.connectivity.size()));
+  }
+  return out;
+}
+
 int gmsh_type(CellKind k) {
-  static constexpr int types[] = {5, 6, 7, 4};
+  static constexpr int types[] = {5, 6, 7, 4, 2, 3, 0};
   return types[static_cast<int>(k)];
 }
 int vtk_type(CellKind k) {
-  static constexpr int types[] = {12, 13, 14, 10};
+  static constexpr int types[] = {12, 13, 14, 10, 5, 9, 7};
   return types[static_cast<int>(k)];
 }
 const char* cell_name(CellKind k) {
-  static constexpr const char* names[] = {"hexahedron", "prism", "pyramid", "tetrahedron"};
+  static constexpr const char* names[] = {"hexahedron", "prism", "pyramid", "tetrahedron", "triangle", "quadrangle", "polygon"};
   return names[static_cast<int>(k)];
 }
 

@@ -7,6 +7,7 @@
 // normal points at the other triangle in gmsh and away from it in VTK.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -16,8 +17,12 @@
 
 namespace dartcheck {
 
-enum class CellKind : std::uint8_t { hexahedron, prism, pyramid, tetrahedron };
+// The faces of a polygon mesh (apply's result on a surface) are cells too:
+// triangles, quadrangles and larger polygons.
+enum class CellKind : std::uint8_t { hexahedron, prism, pyramid, tetrahedron, triangle, quadrangle, polygon };
 enum class CornerConvention { gmsh, vtk };
+
+using Points = std::vector<std::array<double, 3>>;
 
 struct VolumeCells {
   std::vector<CellKind> kind;
@@ -42,10 +47,16 @@ struct CellField {
 /// it is.
 VolumeCells volume_cells(const TetMesh& m, CornerConvention convention);
 
-/// gmsh's element type (5, 6, 7, 4) and VTK's cell type (12, 13, 14, 10).
+/// A polygon mesh's faces as cells: each face's corners in its order, the
+/// kind from their number (at least 3; fewer is a caller's defect,
+/// std::logic_error).
+VolumeCells polygon_cells(const std::vector<std::vector<std::uint32_t>>& faces);
+
+/// gmsh's element type (5, 6, 7, 4, 2, 3; 0 for a polygon, which gmsh
+/// has no element for) and VTK's cell type (12, 13, 14, 10, 5, 9, 7).
 int gmsh_type(CellKind k);
 int vtk_type(CellKind k);
-/// "hexahedron", "prism", "pyramid", "tetrahedron".
+/// "hexahedron", "prism", "pyramid", "tetrahedron", "triangle", ...
 const char* cell_name(CellKind k);
 
 }  // namespace dartcheck

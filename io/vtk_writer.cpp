@@ -22,14 +22,21 @@ std::string value_text(const CellField& f, double v) { return f.integer ? fmt::f
 }  // namespace
 
 void write_vtu(std::ostream& out, const TetMesh& m, const std::vector<CellField>& fields) {
-  const VolumeCells cells = volume_cells(m, CornerConvention::vtk);
+  write_vtu(out, m.points, volume_cells(m, CornerConvention::vtk), fields);
+}
+
+void write_legacy_vtk(std::ostream& out, const TetMesh& m, const std::vector<CellField>& fields) {
+  write_legacy_vtk(out, m.points, volume_cells(m, CornerConvention::vtk), fields);
+}
+
+void write_vtu(std::ostream& out, const Points& points, const VolumeCells& cells, const std::vector<CellField>& fields) {
   check_fields(cells, fields);
   out << "<?xml version=\"1.0\"?>\n"
          "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
          "  <UnstructuredGrid>\n";
-  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", m.points.size(), cells.size());
+  out << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points.size(), cells.size());
   out << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const auto& p : m.points) out << fmt::format("          {} {} {}\n", p[0], p[1], p[2]);
+  for (const auto& p : points) out << fmt::format("          {} {} {}\n", p[0], p[1], p[2]);
   out << "        </DataArray>\n      </Points>\n      <Cells>\n";
   out << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (std::size_t k = 0; k < cells.size(); ++k) {
@@ -54,12 +61,11 @@ void write_vtu(std::ostream& out, const TetMesh& m, const std::vector<CellField>
   out << "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
 }
 
-void write_legacy_vtk(std::ostream& out, const TetMesh& m, const std::vector<CellField>& fields) {
-  const VolumeCells cells = volume_cells(m, CornerConvention::vtk);
+void write_legacy_vtk(std::ostream& out, const Points& points, const VolumeCells& cells, const std::vector<CellField>& fields) {
   check_fields(cells, fields);
-  out << "# vtk DataFile Version 3.0\ndartcheck volume mesh\nASCII\nDATASET UNSTRUCTURED_GRID\n";
-  out << fmt::format("POINTS {} double\n", m.points.size());
-  for (const auto& p : m.points) out << fmt::format("{} {} {}\n", p[0], p[1], p[2]);
+  out << "# vtk DataFile Version 3.0\ndartcheck mesh\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+  out << fmt::format("POINTS {} double\n", points.size());
+  for (const auto& p : points) out << fmt::format("{} {} {}\n", p[0], p[1], p[2]);
   out << fmt::format("CELLS {} {}\n", cells.size(), cells.size() + cells.connectivity.size());
   for (std::size_t k = 0; k < cells.size(); ++k) {
     out << cells.corners(k).size();

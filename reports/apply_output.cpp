@@ -185,7 +185,7 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
       for (const Embedding& e : host->embeddings)  // a host of another format: every embedding is written
         jba->file.embeddings.push_back({e.signature.name, std::string(type_name(e.signature.type)), e.signature.orbit, {}, {}});
     write_jba_result(o, *jba, *host);
-  } else if (!o.output.empty() && is_mesh_path(o.output)) {
+  } else if (!o.output.empty() && is_polygon_mesh_output(o.output)) {
     // The positions: the first point embedding of the rule.
     const Embedding* pos = nullptr;
     for (const Embedding& e : host->embeddings)
@@ -294,7 +294,7 @@ int apply_topology(const ApplyRequest& o, const CatalogRule& rule, Map map) {
 }  // namespace
 
 int apply_and_write(const ApplyRequest& o, const CatalogRule& rule, Map map) {
-  const bool jba_out = o.output.ends_with(".jba"), mesh_out = is_mesh_path(o.output);
+  const bool jba_out = o.output.ends_with(".jba"), mesh_out = is_polygon_mesh_output(o.output);
   if (rule.terms && !o.kappa_out.empty()) {
     // infer reads G-maps without values: the correspondence of the topology.
     if (jba_out || mesh_out) throw InputError("<command line>", 0, 0, "--kappa-out: the result is written as YAML (the topology infer reads); use -o X.yaml");

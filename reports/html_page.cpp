@@ -74,6 +74,7 @@ a { color: #1565c0; text-decoration: none; } a:hover { text-decoration: underlin
 .picture { overflow-x: auto; margin: 0.6em 0; } .picture svg { max-width: 100%; height: auto; }
 .figure { margin: 0.6em 0; } .figure svg { max-width: 100%; height: auto; }
 .panels { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 0.5em 1.5em; }
+pre { white-space: pre-wrap; }
 .note { color: #616161; font-style: italic; } code { font-size: 0.9em; background: #f5f5f5; padding: 0 0.2em; }
 ul.witnesses li { margin: 0.2em 0; } .mismatch { color: #b71c1c; font-weight: bold; }
 )";
