@@ -17,10 +17,12 @@ namespace dartcheck::analysis {
 
 namespace {
 
-// "; did you mean 'X'?" for the closest of `names`, or "".
+// "; did you mean 'X'?" for the closest of `names`, or "" (also when the
+// name was typed right and something else is wrong: a shape of another
+// dimension).
 std::string did_you_mean(const std::string& typed, const std::vector<std::string>& names) {
   const std::string best = closest_name(typed, names);
-  return best.empty() ? std::string() : fmt::format("; did you mean '{}'?", printable(best));
+  return best.empty() || best == typed ? std::string() : fmt::format("; did you mean '{}'?", printable(best));
 }
 
 }  // namespace

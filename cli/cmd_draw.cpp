@@ -33,12 +33,17 @@ int draw(const DrawOptions& o) {
   witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
   auto captions = reports::failure_captions(verdict);
   captions.insert(captions.end(), embedded.captions.begin(), embedded.captions.end());
+  const bool pinned = o.engine.empty();
   const std::string dot =
-      reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms, captions);
-  const std::size_t bytes = reports::write_picture(dot, o.output, o.engine);
+      reports::rule_dot(entry->rule, entry->words, witnesses, entry->jerboa ? &*entry->jerboa : nullptr, embedded.terms, captions, pinned);
+  const std::size_t bytes = reports::write_picture(dot, o.output, pinned ? "neato" : o.engine);
   if (!terminal().quiet) fmt::print("wrote {} ({} bytes)\n", o.output, bytes);
   return ok;
 }
+
+// Maps up to this size are laid out by dot as given (a rule's example, a
+// counterexample): each dart's links read along its rank.
+constexpr std::size_t skeleton_darts = 16;
 
 int draw_map(const DrawMapOptions& o) {
   const Model model = command_model(o.model);
@@ -56,6 +61,11 @@ int draw_map(const DrawMapOptions& o) {
   if (const auto points = dart_points(o.target, model); points && points->size() == map.size()) {
     p.positions = reports::exploded_layout(map, *points);
     if (engine == "dot") engine = "neato";
+  } else if (engine == "dot" && map.size() > skeleton_darts) {
+    // Without positions, the vertices are placed by the skeleton's
+    // layout first: past a few dozen darts dot's ranks are a tangle.
+    p.positions = reports::exploded_layout(map, reports::skeleton_points(map));
+    engine = "neato";
   }
   const std::size_t bytes = reports::write_picture(reports::graph_dot(to_graph(map), map.model(), p), o.output, engine);
   if (!terminal().quiet) fmt::print("wrote {} ({} bytes)\n", o.output, bytes);

@@ -214,7 +214,8 @@ void add_draw(CLI::App& app, Commands& commands) {
   dr->add_option("catalog", o->catalog, "YAML catalog or Jerboa .jme modeler")->required();
   dr->add_option("--rule", o->rule, "the rule to draw")->required();
   dr->add_option("-o,--output", o->output, "picture file: .svg, .png, .pdf, or .dot/.gv for the DOT text")->required();
-  dr->add_option("--engine", o->engine, "Graphviz layout engine")->capture_default_str();
+  dr->add_option("--engine", o->engine,
+                 "lay L and R out with this Graphviz engine (dot, neato, fdp, ...) instead of pinning each preserved node at one place on both sides");
   commands.push_back({dr, [o] { return draw(*o); }});
 }
 

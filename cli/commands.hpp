@@ -34,7 +34,8 @@ struct ValidateOptions {
 int validate_map(const ValidateOptions& o);
 
 struct DrawOptions {
-  std::string catalog, rule, output, engine = "dot";
+  std::string catalog, rule, output;
+  std::string engine;  // empty: preserved nodes pinned at one place on both sides (neato)
 };
 /// A rule's picture; 0, or 2 on bad input.
 int draw(const DrawOptions& o);

@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
 
 #include "core/orbit.hpp"
+#include "reports/render.hpp"
 
 namespace dartcheck::reports {
 namespace {
@@ -34,9 +39,26 @@ std::vector<std::array<double, 2>> exploded_layout(const Map& map, const std::ve
   for (Dart d = 0; d < n; ++d) {
     const P3 v = points[d], f = centre(walker, d, face, points), e = centre(walker, d, edge, points);
     P3 p{};
-    for (int k = 0; k < 3; ++k) p[k] = v[k] + 0.3 * (f[k] - v[k]) + 0.25 * (e[k] - v[k]);
+    // Pulls that space a square's darts evenly: the two darts of a corner
+    // (alpha1), of an edge's side (alpha0) and of the two sides (alpha2)
+    // all end up about 0.3 of an edge apart.
+    for (int k = 0; k < 3; ++k) p[k] = v[k] + 0.3 * (f[k] - v[k]) + 0.4 * (e[k] - v[k]);
     out[d] = project(p);
   }
+  // Turned to the smallest bounding box (in degree steps): a grid laid
+  // out on its diagonal would fill a square twice its area.
+  double best_area = std::numeric_limits<double>::infinity(), best_angle = 0;
+  for (int step = 0; step < 90; ++step) {
+    const double a = step * std::numbers::pi / 180, c = std::cos(a), s = std::sin(a);
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+    for (const auto& q : out) {
+      const double x = c * q[0] - s * q[1], y = s * q[0] + c * q[1];
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    // Ties (a square): the first, so an aligned layout stays as it is.
+    if ((x1 - x0) * (y1 - y0) < best_area * (1 - 1e-9)) best_area = (x1 - x0) * (y1 - y0), best_angle = a;
+  }
+  for (auto& q : out) q = {std::cos(best_angle) * q[0] - std::sin(best_angle) * q[1], std::sin(best_angle) * q[0] + std::cos(best_angle) * q[1]};
   // Scale: a dart's nearest neighbour typically (the median) an inch away
   // (a node and its links' labels between), within max_inches. Not the closest
   // pair: a projection may put two darts of different depths together.
@@ -57,6 +79,57 @@ std::vector<std::array<double, 2>> exploded_layout(const Map& map, const std::ve
     scale = std::min(scale, 1.0 / nearest[nearest.size() / 2]);
   }
   for (auto& p : out) p = {(p[0] - lo_x) * scale, (p[1] - lo_y) * scale};
+  return out;
+}
+
+std::vector<P3> skeleton_points(const Map& map) {
+  const std::size_t n = map.size();
+  constexpr std::uint32_t unset = 0xffffffffU;
+  std::vector<std::uint32_t> vertex(n, unset);
+  std::uint32_t vertices = 0;
+  OrbitWalker walker(map);
+  const auto vertex_generators = cell_generators(map.model(), 0), edge_generators = cell_generators(map.model(), 1);
+  for (Dart d = 0; d < n; ++d) {
+    if (vertex[d] != unset) continue;
+    for (Dart e : walker.orbit(d, vertex_generators)) vertex[e] = vertices;
+    ++vertices;
+  }
+  // A surface with a boundary lies flat (a disk, a grid); a closed
+  // surface or a volume needs the third dimension to unfold.
+  const Dim top = static_cast<Dim>(map.model().dimension());
+  bool closed = top >= 3;
+  if (!closed) {
+    closed = true;
+    for (Dart d = 0; d < n && closed; ++d) closed = map.link(top, d) != d && map.link(top, d) != no_dart;
+  }
+  std::string dot = fmt::format("graph skeleton {{\n  graph [dim={0}, dimen={0}, start=1, maxiter=2000];\n  node [shape=point];\n", closed ? 3 : 2);
+  for (std::uint32_t v = 0; v < vertices; ++v) dot += fmt::format("  v{};\n", v);
+  std::vector<char> seen(n, 0);
+  for (Dart d = 0; d < n; ++d) {
+    if (seen[d]) continue;
+    std::vector<std::uint32_t> ends;
+    for (Dart e : walker.orbit(d, edge_generators)) {
+      seen[e] = 1;
+      if (std::find(ends.begin(), ends.end(), vertex[e]) == ends.end()) ends.push_back(vertex[e]);
+    }
+    for (std::size_t i = 0; i < ends.size(); ++i)
+      for (std::size_t j = i + 1; j < ends.size(); ++j) dot += fmt::format("  v{} -- v{};\n", ends[i], ends[j]);
+  }
+  dot += "}\n";
+  std::vector<P3> at(vertices, P3{0, 0, 0});
+  for (const NodePosition& p : node_positions(dot, "neato")) at[std::stoul(p.name.substr(1))] = p.at;
+  if (closed) {
+    // neato aligns a cube with its axes, which the oblique projection then
+    // shows face on, its side faces squashed: turned 25 degrees about the
+    // vertical and 15 about the horizontal, every face shows.
+    const double yaw = 25 * std::numbers::pi / 180, pitch = 15 * std::numbers::pi / 180;
+    for (P3& p : at) {
+      const double x = std::cos(yaw) * p[0] + std::sin(yaw) * p[2], z = -std::sin(yaw) * p[0] + std::cos(yaw) * p[2];
+      p = {x, std::cos(pitch) * p[1] - std::sin(pitch) * z, std::sin(pitch) * p[1] + std::cos(pitch) * z};
+    }
+  }
+  std::vector<P3> out(n);
+  for (Dart d = 0; d < n; ++d) out[d] = at[vertex[d]];
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <graphviz/gvc.h>
 
+#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -46,7 +47,12 @@ std::string take_error(std::string_view what) {
 
 }  // namespace
 
-std::string render(std::string_view dot, std::string_view format, std::string_view engine) {
+namespace {
+
+// Lays `dot` out with `engine` (or the graph's own `layout` attribute) and
+// calls `use` on the laid-out graph, under the one lock libgvc needs.
+template <class Use>
+void with_layout(std::string_view dot, std::string_view engine, Use use) {
   // libgvc keeps global state (error hook, plugin registry): one caller at
   // a time.
   static std::mutex lock;
@@ -62,15 +68,52 @@ std::string render(std::string_view dot, std::string_view format, std::string_vi
   const std::string text(dot);
   std::unique_ptr<Agraph_t, int (*)(Agraph_t*)> g(agmemread(text.c_str()), agclose);
   if (!g) throw std::runtime_error(take_error("Graphviz cannot read the DOT text"));
-  const std::string eng(engine), fmt(format);
+  const std::string eng(engine);
   if (gvLayout(gvc.get(), g.get(), eng.c_str()) != 0) throw std::runtime_error(take_error("Graphviz layout '" + eng + "' failed"));
+  try {
+    use(gvc.get(), g.get());
+  } catch (...) {
+    gvFreeLayout(gvc.get(), g.get());
+    throw;
+  }
+  gvFreeLayout(gvc.get(), g.get());
+}
+
+// Renders the laid-out `g` in `format`.
+std::string render_data(GVC_t* gvc, Agraph_t* g, const std::string& format) {
   char* data = nullptr;
   unsigned int length = 0;
-  const int rc = gvRenderData(gvc.get(), g.get(), fmt.c_str(), &data, &length);
+  const int rc = gvRenderData(gvc, g, format.c_str(), &data, &length);
   std::string out = rc == 0 && data ? std::string(data, length) : std::string();
   if (data) gvFreeRenderData(data);
-  gvFreeLayout(gvc.get(), g.get());
-  if (rc != 0) throw std::runtime_error(take_error("Graphviz cannot render format '" + fmt + "'"));
+  if (rc != 0) throw std::runtime_error(take_error("Graphviz cannot render format '" + format + "'"));
+  return out;
+}
+
+}  // namespace
+
+std::string render(std::string_view dot, std::string_view format, std::string_view engine) {
+  std::string out;
+  with_layout(dot, engine, [&](GVC_t* gvc, Agraph_t* g) { out = render_data(gvc, g, std::string(format)); });
+  return out;
+}
+
+std::vector<NodePosition> node_positions(std::string_view dot, std::string_view engine) {
+  std::vector<NodePosition> out;
+  with_layout(dot, engine, [&](GVC_t* gvc, Agraph_t* g) {
+    render_data(gvc, g, "dot");  // attaches each node's pos="x,y[,z]" to the graph
+    for (Agnode_t* n = agfstnode(g); n; n = agnxtnode(g, n)) {
+      NodePosition p{agnameof(n), {0, 0, 0}};
+      char pos_name[] = "pos", width_name[] = "width", height_name[] = "height";
+      const char* pos = agget(n, pos_name);
+      if (!pos || std::sscanf(pos, "%lf,%lf,%lf", &p.at[0], &p.at[1], &p.at[2]) < 2)
+        throw std::runtime_error(fmt::format("Graphviz gave node {} no position", p.name));
+      const char *width = agget(n, width_name), *height = agget(n, height_name);
+      if (width) std::sscanf(width, "%lf", &p.width);
+      if (height) std::sscanf(height, "%lf", &p.height);
+      out.push_back(std::move(p));
+    }
+  });
   return out;
 }
 

@@ -2,7 +2,9 @@
 // PNG or laid-out DOT out.
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 #include <string_view>
 
 namespace dartcheck::reports {
@@ -12,6 +14,17 @@ namespace dartcheck::reports {
 /// std::runtime_error with Graphviz's message if the text does not parse
 /// or the format or engine is unknown.
 std::string render(std::string_view dot, std::string_view format, std::string_view engine = "dot");
+
+/// Each node's name and position after the layout, in points (z: 0 unless
+/// the graph sets dimen=3), in the graph's node order; for pictures whose
+/// nodes are placed from another layout (map_layout, rule_dot). Throws as
+/// render does.
+struct NodePosition {
+  std::string name;
+  std::array<double, 3> at;
+  double width = 0, height = 0;  // inches
+};
+std::vector<NodePosition> node_positions(std::string_view dot, std::string_view engine);
 
 /// The output format a file name asks for: its extension (svg, png, dot,
 /// gv as dot, pdf). Throws std::invalid_argument naming the extensions

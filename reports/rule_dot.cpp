@@ -1,11 +1,15 @@
 #include "reports/rule_dot.hpp"
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "core/terminal.hpp"
 #include "reports/dot_text.hpp"
+#include "reports/render.hpp"
 
 namespace dartcheck::reports {
 namespace {
@@ -58,8 +62,22 @@ std::string node_label(const std::string& name, const std::string& type, const T
 // the dimension (arcs) so that one visual channel means one thing.
 std::string_view change_style(bool kept, bool left) { return kept ? "solid" : left ? "dashed" : "bold"; }
 
+// Where a side's nodes go: by the union layout's node name (unquoted:
+// prefix + "L:" + name for L's nodes and R's preserved ones, prefix + "R:"
+// + name for R's added nodes), in inches; R's shifted right by dx.
+struct SidePins {
+  std::map<std::string, std::array<double, 2>> at;
+  double dx = 0;
+  // Each side's extent in x in the union's coordinates (lo[0], hi[0] for
+  // L; [1] for R), and the union's in y; nodes' sizes included.
+  std::array<double, 2> lo{0, 0}, hi{0, 0};
+  double bottom = 0, top = 0;
+};
+
+// One side as a cluster, or (`merged`, for the union layout) as bare
+// statements with R's preserved nodes named as in L and not declared again.
 std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
-                         const JerboaLabels* labels, const TermLines& terms) {
+                         const JerboaLabels* labels, const TermLines& terms, const SidePins* pins, bool merged = false) {
   const TopoGraph& g = left ? rule.left() : rule.right();
   const std::vector<ConjWord>& ws = left ? words.left : words.right;
   const Model& model = rule.model();
@@ -84,9 +102,31 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
       return s.source == g.name(a.source) && s.target == g.name(a.target) && (s.label == full || (arc_word(ws, e).empty() && s.label == bare));
     });
   };
-  std::string out = fmt::format("    subgraph {} {{\n      label={}; color=\"#bdbdbd\";\n", quote("cluster_" + prefix + side), quote(side));
+  // A node's name in the union layout, and in the picture.
+  auto union_name = [&](NodeId v) {
+    const NodeId in_left = left ? v : rule.to_left(v);
+    return in_left != no_node ? prefix + "L:" + rule.left().name(in_left) : prefix + "R:" + g.name(v);
+  };
+  auto key = [&](NodeId v) { return quote(merged ? union_name(v) : prefix + side + ":" + g.name(v)); };
+  std::string out;
+  const double dx = left || !pins ? 0 : pins->dx;
+  if (!merged) {
+    out = fmt::format("    subgraph {} {{\n      label={}; color=\"#bdbdbd\";\n", quote("cluster_" + prefix + side), quote(side));
+    if (pins) {
+      // neato draws a cluster just around its nodes, its label at the top
+      // over them: two invisible corners make room for the label and for
+      // loops (with their labels, about 0.4 inch past their node), and
+      // give both frames the union's height.
+      constexpr double loop_room = 0.4;
+      out += fmt::format("      {} [shape=point, style=invis, width=0, pos=\"{:.4f},{:.4f}!\"];\n", quote(prefix + side + ":#low"), pins->lo[!left] - loop_room + dx,
+                         pins->bottom - loop_room);
+      out += fmt::format("      {} [shape=point, style=invis, width=0, pos=\"{:.4f},{:.4f}!\"];\n", quote(prefix + side + ":#high"), pins->hi[!left] + loop_room + dx,
+                         pins->top + loop_room + 0.5);
+    }
+  }
   for (NodeId v = 0; v < g.node_count(); ++v) {
     const bool kept = left ? rule.to_right(v) != no_node : rule.to_left(v) != no_node;
+    if (merged && !left && kept) continue;  // declared with L's nodes
     const NodeId in_left = left ? v : rule.to_left(v);
     const bool hook = in_left != no_node && std::find(rule.hooks().begin(), rule.hooks().end(), in_left) != rule.hooks().end();
     const bool lit = contains(lit_nodes, g.name(v));
@@ -97,8 +137,11 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     std::string style(change_style(kept, left));
     if (boxed) style = "rounded," + style;
     if (lit) style += ",filled";
-    out += fmt::format("      {} [{}, style=\"{}\"{}{}];\n", quote(prefix + side + ":" + g.name(v)), label, style, hook ? ", peripheries=2" : "",
-                       lit ? fmt::format(", fillcolor=\"{}\", witness=\"true\"", highlight_fill) : "");
+    std::string pin;
+    if (pins)
+      if (const auto at = pins->at.find(union_name(v)); at != pins->at.end()) pin = fmt::format(", pos=\"{:.4f},{:.4f}!\"", at->second[0] + dx, at->second[1]);
+    out += fmt::format("      {} [{}, style=\"{}\"{}{}{}];\n", key(v), label, style, hook ? ", peripheries=2" : "",
+                       lit ? fmt::format(", fillcolor=\"{}\", witness=\"true\"", highlight_fill) : "", pin);
   }
   std::vector<bool> drawn(g.arc_count(), false);
   std::vector<std::size_t> loops(g.node_count(), 0);  // drawn so far per node: each takes the next side
@@ -124,13 +167,57 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
     // A Jerboa node's orbit type already says what its implicit loops say.
     if (labels && a.source == a.target && !w.empty() && !lit) continue;
     const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++, true)) : "";
-    out += fmt::format("      {}{} -> {}{} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", quote(prefix + side + ":" + g.name(a.source)), port,
-                       quote(prefix + side + ":" + g.name(a.target)), port,
+    out += fmt::format("      {}{} -> {}{} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", key(a.source), port, key(a.target), port,
                        quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
                        lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, change_style(kept, left),
                        pair ? ", dir=none" : "", lit ? ", witness=\"true\"" : "");
   }
-  return out + "    }\n";
+  return merged ? out : out + "    }\n";
+}
+
+// The node attributes of the union layout: those of rule_dot's picture.
+constexpr std::string_view node_defaults =
+    "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n";
+
+// L and R laid out as one graph (L's nodes, R's added nodes, both sides'
+// arcs) by dot, so that a preserved node has one place, which both sides
+// use: R is L's layout shifted right, with R's added nodes where the union
+// put them.
+SidePins rule_pins(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
+                   const JerboaLabels* labels, const TermLines& terms) {
+  const std::string merged = "digraph union {\n  rankdir=LR;\n" + std::string(node_defaults) +
+                             side_cluster(rule, words, true, witnesses, prefix, labels, terms, nullptr, true) +
+                             side_cluster(rule, words, false, witnesses, prefix, labels, terms, nullptr, true) + "}\n";
+  SidePins pins;
+  std::map<std::string, std::array<double, 2>> half;  // each node's half width and height
+  for (const NodePosition& p : node_positions(merged, "dot")) {
+    pins.at[p.name] = {p.at[0] / 72, p.at[1] / 72};
+    half[p.name] = {p.width / 2, p.height / 2};
+  }
+  std::array<bool, 2> seen{false, false};
+  bool any = false;
+  auto extend = [&](int s, const std::string& name) {
+    const auto at = pins.at.find(name);
+    if (at == pins.at.end()) return;
+    const auto [x, y] = at->second;
+    const auto [w, h] = half[name];
+    pins.lo[s] = seen[s] ? std::min(pins.lo[s], x - w) : x - w;
+    pins.hi[s] = seen[s] ? std::max(pins.hi[s], x + w) : x + w;
+    pins.bottom = any ? std::min(pins.bottom, y - h) : y - h;
+    pins.top = any ? std::max(pins.top, y + h) : y + h;
+    seen[s] = any = true;
+  };
+  for (NodeId v = 0; v < rule.left().node_count(); ++v) {
+    extend(0, prefix + "L:" + rule.left().name(v));
+    if (rule.to_right(v) != no_node) extend(1, prefix + "L:" + rule.left().name(v));
+  }
+  for (NodeId v = 0; v < rule.right().node_count(); ++v)
+    if (rule.to_left(v) == no_node) extend(1, prefix + "R:" + rule.right().name(v));
+  // An empty side (L of a creation) is a frame of its own, no node wide.
+  for (int s : {0, 1})
+    if (!seen[s]) pins.lo[s] = pins.hi[s] = seen[1 - s] ? pins.lo[1 - s] : 0;
+  pins.dx = pins.hi[0] - pins.lo[1] + 1.2;  // R's left edge past L's right one: the frames' margins and a gap
+  return pins;
 }
 
 }  // namespace
@@ -143,26 +230,21 @@ std::vector<RuleWitness> failed_witnesses(const RuleVerdict& v) {
 }
 
 std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
-                         const JerboaLabels* labels, const TermLines& terms, bool titled) {
-  std::string out =
-      fmt::format("  subgraph {} {{\n    label={}; color=\"white\";\n", quote("cluster_" + prefix + "rule"), quote(titled ? rule.name() : ""));
-  out += side_cluster(rule, words, true, witnesses, prefix, labels, terms);
-  out += side_cluster(rule, words, false, witnesses, prefix, labels, terms);
-  // R right of L: an invisible node ranked after every node of L and
-  // before every node of R (without it, L and R can end up stacked when
-  // their preserved nodes sit at different depths, as in Fig. 26d).
-  const std::string sep = prefix + "L|R";
-  out += fmt::format("    {} [shape=point, style=invis, width=0];\n", quote(sep));
-  for (NodeId v = 0; v < rule.left().node_count(); ++v)
-    out += fmt::format("    {} -> {} [style=invis, weight=0];\n", quote(prefix + "L:" + rule.left().name(v)), quote(sep));
-  for (NodeId v = 0; v < rule.right().node_count(); ++v)
-    out += fmt::format("    {} -> {} [style=invis, weight=0];\n", quote(sep), quote(prefix + "R:" + rule.right().name(v)));
-  // Level each preserved node of R with its node in L.
-  for (NodeId v = 0; v < rule.left().node_count(); ++v)
-    if (rule.to_right(v) != no_node)
-      out += fmt::format("    {} -> {} [style=invis, weight=20];\n", quote(prefix + "L:" + rule.left().name(v)),
-                         quote(prefix + "R:" + rule.right().name(rule.to_right(v))));
-  return out + "  }\n";
+                         const JerboaLabels* labels, const TermLines& terms, bool titled, bool pinned) {
+  // At the graph's top level (the callers put the sides there): the pins
+  // need neato (dot cannot keep them: it ranks each side on its own), and
+  // neato draws no cluster nested in another, so the sides are not
+  // wrapped; the rule's name, when asked for, is the picture's label.
+  // Straight edges: Graphviz 2.43's spline router in neato corrupts its
+  // heap on some rules (makeMultiSpline, seen on the seed catalog).
+  std::string out = pinned ? "  layout=neato; splines=false;\n" : "";
+  // Preserved nodes at the same place on both sides: every node pinned
+  // from one layout of L and R together.
+  const std::optional<SidePins> pins = pinned ? std::optional(rule_pins(rule, words, witnesses, prefix, labels, terms)) : std::nullopt;
+  if (titled) out += fmt::format("  label={};\n", quote(rule.name()));
+  out += side_cluster(rule, words, true, witnesses, prefix, labels, terms, pins ? &*pins : nullptr);
+  out += side_cluster(rule, words, false, witnesses, prefix, labels, terms, pins ? &*pins : nullptr);
+  return out;
 }
 
 std::string failure_caption(const std::string& head, const std::vector<RuleWitness>& witnesses) {
@@ -202,16 +284,16 @@ std::string rule_legend(const Model& model, bool witnesses, const TermLines& ter
 }
 
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const JerboaLabels* labels,
-                     const TermLines& terms, const std::vector<std::string>& captions) {
+                     const TermLines& terms, const std::vector<std::string>& captions, bool pinned) {
   std::string caption = fmt::format("<tr><td><b>{}</b></td></tr>", html_text(rule.name()));
   for (const auto& text : captions)
     for (const auto& line : caption_lines(text)) caption += fmt::format(R"(<tr><td><font color="{}">{}</font></td></tr>)", deleted_color, html_text(line));
   return fmt::format(
       "digraph {} {{\n  rankdir=LR; newrank=true; fontname=\"Helvetica\"; labelloc=t;\n"
       "  label=<<table border=\"0\" cellspacing=\"1\">{}<tr><td>{}</td></tr></table>>;\n"
-      "  node [shape=circle, fontname=\"Helvetica\", fontsize=11, width=0.35]; edge [fontname=\"Helvetica\", fontsize=10];\n{}}}\n",
-      quote(rule.name()), caption, rule_legend(rule.model(), !witnesses.empty(), terms),
-      rule_cluster(rule, words, witnesses, "", labels, terms, false));
+      "{}{}}}\n",
+      quote(rule.name()), caption, rule_legend(rule.model(), !witnesses.empty(), terms), node_defaults,
+      rule_cluster(rule, words, witnesses, "", labels, terms, false, pinned));
 }
 
 }  // namespace dartcheck::reports

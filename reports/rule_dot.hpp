@@ -43,16 +43,20 @@ std::string failure_caption(const std::string& head, const std::vector<RuleWitne
 /// One caption line per condition of `v` that fails, in the verdict's order.
 std::vector<std::string> failure_captions(const RuleVerdict& v);
 
-/// A cluster holding L and R (to embed in a larger picture), titled with
-/// the rule's name unless `titled` is false; node ids are prefix + "L:" +
-/// name and prefix + "R:" + name.
+/// L and R as two clusters side by side, to put at the top level of a
+/// picture (they set its layout engine to neato, and with `titled` its
+/// label to the rule's name): every node pinned from one layout of L and R
+/// together, so that a preserved node sits at the same place in both. Node
+/// ids are prefix + "L:" + name and prefix + "R:" + name.
 std::string rule_cluster(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
-                         const JerboaLabels* labels = nullptr, const TermLines& terms = {}, bool titled = true);
+                         const JerboaLabels* labels = nullptr, const TermLines& terms = {}, bool titled = true, bool pinned = true);
 
 /// A whole picture of the rule, titled with its name and `captions` (what
 /// fails: failure_captions, EmbeddingPicture::captions).
+/// `pinned` false: L and R as plain clusters, for a layout engine of the
+/// caller's choice (draw --engine).
 std::string rule_dot(const Rule& rule, const ArcWords& words, const std::vector<RuleWitness>& witnesses = {}, const JerboaLabels* labels = nullptr,
-                     const TermLines& terms = {}, const std::vector<std::string>& captions = {});
+                     const TermLines& terms = {}, const std::vector<std::string>& captions = {}, bool pinned = true);
 
 /// The legend of rule pictures: the line styles, the hooks, the witnesses
 /// and the model's dimension colours, as an HTML-like label cell; with

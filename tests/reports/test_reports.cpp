@@ -14,6 +14,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "checkers/embedding_conditions.hpp"
@@ -126,7 +127,7 @@ TEST(RuleDot, StyleSaysWhatHappensColourSaysTheDimensionCaptionSaysWhatFails) {
         EXPECT_EQ(style.find("bold") != std::string::npos, !left && !kept) << e.rule.name() << " " << prefix << side.name(n) << " " << style;
         for (Agedge_t* x = agfstout(g.get(), node); x; x = agnxtout(g.get(), x)) {
           const std::string head = agnameof(aghead(x));
-          if (!head.starts_with(prefix) || head == "L|R") continue;  // the invisible L|R separator
+          if (!head.starts_with(prefix)) continue;
           const std::string color = agget(x, const_cast<char*>("color"));
           bool dimension = false;
           for (ArcId a = 0; a < side.arc_count(); ++a) {
@@ -228,6 +229,49 @@ TEST(RuleDot, EmbeddedRulesShowTermsAndHighlightFailingOnes) {
     EXPECT_EQ(svg_nodes(svg), e.rule.left().node_count() + e.rule.right().node_count()) << e.rule.name();
   }
   EXPECT_EQ(failing, 18);  // the catalog's rules recorded with failing (required) embedding conditions
+}
+
+// L and R read as one picture (issue 64 item 11). Property, on the layout
+// Graphviz computes for every seed rule and every embedded rule: a
+// preserved node sits at the same place on both sides (R's node is L's
+// moved by one vector, the same for every preserved node of the rule, and
+// horizontal; within half a point: Graphviz writes positions to 5
+// significant digits), R lies right of L, and no two nodes of a side
+// overlap.
+TEST(RuleDot, PreservedNodesSitAtTheSamePlaceOnBothSides) {
+  int preserved = 0;
+  const Catalog embedded = read_catalog(std::string(DARTCHECK_SOURCE_DIR) + "/catalogs/embedding-operations.yaml");
+  for (const Catalog* catalog : {&seed_catalog(), &embedded})
+    for (const auto& e : catalog->rules) {
+      std::map<std::string, reports::NodePosition> at;
+      for (auto& p : reports::node_positions(reports::rule_dot(e.rule, e.words, {}, nullptr, {}, {}), "dot")) at[p.name] = p;
+      std::optional<double> dx;
+      for (NodeId v = 0; v < e.rule.left().node_count(); ++v) {
+        const NodeId w = e.rule.to_right(v);
+        if (w == no_node) continue;
+        const auto& l = at.at("L:" + e.rule.left().name(v));
+        const auto& r = at.at("R:" + e.rule.right().name(w));
+        EXPECT_NEAR(r.at[1], l.at[1], 0.5) << e.rule.name() << ": " << e.rule.left().name(v) << " at another height in R";
+        if (!dx) dx = r.at[0] - l.at[0];
+        EXPECT_NEAR(r.at[0] - l.at[0], *dx, 0.5) << e.rule.name() << ": " << e.rule.left().name(v) << " moved within its side";
+        ++preserved;
+      }
+      for (const char* side : {"L:", "R:"})
+        for (const auto& [a, p] : at)
+          for (const auto& [b, q] : at)
+            if (a < b && a.starts_with(side) && b.starts_with(side) && a.find('#') == std::string::npos && b.find('#') == std::string::npos) {
+              EXPECT_TRUE(std::abs(p.at[0] - q.at[0]) * 2 >= (p.width + q.width) * 72 - 0.5 ||
+                          std::abs(p.at[1] - q.at[1]) * 2 >= (p.height + q.height) * 72 - 0.5)
+                  << e.rule.name() << ": " << a << " and " << b << " overlap";
+            }
+      double left_max = -1e300, right_min = 1e300;
+      for (const auto& [name, p] : at) {
+        if (name.starts_with("L:")) left_max = std::max(left_max, p.at[0] + p.width * 36);
+        if (name.starts_with("R:")) right_min = std::min(right_min, p.at[0] - p.width * 36);
+      }
+      EXPECT_LT(left_max, right_min) << e.rule.name() << ": R is not right of L";
+    }
+  EXPECT_GT(preserved, 200);
 }
 
 TEST(RuleSvg, EverySeedRuleRendersWithOneNodePerRuleNode) {
