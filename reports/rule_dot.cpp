@@ -110,19 +110,20 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
   auto key = [&](NodeId v) { return quote(merged ? union_name(v) : prefix + side + ":" + g.name(v)); };
   std::string out;
   const double dx = left || !pins ? 0 : pins->dx;
-  if (!merged) {
+  if (pins) {
+    // The frame is a node pinned under the side's nodes, not a cluster:
+    // neato orders clusters by address (its SVG changes from run to run)
+    // and draws them just around their nodes, the label over them. Room
+    // for the label and for loops (with their labels, about 0.4 inch past
+    // their node); both frames have the union's height.
+    constexpr double loop_room = 0.4, label_room = 0.5;
+    const double x0 = pins->lo[!left] - loop_room + dx, x1 = pins->hi[!left] + loop_room + dx;
+    const double y0 = pins->bottom - loop_room, y1 = pins->top + loop_room + label_room;
+    out = fmt::format(
+        "    {} [shape=box, color=\"#bdbdbd\", fontsize=14, label={}, labelloc=t, fixedsize=true, width={:.4f}, height={:.4f}, pos=\"{:.4f},{:.4f}!\"];\n",
+        quote(prefix + side + ":#frame"), quote(side), x1 - x0, y1 - y0, (x0 + x1) / 2, (y0 + y1) / 2);
+  } else if (!merged) {
     out = fmt::format("    subgraph {} {{\n      label={}; color=\"#bdbdbd\";\n", quote("cluster_" + prefix + side), quote(side));
-    if (pins) {
-      // neato draws a cluster just around its nodes, its label at the top
-      // over them: two invisible corners make room for the label and for
-      // loops (with their labels, about 0.4 inch past their node), and
-      // give both frames the union's height.
-      constexpr double loop_room = 0.4;
-      out += fmt::format("      {} [shape=point, style=invis, width=0, pos=\"{:.4f},{:.4f}!\"];\n", quote(prefix + side + ":#low"), pins->lo[!left] - loop_room + dx,
-                         pins->bottom - loop_room);
-      out += fmt::format("      {} [shape=point, style=invis, width=0, pos=\"{:.4f},{:.4f}!\"];\n", quote(prefix + side + ":#high"), pins->hi[!left] + loop_room + dx,
-                         pins->top + loop_room + 0.5);
-    }
   }
   for (NodeId v = 0; v < g.node_count(); ++v) {
     const bool kept = left ? rule.to_right(v) != no_node : rule.to_left(v) != no_node;
@@ -172,7 +173,7 @@ std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, con
                        lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, change_style(kept, left),
                        pair ? ", dir=none" : "", lit ? ", witness=\"true\"" : "");
   }
-  return merged ? out : out + "    }\n";
+  return merged || pins ? out : out + "    }\n";
 }
 
 // The node attributes of the union layout: those of rule_dot's picture.

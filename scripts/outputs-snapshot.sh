@@ -9,7 +9,8 @@
 # Run from the repository root with ../shared beside it. Each command's
 # stdout, stderr and exit status go to OUT_DIR/<name>.out, its written files
 # to OUT_DIR/<name>/. What varies from run to run is masked (and nothing
-# else): wall and CPU times, rates, peak memory, temporary paths. The
+# else): wall and CPU times (check's ms column too), rates, peak memory,
+# the output directory's path. The
 # elephant (27,474 tetrahedra from CGAL's elephant.off by TetGen, as
 # ctest's cli.tetgen_elephant makes it) is recombined when given.
 set -euo pipefail
@@ -30,6 +31,8 @@ mask() {
     -e 's/[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)?\/s\b/<rate>/g' \
     -e 's/[0-9]+(\.[0-9]+)? (tetrahedra|applications|hosts|runs|rules) per second/<rate>/g' \
     -e 's/"([a-z_]*(seconds|_s|_ms|time|per_second|_mib|rate))": ?[-0-9.e+]+/"\1": <masked>/g' \
+    -e 's/"seconds":\{[^}]*\}/"seconds":<masked>/g' \
+    -e 's/ +[0-9]+\.[0-9]{2}  ([a-z])/ <ms>  \1/' \
     -e 's/seed [0-9]+ \(--seed/seed <seed> (--seed/g' \
     -e "s|$out|<out>|g"
 }
@@ -42,7 +45,7 @@ run() {
   mkdir -p "$out/$name"
   "$dartcheck" "${@//@OUT@/$out/$name}" >"$out/$name.stdout" 2>"$out/$name.stderr" || status=$?
   {
-    echo "\$ dartcheck $*"
+    echo "\$ dartcheck $*" | mask
     mask <"$out/$name.stdout"
     echo "--- stderr"
     mask <"$out/$name.stderr"

@@ -58,11 +58,16 @@ std::set<std::string> marked(Agraph_t* g, const char* attr) {
   return out;
 }
 
+// The SVG's nodes but a rule picture's two frames (nodes named L:#frame
+// and R:#frame, drawn under each side).
 std::size_t svg_nodes(const std::string& svg) {
   pugi::xml_document doc;
   const auto r = doc.load_string(svg.c_str());
   EXPECT_TRUE(r) << r.description();
-  return doc.select_nodes("//g[@class='node']").size();
+  std::size_t n = 0;
+  for (const auto& node : doc.select_nodes("//g[@class='node']"))
+    n += !std::string_view(node.node().child_value("title")).ends_with("#frame");
+  return n;
 }
 
 }  // namespace
@@ -352,7 +357,8 @@ std::vector<Part> figure_parts(const std::string& svg) {
   std::vector<Part> out;
   for (const auto& n : doc.child("svg").children("svg")) {
     Part p{n.attribute("x").as_double(), n.attribute("y").as_double(), n.attribute("width").as_double(), n.attribute("height").as_double(), {}};
-    for (const auto& t : n.select_nodes(".//g[@class='node']/title")) p.nodes.push_back(t.node().child_value());
+    for (const auto& t : n.select_nodes(".//g[@class='node']/title"))
+      if (!std::string_view(t.node().child_value()).ends_with("#frame")) p.nodes.push_back(t.node().child_value());  // not a rule's frame
     out.push_back(std::move(p));
   }
   return out;
