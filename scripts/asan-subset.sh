@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 build=${1:-build-asan}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DDARTCHECK_SANITIZE=ON -DDARTCHECK_BENCH=OFF >/dev/null
 cmake --build "$build" -j2 --target dartcheck test_io test_jerboa test_reports test_campaign test_compiled test_compiled_mutant test_compiled_shortcut_mutant >/dev/null
-suites='MapYaml|Mesh|MeshWriter|Catalog|HostileInput|TetMeshIo|Jme|Jba|RuleDot|RuleSvg|MapSvg|Render|CounterexampleDot|Shard|ResultRecord|CompiledOperations'
+suites='MapYaml|Mesh|MeshWriter|GmshMsh|Catalog|HostileInput|TetMeshIo|Jme|Jba|RuleDot|RuleSvg|MapSvg|Render|CounterexampleDot|Shard|ResultRecord|CompiledOperations'
 # Over 30 s each under the sanitizers: fuzzing, proving and recombining
 # whole catalogs and meshes, and every example of docs/cli.md (which fuzzes
 # the embedding catalog and the Jerboa modelers with values: minutes under
