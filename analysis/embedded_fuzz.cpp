@@ -100,7 +100,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
           small.push_back(std::move(m));
           return small.size() < small_budget;
         },
-        small_budget - small.size(), entry.words.scheme ? nullptr : &entry.rule.left());
+        small_budget - small.size(), entry.is_scheme() ? nullptr : &entry.rule.left());
   const std::size_t user_maps = given.size();
   const std::size_t small_count = small.size();
   for (Map& m : small) given.push_back(std::move(m));
@@ -167,7 +167,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
       // The match and the comatch, for the pictures: the application
       // again (it is deterministic), recorded this time; schemes show
       // their match as P_v from the hooks.
-      if (!entry.words.scheme)
+      if (!entry.is_scheme())
         if (const auto m = match_darts(entry, planted.map, hooks); !m.empty())
           for (NodeId v = 0; v < entry.rule.left().node_count(); ++v) cx.match.emplace_back(entry.rule.left().name(v), m[v][0]);
       EmbeddedMap again = planted;

@@ -201,7 +201,7 @@ class Fuzzer {
   // them already tried; host_budget_ hosts left.
   std::size_t n_ = 1, first_n_ = 1, skip_ = 0, host_budget_ = 0;
 
-  bool scheme() const { return entry_.words.scheme; }
+  bool scheme() const { return entry_.is_scheme(); }
   std::size_t hook_count() const { return rule_.hooks().size(); }
 
   // Stops at --runs applications, at the deadline, or after 20 attempts
@@ -474,8 +474,8 @@ FuzzReport fuzz_rule(const Operation& entry, const std::vector<Map>& seeds, cons
     out.reason = fmt::format("no failure in {} on {} of up to {} darts", counted(out.applications, "application"), counted(out.hosts, "map"),
                              out.largest_host);
   if (out.exhaustive_darts)
-    out.reason += fmt::format("; every map of up to {} darts{} was tried", out.exhaustive_darts, entry.words.scheme ? "" : " containing L");
-  if (entry.words.scheme && std::all_of(out.static_failures.begin(), out.static_failures.end(), [](const std::string& f) { return f[0] == 'C'; }))
+    out.reason += fmt::format("; every map of up to {} darts{} was tried", out.exhaustive_darts, entry.is_scheme() ? "" : " containing L");
+  if (entry.is_scheme() && std::all_of(out.static_failures.begin(), out.static_failures.end(), [](const std::string& f) { return f[0] == 'C'; }))
     out.reason += "; only the cycle condition fails, and Theorem 6 is sufficient, not necessary";
   if (out.out_of_time) out.reason += " (stopped by --time)";
   return out;

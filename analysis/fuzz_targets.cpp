@@ -34,8 +34,7 @@ std::vector<Map> given_maps(const std::vector<std::string>& targets, const std::
         why.push_back(fmt::format("{}: {}", m.name, e.what()));
       }
     }
-    if (built == 0)
-      throw InputError("<command line>", 0, 0, fmt::format("--maps {}: not built for any model of the rules ({})", t, fmt::join(why, "; ")));
+    if (built == 0) throw UsageError(fmt::format("--maps {}: not built for any model of the rules ({})", t, fmt::join(why, "; ")));
     for (const auto& w : why) fmt::print(stderr, "note: --maps {} is not used for {}\n", t, w);
   }
   for (const Map& m : out) require_valid_map(m, fmt::format("--maps: a given {} of {} darts", m.model().name, m.size()), "fuzzing needs valid hosts");

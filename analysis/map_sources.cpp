@@ -37,8 +37,7 @@ const CatalogRule& require_rule(const Catalog& catalog, const std::string& file,
   if (const CatalogRule* found = catalog.find_rule(rule)) return *found;
   std::vector<std::string> names;
   for (const auto& e : catalog.rules) names.push_back(e.rule.name());
-  throw InputError("<command line>", 0, 0,
-                   fmt::format("--rule: no rule named '{}' in {}{} (`dartcheck check {}` lists its {})", printable(rule), file,
+  throw UsageError(fmt::format("--rule: no rule named '{}' in {}{} (`dartcheck check {}` lists its {})", printable(rule), file,
                                did_you_mean(rule, names), shell_quote(file), names.size() == 1 ? "rule" : fmt::format("{} rules", names.size())));
 }
 
@@ -54,7 +53,7 @@ Map build_source(const MapSource& s) {
 
 std::vector<Map> confirmation_maps(const Catalog& catalog, std::size_t confirm_darts) {
   std::vector<Map> maps;
-  const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.words.scheme; });
+  const bool schemes = std::any_of(catalog.rules.begin(), catalog.rules.end(), [](const CatalogRule& e) { return e.is_scheme(); });
   if (confirm_darts > 0 && schemes)
     for (const auto& source : catalog.maps) maps.push_back(build_source(source));
   return maps;
@@ -109,8 +108,7 @@ Map resolve_map(const std::string& target, const Model& model, const Catalog* ca
         names.push_back(m.name);
         maps += (maps.empty() ? "" : ", ") + printable(m.name);
       }
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("'{}' is not a catalog map, a map file or a shape: {}{}{}", printable(target), e.what(),
+    throw UsageError(fmt::format("'{}' is not a catalog map, a map file or a shape: {}{}{}", printable(target), e.what(),
                                  maps.empty() ? std::string() : fmt::format("; the catalog's maps: {}", maps), did_you_mean(target, names)));
   }
 }

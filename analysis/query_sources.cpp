@@ -23,7 +23,7 @@ querymodify::BoundaryCondition parse_boundary_condition(const std::string& s) {
   if (s == "boundary") return querymodify::BoundaryCondition::boundary;
   if (s == "interior") return querymodify::BoundaryCondition::interior;
   if (s == "no-link") return querymodify::BoundaryCondition::no_connection;
-  throw InputError("<command line>", 0, 0, fmt::format("--free: expected any, boundary, interior or no-link, got '{}'", s));
+  throw UsageError(fmt::format("--free: expected any, boundary, interior or no-link, got '{}'", s));
 }
 
 // The --query maps read as words from --start, then the hex patterns.
@@ -36,7 +36,7 @@ std::vector<NamedQuery> named_queries(const std::vector<std::string>& targets, b
       throw InputError(
           "<command line>", 0, 0,
           fmt::format("--query {}: a {} query on a {} map (a query's letters are the map's dimensions)", target, q.model().name, input.model().name));
-    if (start >= q.size()) throw InputError("<command line>", 0, 0, fmt::format("--start {}: the query {} has {} darts", start, target, q.size()));
+    if (start >= q.size()) throw UsageError(fmt::format("--start {}: the query {} has {} darts", start, target, q.size()));
     try {
       queries.push_back({target, query_word(q, start, free_links)});
     } catch (const std::invalid_argument& e) {
@@ -45,7 +45,7 @@ std::vector<NamedQuery> named_queries(const std::vector<std::string>& targets, b
   }
   if (hex) {
     if (!(input.model() == Model::open_omap(3)))
-      throw InputError("<command line>", 0, 0, fmt::format("--hex: the hex patterns are tetrahedral 3-maps; the map is a {}", input.model().name));
+      throw UsageError(fmt::format("--hex: the hex patterns are tetrahedral 3-maps; the map is a {}", input.model().name));
     const auto& patterns = hex_queries();
     for (std::size_t k = 0; k < patterns.size(); ++k) queries.push_back({fmt::format("hex-{}", k), patterns[k].word});
   }

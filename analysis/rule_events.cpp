@@ -19,7 +19,7 @@ void check_orbit_syntax(const std::vector<std::string>& texts) {
     try {
       orbit_kind_entries(t);
     } catch (const std::invalid_argument& e) {
-      throw InputError("<command line>", 0, 0, fmt::format("--orbit: {}", e.what()));
+      throw UsageError(fmt::format("--orbit: {}", e.what()));
     }
   }
 }
@@ -31,7 +31,7 @@ std::vector<OrbitKind> requested_orbit_kinds(const std::vector<std::string>& tex
     try {
       out.push_back(parse_orbit_kind(t, model));
     } catch (const std::invalid_argument& e) {
-      throw InputError("<command line>", 0, 0, fmt::format("--orbit: {}", e.what()));
+      throw UsageError(fmt::format("--orbit: {}", e.what()));
     }
   }
   return out;

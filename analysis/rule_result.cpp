@@ -182,7 +182,7 @@ RuleResult analyse_static(const Catalog& catalog, const CatalogRule& entry, std:
   // An embedded DPO rule that fails an embedding condition is fuzzed with
   // its values too: the failure ends confirmed or not found, as a scheme's.
   const bool embedding_failure = entry.terms && !failing_names(r.embedding).empty();
-  if (confirm_darts > 0 && (entry.words.scheme || embedding_failure)) {
+  if (confirm_darts > 0 && (entry.is_scheme() || embedding_failure)) {
     // Schemes, consistent or not, run on every small map of their model,
     // the catalog's maps and random valid maps (the fuzzer with a small
     // fixed budget): a failure is confirmed or reported as not found; a
@@ -210,7 +210,7 @@ void run_embedding_solver(RuleResult& r, const std::function<bool()>& stop) {
   proofs::RuleProof p;
   p.rule = e.rule.name();
   p.model = e.rule.model().name;
-  p.scheme = e.words.scheme;
+  p.scheme = e.is_scheme();
   proofs::EmbeddingProveOptions o;
   o.max_darts = proofs::embedding_host_darts(e.rule, 0);
   o.stop = stop;

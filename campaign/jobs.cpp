@@ -80,7 +80,7 @@ pid_t spawn(const std::vector<std::string>& args, const std::string& out, const 
 void set_command_line(int argc, char** argv) { command_line().assign(argv, argv + argc); }
 
 int run_jobs(const JobsRun& run) {
-  if (!run.shard.empty()) throw InputError("<command line>", 0, 0, "--jobs with --shard: run a shard on one job, or the whole run on several");
+  if (!run.shard.empty()) throw UsageError("--jobs with --shard: run a shard on one job, or the whole run on several");
   if (command_line().empty()) throw std::logic_error("run_jobs: the command line was not saved");
   analysis::catch_interrupts();  // Ctrl-C reaches the shards too (one process group); they stop and say so
   analysis::count_second_interrupt();  // a second signal kills the shards before the parent goes

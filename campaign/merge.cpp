@@ -118,7 +118,7 @@ int worse(int a, int b) { return a == soundness_bug || b == soundness_bug ? soun
 // the inputs' paths; the worst exit status (3, then 1, then 0).
 int merge_inputs(const std::vector<ShardFile>& files, const std::string& format) {
   const std::string& command = files.front().header.command;
-  if (format != "text" && format != "json") throw InputError("<command line>", 0, 0, fmt::format("--format: {} runs merge as text or json", command));
+  if (format != "text" && format != "json") throw UsageError(fmt::format("--format: {} runs merge as text or json", command));
   int status = ok;
   Json runs = Json::array();
   std::string text;
@@ -150,7 +150,7 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
 // events: every shard's rule fragments in catalog order, each from the
 // shard its name belongs to; the worst exit status.
 int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, const std::string& format) {
-  if (format != "text" && format != "json") throw InputError("<command line>", 0, 0, "--format: events shards merge as text or json");
+  if (format != "text" && format != "json") throw UsageError("--format: events shards merge as text or json");
   const auto& h = shards.front().header;
   std::map<std::string, std::size_t> order;
   for (std::size_t k = 0; k < catalog.rules.size(); ++k) order.emplace(reports::replace_invalid_utf8(catalog.rules[k].rule.name()), k);
@@ -203,13 +203,12 @@ int merge_shards(const MergeRequest& o) {
     if (o.incomplete && std::filesystem::is_regular_file(f, ec) && std::filesystem::file_size(f, ec) == 0) continue;
     files.push_back(read_shard_file(f, o.incomplete));
   }
-  if (files.empty() && o.incomplete) throw InputError("<command line>", 0, 0, "merge --incomplete: every shard file is empty (no shard started)");
+  if (files.empty() && o.incomplete) throw UsageError("merge --incomplete: every shard file is empty (no shard started)");
   files = check_complete(std::move(files), o.incomplete);
   const RunHeader& h = files.front().header;
   if (per_input_command(h.command)) return merge_inputs(files, o.format);
-  if (o.format == "html" && o.output.empty()) throw InputError("<command line>", 0, 0, "--format html: give -o DIR for the page");
-  if (h.command == "report" && o.format == "text")
-    throw InputError("<command line>", 0, 0, "--format: a report merges as html, json, sarif or junit");
+  if (o.format == "html" && o.output.empty()) throw UsageError("--format html: give -o DIR for the page");
+  if (h.command == "report" && o.format == "text") throw UsageError("--format: a report merges as html, json, sarif or junit");
   if (o.format == "html") ensure_directory(o.output);
 
   std::vector<std::string> baseline_mismatches;

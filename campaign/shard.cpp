@@ -14,8 +14,7 @@ std::string Shard::text() const { return fmt::format("{}/{}", index, count); }
 
 Shard parse_shard(std::string_view text, std::string_view option) {
   const auto bad = [&] {
-    return InputError("<command line>", 0, 0,
-                      fmt::format("{}: expected K/N with 0 <= K < N (shard K of N, e.g. 0/4), got '{}'", option, printable(text)));
+    return UsageError(fmt::format("{}: expected K/N with 0 <= K < N (shard K of N, e.g. 0/4), got '{}'", option, printable(text)));
   };
   const auto slash = text.find('/');
   if (slash == std::string_view::npos) throw bad();

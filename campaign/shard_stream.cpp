@@ -224,7 +224,7 @@ ShardFile read_shard_file(const std::string& file, bool incomplete) {
 }
 
 std::vector<ShardFile> check_complete(std::vector<ShardFile> files, bool incomplete) {
-  if (files.empty()) throw InputError("<command line>", 0, 0, "merge: no shard files given");
+  if (files.empty()) throw UsageError("merge: no shard files given");
   const RunHeader& first = files.front().header;
   if (per_input_command(first.command)) {
     std::map<std::string, const ShardFile*> by_input;
@@ -250,8 +250,7 @@ std::vector<ShardFile> check_complete(std::vector<ShardFile> files, bool incompl
   }
   for (std::size_t k = 0; k < first.shard.count && !incomplete; ++k)
     if (!by_index.contains(k))
-      throw InputError("<command line>", 0, 0,
-                       fmt::format("merge: shard {}/{} is missing ({} of {} given)", k, first.shard.count, files.size(), first.shard.count));
+      throw UsageError(fmt::format("merge: shard {}/{} is missing ({} of {} given)", k, first.shard.count, files.size(), first.shard.count));
   std::sort(files.begin(), files.end(), [](const ShardFile& a, const ShardFile& b) { return a.header.shard.index < b.header.shard.index; });
   return files;
 }

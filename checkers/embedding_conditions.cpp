@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "core/disjoint_sets.hpp"
+
 namespace dartcheck {
 
 namespace {
@@ -18,20 +20,13 @@ bool in_orbit(const std::vector<Dim>& o, Dim d) { return std::find(o.begin(), o.
 // arcs with `explicit_only`), as the smallest node id of each orbit.
 std::vector<NodeId> orbits(const TopoGraph& g, const std::vector<ConjWord>& words, const std::vector<Dim>& o, bool explicit_only,
                            const std::vector<bool>* keep = nullptr) {
-  std::vector<NodeId> up(g.node_count());
-  std::iota(up.begin(), up.end(), 0);
-  auto root = [&](NodeId v) {
-    while (up[v] != v) v = up[v] = up[up[v]];
-    return v;
-  };
+  DisjointSets<NodeId> orbit(g.node_count());
   for (ArcId e = 0; e < g.arc_count(); ++e) {
     const auto& a = g.arc(e);
     if (!in_orbit(o, a.label) || (explicit_only && !arc_word(words, e).empty()) || (keep && !(*keep)[e])) continue;
-    const NodeId x = root(a.source), y = root(a.target);
-    up[std::max(x, y)] = std::min(x, y);
+    orbit.join(a.source, a.target);
   }
-  for (NodeId v = 0; v < up.size(); ++v) up[v] = root(v);
-  return up;
+  return orbit.representatives();
 }
 
 // A term's value is the same at pattern copies p and p·w when every

@@ -30,17 +30,13 @@ EmbeddingConsistency check_orbits(const Map& map, const std::string& name, const
   EmbeddingConsistency out{name, 0, 0, {}};
   const auto gens = dims_generators(orbit_type);
   OrbitWalker walker(map);
-  std::vector<bool> seen(map.size(), false);
-  for (Dart d = 0; d < map.size(); ++d) {
-    if (seen[d]) continue;
-    const auto& orbit = walker.orbit(d, gens);
+  for_each_orbit(walker, map, gens, [&](Dart d, const std::vector<Dart>& orbit) {
     ++out.orbits;
     OrbitConflict c{d, orbit.size(), {}, {}};
     auto note = [&](Dart x, const std::string& v) {
       if (std::none_of(c.values.begin(), c.values.end(), [&](const auto& p) { return p.second == v; })) c.values.emplace_back(x, v);
     };
     for (Dart x : orbit) {
-      seen[x] = true;
       if (auto v = text(x))
         note(x, *v);
       else
@@ -50,7 +46,7 @@ EmbeddingConsistency check_orbits(const Map& map, const std::string& name, const
       if (std::find(orbit.begin(), orbit.end(), x) != orbit.end()) note(x, v);
     if (!c.values.empty()) ++out.labeled;
     if (c.values.size() > 1 || (!c.unlabeled.empty() && (total || !c.values.empty()))) out.conflicts.push_back(std::move(c));
-  }
+  });
   return out;
 }
 

@@ -6,26 +6,22 @@
 
 #include <fmt/format.h>
 
+#include "core/disjoint_sets.hpp"
+
 namespace dartcheck {
 namespace {
 
 // The pi-orbits of one side: a component id per node, through explicit
 // arcs (ε-word in a scheme) labeled in <o>.
 std::vector<std::size_t> orbits(const TopoGraph& g, const std::vector<ConjWord>& words, bool scheme, const std::vector<Dim>& o) {
-  std::vector<std::size_t> parent(g.node_count());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](std::size_t v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  DisjointSets<std::size_t> orbit(g.node_count());
   for (ArcId e = 0; e < g.arc_count(); ++e) {
     const auto& a = g.arc(e);
     if (scheme && !arc_word(words, e).empty()) continue;
     if (std::find(o.begin(), o.end(), a.label) == o.end()) continue;
-    parent[root(a.source)] = root(a.target);
+    orbit.attach(a.source, a.target);
   }
-  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = root(v);
-  return parent;
+  return orbit.representatives();
 }
 
 std::string names(const TopoGraph& g, const std::vector<NodeId>& nodes) {

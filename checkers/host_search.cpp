@@ -195,7 +195,7 @@ RootedHosts for_each_rooted_host(const Operation& op, std::size_t max_darts, con
   const Rule& rule = op.rule;
   const Model& model = rule.model();
   const TopoGraph& L = rule.left();
-  const bool scheme = op.words.scheme;
+  const bool scheme = op.is_scheme();
   const std::size_t first = scheme ? 1 : L.node_count(), hooks = rule.hooks().size();
   bool stopped = false;
   out.complete = std::min(first - 1, max_darts);  // no smaller host can hold L

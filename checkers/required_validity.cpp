@@ -12,8 +12,7 @@ void require_valid_map(const Map& map, std::string_view subject, std::string_vie
   std::vector<std::string> lines;
   for (std::size_t k = 0; k < report.violations.size() && k < 5; ++k)
     lines.push_back(describe(report.violations[k], fmt::format("dart {}", report.violations[k].element)));
-  throw InputError("<command line>", 0, 0,
-                   fmt::format("{}: not a valid {} ({} violation{}: {}{}): {}", subject, map.model().name, report.violations.size(),
+  throw UsageError(fmt::format("{}: not a valid {} ({} violation{}: {}{}): {}", subject, map.model().name, report.violations.size(),
                                report.violations.size() == 1 ? "" : "s", fmt::join(lines, "; "), report.violations.size() > 5 ? "; ..." : "", why));
 }
 

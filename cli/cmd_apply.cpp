@@ -16,9 +16,8 @@ int apply(const ApplyOptions& o) {
   // The writers are YAML, Jerboa .jba and polygon meshes: a result under
   // another extension would be a file that its readers reject.
   if (!o.output.empty() && !o.output.ends_with(".jba") && !is_polygon_mesh_output(o.output) && !o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or meshes (.off, .obj, .vtu, .vtk, .msh)",
-                                 o.output));
+    throw UsageError(
+        fmt::format("-o: '{}': dartcheck writes result maps as YAML (.yaml, .yml), Jerboa .jba, or meshes (.off, .obj, .vtu, .vtk, .msh)", o.output));
   check_distinct_outputs({{"-o", o.output}, {"--kappa-out", o.kappa_out}});
   for (const auto* out : {&o.output, &o.kappa_out})
     if (!out->empty()) check_writable(*out);  // before the work, not after it
@@ -26,8 +25,7 @@ int apply(const ApplyOptions& o) {
   const CatalogRule* rule = &analysis::require_rule(catalog, o.catalog, o.rule);
   Map map = analysis::resolve_map(o.map, rule->rule.model(), &catalog);
   if (!(map.model() == rule->rule.model()))
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, map.model().name, o.rule, rule->rule.model().name));
+    throw UsageError(fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, map.model().name, o.rule, rule->rule.model().name));
   check_hooks(*rule, o.hooks, map, o.map);
   fmt::print("rule: {} ({})\nhost: {}\n", o.rule, rule->rule.model().name, analysis::describe_target(o.map, map));
   return reports::apply_and_write(o, *rule, std::move(map));

@@ -48,15 +48,14 @@ void write_baseline_file(const std::string& path, const std::string& catalog_fil
 int check(const CheckOptions& o) {
   if (o.jobs > 1) {
     if (o.format == "jsonl" || !o.write_baseline.empty())
-      throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl or --write-baseline (run the shards, then merge)");
+      throw UsageError("--jobs: not with --format jsonl or --write-baseline (run the shards, then merge)");
     return campaign::run_jobs({o.jobs, o.shard, {.format = o.format, .explain = o.explain}, std::nullopt, std::nullopt});
   }
   const std::string not_written = fmt::format("not written: {} (interrupted: a baseline records every rule)", o.write_baseline);
   if (!o.write_baseline.empty()) say_on_early_interrupt(not_written);  // Ctrl-C while the catalog is read
   campaign::RuleRun run("check", {o.catalog, o.rule, o.shard, o.baseline, o.format == "jsonl"});
   if (!o.write_baseline.empty()) check_writable(o.write_baseline);  // before the work, not after it
-  if (!o.write_baseline.empty() && !run.shard().whole())
-    throw InputError("<command line>", 0, 0, "--write-baseline: a baseline records every rule, not a shard's");
+  if (!o.write_baseline.empty() && !run.shard().whole()) throw UsageError("--write-baseline: a baseline records every rule, not a shard's");
   run.open_lines({{"confirm_darts", o.confirm_darts}, {"solver", o.solver}});
   const Catalog& catalog = run.catalog();
   const std::vector<Map> maps = confirmation_maps(catalog, o.confirm_darts);

@@ -42,11 +42,10 @@ std::string at(const CatalogRule& r, std::string_view severity, const std::strin
 int compile(const CompileOptions& o) {
   const std::string ns = o.ns.empty() ? default_namespace(o.catalog) : o.ns;
   if (const auto why = compiler::namespace_conflict(ns))
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("--namespace: '{}' {}", printable(ns), why->starts_with("is not ") ? *why : "cannot be used: " + *why));
+    throw UsageError(fmt::format("--namespace: '{}' {}", printable(ns), why->starts_with("is not ") ? *why : "cannot be used: " + *why));
   if (!o.output.empty()) {
     if (!o.output.ends_with(".hpp") && !o.output.ends_with(".h") && !o.output.ends_with(".hh"))
-      throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a header name ending in .hpp, .hh or .h", o.output));
+      throw UsageError(fmt::format("-o: '{}': expected a header name ending in .hpp, .hh or .h", o.output));
     check_writable(o.output);
   }
   const Catalog catalog = analysis::read_rule_catalog(o.catalog, "");

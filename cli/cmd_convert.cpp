@@ -19,7 +19,7 @@ using namespace analysis;  // the engines the commands call
 int convert(const ConvertOptions& o) {
   const Catalog catalog = read_catalog(o.input);
   if (!o.output.ends_with(".yaml") && !o.output.ends_with(".yml"))
-    throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': expected a file name ending in .yaml or .yml", o.output));
+    throw UsageError(fmt::format("-o: '{}': expected a file name ending in .yaml or .yml", o.output));
   const std::string text = catalog_yaml(catalog);
   write_file(o.output, text);
   if (!terminal().quiet)

@@ -23,8 +23,7 @@ namespace {
 EventsApplication application(const EventsOptions& o, const CatalogRule& rule, const Catalog& catalog) {
   Map g = resolve_map(o.map, rule.rule.model(), &catalog);
   if (!(g.model() == rule.rule.model()))
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule, rule.rule.model().name));
+    throw UsageError(fmt::format("--map {} is a {} but rule '{}' rewrites {}", o.map, g.model().name, o.rule, rule.rule.model().name));
   check_hooks(rule, o.hooks, g, o.map);
   return apply_for_events(rule, std::move(g), o.hooks, o.map);
 }
@@ -35,9 +34,8 @@ int events_command(const EventsOptions& o) {
   Catalog catalog = read_rule_catalog(o.catalog, o.rule);
   const campaign::Shard shard = campaign::shard_option(o.shard);
   campaign::keep_shard(catalog, shard);
-  if (!o.map.empty() && o.rule.empty()) throw InputError("<command line>", 0, 0, "--map needs --rule: an event log is for one rule");
-  if (o.map.empty() && (!o.hooks.empty() || o.dynamic))
-    throw InputError("<command line>", 0, 0, "--hook and --dynamic need --map: they concern one application");
+  if (!o.map.empty() && o.rule.empty()) throw UsageError("--map needs --rule: an event log is for one rule");
+  if (o.map.empty() && (!o.hooks.empty() || o.dynamic)) throw UsageError("--hook and --dynamic need --map: they concern one application");
   // --orbit: its syntax, and that it fits some rule's model, once before
   // any rule (a shard may hold only rules it does not fit); a rule whose
   // model lacks one of its dimensions is skipped.
@@ -53,7 +51,7 @@ int events_command(const EventsOptions& o) {
         if (!misfit) misfit = e.message();
       }
     }
-    if (misfit) throw InputError("<command line>", 0, 0, *misfit);
+    if (misfit) throw UsageError(*misfit);
   }
   std::vector<std::string> hooks;
   for (Dart h : o.hooks) hooks.push_back(std::to_string(h));

@@ -56,7 +56,7 @@ FuzzOptions fuzz_options(const FuzzCommand& c, std::optional<double> seconds) {
 
 int fuzz(const FuzzCommand& c) {
   if (c.jobs > 1) {
-    if (c.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
+    if (c.format == "jsonl") throw UsageError("--jobs: not with --format jsonl (run the shards, then merge)");
     // Every shard fuzzes with the same seed: drawn here unless given.
     return campaign::run_jobs({c.jobs, c.shard, {.format = c.format}, c.seed ? std::nullopt : std::optional<std::uint64_t>(std::random_device{}()),
                                c.time.empty() ? std::nullopt : std::optional(parse_duration(c.time, "--time"))});
@@ -64,7 +64,7 @@ int fuzz(const FuzzCommand& c) {
   // jsonl: one JSON object per rule on stdout as it finishes, then a summary.
   campaign::RuleRun run("fuzz", {c.catalog, c.rule, c.shard, c.baseline, c.format == "jsonl"});
   if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
-  if (c.max_darts < 2) throw InputError("<command line>", 0, 0, "--max-darts: expected at least 2");
+  if (c.max_darts < 2) throw UsageError("--max-darts: expected at least 2");
   std::optional<double> seconds;
   if (!c.time.empty()) seconds = parse_duration(c.time, "--time");
   if (seconds && c.shard_budget) seconds = *c.shard_budget;  // this shard's part of a --jobs run's budget

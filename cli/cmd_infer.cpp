@@ -28,7 +28,7 @@ using namespace inference;
 
 namespace {
 
-InputError command_line(const std::string& what) { return InputError("<command line>", 0, 0, what); }
+InputError command_line(const std::string& what) { return UsageError(what); }
 
 // The library's options from the command's, with the combinations that
 // make no sense refused as usage errors.

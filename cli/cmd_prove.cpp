@@ -33,13 +33,13 @@ using namespace analysis;  // the engines the commands call
 
 int prove(const ProveCommand& c) {
   if (c.jobs > 1) {
-    if (c.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
+    if (c.format == "jsonl") throw UsageError("--jobs: not with --format jsonl (run the shards, then merge)");
     return campaign::run_jobs({c.jobs, c.shard, {.format = c.format, .explain = c.explain}, std::nullopt, std::nullopt});
   }
   campaign::RuleRun run("prove", {c.catalog, c.rule, c.shard, c.baseline, c.format == "jsonl"});
   if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
-  if (c.max_darts < 1 || c.max_darts > 256) throw InputError("<command line>", 0, 0, "--max-darts: expected 1 to 256");
-  if (c.scheme_darts < 1 || c.scheme_darts > 256) throw InputError("<command line>", 0, 0, "--scheme-darts: expected 1 to 256");
+  if (c.max_darts < 1 || c.max_darts > 256) throw UsageError("--max-darts: expected 1 to 256");
+  if (c.scheme_darts < 1 || c.scheme_darts > 256) throw UsageError("--scheme-darts: expected 1 to 256");
   proofs::ProveOptions o;
   o.max_darts = c.max_darts;
   o.scheme_darts = c.scheme_darts;
@@ -56,7 +56,7 @@ int prove(const ProveCommand& c) {
   const reports::ProveRun layout{c.catalog, o.max_darts, o.rlimit, 0, c.explain, {}};
   for (std::size_t k = 0; k < rules.size() && !interrupted(); ++k) {  // a rule's queries finish; the next ones do not start
     progress.start(
-        k, fmt::format("{}: asking Z3 for a host up to {} darts", rules[k]->rule.name(), rules[k]->words.scheme ? o.scheme_darts : o.max_darts));
+        k, fmt::format("{}: asking Z3 for a host up to {} darts", rules[k]->rule.name(), rules[k]->is_scheme() ? o.scheme_darts : o.max_darts));
     results.push_back(analyse_static(run.catalog(), *rules[k], 0, {}, run.source()));
     run_proof(results.back(), o, c.out, c.catalog);
     if (results.back().proof) {

@@ -31,7 +31,7 @@ using namespace querymodify;
 
 int query(const QueryOptions& o) {
   const querymodify::BoundaryCondition free_links = analysis::parse_boundary_condition(o.free);
-  if (o.queries.empty() && !o.hex) throw InputError("<command line>", 0, 0, "no query: give --query (repeatable) or --hex");
+  if (o.queries.empty() && !o.hex) throw UsageError("no query: give --query (repeatable) or --hex");
   const Model model = command_model(o.model);
   const std::optional<Catalog> catalog = optional_catalog(o.catalog);
   const Catalog* cat = catalog ? &*catalog : nullptr;
@@ -40,10 +40,10 @@ int query(const QueryOptions& o) {
   std::optional<TetInput> tets;
   if (!o.output.empty()) {
     if (!is_volume_mesh_output(o.output) || o.output.ends_with(".mesh"))
-      throw InputError("<command line>", 0, 0, fmt::format("-o: expected a .vtu, .vtk or .msh file (medit .mesh carries no cell data), got '{}'", o.output));
+      throw UsageError(fmt::format("-o: expected a .vtu, .vtk or .msh file (medit .mesh carries no cell data), got '{}'", o.output));
     if (!is_tet_mesh_path(o.map))
-      throw InputError("<command line>", 0, 0,
-                       fmt::format("-o: the selection is written as cell data of a tetrahedral mesh (.node, .ele, .mesh, .msh); '{}' is not one", o.map));
+      throw UsageError(
+          fmt::format("-o: the selection is written as cell data of a tetrahedral mesh (.node, .ele, .mesh, .msh); '{}' is not one", o.map));
     check_writable(o.output);
     tets = load_tet_input(o.map);
   }

@@ -61,7 +61,7 @@ int recombine(const RecombineOptions& o) {
   querymodify::check_contacts(querymodify::parse_strategy(o.strategy), querymodify::parse_search(o.search), o.conforming);
   querymodify::parse_cells(o.cells);
   if (!o.output.empty() && !is_volume_mesh_output(o.output))
-    throw InputError("<command line>", 0, 0, fmt::format("-o: expected a {} file, got '{}'", volume_mesh_outputs, o.output));
+    throw UsageError(fmt::format("-o: expected a {} file, got '{}'", volume_mesh_outputs, o.output));
   if (!o.output.empty()) check_writable(o.output);
   if (!o.report.empty()) ensure_directory(o.report);
   StatusLine status_line;

@@ -39,7 +39,7 @@ namespace fs = std::filesystem;
 
 int report(const ReportOptions& o) {
   if (o.jobs > 1) {
-    if (o.format == "jsonl") throw InputError("<command line>", 0, 0, "--jobs: not with --format jsonl (run the shards, then merge)");
+    if (o.format == "jsonl") throw UsageError("--jobs: not with --format jsonl (run the shards, then merge)");
     const bool seed = !o.fuzz.empty() && !o.seed;  // every shard fuzzes with the same seed
     return campaign::run_jobs({o.jobs,
                                o.shard,
@@ -51,7 +51,7 @@ int report(const ReportOptions& o) {
   ReportStages stages;
   stages.baseline = !o.baseline.empty();
   if (!o.fuzz.empty()) stages.fuzz_seconds = parse_duration(o.fuzz, "--fuzz");
-  if (o.prove_darts > 256) throw InputError("<command line>", 0, 0, "--prove: expected 0 (no proof) to 256 darts");
+  if (o.prove_darts > 256) throw UsageError("--prove: expected 0 (no proof) to 256 darts");
   stages.seed = o.seed ? *o.seed : std::random_device{}();
   stages.prove_darts = o.prove_darts;
   stages.scheme_darts = std::min<std::size_t>(proofs::ProveOptions{}.scheme_darts, o.prove_darts);

@@ -13,13 +13,13 @@ static ConjWord parse_arg(const std::string& text, const Model& model, const cha
   try {
     return parse_conj_word(text, model);
   } catch (const std::invalid_argument& e) {
-    throw InputError("<command line>", 0, 0, fmt::format("{}: {}", which, e.what()));
+    throw UsageError(fmt::format("{}: {}", which, e.what()));
   }
 }
 
 int words(const WordsOptions& o) {
   const auto model = Model::by_name(o.model);
-  if (!model) throw InputError("<command line>", 0, 0, fmt::format("unknown model '{}' (expected {})", o.model, Model::known_names()));
+  if (!model) throw UsageError(fmt::format("unknown model '{}' (expected {})", o.model, Model::known_names()));
   const ConjWord w = parse_arg(o.word, *model, "WORD");
   if (!o.other) {
     fmt::print("{}", reports::normal_forms_text(*model, w));

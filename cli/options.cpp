@@ -13,7 +13,7 @@ namespace dartcheck::cli {
 
 Model command_model(const std::string& name) {
   const auto model = Model::by_name(name);
-  if (!model) throw InputError("<command line>", 0, 0, fmt::format("--model: unknown model '{}' (expected {})", name, Model::known_names()));
+  if (!model) throw UsageError(fmt::format("--model: unknown model '{}' (expected {})", name, Model::known_names()));
   return *model;
 }
 
@@ -24,8 +24,7 @@ void check_hooks(const CatalogRule& rule, const std::vector<Dart>& hooks, const 
   if (hooks.size() != want.size()) {
     std::vector<std::string> names;
     for (NodeId h : want) names.push_back(rule.rule.left().name(h));
-    throw InputError("<command line>", 0, 0,
-                     want.empty() ? fmt::format("--hook: rule '{}' has no hook (L is empty or matched as a whole): give no --hook", rule.rule.name())
+    throw UsageError(want.empty() ? fmt::format("--hook: rule '{}' has no hook (L is empty or matched as a whole): give no --hook", rule.rule.name())
                                   : fmt::format("--hook: rule '{}' has {} hook{} ({}), {} given: one --hook dart each, in that order",
                                                 rule.rule.name(), want.size(), want.size() == 1 ? "" : "s", fmt::join(names, ", "), hooks.size()));
   }
@@ -33,8 +32,7 @@ void check_hooks(const CatalogRule& rule, const std::vector<Dart>& hooks, const 
   // refusal of the rule (issue 39).
   for (const Dart h : hooks)
     if (h >= map.size())
-      throw InputError("<command line>", 0, 0,
-                       fmt::format("--hook: {} is not a dart of {} ({})", h, printable(map_name),
+      throw UsageError(fmt::format("--hook: {} is not a dart of {} ({})", h, printable(map_name),
                                    map.size() == 0 ? std::string("it has no darts") : fmt::format("darts 0 to {}", map.size() - 1)));
 }
 

@@ -244,7 +244,7 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f, bool everywh
         fmt::format_to(out, "  ws.holes.insert(ws.holes.end(), match + {0} * np, match + {1} * np);  // {2} is deleted\n", x, x + 1,
                        cpp_literal(L.name(x)));
     // A DPO rule reuses the smallest deleted darts first (apply_rule).
-    if (!op.words.scheme) fmt::format_to(out, "  std::sort(ws.holes.begin(), ws.holes.end());\n");
+    if (!op.is_scheme()) fmt::format_to(out, "  std::sort(ws.holes.begin(), ws.holes.end());\n");
   }
   if (deleted > 0)
     fmt::format_to(out, "  ws.comatch.resize({} * np);\n  [[maybe_unused]] Dart* const comatch = ws.comatch.data();\n", R.node_count());
@@ -292,7 +292,7 @@ void emit_rewrite(Out out, const Operation& op, const RuleFacts& f, bool everywh
 // with a loop per letter of W, and a single-letter generator for every
 // dimension of the model, so that P_v is the hook's connected component.
 bool everywhere_applies(const Operation& op, const RuleFacts& f) {
-  if (!op.words.scheme || op.rule.hooks().size() != 1 || !f.identity_match) return false;
+  if (!op.is_scheme() || op.rule.hooks().size() != 1 || !f.identity_match) return false;
   for (const Dim i : op.rule.model().dims)
     if (std::none_of(f.gens.begin(), f.gens.end(), [i](const ConjWord& w) { return w.size() == 1 && w.dim(0) == i; })) return false;
   return true;
@@ -325,7 +325,7 @@ void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::
                    "    if (h >= g.size()) return ws.refuse(Refusal::bad_hooks, \"hook dart \" + std::to_string(h) + \" is not below \" + "
                    "std::to_string(g.size()));\n",
                    core.hooks().size(), core.hooks().size(), core.hooks().size() == 1 ? "" : "s");
-  if (!op.words.scheme) {
+  if (!op.is_scheme()) {
     fmt::format_to(
         out, "  if (g.model().name != {})\n    return ws.refuse(Refusal::bad_hooks, \"the rule is for \" {} \", the map is a \" + g.model().name);\n",
         cpp_literal(core.model().name), cpp_literal(core.model().name));
@@ -372,7 +372,7 @@ void emit_function(Out out, const Operation& op, const RuleFacts& f, const std::
   }
   if (emit_conditions(out, op, f)) {
     // A scheme's match includes its conditions (match_scheme), then terms.
-    if (terms && op.words.scheme) terms->before_rewrite(out, everywhere);
+    if (terms && op.is_scheme()) terms->before_rewrite(out, everywhere);
     emit_rewrite(out, op, f, everywhere);
     if (terms) terms->after_rewrite(out, everywhere);
     fmt::format_to(out, "  return Refusal::none;\n");
@@ -436,7 +436,7 @@ std::string compile_operation(const CompileUnit& unit, const std::string& functi
   std::string code;
   Out out(code);
   fmt::format_to(out, "// {} ({}), {}: a {}.\n// L: {}\n// R: {}\n", cpp_literal(core.name()), comment_text(core.model().name),
-                 comment_text(unit.origin), op.words.scheme ? "rule scheme (002 Sec. 6)" : "DPO rule (002 Def. 2)",
+                 comment_text(unit.origin), op.is_scheme() ? "rule scheme (002 Sec. 6)" : "DPO rule (002 Def. 2)",
                  side_text(core.left(), op.words.left), side_text(core.right(), op.words.right));
   if (!unit.embedding_failures.empty())
     fmt::format_to(out,

@@ -10,6 +10,7 @@
 
 #include "compiler/comatch_text.hpp"
 #include "compiler/cpp_text.hpp"
+#include "core/disjoint_sets.hpp"
 #include "rewriting/embedded_application.hpp"
 #include "rewriting/term_functions.hpp"
 
@@ -293,18 +294,13 @@ struct TermCode::Plan {
   Grouping grouping(const TopoGraph& side, const std::vector<ConjWord>& words, const std::vector<Dim>& orbit) const {
     Grouping out;
     const std::size_t n = side.node_count();
-    std::vector<std::size_t> up(n);
-    std::iota(up.begin(), up.end(), std::size_t{0});
-    auto find = [&](std::size_t a) {
-      while (up[a] != a) a = up[a];
-      return a;
-    };
+    DisjointSets<std::size_t> group(n);
     auto in_orbit = [&](Dim i) { return std::find(orbit.begin(), orbit.end(), i) != orbit.end(); };
     for (ArcId e = 0; e < side.arc_count(); ++e)
-      if (in_orbit(side.arc(e).label) && arc_word(words, e).empty()) up[find(side.arc(e).source)] = find(side.arc(e).target);
+      if (in_orbit(side.arc(e).label) && arc_word(words, e).empty()) group.attach(side.arc(e).source, side.arc(e).target);
     std::vector<std::size_t> number(n, n);
     for (NodeId x = 0; x < n; ++x) {
-      const std::size_t r = find(x);
+      const std::size_t r = group.find(x);
       if (number[r] == n) {
         number[r] = out.words.size();
         out.words.emplace_back();
@@ -429,8 +425,8 @@ struct TermCode::Plan {
   }
 
   std::string instance_name(const TopoGraph& side, NodeId x) const {
-    return op.words.scheme ? fmt::format("std::string({}) + \"@\" + std::to_string(ws.pattern[p])", cpp_literal(side.name(x)))
-                           : fmt::format("std::string({})", cpp_literal(side.name(x)));
+    return op.is_scheme() ? fmt::format("std::string({}) + \"@\" + std::to_string(ws.pattern[p])", cpp_literal(side.name(x)))
+                          : fmt::format("std::string({})", cpp_literal(side.name(x)));
   }
 };
 

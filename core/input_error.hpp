@@ -37,6 +37,15 @@ class InputError : public std::runtime_error {
   int line_, column_;
 };
 
+/// An error in the command's arguments and options (a bad --strategy, two
+/// outputs naming one file), which a library reports without knowing the
+/// command: an InputError at command_line, printed "dartcheck: error: ..."
+/// and exit 2 as every input error.
+class UsageError : public InputError {
+ public:
+  explicit UsageError(const std::string& message) : InputError(std::string(command_line), 0, 0, message) {}
+};
+
 /// Several errors of one input, for a reader that goes on after an error
 /// where the rest does not depend on what failed (a catalog's maps and
 /// rules, each on its own), up to a bound. It is the first of them, so a

@@ -33,12 +33,11 @@ double parse_duration(const std::string& text, const std::string& option) {
   const auto v = read_real(std::string_view(text).substr(0, split == std::string::npos ? text.size() : split));
   const double scale = unit.empty() || unit == "s" ? 1 : unit == "ms" ? 1e-3 : unit == "m" || unit == "min" ? 60 : unit == "h" ? 3600 : -1;
   if (!v || scale < 0 || !(*v > 0))
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, printable(text)));
+    throw UsageError(fmt::format("{}: expected a positive duration such as 30s, 500ms or 2m, got '{}'", option, printable(text)));
   // A deadline is a clock reading plus the duration: keep it far from
   // overflow (steady_clock counts nanoseconds in 64 bits, about 292 years).
   if (*v * scale > max_duration_seconds)
-    throw InputError("<command line>", 0, 0, fmt::format("{}: at most {} s (31 days), got '{}'", option, max_duration_seconds, printable(text)));
+    throw UsageError(fmt::format("{}: at most {} s (31 days), got '{}'", option, max_duration_seconds, printable(text)));
   return *v * scale;
 }
 

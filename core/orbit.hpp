@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <ranges>
 #include <span>
 #include <vector>
 
@@ -65,6 +66,35 @@ class OrbitWalker {
   std::vector<std::uint64_t> marks_;
   std::vector<Dart> visited_;
 };
+
+/// One visit per class of darts: for each dart d of `candidates`, in order,
+/// whose class no earlier visit covered, `visit(d, members)` with
+/// `members = walk(d)`, every element of d's class, each then marked
+/// covered. Elements are indices below `size` (darts, or positions in a
+/// list of darts). The one "one dart per orbit" loop: orbits, faces
+/// walked by hand, components, the sub-orbits of an orbit.
+template <class Candidates, class Walk, class Visit>
+void for_each_class(std::size_t size, const Candidates& candidates, Walk&& walk, Visit&& visit) {
+  std::vector<bool> covered(size, false);
+  for (const auto d : candidates) {
+    if (covered[static_cast<std::size_t>(d)]) continue;
+    const auto& members = walk(d);
+    for (const auto x : members) covered[static_cast<std::size_t>(x)] = true;
+    visit(d, members);
+  }
+}
+
+/// The darts 0..n-1, as for_each_class's candidates.
+inline auto all_darts(std::size_t n) { return std::views::iota(Dart{0}, static_cast<Dart>(n)); }
+
+/// Every orbit of `generators` once, from its smallest dart, in increasing
+/// order: `visit(d, orbit)` with the orbit's darts in `walker`'s BFS order
+/// (valid until the walker walks again: `visit` uses another walker).
+template <class Visit>
+void for_each_orbit(OrbitWalker& walker, const Map& map, std::span<const OrbitWord> generators, Visit&& visit) {
+  for_each_class(
+      map.size(), all_darts(map.size()), [&](Dart d) -> const std::vector<Dart>& { return walker.orbit(d, generators); }, visit);
+}
 
 /// The orbits of `generators` over the whole map, numbered in the order of
 /// their smallest darts: `of[d]` is the number of d's orbit and `first[k]`

@@ -159,8 +159,7 @@ void check_distinct_outputs(const std::vector<std::pair<std::string, std::string
     if (ec) p = std::filesystem::absolute(path).lexically_normal();
     for (const auto& [other, q] : seen)
       if (q == p)
-        throw InputError("<command line>", 0, 0,
-                         fmt::format("{} and {} both name '{}': one run writes each file once (give them different paths)", other, option, path));
+        throw UsageError(fmt::format("{} and {} both name '{}': one run writes each file once (give them different paths)", other, option, path));
     seen.emplace_back(option, p);
   }
 }

@@ -11,6 +11,7 @@
 
 #include "core/orbit.hpp"
 #include "core/dart_index.hpp"
+#include "core/disjoint_sets.hpp"
 
 namespace dartcheck::events {
 namespace {
@@ -130,11 +131,6 @@ Orbits all_orbits(const Map& m, const OrbitKind& kind, std::vector<std::uint32_t
   return o;
 }
 
-int find(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return static_cast<int>(x);
-}
-
 // The orbits of one side's instance: complete rule orbits by union-find on
 // (node, position) pairs, incomplete ones by traversal from their darts.
 void side_instance(const Map& m, const EventRule& r, const EventSide& side, const SideOrbits& so, const OrbitKind& kind,
@@ -160,13 +156,9 @@ void side_instance(const Map& m, const EventRule& r, const EventSide& side, cons
     }
     // Local index of (node, p): position of the node in x.nodes times np + p.
     const std::size_t nx = x.nodes.size();
-    parent.resize(nx * np);
-    std::iota(parent.begin(), parent.end(), 0U);
+    make_singletons(parent, nx * np);
     auto local = [&](NodeId v) { return static_cast<std::size_t>(std::lower_bound(x.nodes.begin(), x.nodes.end(), v) - x.nodes.begin()); };
-    auto unite = [&](std::size_t i, std::size_t j) {
-      parent[static_cast<std::size_t>(find(parent, static_cast<std::uint32_t>(i)))] =
-          static_cast<std::uint32_t>(find(parent, static_cast<std::uint32_t>(j)));
-    };
+    auto unite = [&](std::size_t i, std::size_t j) { attach_set(parent, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)); };
     for (ArcId e : side.explicit_arcs) {
       const auto& a = side.graph->arc(e);
       if (a.source == a.target || !has_dim(kind.dims(), a.label) || so.orbit_of[a.source] != so.orbit_of[x.nodes[0]]) continue;
@@ -185,7 +177,7 @@ void side_instance(const Map& m, const EventRule& r, const EventSide& side, cons
     std::vector<std::uint32_t> slot(nx * np, DartIndex::none);
     std::vector<std::uint32_t> sizes, order;
     for (std::size_t i = 0; i < nx * np; ++i) {
-      auto& c = slot[static_cast<std::size_t>(find(parent, static_cast<std::uint32_t>(i)))];
+      auto& c = slot[find_representative(parent, static_cast<std::uint32_t>(i))];
       if (c == DartIndex::none) {
         c = static_cast<std::uint32_t>(sizes.size());
         sizes.push_back(0);

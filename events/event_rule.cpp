@@ -39,7 +39,7 @@ std::string read_side(const TopoGraph& g, const std::vector<ConjWord>& words, co
 EventRuleOutcome event_rule(const Operation& op) {
   EventRule r;
   r.rule = &op.rule;
-  if (op.words.scheme) {
+  if (op.is_scheme()) {
     if (op.jerboa) {
       for (const auto& d : op.jerboa->parameter) r.parameter.push_back(*d);
     } else {

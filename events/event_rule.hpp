@@ -35,7 +35,10 @@ struct EventRule {
   /// The word of position k ({o_k}), as the scheme engine's W names it.
   std::vector<ConjWord> position_words;
   EventSide left, right;
-  bool is_scheme() const { return !parameter.empty(); }
+  /// Instantiated over a parameter: a scheme whose hook orbit type is
+  /// not empty (a scheme on <> has one instance, and events read it as a
+  /// DPO rule's; Operation::is_scheme says what the rule is).
+  bool has_parameter() const { return !parameter.empty(); }
 };
 
 /// The view of `op`, or a sentence saying why it has none.

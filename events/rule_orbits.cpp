@@ -4,16 +4,9 @@
 
 #include <fmt/format.h>
 
+#include "core/disjoint_sets.hpp"
+
 namespace dartcheck::events {
-namespace {
-
-int find(std::vector<int>& parent, int x) {
-  while (parent[static_cast<std::size_t>(x)] != x)
-    x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-  return x;
-}
-
-}  // namespace
 
 ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const OrbitWord& w) {
   std::size_t k = 0;
@@ -30,14 +23,13 @@ ExplicitPathEnd follow_explicit(const EventSide& side, NodeId v, const OrbitWord
 SideOrbits side_orbits(const EventRule&, const EventSide& side, const OrbitKind& kind) {
   const TopoGraph& g = *side.graph;
   const std::size_t n = g.node_count();
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
+  DisjointSets<int> orbit(n);
   std::vector<std::vector<std::string>> missing(n);
   for (NodeId v = 0; v < n; ++v)
     for (const OrbitWord& w : kind.generators) {
       const ExplicitPathEnd end = follow_explicit(side, v, w);
       if (end.letters == w.size()) {
-        parent[static_cast<std::size_t>(find(parent, static_cast<int>(v)))] = find(parent, static_cast<int>(end.node));
+        orbit.attach(static_cast<int>(v), static_cast<int>(end.node));
         continue;
       }
       // A single letter may be an implicit link of the node's label.
@@ -54,7 +46,7 @@ SideOrbits side_orbits(const EventRule&, const EventSide& side, const OrbitKind&
   s.orbit_of.assign(n, -1);
   std::vector<int> index_of_root(n, -1);
   for (NodeId v = 0; v < n; ++v) {
-    const int root = find(parent, static_cast<int>(v));
+    const int root = orbit.find(static_cast<int>(v));
     int& idx = index_of_root[static_cast<std::size_t>(root)];
     if (idx < 0) {
       idx = static_cast<int>(s.orbits.size());

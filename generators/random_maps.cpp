@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/orbit.hpp"
+
 namespace dartcheck {
 namespace {
 
@@ -49,16 +51,12 @@ void sew_gmap(Map& m, const SewStep& s) {
     m.sew(2, m.link(0, x), m.link(0, y0));
   } else {
     // 3-free faces: walks whose darts all carry 3-loops.
-    std::vector<Dart> seen(m.size(), 0), free;
-    for (Dart d = 0; d < m.size(); ++d) {
-      if (seen[d]) continue;
-      bool loose = true;
-      for (Dart x : face_walk(m, d)) {
-        seen[x] = 1;
-        loose &= m.link(3, x) == x;
-      }
-      if (loose) free.push_back(d);
-    }
+    std::vector<Dart> free;
+    for_each_class(
+        m.size(), all_darts(m.size()), [&](Dart d) { return face_walk(m, d); },
+        [&](Dart d, const std::vector<Dart>& walk) {
+          if (std::all_of(walk.begin(), walk.end(), [&](Dart x) { return m.link(3, x) == x; })) free.push_back(d);
+        });
     if (free.size() < 2) return;
     const Dart x = free[s.a % free.size()], y = free[s.b % free.size()];
     if (x == y) return;

@@ -45,7 +45,7 @@ UndecidedPolicy parse_undecided(const std::string& text) {
   if (text == "keep") return UndecidedPolicy::keep;
   if (text == "free") return UndecidedPolicy::free;
   if (text == "fail") return UndecidedPolicy::fail;
-  throw InputError("<command line>", 0, 0, fmt::format("--undecided: expected keep, free or fail, got '{}'", text));
+  throw UsageError(fmt::format("--undecided: expected keep, free or fail, got '{}'", text));
 }
 
 void write_inferred(const std::string& file, const std::string& modeler, const KappaGraph& graph, const std::vector<Attempt>& attempts,

@@ -195,12 +195,9 @@ void write_jba(std::ostream& out, const JbaFile& f, const std::string& path) {
   OrbitWalker walker(m);
   for (const auto& e : f.embeddings) {
     std::vector<std::pair<std::string, std::vector<Dart>>> records;
-    std::vector<bool> seen(m.size(), false);
-    for (Dart d = 0; d < m.size(); ++d) {
-      if (seen[d]) continue;
+    for_each_orbit(walker, m, dims_generators(e.orbit), [&](Dart, const std::vector<Dart>& orbit) {
       std::vector<std::pair<std::string, std::vector<Dart>>> by_value;
-      for (Dart x : walker.orbit(d, dims_generators(e.orbit))) {
-        seen[x] = true;
+      for (Dart x : orbit) {
         if (x >= e.values.size() || !e.values[x]) continue;
         auto it = std::find_if(by_value.begin(), by_value.end(), [&](const auto& r) { return r.first == *e.values[x]; });
         if (it == by_value.end())
@@ -209,7 +206,7 @@ void write_jba(std::ostream& out, const JbaFile& f, const std::string& path) {
           it->second.push_back(x);
       }
       records.insert(records.end(), by_value.begin(), by_value.end());
-    }
+    });
     out << e.name << ' ' << records.size() << '\n';
     for (const auto& [value, darts] : records) {
       for (Dart x : darts) out << x << ' ';

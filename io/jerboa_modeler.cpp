@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <pugixml.hpp>
 
+#include "core/disjoint_sets.hpp"
 #include "core/input_error.hpp"
 #include "io/input_file.hpp"
 #include "io/jerboa_expression.hpp"
@@ -194,24 +195,15 @@ void read_parameters(const pugi::xml_node& rule, JerboaScope& scope, std::vector
 // R's pi-orbits through explicit arcs labeled in <o> (Jerboa's implicit
 // arcs join copies of one node only), as a root per node.
 std::vector<std::size_t> explicit_orbits(const JmeSide& side, const std::vector<Dim>& orbit) {
-  std::vector<std::size_t> up(side.nodes.size());
-  for (std::size_t k = 0; k < up.size(); ++k) up[k] = k;
-  auto root = [&](std::size_t v) {
-    while (up[v] != v) v = up[v] = up[up[v]];
-    return v;
-  };
+  DisjointSets<std::size_t> orbits(side.nodes.size());
   auto index = [&](const std::string& n) {
     for (std::size_t k = 0; k < side.nodes.size(); ++k)
       if (side.nodes[k].name == n) return k;
     return std::size_t{0};
   };
   for (const auto& [d, a, b] : side.arcs)
-    if (std::find(orbit.begin(), orbit.end(), d) != orbit.end()) {
-      const std::size_t x = root(index(a)), y = root(index(b));
-      up[std::max(x, y)] = std::min(x, y);
-    }
-  for (std::size_t k = 0; k < up.size(); ++k) up[k] = root(k);
-  return up;
+    if (std::find(orbit.begin(), orbit.end(), d) != orbit.end()) orbits.join(index(a), index(b));
+  return orbits.representatives();
 }
 
 // A read rule's terms (003 Sec. 6.3, extended instantiation, as Jerboa

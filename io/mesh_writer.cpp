@@ -24,16 +24,13 @@ PolygonMesh polygon_mesh(const EmbeddedMap& m, const std::string& position, cons
     fail(fmt::format("embedding '{}' holds {}, not point3 or point2", position, type_name(pos->signature.type)));
 
   // Vertices, numbered in order of their smallest dart.
-  constexpr std::uint32_t unset = 0xffffffffU;
-  std::vector<std::uint32_t> vertex(map.size(), unset);
+  std::vector<std::uint32_t> vertex(map.size());
   PolygonMesh out;
   auto& points = out.points;
   OrbitWalker walker(map);
-  const auto vertex_generators = cell_generators(model, 0);
-  for (Dart d = 0; d < map.size(); ++d) {
-    if (vertex[d] != unset) continue;
+  for_each_orbit(walker, map, cell_generators(model, 0), [&](Dart d, const std::vector<Dart>& orbit) {
     const Value* v = nullptr;
-    for (Dart e : walker.orbit(d, vertex_generators)) {
+    for (Dart e : orbit) {
       vertex[e] = static_cast<std::uint32_t>(points.size());
       const Value* w = pos->value(e);
       if (!w) fail(fmt::format("dart {} (vertex {}) has no {}", e, points.size(), position));
@@ -42,22 +39,18 @@ PolygonMesh polygon_mesh(const EmbeddedMap& m, const std::string& position, cons
       v = w;
     }
     points.push_back(v->x);
-  }
+  });
   // Faces: walk alpha1 alpha0 around each <0,1>-orbit from its smallest dart.
-  auto& faces = out.faces;
-  std::vector<char> seen(map.size(), 0);
-  for (Dart d = 0; d < map.size(); ++d) {
-    if (seen[d]) continue;
+  for_each_orbit(walker, map, dims_generators({0, 1}), [&](Dart d, const std::vector<Dart>&) {
     std::vector<std::uint32_t> face;
     out.first_dart.push_back(d);
     Dart e = d;
     do {
       face.push_back(vertex[e]);
-      seen[e] = seen[map.link(0, e)] = 1;
       e = map.link(1, map.link(0, e));
     } while (e != d);
-    faces.push_back(std::move(face));
-  }
+    out.faces.push_back(std::move(face));
+  });
   return out;
 }
 

@@ -369,7 +369,7 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
     a.darts = largest;
     if (out.interrupted)
       s.unknown = "interrupted (SIGINT or SIGTERM)";
-    else if (budget_hit && largest < (op.words.scheme ? 1 : L.node_count()))
+    else if (budget_hit && largest < (op.is_scheme() ? 1 : L.node_count()))
       s.unknown = fmt::format("the host budget of {} maps was reached at {} darts", o.host_budget, largest + 1);
     else if (!not_encoded.empty())
       s.unknown = fmt::format("a term outside the encoding: {}", not_encoded);

@@ -265,7 +265,7 @@ class ClassRun {
           a.minimal = o_.minimize && enc_->minimize();
           a.host = enc_->host();
           a.darts = a.host->size;
-          if (entry_.words.scheme)
+          if (entry_.is_scheme())
             replay_scheme(entry_, cls_, c, a);
           else
             replay(rule_, cls_, c, a);
@@ -288,7 +288,7 @@ class ClassRun {
  private:
   void setup(const Rule& rule, const ProveOptions& o) {
     darts_ = o.max_darts;
-    if (entry_.words.scheme) {
+    if (entry_.is_scheme()) {
       darts_ = std::min(o.max_darts, o.scheme_darts);
       blocked_ = scheme_never_applies(rule);
       if (blocked_.empty()) enc_ = std::make_unique<SchemeEncoding>(ctx_, rule, entry_.words, cls_, darts_, o.rlimit, o.timeout_ms);
@@ -448,7 +448,7 @@ RuleProof prove_rule(const Operation& entry, const ProveOptions& o) {
   RuleProof p;
   p.rule = rule.name();
   p.model = rule.model().name;
-  p.scheme = entry.words.scheme;
+  p.scheme = entry.is_scheme();
   if (p.scheme) p.out_of_scope = scheme_out_of_scope(rule);
   // Embeddings first: their hosts are enumerated, so a scheme outside the
   // topological encoding's scope is still answered.

@@ -132,12 +132,8 @@ std::vector<Dim> meet(const std::vector<Dim>& a, const std::vector<Dim>& b) {
 // One dart per orbit of `inner` inside `orbit`, in the orbit's order.
 std::vector<std::vector<Dart>> sub_orbits(const Map& g, const std::vector<Dart>& orbit, const std::vector<Dim>& inner) {
   std::vector<std::vector<Dart>> out;
-  std::vector<bool> seen(g.size(), false);
-  for (Dart d : orbit) {
-    if (seen[d]) continue;
-    out.push_back(orbit_darts(g, d, inner));
-    for (Dart x : out.back()) seen[x] = true;
-  }
+  for_each_class(
+      g.size(), orbit, [&](Dart d) { return orbit_darts(g, d, inner); }, [&](Dart, const std::vector<Dart>& sub) { out.push_back(sub); });
   return out;
 }
 

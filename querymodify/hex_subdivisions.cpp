@@ -6,6 +6,8 @@
 #include <set>
 #include <thread>
 
+#include "core/disjoint_sets.hpp"
+
 namespace dartcheck::querymodify {
 namespace {
 
@@ -126,10 +128,7 @@ class Enumerator {
         const unsigned ab = (1u << a) | (1u << b);
         if ((added & ab) != ab) continue;
         std::array<int, 8> parent{0, 1, 2, 3, 4, 5, 6, 7};
-        auto find = [&](int x) {
-          while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)];
-          return x;
-        };
+        auto find = [&](int x) { return find_representative(parent, x); };
         std::array<int, 8> edges{}, vertices{};
         unsigned touched = 0;
         for (std::uint64_t rest = chosen; rest; rest &= rest - 1) {
@@ -138,7 +137,7 @@ class Enumerator {
           const unsigned xy = t & ~ab;
           const int x = std::countr_zero(xy), y = 31 - std::countl_zero(xy);
           touched |= xy;
-          parent[static_cast<std::size_t>(find(x))] = find(y);
+          attach_set(parent, x, y);
         }
         for (std::uint64_t rest = chosen; rest; rest &= rest - 1) {
           const unsigned t = c[static_cast<std::size_t>(std::countr_zero(rest))];

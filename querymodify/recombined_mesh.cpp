@@ -34,13 +34,13 @@ std::array<std::uint32_t, 8> medit_order(const std::array<std::uint32_t, 8>& c) 
 Strategy parse_strategy(const std::string& s) {
   if (s == "greedy") return Strategy::greedy;
   if (s == "global") return Strategy::global;
-  throw InputError("<command line>", 0, 0, fmt::format("--strategy: expected greedy or global, got '{}'", s));
+  throw UsageError(fmt::format("--strategy: expected greedy or global, got '{}'", s));
 }
 
 Search parse_search(const std::string& s) {
   if (s == "vertices") return Search::vertices;
   if (s == "words") return Search::words;
-  throw InputError("<command line>", 0, 0, fmt::format("--search: expected vertices or words, got '{}'", s));
+  throw UsageError(fmt::format("--search: expected vertices or words, got '{}'", s));
 }
 
 Cells parse_cells(const std::string& text) {
@@ -57,16 +57,16 @@ Cells parse_cells(const std::string& text) {
     else if (word == "pyramid")
       c.pyramids = true;
     else
-      throw InputError("<command line>", 0, 0, fmt::format("--cells: expected a comma-separated list of hex, prism and pyramid, got '{}' in '{}'", word, text));
+      throw UsageError(fmt::format("--cells: expected a comma-separated list of hex, prism and pyramid, got '{}' in '{}'", word, text));
     start = end + 1;
   }
-  if (!hex) throw InputError("<command line>", 0, 0, fmt::format("--cells: the list must name hex (prisms and pyramids fill in around hexes), got '{}'", text));
+  if (!hex) throw UsageError(fmt::format("--cells: the list must name hex (prisms and pyramids fill in around hexes), got '{}'", text));
   return c;
 }
 
 void check_contacts(Strategy strategy, Search search, bool conforming) {
   if (conforming && (strategy == Strategy::greedy || search == Search::words))
-    throw InputError("<command line>", 0, 0, "--conforming: only with the global strategy's vertex search (--strategy global --search vertices)");
+    throw UsageError("--conforming: only with the global strategy's vertex search (--strategy global --search vertices)");
 }
 
 TetMesh recombined_mesh(const TetMesh& input, const Recombination& r) {

@@ -190,7 +190,7 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     const Embedding* pos = nullptr;
     for (const Embedding& e : host->embeddings)
       if (!pos && (e.signature.type == ValueType::point3 || e.signature.type == ValueType::point2)) pos = &e;
-    if (!pos) throw InputError("<command line>", 0, 0, fmt::format("-o: '{}': the map has no point embedding for the positions", o.output));
+    if (!pos) throw UsageError(fmt::format("-o: '{}': the map has no point embedding for the positions", o.output));
     std::ostringstream text;  // refused (a vertex without a position) before a file exists
     write_mesh(text, *host, pos->signature.name, o.output);
     write_file(o.output, text.str());
@@ -297,17 +297,17 @@ int apply_and_write(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const bool jba_out = o.output.ends_with(".jba"), mesh_out = is_polygon_mesh_output(o.output);
   if (rule.terms && !o.kappa_out.empty()) {
     // infer reads G-maps without values: the correspondence of the topology.
-    if (jba_out || mesh_out) throw InputError("<command line>", 0, 0, "--kappa-out: the result is written as YAML (the topology infer reads); use -o X.yaml");
+    if (jba_out || mesh_out) throw UsageError("--kappa-out: the result is written as YAML (the topology infer reads); use -o X.yaml");
     fmt::print("values: not computed (--kappa-out applies the rule's topology, which infer reads)\n");
     return apply_topology(o, rule, std::move(map));
   }
   if (rule.terms) return apply_terms(o, rule, std::move(map));
   if (jba_out) return apply_to_jba(o, rule, std::move(map));
   if (mesh_out)
-    throw InputError("<command line>", 0, 0,
-                     fmt::format("-o: '{}': a mesh needs positions, and rule '{}' computes none: apply an embedded rule with a point embedding, "
-                                 "or write .yaml",
-                                 o.output, o.rule));
+    throw UsageError(
+        fmt::format("-o: '{}': a mesh needs positions, and rule '{}' computes none: apply an embedded rule with a point embedding, "
+                    "or write .yaml",
+                    o.output, o.rule));
   return apply_topology(o, rule, std::move(map));
 }
 

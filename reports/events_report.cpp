@@ -15,7 +15,7 @@ namespace {
 std::string header(const RuleEvents& r) {
   return hanging("",
                  fmt::format("rule {} ({}{})", r.rule->rule.name(), r.rule->rule.model().name,
-                             r.view->is_scheme() ? fmt::format(", scheme on <{}>", fmt::join(r.view->parameter, ",")) : ", DPO rule"),
+                             r.view->has_parameter() ? fmt::format(", scheme on <{}>", fmt::join(r.view->parameter, ",")) : ", DPO rule"),
                  0);
 }
 

@@ -84,16 +84,8 @@ std::vector<std::array<double, 2>> exploded_layout(const Map& map, const std::ve
 
 std::vector<P3> skeleton_points(const Map& map) {
   const std::size_t n = map.size();
-  constexpr std::uint32_t unset = 0xffffffffU;
-  std::vector<std::uint32_t> vertex(n, unset);
-  std::uint32_t vertices = 0;
-  OrbitWalker walker(map);
-  const auto vertex_generators = cell_generators(map.model(), 0), edge_generators = cell_generators(map.model(), 1);
-  for (Dart d = 0; d < n; ++d) {
-    if (vertex[d] != unset) continue;
-    for (Dart e : walker.orbit(d, vertex_generators)) vertex[e] = vertices;
-    ++vertices;
-  }
+  const OrbitPartition vertex = partition_orbits(map, cell_generators(map.model(), 0));
+  const std::size_t vertices = vertex.size();
   // A surface with a boundary lies flat (a disk, a grid); a closed
   // surface or a volume needs the third dimension to unfold.
   const Dim top = static_cast<Dim>(map.model().dimension());
@@ -103,18 +95,15 @@ std::vector<P3> skeleton_points(const Map& map) {
     for (Dart d = 0; d < n && closed; ++d) closed = map.link(top, d) != d && map.link(top, d) != no_dart;
   }
   std::string dot = fmt::format("graph skeleton {{\n  graph [dim={0}, dimen={0}, start=1, maxiter=2000];\n  node [shape=point];\n", closed ? 3 : 2);
-  for (std::uint32_t v = 0; v < vertices; ++v) dot += fmt::format("  v{};\n", v);
-  std::vector<char> seen(n, 0);
-  for (Dart d = 0; d < n; ++d) {
-    if (seen[d]) continue;
+  for (std::size_t v = 0; v < vertices; ++v) dot += fmt::format("  v{};\n", v);
+  OrbitWalker walker(map);
+  for_each_orbit(walker, map, cell_generators(map.model(), 1), [&](Dart, const std::vector<Dart>& edge) {
     std::vector<std::uint32_t> ends;
-    for (Dart e : walker.orbit(d, edge_generators)) {
-      seen[e] = 1;
-      if (std::find(ends.begin(), ends.end(), vertex[e]) == ends.end()) ends.push_back(vertex[e]);
-    }
+    for (Dart e : edge)
+      if (std::find(ends.begin(), ends.end(), vertex.of[e]) == ends.end()) ends.push_back(vertex.of[e]);
     for (std::size_t i = 0; i < ends.size(); ++i)
       for (std::size_t j = i + 1; j < ends.size(); ++j) dot += fmt::format("  v{} -- v{};\n", ends[i], ends[j]);
-  }
+  });
   dot += "}\n";
   std::vector<P3> at(vertices, P3{0, 0, 0});
   for (const NodePosition& p : node_positions(dot, "neato")) at[std::stoul(p.name.substr(1))] = p.at;
@@ -129,7 +118,7 @@ std::vector<P3> skeleton_points(const Map& map) {
     }
   }
   std::vector<P3> out(n);
-  for (Dart d = 0; d < n; ++d) out[d] = at[vertex[d]];
+  for (Dart d = 0; d < n; ++d) out[d] = at[vertex.of[d]];
   return out;
 }
 

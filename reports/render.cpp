@@ -130,7 +130,7 @@ std::size_t write_picture(std::string_view dot, const std::string& file, std::st
   try {
     format = format_of(file);
   } catch (const std::invalid_argument& e) {
-    throw InputError("<command line>", 0, 0, fmt::format("-o: {}", e.what()));
+    throw UsageError(fmt::format("-o: {}", e.what()));
   }
   const std::string data = format == "dot" ? std::string(dot) : render(dot, format, engine);
   write_file(file, data);

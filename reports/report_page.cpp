@@ -161,7 +161,7 @@ std::string counterexample_html(const RuleResult& r, const Counterexample& cx, c
 
 std::string kind_of(const CatalogRule& e) {
   if (e.jerboa) return fmt::format("Jerboa-style rule scheme, parameter orbit type {}", orbit_type_str(e.jerboa->parameter));
-  return e.words.scheme ? "(W,D)-rule scheme" : "DPO rule";
+  return e.is_scheme() ? "(W,D)-rule scheme" : "DPO rule";
 }
 
 std::string fuzz_cell(const FuzzReport& f) {

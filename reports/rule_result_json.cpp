@@ -184,9 +184,9 @@ Json rule_result_json(const RuleResult& r) {
   Json j{{"name", e.rule.name()},
          {"model", e.rule.model().name},
          {"location", location_json(e.location)},
-         {"kind", e.jerboa         ? "jerboa-scheme"
-                  : e.words.scheme ? "scheme"
-                                   : "dpo"},
+         {"kind", e.jerboa        ? "jerboa-scheme"
+                  : e.is_scheme() ? "scheme"
+                                  : "dpo"},
          {"consistent", r.consistent()},
          {"failures", r.failures},
          {"verdict", r.verdict_text()},

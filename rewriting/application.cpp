@@ -37,7 +37,7 @@ Renumbering Application::renumbering(const Rule& rule, std::size_t h_size) const
 }
 
 Applier::Applier(const Operation& op) : op_(op) {
-  if (op.words.scheme) scheme_ = std::make_unique<SchemeRewriter>(op.rule, op.words);
+  if (op.is_scheme()) scheme_ = std::make_unique<SchemeRewriter>(op.rule, op.words);
 }
 
 Applier::~Applier() = default;

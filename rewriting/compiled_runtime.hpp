@@ -28,6 +28,7 @@
 
 #include "core/map.hpp"
 #include "rewriting/compiled_terms.hpp"
+#include "rewriting/pattern_walk.hpp"
 #include "rewriting/derivation.hpp"
 #include "rewriting/match.hpp"
 
@@ -86,10 +87,6 @@ struct Workspace {
     pattern.clear();
     match.assign(left_nodes, no_dart);
   }
-  /// Resets the marks of the first `size` darts of the queue.
-  void unmark_queue(std::size_t size) {
-    for (std::size_t k = 0; k < size; ++k) position[queue[k]] = none;
-  }
 };
 
 /// P_v for every hook dart (002 Def. 20), by BFS along W's generators;
@@ -97,9 +94,8 @@ struct Workspace {
 /// (no_dart when there is no such path), a lambda the generated code
 /// writes with the generator's links spelt out. Every hook's walk must give
 /// the first one's shift tables (002 Sec. 6.3: one pattern for every
-/// component of L). The walk writes the dart it reached at the queue's
-/// tail and moves the tail only when the dart is new, as the interpreter's
-/// walk does, so the positions are the interpreter's.
+/// component of L). The walk is the interpreter's (pattern_walk.hpp), so
+/// the positions are the interpreter's.
 template <std::size_t Generators, class Follow>
 Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, Follow follow, const char* const* generator_names) {
   ws.prepare(g.size(), Generators);
@@ -108,35 +104,16 @@ Refusal walk_patterns(const Map& g, std::span<const Dart> hooks, Workspace& ws, 
     ws.np = 1;
     return Refusal::none;
   }
-  for (std::size_t h = 0; h < hooks.size(); ++h) {
-    std::size_t size = 1;
-    ws.queue[0] = hooks[h];
-    ws.position[hooks[h]] = 0;
-    for (std::size_t k = 0; k < size; ++k)
-      for (std::size_t w = 0; w < Generators; ++w) {
-        const Dart here = ws.queue[k];
-        const Dart t = follow(w, here);
-        if (t == no_dart) {
-          ws.unmark_queue(size);
-          return ws.refuse(Refusal::not_combinatorial,
-                           "dart " + std::to_string(here) + " has no " + generator_names[w] + "-path: the host is not combinatorial");
-        }
-        const std::uint32_t met = ws.position[t];
-        const std::uint32_t at = met == none ? static_cast<std::uint32_t>(size) : met;
-        ws.position[t] = at;
-        ws.queue[size] = t;
-        size += met == none;
-        if (h == 0) {
-          ws.shift[w].push_back(at);
-        } else if (ws.shift[w][k] != at) {
-          ws.unmark_queue(size);
-          return ws.refuse(Refusal::no_match, "the pattern graphs of hook darts " + std::to_string(hooks[0]) + " and " + std::to_string(hooks[h]) +
-                                                  " are not isomorphic (Sec. 6.3 needs one pattern for every component of L)");
-        }
-      }
-    if (h == 0) ws.pattern.assign(ws.queue.begin(), ws.queue.begin() + static_cast<std::ptrdiff_t>(size));
-    ws.unmark_queue(size);
-  }
+  const PatternWalkStop stop =
+      walk_pattern_graphs(hooks, Generators, follow, ws.position, ws.queue, ws.shift, [&](std::size_t h, std::span<const Dart> darts) {
+        if (h == 0) ws.pattern.assign(darts.begin(), darts.end());
+      });
+  if (stop.kind == PatternWalkStop::no_path)
+    return ws.refuse(Refusal::not_combinatorial,
+                     "dart " + std::to_string(stop.at) + " has no " + generator_names[stop.generator] + "-path: the host is not combinatorial");
+  if (stop.kind == PatternWalkStop::not_isomorphic)
+    return ws.refuse(Refusal::no_match, "the pattern graphs of hook darts " + std::to_string(hooks[0]) + " and " + std::to_string(hooks[stop.hook]) +
+                                            " are not isomorphic (Sec. 6.3 needs one pattern for every component of L)");
   ws.np = ws.pattern.size();
   return Refusal::none;
 }

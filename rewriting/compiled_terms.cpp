@@ -32,10 +32,7 @@ void TermWorkspace::prepare(std::size_t used, std::size_t sites) {
   conflicts = 0;
 }
 
-void TermWorkspace::reset(std::vector<std::uint32_t>& up, std::size_t instances) {
-  up.resize(instances);
-  std::iota(up.begin(), up.end(), std::uint32_t{0});
-}
+void TermWorkspace::reset(std::vector<std::uint32_t>& up, std::size_t instances) { make_singletons(up, instances); }
 
 void TermWorkspace::flatten(std::vector<std::uint32_t>& up) {
   // Roots are the smallest instances of their classes, so one pass in

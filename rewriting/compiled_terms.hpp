@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/dart_table.hpp"
+#include "core/disjoint_sets.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/algebra.hpp"
 #include "rewriting/embedded_map.hpp"
@@ -107,15 +108,9 @@ struct TermWorkspace {
   void prepare(std::size_t used, std::size_t sites);
   /// The union-find of one side's instances (`instances` = nodes * np).
   static void reset(std::vector<std::uint32_t>& up, std::size_t instances);
-  static std::uint32_t find(std::vector<std::uint32_t>& up, std::uint32_t a) {
-    while (up[a] != a) a = up[a] = up[up[a]];
-    return a;
-  }
-  static void unite(std::vector<std::uint32_t>& up, std::uint32_t a, std::uint32_t b) {
-    a = find(up, a);
-    b = find(up, b);
-    if (a != b) up[a < b ? b : a] = a < b ? a : b;  // the smaller instance is the root
-  }
+  static std::uint32_t find(std::vector<std::uint32_t>& up, std::uint32_t a) { return find_representative(up, a); }
+  /// The smaller instance is the root (flatten relies on it).
+  static void unite(std::vector<std::uint32_t>& up, std::uint32_t a, std::uint32_t b) { join_sets(up, a, b); }
   /// Every entry its root.
   static void flatten(std::vector<std::uint32_t>& up);
 

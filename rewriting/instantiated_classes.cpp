@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "core/disjoint_sets.hpp"
+
 namespace dartcheck {
 namespace {
 
@@ -13,16 +15,9 @@ constexpr std::uint32_t none = 0xffffffffU;
 // entries live in the caller's scratch memory.
 struct UnionFind {
   std::vector<std::uint32_t>& up;
-  UnionFind(std::vector<std::uint32_t>& memory, std::size_t n) : up(memory) {
-    up.resize(n);
-    std::iota(up.begin(), up.end(), 0U);
-  }
-  std::uint32_t find(std::size_t x) {
-    auto y = static_cast<std::uint32_t>(x);
-    while (up[y] != y) y = up[y] = up[up[y]];
-    return y;
-  }
-  void unite(std::size_t a, std::size_t b) { up[find(a)] = find(b); }
+  UnionFind(std::vector<std::uint32_t>& memory, std::size_t n) : up(memory) { make_singletons(up, n); }
+  std::uint32_t find(std::size_t x) { return find_representative(up, static_cast<std::uint32_t>(x)); }
+  void unite(std::size_t a, std::size_t b) { attach_set(up, static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)); }
 };
 
 bool in_orbit(const std::vector<Dim>& orbit, Dim d) { return std::find(orbit.begin(), orbit.end(), d) != orbit.end(); }

@@ -54,6 +54,10 @@ struct Operation {
   /// Embedding terms on L's and R's nodes (003 Sec. 6); unset for a
   /// purely topological rule.
   std::optional<RuleTerms> terms;
+
+  /// A rule scheme (002 Sec. 6), applied by instantiation over P_v, or a
+  /// DPO rule (002 Def. 2): the one answer every engine and renderer reads.
+  bool is_scheme() const { return words.scheme; }
 };
 
 }  // namespace dartcheck

@@ -4,6 +4,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/disjoint_sets.hpp"
+
 namespace dartcheck {
 namespace {
 
@@ -42,17 +44,12 @@ std::vector<bool> kept_arcs(const TopoGraph& a, const TopoGraph& b, const std::v
 }  // namespace
 
 std::vector<int> Rule::components(const TopoGraph& g, int* count) {
-  std::vector<NodeId> parent(g.node_count());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](NodeId v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (const auto& a : g.arcs()) parent[find(a.source)] = find(a.target);
+  DisjointSets<NodeId> component(g.node_count());
+  for (const auto& a : g.arcs()) component.attach(a.source, a.target);
   std::vector<int> id(g.node_count(), -1), comp(g.node_count());
   int n = 0;
   for (NodeId v = 0; v < g.node_count(); ++v) {
-    NodeId r = find(v);
+    const NodeId r = component.find(v);
     if (id[r] < 0) id[r] = n++;
     comp[v] = id[r];
   }

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "rewriting/pattern_walk.hpp"
+
 namespace dartcheck {
 
 std::vector<ConjWord> scheme_generators(const Model& model, const ArcWords& words) {
@@ -42,60 +44,28 @@ std::vector<int> letters_of(const std::vector<ConjWord>& gens) {
 // per component of L, Sec. 6.3) every P_{v_k} is walked in the same order
 // and must give the same tables: the pattern graphs are isomorphic, and
 // darts[k][p] is the image of pattern node p under that isomorphism. On
-// refusal sets `refusal` and `why`.
-//
-// The queue is `queue`, at least one entry longer than the map (P_v has
-// at most every dart): each step writes the dart it reached at the tail
-// and moves the tail only when the dart is new, so the walk has no branch
-// on "new or met", which a processor cannot predict (a third of the steps
-// find a new dart).
+// refusal sets `refusal` and `why`. The walk is pattern_walk.hpp's, which
+// the generated code shares.
 bool walk_patterns(const Map& g, std::span<const Dart> hook_darts, const std::vector<int>& letter, std::vector<std::uint32_t>& position,
                    std::vector<Dart>& queue, PatternGraphs& out, Refusal& refusal, std::string& why) {
-  constexpr std::uint32_t none = DartTable::none;
-  if (position.size() < g.size()) position.resize(g.size(), none);
+  if (position.size() < g.size()) position.resize(g.size(), DartTable::none);
   if (queue.size() < g.size() + 1) queue.resize(g.size() + 1);
-  const std::size_t ng = out.gens.size();
-  out.shift.resize(ng);
+  out.shift.resize(out.gens.size());
   for (auto& s : out.shift) s.clear();
   out.darts.resize(hook_darts.size());
-  for (std::size_t h = 0; h < hook_darts.size(); ++h) {
-    std::size_t size = 1;
-    struct Clear {
-      std::vector<std::uint32_t>& position;
-      const std::vector<Dart>& queue;
-      const std::size_t& size;
-      ~Clear() {
-        for (std::size_t k = 0; k < size; ++k) position[queue[k]] = none;
-      }
-    } const cleared{position, queue, size};
-    queue[0] = hook_darts[h];
-    position[hook_darts[h]] = 0;
-    for (std::size_t k = 0; k < size; ++k)
-      for (std::size_t w = 0; w < ng; ++w) {
-        const Dart here = queue[k];
-        const Dart t = letter[w] >= 0 ? g.link(letter[w], here) : follow(g, here, out.gens[w]);
-        if (t == no_dart) {
-          refusal = Refusal::not_combinatorial;
-          why = fmt::format("dart {} has no {}-path: the host is not combinatorial", here, out.gens[w].str());
-          return false;
-        }
-        const std::uint32_t met = position[t];
-        const std::uint32_t at = met == none ? static_cast<std::uint32_t>(size) : met;
-        position[t] = at;
-        queue[size] = t;
-        size += met == none;
-        if (h == 0) {
-          out.shift[w].push_back(at);
-        } else if (out.shift[w][k] != at) {
-          refusal = Refusal::no_match;
-          why = fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one pattern for every component of L)",
-                            hook_darts[0], hook_darts[h]);
-          return false;
-        }
-      }
-    out.darts[h].assign(queue.begin(), queue.begin() + static_cast<std::ptrdiff_t>(size));
+  auto follow_generator = [&](std::size_t w, Dart d) { return letter[w] >= 0 ? g.link(letter[w], d) : follow(g, d, out.gens[w]); };
+  const PatternWalkStop stop =
+      walk_pattern_graphs(hook_darts, out.gens.size(), follow_generator, position, queue, out.shift,
+                          [&](std::size_t h, std::span<const Dart> darts) { out.darts[h].assign(darts.begin(), darts.end()); });
+  if (stop.kind == PatternWalkStop::no_path) {
+    refusal = Refusal::not_combinatorial;
+    why = fmt::format("dart {} has no {}-path: the host is not combinatorial", stop.at, out.gens[stop.generator].str());
+  } else if (stop.kind == PatternWalkStop::not_isomorphic) {
+    refusal = Refusal::no_match;
+    why = fmt::format("the pattern graphs of hook darts {} and {} are not isomorphic (Sec. 6.3 needs one pattern for every component of L)",
+                      hook_darts[0], hook_darts[stop.hook]);
   }
-  return true;
+  return stop.kind == PatternWalkStop::none;
 }
 
 }  // namespace

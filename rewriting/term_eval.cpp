@@ -203,20 +203,22 @@ void each_values(std::vector<Value>& values, std::span<const Dart> orbit, bool p
     // One value per <s>-orbit: every dart of it must give the same one.
     std::unordered_map<Dart, std::size_t> at;
     for (std::size_t k = 0; k < orbit.size(); ++k) at.emplace(orbit[k], k);
-    std::vector<bool> seen(orbit.size());
     std::vector<Value> one;
-    for (std::size_t k = 0; k < orbit.size(); ++k) {
-      if (seen[k]) continue;
-      for (Dart z : walker.orbit(orbit[k], sub)) {
-        const std::size_t j = at.at(z);
-        seen[j] = true;
+    std::vector<std::size_t> members;  // positions in `orbit` of one <s>-orbit
+    auto walk = [&](std::size_t k) -> const std::vector<std::size_t>& {
+      members.clear();
+      for (Dart z : walker.orbit(orbit[k], sub)) members.push_back(at.at(z));
+      return members;
+    };
+    for_each_class(orbit.size(), std::views::iota(std::size_t{0}, orbit.size()), walk, [&](std::size_t k, const std::vector<std::size_t>& same) {
+      for (std::size_t j : same)
         if (!(values[j] == values[k]))
-          throw EvaluationError(fmt::format("{}: the body gives {} at dart {} and {} at dart {} of one <{}>-orbit: its value depends on the dart "
-                                            "Jerboa's traversal picks",
-                                            text, values[k].str(), orbit[k], values[j].str(), z, fmt::join(sub_dims, ",")));
-      }
+          throw EvaluationError(
+              fmt::format("{}: the body gives {} at dart {} and {} at dart {} of one <{}>-orbit: its value depends on the dart "
+                          "Jerboa's traversal picks",
+                          text, values[k].str(), orbit[k], values[j].str(), orbit[j], fmt::join(sub_dims, ",")));
       one.push_back(values[k]);
-    }
+    });
     values = std::move(one);
   }
   std::sort(values.begin(), values.end(), [](const Value& x, const Value& y) { return value_less(x, y); });
