@@ -23,7 +23,7 @@ const Map& built_map(const Catalog& catalog, const std::vector<Map>& built, cons
 ExampleOutcome run_example(const Catalog& catalog, const std::vector<Map>& built, const CatalogRule& r, const Example& e) {
   Map host = built_map(catalog, built, e.map);
   const auto result = dartcheck::apply(r, host, e.hooks);
-  if (result.refusal != Refusal::none) return {std::string(refusal_name(result.refusal)), result.why};
+  if (result.refusal != Refusal::none) return {std::string(name_of(result.refusal)), result.why};
   const auto report = check_map(host);
   if (!report.valid())
     return {"invalid", fmt::format("{} violations, first: dart {} {}", report.violations.size(), report.violations[0].element,

@@ -76,7 +76,7 @@ std::string write_embedding_counterexample(const std::string& dir, const std::st
                                            const EmbeddedMap& host, const std::vector<Dart>& hooks) {
   JbaFile f{"dartcheck prove", host.map, {}, {}};
   for (const Embedding& e : host.embeddings) {
-    MapEmbedding m{e.signature.name, std::string(type_name(e.signature.type)), e.signature.orbit, {}, {}};
+    MapEmbedding m{e.signature.name, std::string(name_of(e.signature.type)), e.signature.orbit, {}, {}};
     for (Dart d = 0; d < host.map.size(); ++d)
       if (const Value* v = e.value(d)) {
         m.values.resize(host.map.size());

@@ -139,7 +139,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
       // Where L does not match, the application is refused alike: said
       // without copying the host (most attempts of a rule with a rare match).
       if (const auto m = applier.match(g.map, hooks); !m.ok()) {
-        ++out.refusals[std::string(refusal_name(m.refusal))];
+        ++out.refusals[std::string(name_of(m.refusal))];
         continue;
       }
       EmbeddedMap h = g;
@@ -147,7 +147,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
       const EmbeddedMap planted = h;
       auto d = apply_embedded(entry.rule, entry.words, terms, h, hooks, false);
       if (!d.ok()) {
-        ++out.refusals[std::string(refusal_name(d.refusal))];
+        ++out.refusals[std::string(name_of(d.refusal))];
         continue;
       }
       ++out.applications;

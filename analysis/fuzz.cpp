@@ -21,7 +21,7 @@
 
 namespace dartcheck::analysis {
 
-std::string_view fuzz_class_name(FuzzClass c) {
+std::string_view name_of(FuzzClass c) {
   switch (c) {
     case FuzzClass::consistent:
       return "consistent";
@@ -235,7 +235,7 @@ class Fuzzer {
     if (refusal == Refusal::not_representable)
       ++out_.refusals["not-representable"];
     else if (refusal != Refusal::none)
-      ++out_.refusals[std::string(refusal_name(refusal))];
+      ++out_.refusals[std::string(name_of(refusal))];
     else
       ++out_.applications;
     // Events are about the topology of a valid H, whatever the static
@@ -489,13 +489,13 @@ std::string outcome_text(const FuzzReport& r) {
                                             r.event_checks ? fmt::format("; events of {} cross-checked", r.event_checks) : "")
                               : fmt::format("no counterexample: {}", r.reason);
     case FuzzClass::unconfirmed:
-      return r.applications == 0 ? fmt::format("{}: {}", fuzz_class_name(r.verdict), r.reason)
-                                 : fmt::format("{}: {} ({})", fuzz_class_name(r.verdict), r.reason, r.checked);
+      return r.applications == 0 ? fmt::format("{}: {}", name_of(r.verdict), r.reason)
+                                 : fmt::format("{}: {} ({})", name_of(r.verdict), r.reason, r.checked);
     case FuzzClass::confirmed:
     case FuzzClass::soundness_bug: {
       const auto& cx = *r.counterexample;
-      return fmt::format("{}: at hook{} {} of a {}-dart map, H {}{}", fuzz_class_name(r.verdict), cx.hooks.size() > 1 ? "s" : "",
-                         fmt::join(cx.hooks, ","), cx.host.size(), cx.broken_predicate(), cx.minimal ? " (minimal)" : "");
+      return fmt::format("{}: at hook{} {} of a {}-dart map, H {}{}", name_of(r.verdict), cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","),
+                         cx.host.size(), cx.broken_predicate(), cx.minimal ? " (minimal)" : "");
     }
   }
   return "";
@@ -514,8 +514,8 @@ namespace {
 // counterexample what the applications checked (never "consistent" alone).
 std::string finished_line(const FuzzReport& r) {
   const std::string applications = counted(r.applications, "application");
-  if (r.counterexample) return fmt::format("{}, {}", fuzz_class_name(r.verdict), applications);
-  const std::string_view verdict = r.verdict == FuzzClass::consistent ? "consistent statically" : fuzz_class_name(r.verdict);
+  if (r.counterexample) return fmt::format("{}, {}", name_of(r.verdict), applications);
+  const std::string_view verdict = r.verdict == FuzzClass::consistent ? "consistent statically" : name_of(r.verdict);
   if (r.applications == 0) return fmt::format("{}, never applied", verdict);
   return fmt::format("{}, no counterexample in {} ({})", verdict, applications, r.checked);
 }

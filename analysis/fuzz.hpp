@@ -27,6 +27,7 @@
 
 #include "checkers/rule_conditions.hpp"
 #include "checkers/violation.hpp"
+#include "core/formatting.hpp"
 #include "rewriting/application.hpp"
 #include "rewriting/operation.hpp"
 #include "rewriting/match.hpp"
@@ -40,7 +41,7 @@ enum class FuzzClass {
   unconfirmed,    // static fails, no failure found within the budget
   soundness_bug,  // static holds, failure found
 };
-std::string_view fuzz_class_name(FuzzClass c);
+std::string_view name_of(FuzzClass c);
 
 /// One failing application.
 struct Counterexample {

@@ -16,7 +16,7 @@ std::optional<Counterexample> replay_solver_map(const Operation& entry, proofs::
   if (!cx) {
     c.agreement = proofs::Agreement::disagree;
     c.note = fmt::format("the dynamic checker finds no failure on the solver's map ({})",
-                         refusal == Refusal::none ? "H is valid" : std::string(refusal_name(refusal)));
+                         refusal == Refusal::none ? "H is valid" : std::string(name_of(refusal)));
     return std::nullopt;
   }
   cx->origin = fmt::format("dartcheck prove: a valid {} of {} darts whose H breaks {}", entry.rule.model().name, host.size(), c.constraint.name());

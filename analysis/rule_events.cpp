@@ -42,7 +42,7 @@ EventsApplication apply_for_events(const CatalogRule& rule, Map g, const std::ve
   EventsApplication a{describe_target(map_name, g), hooks, {}, {}, g, std::move(g), {}, {}};
   auto traced = dartcheck::apply(rule, a.after, hooks);
   if (!traced.ok()) {
-    a.refusal = refusal_name(traced.refusal);
+    a.refusal = name_of(traced.refusal);
     a.why = traced.why;
     return a;
   }

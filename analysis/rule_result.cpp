@@ -69,8 +69,8 @@ std::string RuleResult::solver_fuzz_contradiction() const {
   for (const auto& a : proof->embedding->answers) {
     if (a.status != proofs::EmbeddingAnswer::Status::none || cx.host.size() > a.darts) continue;
     if (std::find(cx.broken_embeddings.begin(), cx.broken_embeddings.end(), a.embedding) == cx.broken_embeddings.end()) continue;
-    return fmt::format("the solver found no host up to {} darts breaking {} ({} reading), yet fuzz broke it on a {}-dart host{}", a.darts, a.embedding,
-                       proofs::reading_name(a.reading), cx.host.size(),
+    return fmt::format("the solver found no host up to {} darts breaking {} ({} reading), yet fuzz broke it on a {}-dart host{}", a.darts,
+                       a.embedding, proofs::name_of(a.reading), cx.host.size(),
                        a.reading == proofs::Reading::arithmetic ? " (the reals and the library's doubles may round apart: docs/prove.md)" : "");
   }
   return {};
@@ -230,8 +230,7 @@ void add_proof(RuleResult& r, proofs::RuleProof proof, std::vector<std::string> 
 void add_fuzz(RuleResult& r, FuzzReport report, std::uint64_t seed, const std::string& out_dir, const std::string& catalog_file,
               const std::string& suffix) {
   const CatalogRule& entry = *r.entry;
-  const std::vector<std::pair<std::string, std::string>> fields{{"seed", std::to_string(seed)},
-                                                                {"class", std::string(fuzz_class_name(report.verdict))}};
+  const std::vector<std::pair<std::string, std::string>> fields{{"seed", std::to_string(seed)}, {"class", std::string(name_of(report.verdict))}};
   r.fuzz_replay.clear();
   r.events_replay.clear();
   if (report.counterexample && entry.terms)

@@ -211,8 +211,8 @@ struct TermCode::Plan {
         if (x.type == ValueType::string)
           fmt::format_to(out, "    const Value {} = Value::text({});\n", v, cpp_literal(x.string()));
         else
-          fmt::format_to(out, "    const Value {} = Value{{ValueType::{}, {{{}, {}, {}}}, {}}};  // {}\n", v, type_name(x.type),
-                         double_literal(x.x[0]), double_literal(x.x[1]), double_literal(x.x[2]), x.i, comment_text(t.str()));
+          fmt::format_to(out, "    const Value {} = Value{{ValueType::{}, {{{}, {}, {}}}, {}}};  // {}\n", v, name_of(x.type), double_literal(x.x[0]),
+                         double_literal(x.x[1]), double_literal(x.x[2]), x.i, comment_text(t.str()));
         return v;
       }
       case Term::Kind::access:

@@ -33,6 +33,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "core/map.hpp"
 #include "core/model.hpp"
 
@@ -148,5 +149,9 @@ class ConjugateRewriting {
   std::unordered_map<std::string, bool> empty_memo_;
   std::vector<ConjWord> nf_result_;
 };
+
+// fmt::format("{}", x) prints x.str() (core/formatting.hpp).
+template <>
+inline constexpr bool formatted_by_str<ConjWord> = true;
 
 }  // namespace dartcheck

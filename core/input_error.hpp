@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/formatting.hpp"
+
 namespace dartcheck {
 
 /// The file name of errors in the command's arguments and options.
@@ -73,5 +75,9 @@ struct SourceLocation {
   /// "file:line:column"
   std::string str() const;
 };
+
+// fmt::format("{}", x) prints x.str() (core/formatting.hpp).
+template <>
+inline constexpr bool formatted_by_str<SourceLocation> = true;
 
 }  // namespace dartcheck

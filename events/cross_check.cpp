@@ -46,8 +46,7 @@ CrossCheck cross_check(const EventRule& r, const KindEvents& k, const Map& g, co
   }
   auto happened = [&](Event ev, bool before, Dart rep) { return logged.contains({ev, before, rep}); };
   auto claim_name = [&](const EventClaim& cl) {
-    return fmt::format("{} {} of {}", certainty_name(cl.certainty), event_name(cl.event),
-                       rule_orbit_name(r, k, cl.event != Event::creation, cl.orbit));
+    return fmt::format("{} {} of {}", name_of(cl.certainty), name_of(cl.event), rule_orbit_name(r, k, cl.event != Event::creation, cl.orbit));
   };
 
   // The condition of a loop-case no-modification on G orbit `rep`: at

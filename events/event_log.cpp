@@ -253,7 +253,7 @@ std::string event_line(const OrbitKind& kind, const LoggedEvent& e) {
     case Event::deletion:
       return fmt::format("deletion {}", names('G', e.before));
     default:
-      return fmt::format("{} {} -> {}", event_name(e.event), names('G', e.before), names('H', e.after));
+      return fmt::format("{} {} -> {}", name_of(e.event), names('G', e.before), names('H', e.after));
   }
 }
 

@@ -8,7 +8,7 @@
 
 namespace dartcheck::events {
 
-std::string_view event_name(Event e) {
+std::string_view name_of(Event e) {
   switch (e) {
     case Event::creation:
       return "creation";
@@ -26,7 +26,7 @@ std::string_view event_name(Event e) {
   return "?";
 }
 
-std::string_view certainty_name(Certainty c) {
+std::string_view name_of(Certainty c) {
   switch (c) {
     case Certainty::certain:
       return "certain";
@@ -47,7 +47,7 @@ std::string rule_orbit_name(const EventRule& r, const KindEvents& k, bool left, 
 }
 
 std::string claim_summary(const EventRule& r, const KindEvents& k, const EventClaim& c) {
-  std::string s = fmt::format("{} {}", certainty_name(c.certainty), event_name(c.event));
+  std::string s = fmt::format("{} {}", name_of(c.certainty), name_of(c.event));
   if (c.implicit) s += fmt::format(" along position {} (letter {})", c.position, r.parameter[static_cast<std::size_t>(c.position)]);
   if (!c.loop_positions.empty()) {
     std::vector<std::string> loops;

@@ -19,14 +19,15 @@
 #include <string_view>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "events/rule_orbits.hpp"
 
 namespace dartcheck::events {
 
 enum class Event { creation, deletion, split, merge, non_modification, modification };
 enum class Certainty { certain, conditional, potential };
-std::string_view event_name(Event e);
-std::string_view certainty_name(Certainty c);
+std::string_view name_of(Event e);
+std::string_view name_of(Certainty c);
 
 /// One event of one rule orbit. `orbit` indexes the left orbits (the right
 /// ones for a creation). For a split, `others` are the right orbits the

@@ -28,7 +28,7 @@ EmbeddedMap mesh_with_positions(const Model& model, const Mesh& mesh, const Embe
   if (!model.is_generalized() || model.dimension() < 2)
     throw InputError(mesh.file, 0, 0, fmt::format("positions from a mesh need an n-G-map with n >= 2, not a {}", model.name));
   if (pos.type != ValueType::point2 && pos.type != ValueType::point3)
-    throw InputError(mesh.file, 0, 0, fmt::format("embedding {} is a {}; mesh positions are point2 or point3", pos.name, type_name(pos.type)));
+    throw InputError(mesh.file, 0, 0, fmt::format("embedding {} is a {}; mesh positions are point2 or point3", pos.name, name_of(pos.type)));
   EmbeddedMap g(build_mesh(model, mesh));
   const std::size_t k = g.add_embedding(pos);
   std::vector<std::uint32_t> index(mesh.positions.size(), Embedding::none);

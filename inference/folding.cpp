@@ -7,7 +7,7 @@
 
 namespace dartcheck::inference {
 
-const char* failure_name(FailureKind k) {
+const char* name_of(FailureKind k) {
   switch (k) {
     case FailureKind::arc:
       return "arc failure";

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "core/orbit.hpp"
 #include "inference/kappa_graph.hpp"
 #include "rewriting/jerboa_scheme.hpp"
@@ -69,7 +70,7 @@ enum class FailureKind {
   unreached,      // κ(G, H) is not connected: a dart no node owns (Sec. 7)
   shared,         // a node built here was a <o>-node of an earlier failed folding (Sec. 10.3)
 };
-const char* failure_name(FailureKind k);
+const char* name_of(FailureKind k);
 
 struct FoldFailure {
   FailureKind kind = FailureKind::arc;

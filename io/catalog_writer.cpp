@@ -65,11 +65,11 @@ std::string value_term(const Value& v) {
     }
     case ValueType::point2:
     case ValueType::vector2:
-      return fmt::format("{}({}, {})", type_name(v.type), value_term(Value::real(v.x[0])), value_term(Value::real(v.x[1])));
+      return fmt::format("{}({}, {})", name_of(v.type), value_term(Value::real(v.x[0])), value_term(Value::real(v.x[1])));
     case ValueType::point3:
     case ValueType::vector3:
     case ValueType::color:
-      return fmt::format("{}({}, {}, {})", type_name(v.type), value_term(Value::real(v.x[0])), value_term(Value::real(v.x[1])),
+      return fmt::format("{}({}, {}, {})", name_of(v.type), value_term(Value::real(v.x[0])), value_term(Value::real(v.x[1])),
                          value_term(Value::real(v.x[2])));
     default:
       return v.str();

@@ -253,7 +253,7 @@ void write_gmsh(std::ostream& out, const TetMesh& m, GmshVersion version, const 
 void write_gmsh(std::ostream& out, const Points& points, const VolumeCells& cells, int dimension, GmshVersion version,
                 const std::vector<CellField>& fields) {
   for (CellKind k : cells.kind)
-    if (gmsh_type(k) == 0) throw std::logic_error(fmt::format("gmsh has no element for a {}", cell_name(k)));
+    if (gmsh_type(k) == 0) throw std::logic_error(fmt::format("gmsh has no element for a {}", k));
   const std::size_t n = points.size(), e = cells.size();
   if (version == GmshVersion::v22) {
     out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";

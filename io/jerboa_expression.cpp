@@ -394,7 +394,7 @@ class Reader {
         v.term = make_call("real", {std::move(v.term)}, v.term.offset);
         v.type = ValueType::real;
       }
-      if (d.type != v.type) throw Opaque{name.offset, fmt::format("assigns a {} to '{}', a {}", type_name(v.type), name.s, type_name(d.type))};
+      if (d.type != v.type) throw Opaque{name.offset, fmt::format("assigns a {} to '{}', a {}", name_of(v.type), name.s, name_of(d.type))};
     }
     if (d.kind == Sym::list && d.typed && v.typed && v.type != d.type) throw Opaque{name.offset, fmt::format("assigns a list of another type to '{}'", name.s)};
     return v;
@@ -711,13 +711,14 @@ class Reader {
           }
           throw Opaque{o, fmt::format("calls {}.{}", class_of(t), m.s)};
         }
-        throw Opaque{o, fmt::format("calls {}.{}", type_name(a.type), m.s)};
+        throw Opaque{o, fmt::format("calls {}.{}", name_of(a.type), m.s)};
       case Sym::list:
         if (m.s == "add" && args.size() == 1) {
           if (lvalue.empty()) throw Opaque{o, "adds to a list that is not a variable"};
           if (args[0].kind != Sym::value || args[0].term.kind == Term::Kind::collect) throw Opaque{o, "adds something other than a value to a list"};
           Var* v = find(lvalue);
-          if (v->sym.typed && args[0].type != v->sym.type) throw Opaque{o, fmt::format("adds a {} to a list of {}", type_name(args[0].type), type_name(v->sym.type))};
+          if (v->sym.typed && args[0].type != v->sym.type)
+            throw Opaque{o, fmt::format("adds a {} to a list of {}", name_of(args[0].type), name_of(v->sym.type))};
           v->sym.type = args[0].type;
           v->sym.typed = true;
           v->sym.parts.push_back(args[0].term);
@@ -758,7 +759,7 @@ class Reader {
     }
     if (s.kind != Sym::list) throw Opaque{m.offset, fmt::format("calls {} on something other than a list or a collect", m.s)};
     if (s.parts.empty()) throw Opaque{m.offset, fmt::format("calls {} on a list that is always empty", m.s)};
-    if (s.typed && s.type != t) throw Opaque{m.offset, fmt::format("calls {} on a list of {}", m.s, type_name(s.type))};
+    if (s.typed && s.type != t) throw Opaque{m.offset, fmt::format("calls {} on a list of {}", m.s, name_of(s.type))};
     if (s.parts.size() == 1 && s.parts[0].kind == Term::Kind::each) return s.parts[0];
     Term l;
     l.kind = Term::Kind::list;
@@ -921,14 +922,14 @@ class Reader {
     if (args.empty()) {  // the zero vector, as the constructor call (its text reads back)
       std::vector<Term> zero;
       for (int k = 0; k < 3; ++k) zero.push_back(make_literal(Value::real(0), kw.offset));
-      return value_of(make_call(std::string(type_name(*t)), std::move(zero), kw.offset), *t);
+      return value_of(make_call(std::string(name_of(*t)), std::move(zero), kw.offset), *t);
     }
     if (args.size() == 1 && args[0].kind == Sym::value && args[0].type == *t) return args[0];  // a copy
     if (args.size() == 3 || (args.size() == 4 && *t == ValueType::color)) {
       if (args.size() == 4) throw Opaque{kw.offset, "builds a color with an alpha channel (dartcheck's colors have three components)"};
       std::vector<Term> xs;
       for (std::size_t k = 0; k < 3; ++k) xs.push_back(number_arg(args, k, c).term);
-      return value_of(make_call(std::string(type_name(*t)), std::move(xs), kw.offset), *t);
+      return value_of(make_call(std::string(name_of(*t)), std::move(xs), kw.offset), *t);
     }
     throw Opaque{kw.offset, fmt::format("builds a {} from {} argument(s)", type, args.size())};
   }
@@ -995,7 +996,8 @@ ReadExpression read_jerboa_expression(const std::string& code, const JerboaScope
     TermScope ts{scope.model, &scope.embeddings, scope.nodes, scope.parameters, nullptr};
     try {
       const Sort sort = check_term(t, ts);
-      if (sort != Sort::of(result)) return {std::nullopt, fmt::format("returns a {} where the embedding is a {}", sort.str(), type_name(result)), t.offset};
+      if (sort != Sort::of(result))
+        return {std::nullopt, fmt::format("returns a {} where the embedding is a {}", sort.str(), name_of(result)), t.offset};
     } catch (const TermError& e) {
       return {std::nullopt, e.what(), e.offset()};
     }

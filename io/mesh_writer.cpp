@@ -21,7 +21,7 @@ PolygonMesh polygon_mesh(const EmbeddedMap& m, const std::string& position, cons
   const Embedding* pos = m.find(position);
   if (!pos) fail(fmt::format("the map has no embedding '{}' to give the vertices their positions", position));
   if (pos->signature.type != ValueType::point3 && pos->signature.type != ValueType::point2)
-    fail(fmt::format("embedding '{}' holds {}, not point3 or point2", position, type_name(pos->signature.type)));
+    fail(fmt::format("embedding '{}' holds {}, not point3 or point2", position, name_of(pos->signature.type)));
 
   // Vertices, numbered in order of their smallest dart.
   std::vector<std::uint32_t> vertex(map.size());

@@ -64,9 +64,8 @@ std::vector<NodeTerm> read_side(const std::string& file, const YAML::Node& side,
       Sort sort;
       const Term t = parse_checked(file, e.second, scope, fmt::format("term of {} on {}", ebd, names.front()), &sort);
       if (sort != Sort::of(sig->type))
-        fail_at(
-            file, e.second,
-            fmt::format("the term '{}' is a {}, but {} : <{}> -> {}", t.str(), sort.str(), ebd, fmt::join(sig->orbit, ","), type_name(sig->type)));
+        fail_at(file, e.second,
+                fmt::format("the term '{}' is a {}, but {} : <{}> -> {}", t.str(), sort.str(), ebd, fmt::join(sig->orbit, ","), name_of(sig->type)));
       for (const auto& node : names) {
         for (const NodeTerm& o : out)
           if (o.node == node && o.embedding == ebd) fail_at(file, e.first, fmt::format("labels.{}: {} on '{}' is given twice", side_name, ebd, node));

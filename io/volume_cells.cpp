@@ -61,7 +61,7 @@ int vtk_type(CellKind k) {
   static constexpr int types[] = {12, 13, 14, 10, 5, 9, 7};
   return types[static_cast<int>(k)];
 }
-const char* cell_name(CellKind k) {
+const char* name_of(CellKind k) {
   static constexpr const char* names[] = {"hexahedron", "prism", "pyramid", "tetrahedron", "triangle", "quadrangle", "polygon"};
   return names[static_cast<int>(k)];
 }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "io/tet_mesh_io.hpp"
 
 namespace dartcheck {
@@ -57,6 +58,6 @@ VolumeCells polygon_cells(const std::vector<std::vector<std::uint32_t>>& faces);
 int gmsh_type(CellKind k);
 int vtk_type(CellKind k);
 /// "hexahedron", "prism", "pyramid", "tetrahedron", "triangle", ...
-const char* cell_name(CellKind k);
+const char* name_of(CellKind k);
 
 }  // namespace dartcheck

@@ -23,9 +23,9 @@
 
 namespace dartcheck::proofs {
 
-std::string_view reading_name(Reading r) { return r == Reading::uninterpreted ? "uninterpreted" : "arithmetic"; }
+std::string_view name_of(Reading r) { return r == Reading::uninterpreted ? "uninterpreted" : "arithmetic"; }
 
-std::string_view status_name(EmbeddingAnswer::Status s) {
+std::string_view name_of(EmbeddingAnswer::Status s) {
   switch (s) {
     case EmbeddingAnswer::Status::counterexample:
       return "counterexample";
@@ -176,7 +176,7 @@ std::optional<Derived> derive(const Operation& op, Applier& applier, const Map& 
 
 // The query's text: two hosts with one text ask one question.
 std::string query_key(Reading r, const Derived& d, const OrbitQuestion& q) {
-  std::string key(reading_name(r));
+  std::string key(name_of(r));
   for (const Unknown& u : d.pool.unknowns()) key += fmt::format(" {}", u.embedding);
   for (const auto& [a, b] : d.equal) key += fmt::format("|{}={}", d.pool.str(a), d.pool.str(b));
   for (const auto& v : q.orbits) {

@@ -29,13 +29,14 @@
 #include <string>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "rewriting/embedded_map.hpp"
 #include "rewriting/operation.hpp"
 
 namespace dartcheck::proofs {
 
 enum class Reading : std::uint8_t { uninterpreted, arithmetic };
-std::string_view reading_name(Reading r);
+std::string_view name_of(Reading r);
 
 struct EmbeddingProveOptions {
   std::size_t max_darts = 6;            // K
@@ -69,7 +70,7 @@ struct EmbeddingAnswer {
   std::string note;  // "false alarm up to K darts", or why it disagrees
   std::string condition() const { return "embedding(" + embedding + ")"; }
 };
-std::string_view status_name(EmbeddingAnswer::Status s);
+std::string_view name_of(EmbeddingAnswer::Status s);
 
 struct EmbeddingProof {
   std::vector<EmbeddingAnswer> answers;  // per embedding R labels, uninterpreted then arithmetic

@@ -16,7 +16,7 @@
 
 namespace dartcheck::proofs {
 
-std::string_view status_name(Status s) {
+std::string_view name_of(Status s) {
   switch (s) {
     case Status::counterexample:
       return "counterexample";
@@ -30,7 +30,7 @@ std::string_view status_name(Status s) {
   return "";
 }
 
-std::string_view agreement_name(Agreement a) {
+std::string_view name_of(Agreement a) {
   switch (a) {
     case Agreement::agree:
       return "agree";

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "rewriting/operation.hpp"
 #include "core/graph.hpp"
 #include "proofs/embedding_prover.hpp"
@@ -50,7 +51,7 @@ enum class Status {
   unknown,         // the solver ran out of resources
   vacuous,         // no host of the class admits a derivation (up to `darts`)
 };
-std::string_view status_name(Status s);
+std::string_view name_of(Status s);
 
 struct ClassAnswer {
   std::string class_name;
@@ -76,7 +77,7 @@ enum class Agreement {
   unresolved,    // static fails, no counterexample up to k below the bound
   not_compared,  // the theorem's premise fails, the class is vacuous, or unknown
 };
-std::string_view agreement_name(Agreement a);
+std::string_view name_of(Agreement a);
 
 struct ConstraintProof {
   HConstraint constraint;

@@ -32,7 +32,7 @@ std::uint32_t SymPool::literal(const Value& v) {
   e.kind = SymExpr::Kind::literal;
   e.type = v.type;
   e.literal = v;
-  return intern(std::move(e), fmt::format("{}:{}", type_name(v.type), v.str()));
+  return intern(std::move(e), fmt::format("{}:{}", name_of(v.type), v.str()));
 }
 
 std::uint32_t SymPool::call(const Function* f, std::vector<std::uint32_t> args, std::vector<std::vector<std::uint32_t>> bags,

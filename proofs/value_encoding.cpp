@@ -59,7 +59,7 @@ z3::expr_vector ValueEncoding::literal(const Value& x) {
     // Distinct literals are distinct values: constants below every
     // unknown's reach would forbid an unknown equal to a literal, so they
     // are plain integers that unknowns may also take.
-    const std::string key = fmt::format("{}:{}", type_name(x.type), x.str());
+    const std::string key = fmt::format("{}:{}", name_of(x.type), x.str());
     auto it = std::find(literals_.begin(), literals_.end(), key);
     if (it == literals_.end()) it = literals_.insert(literals_.end(), key);
     v.push_back(ctx_.int_val(static_cast<std::int64_t>(-1'000'000 - (it - literals_.begin()))));
@@ -222,7 +222,7 @@ z3::expr_vector ValueEncoding::arithmetic(const SymExpr& e, bool& done) {
       nonzero(total, nullptr);  // the library refuses weights summing to 0
       return coords([&](unsigned c) { return arg(0)[c] * (scalar(1) / total) + arg(2)[c] * (scalar(3) / total); });
     }
-    if (n == std::string(type_name(f.result.type)))  // a constructor
+    if (n == std::string(name_of(f.result.type)))  // a constructor
       return coords([&](unsigned c) { return c < m ? scalar(c) : ctx_.real_val(0); });
     done = false;
     return out;

@@ -48,7 +48,7 @@ JbaHost jba_host(const ApplyRequest& o, const RuleTerms& terms, EmbeddedMap& hos
   JbaHost j{read_jba(o.map), {}};
   for (const MapEmbedding& m : j.file.embeddings) {
     MapEmbedding typed = m;
-    if (const auto t = jerboa_value_type(m.type)) typed.type = std::string(type_name(*t));
+    if (const auto t = jerboa_value_type(m.type)) typed.type = std::string(name_of(*t));
     std::string why;
     std::optional<Embedding> e = typed_embedding(typed, &why);
     if (!e) {
@@ -63,7 +63,7 @@ JbaHost jba_host(const ApplyRequest& o, const RuleTerms& terms, EmbeddedMap& hos
       e->signature.name = m.name + " (the file's)";
       j.file_name[e->signature.name] = m.name;
       fmt::print("values: the file's {} are not {} values: the rule computes its own {}, and the file's are kept on the darts H keeps\n", m.name,
-                 type_name(clash->type), m.name);
+                 name_of(clash->type), m.name);
     }
     host.embeddings.push_back(std::move(*e));
   }
@@ -80,7 +80,7 @@ JbaHost jba_host(const ApplyRequest& o, const RuleTerms& terms, EmbeddedMap& hos
     if (candidates != 1) continue;
     j.file_name[sig.name] = only->signature.name;
     fmt::print("values: {} read from the file's {} (the only embedding with its orbit <{}> and type {})\n", sig.name, only->signature.name,
-               fmt::join(sig.orbit, ","), type_name(sig.type));
+               fmt::join(sig.orbit, ","), name_of(sig.type));
     only->signature.name = sig.name;
   }
   return j;
@@ -154,7 +154,7 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const Map before = host->map;  // for the dart correspondence of a YAML result
   auto result = apply_embedded(rule.rule, rule.words, terms, *host, o.hooks);
   if (!result.ok()) {
-    fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
+    fmt::print("not applied ({}): {}\n", name_of(result.refusal), result.why);
     return violation;
   }
   fmt::print("applied ({} instantiation): {} darts matched, {} added; result has {} darts\n",
@@ -183,7 +183,7 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     if (!jba) jba = JbaHost{{"dartcheck", Map(rule.rule.model()), {}, {}}, {}};
     if (jba->file.embeddings.empty())
       for (const Embedding& e : host->embeddings)  // a host of another format: every embedding is written
-        jba->file.embeddings.push_back({e.signature.name, std::string(type_name(e.signature.type)), e.signature.orbit, {}, {}});
+        jba->file.embeddings.push_back({e.signature.name, std::string(name_of(e.signature.type)), e.signature.orbit, {}, {}});
     write_jba_result(o, *jba, *host);
   } else if (!o.output.empty() && is_polygon_mesh_output(o.output)) {
     // The positions: the first point embedding of the rule.
@@ -234,7 +234,7 @@ int apply_to_jba(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const Map before = map;
   auto traced = dartcheck::apply(rule, map, o.hooks);
   if (!traced.ok()) {
-    fmt::print("not applied ({}): {}\n", refusal_name(traced.refusal), traced.why);
+    fmt::print("not applied ({}): {}\n", name_of(traced.refusal), traced.why);
     return violation;
   }
   fmt::print("applied: {} -> {} darts\n", before.size(), map.size());
@@ -268,7 +268,7 @@ int apply_topology(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const std::size_t before_size = map.size();
   auto result = dartcheck::apply(rule, map, o.hooks);
   if (!result.ok()) {
-    fmt::print("not applied ({}): {}\n", refusal_name(result.refusal), result.why);
+    fmt::print("not applied ({}): {}\n", name_of(result.refusal), result.why);
     return violation;
   }
   const Application& a = *result.value;

@@ -31,8 +31,8 @@ std::string invalid_result(const EventsApplication& a) {
 }
 
 Json logged_json(const OrbitKind& kind, const LoggedEvent& e, const std::vector<std::string>& rule_orbits) {
-  return Json{{"event", event_name(e.event)}, {"orbit_type", kind.str()},   {"g", e.before}, {"h", e.after},
-              {"rule_orbits", rule_orbits},   {"text", event_line(kind, e)}};
+  return Json{{"event", name_of(e.event)},  {"orbit_type", kind.str()},   {"g", e.before}, {"h", e.after},
+              {"rule_orbits", rule_orbits}, {"text", event_line(kind, e)}};
 }
 
 Json log_json(const OrbitKind& kind, const EventLog& log, const std::vector<std::vector<std::string>>& rule_orbits) {
@@ -96,8 +96,8 @@ Json events_json(const RuleEvents& r) {
     };
     Json claims = Json::array();
     for (const EventClaim& c : k.claims)
-      claims.push_back(Json{{"event", event_name(c.event)},
-                            {"certainty", certainty_name(c.certainty)},
+      claims.push_back(Json{{"event", name_of(c.event)},
+                            {"certainty", name_of(c.certainty)},
                             {"side", c.event == Event::creation ? "R" : "L"},
                             {"orbit", c.orbit},
                             {"rule_orbit", rule_orbit_name(*r.view, k, c.event != Event::creation, c.orbit)},

@@ -42,7 +42,7 @@ std::string undecided_text(const Attempt& a) {
 }  // namespace
 
 std::string attempt_outcome(const Attempt& a) {
-  if (a.failure) return fmt::format("{}: {}", failure_name(a.failure->kind), a.failure->text);
+  if (a.failure) return fmt::format("{}: {}", name_of(a.failure->kind), a.failure->text);
   if (!a.not_a_rule.empty()) return a.not_a_rule;
   if (!a.ill_formed.empty()) return fmt::format("ill-formed, discarded (Sec. 8.2): {} fail", fmt::join(a.ill_formed, ", "));
   if (a.duplicate_of >= 0) return "the same scheme as an earlier start";
@@ -104,7 +104,7 @@ std::string infer_json(const InferRun& run, const KappaGraph& graph, const std::
              {"same_starts", a.same_starts},
              {"seconds", a.seconds}};
     if (a.failure)
-      row["failure"] = Json{{"kind", failure_name(a.failure->kind)},
+      row["failure"] = Json{{"kind", name_of(a.failure->kind)},
                             {"node", fmt::format("n{}", a.failure->node)},
                             {"dimension", a.failure->dim == kappa_arc ? std::string("kappa") : std::to_string(a.failure->dim)},
                             {"dart", graph.name(a.failure->dart)}};

@@ -392,8 +392,8 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
                            html_text(c.theorem  ? answer_text(*c.theorem)
                                      : p.scheme ? "(scheme: maps only)"
                                                 : "(no theorem)"),
-                           html_text(answer_text(c.model)), c.agreement == proofs::Agreement::disagree ? "bug" : "none",
-                           proofs::agreement_name(c.agreement), html_text(c.note));
+                           html_text(answer_text(c.model)), c.agreement == proofs::Agreement::disagree ? "bug" : "none", proofs::name_of(c.agreement),
+                           html_text(c.note));
       out += "</table>\n";
       for (std::size_t k = 0; k < p.constraints.size(); ++k)
         if (r.proof_maps[k])

@@ -36,8 +36,8 @@ Json embedding_json(const EmbeddingCheck& e) {
 }
 
 Json answer_json(const proofs::ClassAnswer& a) {
-  Json j{{"class", a.class_name}, {"status", proofs::status_name(a.status)}, {"darts", a.darts}, {"minimal", a.minimal},
-         {"bound", a.bound},      {"proved_for_all", a.proved_for_all()},    {"core", a.core},   {"why", a.why},
+  Json j{{"class", a.class_name}, {"status", proofs::name_of(a.status)},  {"darts", a.darts}, {"minimal", a.minimal},
+         {"bound", a.bound},      {"proved_for_all", a.proved_for_all()}, {"core", a.core},   {"why", a.why},
          {"seconds", a.seconds}};
   if (a.status == proofs::Status::counterexample) {
     j["replayed"] = a.replayed;
@@ -73,7 +73,7 @@ Json confirmation_json(const RuleResult& r) {
 Json fuzz_json(const FuzzReport& f, const std::string& replay, const std::string& events_replay) {
   Json refusals = Json::object();
   for (const auto& [why, n] : f.refusals) refusals[why] = n;
-  Json j{{"class", fuzz_class_name(f.verdict)},
+  Json j{{"class", name_of(f.verdict)},
          {"applications", f.applications},
          {"hosts", f.hosts},
          {"largest_host", f.largest_host},
@@ -119,7 +119,7 @@ Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& repl
                                {"static", c.static_holds ? (*c.static_holds ? "holds" : "fails") : "none"},
                                {"theorem", c.theorem ? answer_json(*c.theorem) : Json(nullptr)},
                                {"model", answer_json(c.model)},
-                               {"agreement", proofs::agreement_name(c.agreement)},
+                               {"agreement", proofs::name_of(c.agreement)},
                                {"note", c.note},
                                {"replay", i < replays.size() ? replays[i] : std::string()}});
   }
@@ -131,8 +131,8 @@ Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& repl
       const auto& a = p.embedding->answers[i];
       embedding.push_back(Json{{"condition", a.condition()},
                                {"static", a.static_failures},
-                               {"reading", proofs::reading_name(a.reading)},
-                               {"answer", proofs::status_name(a.status)},
+                               {"reading", proofs::name_of(a.reading)},
+                               {"answer", proofs::name_of(a.status)},
                                {"darts", a.darts},
                                {"why", a.why},
                                {"replayed", a.replayed},

@@ -76,7 +76,7 @@ std::string embedding_proof_text(const proofs::EmbeddingProof& e, const std::vec
     std::string row = fmt::format("  {} static {}", e.answers[i].condition(),
                                   e.answers[i].static_failures.empty() ? "holds" : fmt::format("fails {}", fmt::join(e.answers[i].static_failures, " ")));
     for (const auto* a : {&e.answers[i], &e.answers[i + 1]}) {
-      row += fmt::format("; {}: {}", proofs::reading_name(a->reading), proofs::status_name(a->status));
+      row += fmt::format("; {}: {}", proofs::name_of(a->reading), proofs::name_of(a->status));
       if (a->status == proofs::EmbeddingAnswer::Status::counterexample)
         row += fmt::format(" on {} darts{}", a->darts, a->reading == proofs::Reading::arithmetic ? (a->replayed ? " (replayed)" : " (NOT replayed)") : "");
       else if (a->status == proofs::EmbeddingAnswer::Status::none)
@@ -85,7 +85,7 @@ std::string embedding_proof_text(const proofs::EmbeddingProof& e, const std::vec
     }
     out += hanging("", row, 4);
     for (const auto* a : {&e.answers[i], &e.answers[i + 1]}) {
-      const std::string reading(proofs::reading_name(a->reading));
+      const std::string reading(proofs::name_of(a->reading));
       if (!a->why.empty()) out += hanging("", fmt::format("    {}: {}", reading, a->why), 6);
       if (!a->note.empty()) out += hanging("", fmt::format("    {}: {}", reading, a->note), 6);
       if (!a->uninterpreted.empty()) out += hanging("", fmt::format("    {}: left uninterpreted: {}", reading, fmt::join(a->uninterpreted, "; ")), 6);
@@ -135,11 +135,11 @@ std::string prove_rule_text(const ProveRun& run, const RuleResult& result) {
     // fits, the next lines indented under the first field.
     const std::string theorem = cp.theorem ? answer_text(*cp.theorem) : p.scheme ? "(scheme: maps only)" : "(no theorem)";
     const std::string head = fmt::format("  {:<11} static {:<5}  ", cp.constraint.name(), cp.static_holds ? (*cp.static_holds ? "holds" : "fails") : "-");
-    const std::string row = fmt::format("theorem: {:<36}  maps: {:<32}  {}", theorem, answer_text(cp.model), proofs::agreement_name(cp.agreement));
+    const std::string row = fmt::format("theorem: {:<36}  maps: {:<32}  {}", theorem, answer_text(cp.model), proofs::name_of(cp.agreement));
     out += columns(head) + columns(row) <= terminal().width
                ? head + row + "\n"
                : fields_under(head, {fmt::format("theorem: {}", theorem), fmt::format("maps: {}", answer_text(cp.model)),
-                                     std::string(proofs::agreement_name(cp.agreement))});
+                                     std::string(proofs::name_of(cp.agreement))});
     if (!cp.note.empty()) out += hanging("", cp.note, 14);
     if (cp.theorem && cp.theorem->status == proofs::Status::counterexample && run.explain)
       out += hanging(fmt::format("  {:<11} theorem host: ", ""), arcs_text(cp.theorem->host_graph), 28) +

@@ -5,7 +5,7 @@
 
 namespace dartcheck {
 
-std::string_view refusal_name(Refusal r) {
+std::string_view name_of(Refusal r) {
   switch (r) {
     case Refusal::none:
       return "none";

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "core/map.hpp"
 #include "rewriting/rule.hpp"
 
@@ -34,7 +35,7 @@ enum class Refusal {
   no_value,           // embedded rules: a term has no value on the map (an unlabeled dart, center of nothing)
 };
 
-std::string_view refusal_name(Refusal r);
+std::string_view name_of(Refusal r);
 
 template <class T>
 struct Outcome {

@@ -498,7 +498,7 @@ Sort check_term(Term& t, const TermScope& scope) {
         if (s.kind == Sort::node) throw TermError(a.offset, fmt::format("a list holds values, '{}' is a node", a.str()));
         if (type && s.type != *type)
           throw TermError(a.offset, fmt::format("a list holds values of one type: '{}' is a {}, the list's first element a {}", a.str(), s.str(),
-                                                type_name(*type)));
+                                                name_of(*type)));
         type = s.type;
       }
       if (!type) throw TermError(t.offset, "an empty list has no type");

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formatting.hpp"
 #include "core/model.hpp"
 #include "rewriting/value.hpp"
 
@@ -111,5 +112,9 @@ struct TermScope {
 /// integer-to-real conversions inserted) and returns its sort. Throws
 /// TermError at the offending sub-term.
 Sort check_term(Term& t, const TermScope& scope);
+
+// fmt::format("{}", x) prints x.str() (core/formatting.hpp).
+template <>
+inline constexpr bool formatted_by_str<Term> = true;
 
 }  // namespace dartcheck

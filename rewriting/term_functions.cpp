@@ -11,7 +11,7 @@ const Value& val(std::span<const Operand> a, std::size_t k) { return value_arg(a
 std::span<const Value> bag(std::span<const Operand> a, std::size_t k) { return multiset_arg(a, k); }
 
 // A value type as C++ code, for the calls `dartcheck compile` writes.
-std::string cpp_type(VT t) { return fmt::format("dartcheck::ValueType::{}", type_name(t)); }
+std::string cpp_type(VT t) { return fmt::format("dartcheck::ValueType::{}", t); }
 std::string cpp_call(std::string_view f, std::string_view args) { return fmt::format("dartcheck::algebra::{}({})", f, args); }
 
 // Every function calls rewriting/algebra.hpp, and its `cpp` text is that
@@ -26,11 +26,11 @@ FunctionRegistry make_builtin() {
   // Constructors.
   for (VT t : {VT::point2, VT::vector2})
     r.add(
-        std::string(type_name(t)), {real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1)); },
+        std::string(name_of(t)), {real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1)); },
         cpp_call("coords", cpp_type(t) + ", {0}, {1}"));
   for (VT t : {VT::point3, VT::vector3, VT::color})
     r.add(
-        std::string(type_name(t)), {real, real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1), val(a, 2)); },
+        std::string(name_of(t)), {real, real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1), val(a, 2)); },
         cpp_call("coords", cpp_type(t) + ", {0}, {1}, {2}"));
 
   // Point and vector arithmetic, in 2D and 3D: a·x + b·y (combine).

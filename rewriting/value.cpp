@@ -30,7 +30,7 @@ std::string_view trim(std::string_view s) {
 
 }  // namespace
 
-std::string_view type_name(ValueType t) { return names[static_cast<std::size_t>(t)]; }
+std::string_view name_of(ValueType t) { return names[static_cast<std::size_t>(t)]; }
 
 std::optional<ValueType> type_by_name(std::string_view name) {
   // Keep only the last component of a Java class name (Jerboa's
@@ -67,7 +67,7 @@ int coordinates(ValueType t) {
 
 std::string Sort::str() const {
   if (kind == node) return "Node";
-  const std::string t(type_name(type));
+  const std::string t(name_of(type));
   return kind == multiset ? fmt::format("{}•", t) : t;
 }
 
@@ -170,7 +170,7 @@ std::optional<Value> parse_value(ValueType t, std::string_view text, std::string
     k = static_cast<std::size_t>(r.ptr - text.data());
   }
   const std::size_t want = t == ValueType::real ? 1 : static_cast<std::size_t>(coordinates(t));
-  if (xs.size() != want) return fail(fmt::format("a {} has {} coordinate{}, '{}' has {}", type_name(t), want, want == 1 ? "" : "s", text, xs.size()));
+  if (xs.size() != want) return fail(fmt::format("a {} has {} coordinate{}, '{}' has {}", t, want, want == 1 ? "" : "s", text, xs.size()));
   if (t == ValueType::real) return Value::real(xs[0]);
   std::array<double, 3> c{};
   std::copy(xs.begin(), xs.end(), c.begin());

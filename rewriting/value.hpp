@@ -12,13 +12,15 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/formatting.hpp"
+
 namespace dartcheck {
 
 /// The value types of the signature (003 Sec. 3.4 names point_2D,
 /// vector_2D, color; Sec. 9.2 adds point_3D, boolean, string).
 enum class ValueType : std::uint8_t { point2, point3, vector2, vector3, color, real, integer, boolean, string };
 
-std::string_view type_name(ValueType t);
+std::string_view name_of(ValueType t);
 /// "point2", "point_2D", "Point2" ... (case and '_' ignored, "2d" = "2"),
 /// "float"/"double" = real, "int" = integer, "bool" = boolean.
 std::optional<ValueType> type_by_name(std::string_view name);
@@ -82,5 +84,11 @@ inline bool value_less(const Value& a, const Value& b) {
 /// for coordinates; a number, true/false, or any text for strings.
 /// Returns nullopt (and the reason) when the text is not such a value.
 std::optional<Value> parse_value(ValueType t, std::string_view text, std::string* why = nullptr);
+
+// fmt::format("{}", x) prints x.str() (core/formatting.hpp).
+template <>
+inline constexpr bool formatted_by_str<Sort> = true;
+template <>
+inline constexpr bool formatted_by_str<Value> = true;
 
 }  // namespace dartcheck

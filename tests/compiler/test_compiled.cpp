@@ -346,11 +346,11 @@ void compare_everywhere(const Operation& op, const char* name, Everywhere everyw
     if (op.terms) {
       EmbeddedRewriter rewriter(op.rule, op.words, *op.terms, sub, Evaluation::one_per_orbit);
       if (const auto r = rewriter.apply(hook, false); !r.ok())
-        refusals.push_back(refusal_name(r.refusal));
+        refusals.push_back(name_of(r.refusal));
       else
         conflicts += r.value->conflicts.size();
     } else if (const auto r = apply(op, sub.map, hook); !r.ok()) {
-      refusals.push_back(refusal_name(r.refusal));
+      refusals.push_back(name_of(r.refusal));
     }
     // The result may have no dart left, or several components.
     for (const std::vector<Dart>& part : components_of(sub.map)) {
@@ -369,8 +369,8 @@ void compare_everywhere(const Operation& op, const char* name, Everywhere everyw
   if (!refusals.empty()) {
     ++tally.refused;
     ASSERT_NE(got, Refusal::none) << where << ": the interpreter refuses a component (" << refusals.front() << ")";
-    ASSERT_NE(std::find(refusals.begin(), refusals.end(), refusal_name(got)), refusals.end())
-        << where << ": refused as " << refusal_name(got) << ", no component is (first: " << refusals.front() << "); " << ws.why;
+    ASSERT_NE(std::find(refusals.begin(), refusals.end(), name_of(got)), refusals.end())
+        << where << ": refused as " << name_of(got) << ", no component is (first: " << refusals.front() << "); " << ws.why;
     ASSERT_TRUE(generated.map == host.map) << where << ": a refusal changed the map";
     ASSERT_EQ(bits_of(generated), bits_of(host)) << where << ": a refusal changed a value";
     return;
@@ -438,7 +438,7 @@ void compare_at(const Operation& op, const Compiled& compiled, const Map& host, 
   const Refusal got = compiled.apply(generated, hooks, ws);
   const std::string where =
       fmt::format("rule '{}' at hooks {} of a {}-dart {}", compiled.name, fmt::join(hooks, ","), host.size(), host.model().name);
-  ASSERT_EQ(refusal_name(got), refusal_name(expected.refusal)) << where << "\n  interpreter: " << expected.why << "\n  compiled: " << ws.why;
+  ASSERT_EQ(name_of(got), name_of(expected.refusal)) << where << "\n  interpreter: " << expected.why << "\n  compiled: " << ws.why;
   if (!expected.ok()) {
     ++tally.refused;
     ASSERT_TRUE(generated == host) << where << ": a refusal changed the map";
@@ -596,7 +596,7 @@ EmbeddedMap jba_with_positions(const std::string& file, const std::vector<Embedd
       continue;
     }
     MapEmbedding m = f.embeddings.at(0);
-    m.type = type_name(sig.type);
+    m.type = name_of(sig.type);
     std::string why;
     std::optional<Embedding> e = typed_embedding(m, &why);
     EXPECT_TRUE(e) << file << ": " << why;
@@ -616,7 +616,7 @@ void compare_embedded_at(const Operation& op, const Compiled& compiled, const Em
   const Refusal got = compiled.apply(generated, hooks, ws);
   const std::string where =
       fmt::format("rule '{}' at hooks {} of a {}-dart {}", compiled.name, fmt::join(hooks, ","), host.map.size(), host.map.model().name);
-  ASSERT_EQ(refusal_name(got), refusal_name(expected.refusal)) << where << "\n  interpreter: " << expected.why << "\n  compiled: " << ws.why;
+  ASSERT_EQ(name_of(got), name_of(expected.refusal)) << where << "\n  interpreter: " << expected.why << "\n  compiled: " << ws.why;
   if (!expected.ok()) {
     ++tally.refused;
     ASSERT_TRUE(generated.map == host.map) << where << ": a refusal changed the map";

@@ -78,7 +78,7 @@ inline std::vector<std::string> claim_texts(const Applied& a, const std::string&
   std::vector<std::string> out;
   const KindEvents& k = a.statics.at(kind);
   for (const auto& c : k.claims)
-    out.push_back(fmt::format("{} {}{} {}", event_name(c.event), certainty_name(c.certainty), c.implicit ? " implicit" : "",
+    out.push_back(fmt::format("{} {}{} {}", name_of(c.event), name_of(c.certainty), c.implicit ? " implicit" : "",
                               rule_orbit_name(a.rule, k, c.event != Event::creation, c.orbit)));
   return out;
 }

@@ -207,8 +207,7 @@ TEST(WorkedExamples, JerboaSewAndUnsew) {
     const KindEvents k = static_events(view, parse_orbit_kind(kind, op.rule.model()));
     std::vector<std::string> out;
     for (const auto& c : k.claims)
-      out.push_back(
-          fmt::format("{} {} {}", event_name(c.event), certainty_name(c.certainty), rule_orbit_name(view, k, c.event != Event::creation, c.orbit)));
+      out.push_back(fmt::format("{} {} {}", name_of(c.event), name_of(c.certainty), rule_orbit_name(view, k, c.event != Event::creation, c.orbit)));
     return out;
   };
   EXPECT_THAT(claims("UnSewA2", "<0,2>"), ElementsAre("split certain L<0,2>(n0,n1)"));

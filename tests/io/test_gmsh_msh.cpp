@@ -88,7 +88,7 @@ TEST(GmshMsh, CellsTakeTheirFormatsHandedness) {
         }
         const double det = (a[1] * b[2] - a[2] * b[1]) * d[0] + (a[2] * b[0] - a[0] * b[2]) * d[1] + (a[0] * b[1] - a[1] * b[0]) * d[2];
         const bool vtk_prism = c == CornerConvention::vtk && cells.kind[k] == CellKind::prism;
-        EXPECT_EQ(det > 0, !vtk_prism) << cell_name(cells.kind[k]);
+        EXPECT_EQ(det > 0, !vtk_prism) << name_of(cells.kind[k]);
       }
     }
 }

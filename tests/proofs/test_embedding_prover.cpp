@@ -86,7 +86,7 @@ TEST(ProveEmbeddings, FalseAlarmsOfTheCatalogHaveNoHost) {
     for (Reading r : {Reading::uninterpreted, Reading::arithmetic}) {
       const auto& a = answer(p, embedding, r);
       EXPECT_FALSE(a.static_failures.empty()) << name;
-      EXPECT_EQ(a.status, EmbeddingAnswer::Status::none) << name << " " << reading_name(r) << ": " << a.why;
+      EXPECT_EQ(a.status, EmbeddingAnswer::Status::none) << name << " " << name_of(r) << ": " << a.why;
       EXPECT_NE(a.note.find("false alarm"), std::string::npos) << a.note;
     }
   }
@@ -218,8 +218,7 @@ TEST(ProveEmbeddings, RandomRulesMatchBruteForceUpToK) {
       ASSERT_NE(a.status, EmbeddingAnswer::Status::unknown) << a.why;
       nones += a.status == EmbeddingAnswer::Status::none;
       if (found > 0) {
-        EXPECT_EQ(a.status, EmbeddingAnswer::Status::counterexample)
-            << "rule " << k << " (" << reading_name(r) << "): brute force breaks at " << found;
+        EXPECT_EQ(a.status, EmbeddingAnswer::Status::counterexample) << "rule " << k << " (" << name_of(r) << "): brute force breaks at " << found;
         if (a.status == EmbeddingAnswer::Status::counterexample) {
           EXPECT_LE(a.darts, found) << k;
         }

@@ -209,8 +209,8 @@ TEST(ProveSmallModelBound, Theorems1And2AgreeWithBruteForcePastTheBound) {
     if (!hs.matched) continue;
     ++compared;
     violated += hs.host.has_value();
-    EXPECT_EQ(a.status == Status::counterexample, hs.host.has_value()) << c.name() << " solver " << status_name(a.status) << " at bound " << a.bound
-                                                                       << "\nL: " << text(rule.left()) << "\nR: " << text(rule.right());
+    EXPECT_EQ(a.status == Status::counterexample, hs.host.has_value())
+        << c.name() << " solver " << name_of(a.status) << " at bound " << a.bound << "\nL: " << text(rule.left()) << "\nR: " << text(rule.right());
     if (a.status == Status::none) {
       EXPECT_EQ(a.darts, a.bound);
       EXPECT_TRUE(a.proved_for_all());
