@@ -31,15 +31,10 @@ import sys
 import meshio
 import numpy as np
 
+from script_checks import check, finish
+
 dartcheck, repo, work = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(work, exist_ok=True)
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def run(*args):
@@ -133,5 +128,4 @@ for args, message in ((["cube", "--query", "cube"], "is not one"), ([mesh, "--he
     r = run("query", *args, "-o", out)
     check(r.returncode == 2 and message in r.stderr and not os.path.exists(out), f"query {args} -o {out}: exit {r.returncode}, {r.stderr.strip()}")
 
-print(f"{len(failures)} failures")
-sys.exit(1 if failures else 0)
+finish()

@@ -20,15 +20,10 @@ import re
 import subprocess
 import sys
 
+from script_checks import check, finish
+
 dartcheck, work = sys.argv[1], sys.argv[2]
 os.makedirs(work, exist_ok=True)
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def draw(shape, ext, *extra):
@@ -53,5 +48,4 @@ for shape, darts, extra, bound in (("cube", 48, [], 1500), ("grid:10x10", 800, [
         closest = min(math.dist(p[i], p[j]) for i in range(len(p)) for j in range(i + 1, len(p)))
         check(closest >= 0.75, f"{shape}: two darts {closest:.3f} inch apart, nodes overlap")
 check(pins(draw("polygon:4", "dot")) == [], "polygon:4 (8 darts) is pinned; small maps are dot's")
-print(f"{len(failures)} failures")
-sys.exit(1 if failures else 0)
+finish()

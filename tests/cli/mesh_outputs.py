@@ -33,15 +33,10 @@ import sys
 import meshio
 import numpy as np
 
+from script_checks import check, finish
+
 dartcheck, work = sys.argv[1], sys.argv[2]
 os.makedirs(work, exist_ok=True)
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def run(*args, **kw):
@@ -154,5 +149,4 @@ column = len(" ".join(fields[:-1])) + 2
 check(r.returncode == 2 and f"broken.msh:{last + 1}:{column}: error: node tag 999999 is not in $Nodes" in r.stderr,
       f"broken .msh: exit {r.returncode}, {r.stderr.strip()}")
 
-print(f"{len(failures)} failures; {tets_in} tetrahedra from gmsh, recombined into {counts}, read back by meshio and gmsh")
-sys.exit(1 if failures else 0)
+finish(f"{tets_in} tetrahedra from gmsh, recombined into {counts}, read back by meshio and gmsh")

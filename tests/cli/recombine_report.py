@@ -23,16 +23,11 @@ import xml.etree.ElementTree as ET
 import meshio
 import numpy as np
 
+from script_checks import check, finish
+
 dartcheck, repo, work = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(work, exist_ok=True)
-failures = []
 SVG = "{http://www.w3.org/2000/svg}"
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
 
 
 def bin_of(q):
@@ -73,5 +68,4 @@ for name, mesh, extra in (("box", "tests/data/gmsh-box-41.msh", ["--cells", "hex
 
 r = subprocess.run([dartcheck, "recombine", "tests/data/cube-5-tets.mesh", "--report", "/proc/dartcheck-report"], capture_output=True, text=True, cwd=repo)
 check(r.returncode == 4 and "/proc/dartcheck-report" in r.stderr and "mesh " not in r.stdout, f"unwritable --report: exit {r.returncode}, {r.stderr}")
-print(f"{len(failures)} failures")
-sys.exit(1 if failures else 0)
+finish()
