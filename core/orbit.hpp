@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstdint>
-#include <ranges>
 #include <span>
 #include <vector>
 
@@ -84,8 +83,25 @@ void for_each_class(std::size_t size, const Candidates& candidates, Walk&& walk,
   }
 }
 
-/// The darts 0..n-1, as for_each_class's candidates.
-inline auto all_darts(std::size_t n) { return std::views::iota(Dart{0}, static_cast<Dart>(n)); }
+/// The integers [0, n) as a range (for_each_class's candidates). Not
+/// std::views::iota: clang 14, which builds the fuzz targets, cannot
+/// compile libstdc++ 12's <ranges>.
+template <class Index>
+struct IndexRange {
+  struct iterator {
+    Index i;
+    Index operator*() const { return i; }
+    iterator& operator++() {
+      ++i;
+      return *this;
+    }
+    bool operator!=(const iterator& o) const { return i != o.i; }
+  };
+  Index n;
+  iterator begin() const { return {Index{0}}; }
+  iterator end() const { return {n}; }
+};
+inline IndexRange<Dart> all_darts(std::size_t n) { return {static_cast<Dart>(n)}; }
 
 /// Every orbit of `generators` once, from its smallest dart, in increasing
 /// order: `visit(d, orbit)` with the orbit's darts in `walker`'s BFS order

@@ -210,7 +210,7 @@ void each_values(std::vector<Value>& values, std::span<const Dart> orbit, bool p
       for (Dart z : walker.orbit(orbit[k], sub)) members.push_back(at.at(z));
       return members;
     };
-    for_each_class(orbit.size(), std::views::iota(std::size_t{0}, orbit.size()), walk, [&](std::size_t k, const std::vector<std::size_t>& same) {
+    for_each_class(orbit.size(), IndexRange<std::size_t>{orbit.size()}, walk, [&](std::size_t k, const std::vector<std::size_t>& same) {
       for (std::size_t j : same)
         if (!(values[j] == values[k]))
           throw EvaluationError(
