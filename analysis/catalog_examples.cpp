@@ -22,7 +22,7 @@ const Map& built_map(const Catalog& catalog, const std::vector<Map>& built, cons
 
 ExampleOutcome run_example(const Catalog& catalog, const std::vector<Map>& built, const CatalogRule& r, const Example& e) {
   Map host = built_map(catalog, built, e.map);
-  const auto result = dartcheck::apply(r, host, e.hooks);
+  const auto result = Applier(r).apply(host, e.hooks);
   if (result.refusal != Refusal::none) return {std::string(name_of(result.refusal)), result.why};
   const auto report = check_map(host);
   if (!report.valid())

@@ -12,7 +12,7 @@
 #include "checkers/host_search.hpp"
 #include "checkers/map_validity.hpp"
 #include "rewriting/application.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/term_eval.hpp"
 #include "generators/random_embedding.hpp"
@@ -29,7 +29,7 @@ using Clock = std::chrono::steady_clock;
 // or nothing when L does not match there.
 std::vector<std::vector<Dart>> match_darts(const Operation& entry, const Map& g, std::span<const Dart> hooks) {
   auto m = Applier(entry).match(g, hooks);
-  return m.ok() ? std::move(*m.value) : std::vector<std::vector<Dart>>{};
+  return m.ok() ? std::move(m.value->match) : std::vector<std::vector<Dart>>{};
 }
 
 // Gives the host orbits of L's matched darts the values of L's terms
@@ -145,7 +145,7 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
       EmbeddedMap h = g;
       plant(entry, h, hooks, t % 2 == 0);
       const EmbeddedMap planted = h;
-      auto d = apply_embedded(entry.rule, entry.words, terms, h, hooks, false);
+      auto d = applier.apply(h, hooks, false);
       if (!d.ok()) {
         ++out.refusals[std::string(name_of(d.refusal))];
         continue;
@@ -171,9 +171,9 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
         if (const auto m = match_darts(entry, planted.map, hooks); !m.empty())
           for (NodeId v = 0; v < entry.rule.left().node_count(); ++v) cx.match.emplace_back(entry.rule.left().name(v), m[v][0]);
       EmbeddedMap again = planted;
-      if (const auto r = apply_embedded(entry.rule, entry.words, terms, again, hooks, true); r.ok())
-        for (NodeId y = 0; y < entry.rule.right().node_count() && y < r.value->comatch.size(); ++y)
-          for (Dart dart : r.value->comatch[y]) cx.comatch.emplace_back(entry.rule.right().name(y), dart);
+      if (const auto r = Applier(entry).apply(again, hooks, true); r.ok())
+        for (NodeId y = 0; y < entry.rule.right().node_count() && y < r.value->topology.comatch.size(); ++y)
+          for (Dart dart : r.value->topology.comatch[y]) cx.comatch.emplace_back(entry.rule.right().name(y), dart);
       out.counterexample = std::move(cx);
       break;
     }

@@ -1,6 +1,6 @@
 // Differential testing of an embedded rule or rule scheme (003): random
 // valid maps with random values per orbit (generators/random_embedding),
-// application by core/embedded_application, then the result checked for
+// application by the Applier (rewriting/application.hpp), then the result checked for
 // topological validity and embedding consistency (every dart labeled, one
 // value per orbit, Def. 6). Set against the static verdict (topological
 // conditions plus Theorem 2 / Theorem 4): a rule that passes them and

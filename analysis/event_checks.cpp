@@ -14,7 +14,7 @@ EventOracle::EventOracle(const Operation& op) : op_(op) {
 std::vector<std::string> EventOracle::contradictions(const Map& g, std::span<const Dart> hooks, Map& h) const {
   if (!view_) return {};
   h = g;
-  auto traced = dartcheck::apply(op_, h, hooks);
+  auto traced = Applier(op_).apply(h, hooks);
   if (!traced.ok()) return {};
   std::vector<std::string> out;
   for (const auto& k : kinds_) {

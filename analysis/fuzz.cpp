@@ -15,7 +15,6 @@
 
 #include "checkers/host_search.hpp"
 #include "checkers/map_validity.hpp"
-#include "rewriting/derivation.hpp"
 #include "rewriting/application.hpp"
 #include "generators/random_maps.hpp"
 

@@ -47,7 +47,7 @@ PotentialEvents decide_potential_events(const Operation& op, std::size_t max_dar
   Map h(op.rule.model());
   const RootedHosts searched = for_each_rooted_host(op, max_darts, [&](const Map& g, std::span<const Dart> hooks) {
     h = g;
-    auto t = dartcheck::apply(op, h, hooks);
+    auto t = Applier(op).apply(h, hooks);
     if (!t.ok()) return !(stop && stop());
     ++out.applications;
     for (std::size_t a = 0; a < asked.size(); ++a) {

@@ -40,7 +40,7 @@ std::vector<OrbitKind> requested_orbit_kinds(const std::vector<std::string>& tex
 EventsApplication apply_for_events(const CatalogRule& rule, Map g, const std::vector<Dart>& hooks, const std::string& map_name) {
   require_valid_map(g, "--map " + map_name, "events are defined on maps (004)");
   EventsApplication a{describe_target(map_name, g), hooks, {}, {}, g, std::move(g), {}, {}};
-  auto traced = dartcheck::apply(rule, a.after, hooks);
+  auto traced = Applier(rule).apply(a.after, hooks);
   if (!traced.ok()) {
     a.refusal = name_of(traced.refusal);
     a.why = traced.why;

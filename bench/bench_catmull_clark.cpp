@@ -7,7 +7,7 @@
 //     midpoints, catmull-clark subdivides and places every point; with
 //     every instance evaluated (the dynamic check) and with one evaluation
 //     per orbit (allowed: both rules pass (A)); and the topology alone
-//     (apply_scheme of catmull-clark, no terms), the floor of the rows;
+//     (the Applier on the map, catmull-clark, no terms), the floor of the rows;
 //   - CGAL: Subdivision_method_3::CatmullClark_subdivision on a
 //     Surface_mesh (PQQ refinement with CatmullClark_mask_3);
 //   - OpenMesh: Subdivider::Uniform::CatmullClarkT on a PolyMesh with
@@ -46,8 +46,7 @@
 #include "generators/mesh_map.hpp"
 #include "io/catalog.hpp"
 #include "io/mesh_io.hpp"
-#include "rewriting/embedded_application.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 
 #include DARTCHECK_COMPILED_SUBDIVISION
 
@@ -188,12 +187,12 @@ Row run_dartcheck(const std::string& off, int runs, std::size_t quads, dartcheck
     // One rewriter per rule, each gone (with the tables it keeps for
     // further applications) before the next rule runs.
     {
-      EmbeddedRewriter first(points.rule, points.words, *points.terms, g, evaluation);
-      for (Dart h : hooks) ok &= first.apply(std::span(&h, 1), false).ok();
+      Applier first(points, {evaluation});
+      for (Dart h : hooks) ok &= first.apply(g, std::span(&h, 1), false).ok();
     }
     {
-      EmbeddedRewriter second(cc.rule, cc.words, *cc.terms, g, evaluation);
-      for (Dart h : hooks) ok &= second.apply(std::span(&h, 1), false).ok();
+      Applier second(cc, {evaluation});
+      for (Dart h : hooks) ok &= second.apply(g, std::span(&h, 1), false).ok();
     }
     ms = since(t0);
     out = g.map.size();
@@ -242,7 +241,7 @@ Row run_topology(const std::string& off, int runs, std::size_t quads) {
     bool ok = true;
     const auto t0 = std::chrono::steady_clock::now();
     {
-      SchemeRewriter rewriter(cc.rule, cc.words);
+      Applier rewriter(cc);
       for (Dart h : hooks) ok &= rewriter.apply(g, std::span(&h, 1)).ok();
     }
     ms = since(t0);
@@ -348,7 +347,7 @@ int main(int argc, char** argv) {
        [&] { return run_dartcheck(off, runs, sides, Evaluation::every_instance, ref, tol); }},
       {"dartcheck catmull-clark-points + catmull-clark, one evaluation per orbit", "darts",
        [&] { return run_dartcheck(off, runs, sides, Evaluation::one_per_orbit, ref, tol); }},
-      {"dartcheck catmull-clark, topology only (SchemeRewriter, no terms)", "darts", [&] { return run_topology(off, runs, sides); }},
+      {"dartcheck catmull-clark, topology only (Applier on the map, no terms)", "darts", [&] { return run_topology(off, runs, sides); }},
       {"dartcheck compiled catmull-clark-points + catmull-clark", "darts", [&] { return run_compiled(off, runs, sides, ref, tol, false); }},
       {"dartcheck compiled, everywhere (positions are darts)", "darts", [&] { return run_compiled(off, runs, sides, ref, tol, true); }},
       {"OpenMesh CatmullClarkT, PolyMesh with double points", "halfedges", [&] { return run_openmesh(off, runs, sides, ref, tol); }},

@@ -40,7 +40,7 @@ void scenario(const char* name, const Operation& op, const Map& g, std::vector<D
   const EventRule view = *event_rule(op).rule;
   Map h = g;
   const auto start = Clock::now();
-  auto traced = dartcheck::apply(op, h, hooks);
+  auto traced = Applier(op).apply(h, hooks);
   const double apply_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   if (!traced.ok()) {
     fmt::print("{}: not applied: {}\n", name, traced.why);
@@ -80,12 +80,12 @@ int main(int argc, char** argv) {
   for (int k = 0; k + 1 < steps; ++k) {
     Map next = g;
     const Dart last = static_cast<Dart>(g.size() - 1);
-    if (!dartcheck::apply(quad, next, std::vector<Dart>{last}).ok()) return 1;
+    if (!Applier(quad).apply(next, std::vector<Dart>{last}).ok()) return 1;
     g = std::move(next);
   }
   scenario("split", quad, g, {static_cast<Dart>(g.size() - 1)}, runs);
   Map big = g;
-  dartcheck::apply(quad, big, std::vector<Dart>{static_cast<Dart>(g.size() - 1)});
+  Applier(quad).apply(big, std::vector<Dart>{static_cast<Dart>(g.size() - 1)});
   scenario("creation", *ev.find_rule("triangulate-face"), big, {static_cast<Dart>(big.size() - 1)}, runs);
   const int side = quick ? 256 : 1024;
   const Map grid = build_shape(Model::gmap(2), {"grid", {side, side}});

@@ -1,7 +1,7 @@
 // Fuzzing throughput (issue 4): applications plus full validity checks per
 // second, per core, on random valid maps of 50-200 darts.
 //  - ApplyAndCheck: the inner step of `dartcheck fuzz` alone: copy the
-//    host, apply the rule at one dart (a scheme by one SchemeRewriter
+//    host, apply the rule at one dart (by one Applier
 //    kept across applications, as the engine does), check every dart of H. The target
 //    is 100,000 per second for quad subdivision on 2-G-maps of ~100 darts.
 //  - FuzzRule: the whole engine (random recipes, every dart as hook,
@@ -13,8 +13,7 @@
 #include "checkers/map_validity.hpp"
 #include "analysis/fuzz.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/derivation.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 #include "generators/random_maps.hpp"
 
 using namespace dartcheck;
@@ -42,23 +41,18 @@ void ApplyAndCheck(benchmark::State& state, const char* rule_name) {
   const auto lo = static_cast<std::size_t>(state.range(0)), hi = lo + lo / 5;
   const auto maps = hosts(r.rule.model(), lo, hi);
   Map scratch = maps[0];
-  // As the fuzz engine does: one SchemeRewriter per rule, its tables
-  // reused by every application.
-  SchemeRewriter rewriter(r.rule, r.words);
+  // As the fuzz engine does: one Applier per rule, its tables reused by
+  // every application.
+  Applier rewriter(r);
   std::size_t k = 0, applied = 0, darts = 0;
   for (auto _ : state) {
     const Map& g = maps[k % maps.size()];
     const Dart hook = static_cast<Dart>((k / maps.size()) % g.size());
     ++k;
     scratch = g;
-    bool ok;
-    if (r.words.scheme) {
-      auto d = rewriter.apply(scratch, std::span(&hook, 1));
-      ok = d.ok();
-      if (ok) rewriter.recycle(std::move(*d.value));
-    } else {
-      ok = apply_rule(r.rule, scratch, std::span(&hook, 1)).ok();
-    }
+    auto d = rewriter.apply(scratch, std::span(&hook, 1));
+    const bool ok = d.ok();
+    if (ok) rewriter.recycle(std::move(*d.value));
     if (ok) {
       ++applied;
       darts += scratch.size();

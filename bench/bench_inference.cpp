@@ -29,7 +29,7 @@
 #include "inference/infer.hpp"
 #include "bench/median.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 #include "../tests/inference/polycube.hpp"
 
 using namespace dartcheck;
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     Map g = build_surface(m, torus(n));
     Map h = g;
     const Dart hook[] = {0};
-    if (!apply_scheme(quad.rule, quad.words, h, hook).ok()) return 1;
+    if (!Applier(quad).apply(h, hook).ok()) return 1;
     KappaSpec k;
     k.identity = true;
     const auto graph = make_kappa_graph(g, h, k);

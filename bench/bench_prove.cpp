@@ -15,7 +15,6 @@
 
 #include "io/catalog.hpp"
 #include "proofs/rule_prover.hpp"
-#include "proofs/scheme_encoding.hpp"
 
 using namespace dartcheck;
 using namespace dartcheck::proofs;

@@ -3,7 +3,7 @@
 // against what a user would pick instead, on the same OFF input in one
 // program:
 //   - dartcheck: the seed catalog's quad-subdivision-gmap and -omap schemes
-//     (apply_scheme at dart 0), topology only, interpreted and compiled by
+//     (an Applier at dart 0), topology only, interpreted and compiled by
 //     `dartcheck compile` (issue 41; the header is generated at build time);
 //   - CGAL: Linear_cell_complex_for_combinatorial_map<2,3>, the topological
 //     part of the libcgal-demo's subdivide_lcc_pqq (insert_barycenter_in_cell
@@ -40,7 +40,7 @@
 #include "checkers/map_validity.hpp"
 #include "io/catalog.hpp"
 #include "core/orbit.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 #include "generators/mesh_map.hpp"
 #include "bench/peer_bench.hpp"
 #include DARTCHECK_COMPILED_SEED
@@ -74,7 +74,7 @@ Result run_dartcheck(const std::string& off, const dartcheck::Model& model, cons
     Map g = input;
     const Dart hook = 0;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto r = apply_scheme(s.rule, s.words, g, std::span(&hook, 1));
+    const auto r = Applier(s).apply(g, std::span(&hook, 1));
     ms = since(t0);
     out = g.size();
     return r.ok() && check_map(g).valid();
@@ -82,7 +82,7 @@ Result run_dartcheck(const std::string& off, const dartcheck::Model& model, cons
 }
 
 // The same scheme through its compiled function (a fresh Workspace per
-// run, as the interpreter's apply_scheme builds its tables per call).
+// run, as a fresh Applier builds its tables per call).
 template <class Compiled>
 Result run_compiled(const std::string& off, const dartcheck::Model& model, Compiled apply, int runs) {
   using namespace dartcheck;

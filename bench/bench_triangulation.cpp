@@ -4,7 +4,7 @@
 //   - dartcheck, the embedding catalog's schemes with pos terms
 //     (n2 labeled center(pos<0,1>(n0)), extended instantiation):
 //       per face: triangulation-jerboa-pos applied at one dart of every
-//         face by one EmbeddedRewriter (match, evaluation, non-overlap,
+//         face by one Applier (match, evaluation, non-overlap,
 //         rewrite, propagation, per application);
 //       all faces: triangulation-all-faces-pos applied once (hook orbit
 //         <0,1,2>, as Jerboa applies a scheme to a whole orbit);
@@ -45,9 +45,8 @@
 #include "core/dart_table.hpp"
 #include "io/catalog.hpp"
 #include "rewriting/algebra.hpp"
-#include "rewriting/embedded_application.hpp"
 #include "core/orbit.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 #include "io/mesh_io.hpp"
 #include "generators/mesh_map.hpp"
 
@@ -99,8 +98,8 @@ Result run_dartcheck(const std::string& off, int runs, std::size_t triangles, Sc
     bool ok = true;
     const auto t0 = std::chrono::steady_clock::now();
     {
-      EmbeddedRewriter rewriter(s.rule, s.words, *s.terms, g, evaluation);
-      for (Dart h : hooks) ok &= rewriter.apply(std::span(&h, 1), false).ok();
+      Applier rewriter(s, {evaluation});
+      for (Dart h : hooks) ok &= rewriter.apply(g, std::span(&h, 1), false).ok();
     }
     ms = since(t0);
     out = g.map.size();
@@ -152,7 +151,7 @@ Result run_topology(const std::string& off, int runs, std::size_t triangles) {
     Map g = input;
     const auto t0 = std::chrono::steady_clock::now();
     bool ok = true;
-    for (Dart h : hooks) ok &= apply_scheme(s.rule, s.words, g, std::span(&h, 1)).ok();
+    for (Dart h : hooks) ok &= Applier(s).apply(g, std::span(&h, 1)).ok();
     ms = since(t0);
     out = g.size();
     return ok && count_cells(g).cells[2] == triangles && check_map(g).valid();
@@ -539,7 +538,7 @@ int main(int argc, char** argv) {
        [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::every_instance); }},
       {"dartcheck triangulation-all-faces-pos, once, one evaluation per orbit",
        [&] { return run_dartcheck(off, runs, sides, Scope::all_faces, Evaluation::one_per_orbit); }},
-      {"dartcheck triangulation-all-faces-pos, topology only (apply_scheme, no terms)", [&] { return run_topology(off, runs, sides); }},
+      {"dartcheck triangulation-all-faces-pos, topology only (Applier on the map, no terms)", [&] { return run_topology(off, runs, sides); }},
       {"dartcheck compiled triangulation-jerboa-pos, per face", [&] { return run_compiled(off, runs, sides, Scope::per_face); }},
       {"dartcheck compiled triangulation-all-faces-pos, once", [&] { return run_compiled(off, runs, sides, Scope::all_faces); }},
       {"dartcheck compiled triangulation-all-faces-pos, everywhere (positions are darts)",

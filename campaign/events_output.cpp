@@ -8,7 +8,7 @@
 #include "core/input_error.hpp"
 #include "core/terminal.hpp"
 #include "core/wording.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/detail/shard_stream.hpp"
 #include "reports/events_report.hpp"
 #include "reports/json_document.hpp"
 
@@ -20,9 +20,10 @@ struct EventsOutput::Rules {
   Json array = Json::array();
 };
 
-EventsOutput::EventsOutput(std::string format, std::string catalog, const std::string& rule, const Shard& shard, const Parameters& parameters)
-    : format_(std::move(format)), catalog_(std::move(catalog)), rules_(std::make_unique<Rules>()) {
-  if (format_ == "jsonl") lines_.emplace(make_header("events", catalog_, "", rule, shard, parameters));
+EventsOutput::EventsOutput(reports::OutputFormat format, std::string catalog, const std::string& rule, const Shard& shard,
+                           const Parameters& parameters)
+    : format_(format), catalog_(std::move(catalog)), rules_(std::make_unique<Rules>()) {
+  if (format_ == reports::OutputFormat::jsonl) lines_.emplace(make_header("events", catalog_, "", rule, shard, parameters));
 }
 
 EventsOutput::~EventsOutput() = default;
@@ -30,7 +31,7 @@ EventsOutput::~EventsOutput() = default;
 void EventsOutput::analysed(const analysis::RuleEvents& r) {
   const Json json = reports::events_json(r);
   rule(*r.rule, &json, reports::events_text(r));
-  if (format_ == "text" && terminal().quiet) {
+  if (format_ == reports::OutputFormat::text && terminal().quiet) {
     // -q: what makes the exit status non-zero, one diagnostic line each.
     const std::string where = fmt::format("{}: error: {}", r.rule->location.str(), printable(r.rule->rule.name()));
     if (const auto& a = r.application; a && !a->applied())
@@ -57,9 +58,9 @@ void EventsOutput::skipped(const CatalogRule& rule, const std::string& why) {
 void EventsOutput::rule(const CatalogRule& rule, const Json* json, const std::string& text) {
   if (lines_)
     lines_->fragment(rule.rule.name(), json ? *json : Json(nullptr), text);
-  else if (format_ == "json" && json)
+  else if (format_ == reports::OutputFormat::json && json)
     rules_->array.push_back(*json);
-  else if (format_ != "json" && !terminal().quiet) {
+  else if (format_ != reports::OutputFormat::json && !terminal().quiet) {
     fmt::print("{}", text);
     std::fflush(stdout);  // a run ended by a signal inside the next rule keeps this one
   }
@@ -69,9 +70,9 @@ void EventsOutput::finish(int status, std::size_t analysed, bool interrupted) {
   if (lines_) {
     lines_->summary(
         Json{{"status", status}, {"analysed", analysed}, {"not_analysed", not_analysed_}, {"skipped", skipped_}, {"interrupted", interrupted}});
-  } else if (format_ == "text" && !terminal().quiet) {
+  } else if (format_ == reports::OutputFormat::text && !terminal().quiet) {
     fmt::print("{}", events_counts_line(analysed, not_analysed_, skipped_));
-  } else if (format_ == "json") {
+  } else if (format_ == reports::OutputFormat::json) {
     Json doc = reports::json_document("events");
     doc["catalog"] = catalog_;
     doc["rules"] = std::move(rules_->array);

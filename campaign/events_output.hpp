@@ -12,13 +12,14 @@
 #include "campaign/run_parameters.hpp"
 #include "campaign/shard_writer.hpp"
 #include "io/catalog.hpp"
+#include "reports/output_format.hpp"
 
 namespace dartcheck::campaign {
 
 class EventsOutput {
  public:
   /// `parameters`: the options that change the events (--orbit, --map...).
-  EventsOutput(std::string format, std::string catalog, const std::string& rule, const Shard& shard, const Parameters& parameters);
+  EventsOutput(reports::OutputFormat format, std::string catalog, const std::string& rule, const Shard& shard, const Parameters& parameters);
   ~EventsOutput();
 
   /// A rule whose events were found.
@@ -34,7 +35,8 @@ class EventsOutput {
  private:
   struct Rules;  // the rules' JSON objects, for the json document
   void rule(const CatalogRule& rule, const reports::Json* json, const std::string& text);
-  std::string format_, catalog_;
+  reports::OutputFormat format_;
+  std::string catalog_;
   std::optional<ShardWriter> lines_;
   std::unique_ptr<Rules> rules_;
   std::size_t not_analysed_ = 0, skipped_ = 0;

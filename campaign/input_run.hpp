@@ -8,11 +8,13 @@
 #include <string>
 
 #include "campaign/run_parameters.hpp"
+#include "reports/output_format.hpp"
 #include "reports/querymodify_report.hpp"
 
 namespace dartcheck::campaign {
 
-void print_input_run(const std::string& format, const std::string& mesh, const Parameters& parameters, const reports::RecombineRun& run, int status);
-void print_input_run(const std::string& format, const std::string& map, const Parameters& parameters, const reports::QueryRun& run, int status);
+void print_input_run(reports::OutputFormat format, const std::string& mesh, const Parameters& parameters, const reports::RecombineRun& run,
+                     int status);
+void print_input_run(reports::OutputFormat format, const std::string& map, const Parameters& parameters, const reports::QueryRun& run, int status);
 
 }  // namespace dartcheck::campaign

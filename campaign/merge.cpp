@@ -16,8 +16,8 @@
 #include "analysis/interrupt.hpp"
 #include "campaign/events_output.hpp"
 #include "campaign/merge.hpp"
-#include "campaign/result_record.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/detail/result_record.hpp"
+#include "campaign/detail/shard_stream.hpp"
 #include "core/number_text.hpp"
 #include "core/wording.hpp"
 #include "reports/run_output.hpp"
@@ -116,9 +116,9 @@ int worse(int a, int b) { return a == soundness_bug || b == soundness_bug ? soun
 // recombine and query on many inputs, one run each: their documents in
 // one JSON document, or their texts one after the other, in the order of
 // the inputs' paths; the worst exit status (3, then 1, then 0).
-int merge_inputs(const std::vector<ShardFile>& files, const std::string& format) {
+int merge_inputs(const std::vector<ShardFile>& files, OutputFormat format) {
   const std::string& command = files.front().header.command;
-  if (format != "text" && format != "json") throw UsageError(fmt::format("--format: {} runs merge as text or json", command));
+  if (format != OutputFormat::text && format != OutputFormat::json) throw UsageError(fmt::format("--format: {} runs merge as text or json", command));
   int status = ok;
   Json runs = Json::array();
   std::string text;
@@ -131,7 +131,7 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
     text += f.input["text"].get<std::string>();
   }
   fmt::print(stderr, "dartcheck merge: {} runs of {}\n", files.size(), command);
-  if (format == "json") {
+  if (format == OutputFormat::json) {
     Json doc = reports::json_document(command + "-campaign");
     doc["inputs"] = files.size();
     doc["runs"] = std::move(runs);
@@ -149,8 +149,8 @@ int merge_inputs(const std::vector<ShardFile>& files, const std::string& format)
 
 // events: every shard's rule fragments in catalog order, each from the
 // shard its name belongs to; the worst exit status.
-int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, const std::string& format) {
-  if (format != "text" && format != "json") throw UsageError("--format: events shards merge as text or json");
+int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, OutputFormat format) {
+  if (format != OutputFormat::text && format != OutputFormat::json) throw UsageError("--format: events shards merge as text or json");
   const auto& h = shards.front().header;
   std::map<std::string, std::size_t> order;
   for (std::size_t k = 0; k < catalog.rules.size(); ++k) order.emplace(reports::replace_invalid_utf8(catalog.rules[k].rule.name()), k);
@@ -170,7 +170,7 @@ int merge_events(const Catalog& catalog, const std::vector<ShardFile>& shards, c
     }
   }
   fmt::print(stderr, "dartcheck merge: {} shards of events {}, {} rules\n", shards.size(), h.catalog, fragments.size());
-  if (format == "json") {
+  if (format == OutputFormat::json) {
     Json doc = reports::json_document("events");
     doc["catalog"] = h.catalog;
     doc["rules"] = Json::array();
@@ -207,9 +207,9 @@ int merge_shards(const MergeRequest& o) {
   files = check_complete(std::move(files), o.incomplete);
   const RunHeader& h = files.front().header;
   if (per_input_command(h.command)) return merge_inputs(files, o.format);
-  if (o.format == "html" && o.output.empty()) throw UsageError("--format html: give -o DIR for the page");
-  if (h.command == "report" && o.format == "text") throw UsageError("--format: a report merges as html, json, sarif or junit");
-  if (o.format == "html") ensure_directory(o.output);
+  if (o.format == OutputFormat::html && o.output.empty()) throw UsageError("--format html: give -o DIR for the page");
+  if (h.command == "report" && o.format == OutputFormat::text) throw UsageError("--format: a report merges as html, json, sarif or junit");
+  if (o.format == OutputFormat::html) ensure_directory(o.output);
 
   std::vector<std::string> baseline_mismatches;
   const Catalog catalog = merged_catalog(h, o.catalog, baseline_mismatches);
@@ -226,9 +226,9 @@ int merge_shards(const MergeRequest& o) {
   const double seconds = o.wall_seconds.value_or(shard_seconds);
   fmt::print(stderr, "dartcheck merge: {} of {} {}, {}\n", counted(files.size(), "shard"), h.command, h.catalog, counted(results.size(), "rule"));
 
-  if (o.format == "sarif" || o.format == "junit") {
+  if (o.format == OutputFormat::sarif || o.format == OutputFormat::junit) {
     print_ci_format(o.format, h.command, h.catalog, results, baseline_mismatches);
-  } else if (o.format == "html") {
+  } else if (o.format == OutputFormat::html) {
     ReportStages stages;
     stages.baseline = !h.baseline.empty();
     if (h.command == "report" || h.command == "fuzz") {

@@ -11,11 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "reports/output_format.hpp"
+
 namespace dartcheck::campaign {
 
 struct MergeRequest {
   std::vector<std::string> shards = {};  // files written by --format jsonl
-  std::string format = "text", output = {}, catalog = {}, engine = "dot";
+  reports::OutputFormat format = reports::OutputFormat::text;
+  std::string output = {}, catalog = {}, engine = "dot";
   bool explain = false;
   /// Merge what there is: interrupted or killed shards, missing shards and
   /// empty shard files; the result says how many rules are missing and the

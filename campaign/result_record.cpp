@@ -1,4 +1,4 @@
-#include "campaign/result_record.hpp"
+#include "campaign/detail/result_record.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

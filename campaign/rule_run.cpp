@@ -6,7 +6,7 @@
 #include "analysis/map_sources.hpp"
 #include "analysis/verdict_record.hpp"
 #include "core/input_error.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/detail/shard_stream.hpp"
 #include "reports/rule_result_json.hpp"
 #include "reports/run_output.hpp"
 

@@ -1,5 +1,5 @@
 #include "core/terminal.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/detail/shard_stream.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "campaign/input_run.hpp"
-#include "campaign/result_record.hpp"
+#include "campaign/detail/result_record.hpp"
 #include "core/input_error.hpp"
 #include "io/input_file.hpp"
 #include "reports/querymodify_report.hpp"
@@ -257,13 +257,13 @@ std::vector<ShardFile> check_complete(std::vector<ShardFile> files, bool incompl
 
 namespace {
 
-void print_input_run(const std::string& format, const std::string& command, const std::string& input, const Parameters& parameters, Json document,
+void print_input_run(reports::OutputFormat format, const std::string& command, const std::string& input, const Parameters& parameters, Json document,
                      const std::string& text, int status) {
-  if (format == "jsonl") {
+  if (format == reports::OutputFormat::jsonl) {
     ShardWriter lines(make_header(command, input, "", "", {}, parameters));
     lines.input(std::move(document), text);
     lines.summary(Json{{"status", status}});
-  } else if (format == "json") {
+  } else if (format == reports::OutputFormat::json) {
     fmt::print("{}\n", reports::json_text(std::move(document)));
   } else if (!terminal().quiet) {  // -q: the report is a summary; files and the exit status stay
     fmt::print("{}", text);
@@ -272,11 +272,12 @@ void print_input_run(const std::string& format, const std::string& command, cons
 
 }  // namespace
 
-void print_input_run(const std::string& format, const std::string& mesh, const Parameters& parameters, const reports::RecombineRun& run, int status) {
+void print_input_run(reports::OutputFormat format, const std::string& mesh, const Parameters& parameters, const reports::RecombineRun& run,
+                     int status) {
   print_input_run(format, "recombine", mesh, parameters, reports::recombine_document(run), reports::recombine_text(run), status);
 }
 
-void print_input_run(const std::string& format, const std::string& map, const Parameters& parameters, const reports::QueryRun& run, int status) {
+void print_input_run(reports::OutputFormat format, const std::string& map, const Parameters& parameters, const reports::QueryRun& run, int status) {
   print_input_run(format, "query", map, parameters, reports::query_document(run), reports::query_text(run), status);
 }
 

@@ -16,7 +16,7 @@
 //
 // Theorem 4 (extended instantiation) asks for A, C and the topological
 // conditions on the scheme, plus non-overlap of each match (Lemma 3),
-// which core/embedded_application checks at application time.
+// which the Applier (rewriting/application.hpp) checks at application time.
 //
 // For a topological rule scheme (002 Sec. 6, Jerboa-style or (W,D)) the
 // instantiated rule has one copy of each node per pattern dart, and a term

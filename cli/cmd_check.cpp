@@ -49,7 +49,7 @@ int check(const CheckOptions& o) {
   if (o.jobs > 1) {
     if (o.format == "jsonl" || !o.write_baseline.empty())
       throw UsageError("--jobs: not with --format jsonl or --write-baseline (run the shards, then merge)");
-    return campaign::run_jobs({o.jobs, o.shard, {.format = o.format, .explain = o.explain}, std::nullopt, std::nullopt});
+    return campaign::run_jobs({o.jobs, o.shard, {.format = reports::output_format(o.format), .explain = o.explain}, std::nullopt, std::nullopt});
   }
   const std::string not_written = fmt::format("not written: {} (interrupted: a baseline records every rule)", o.write_baseline);
   if (!o.write_baseline.empty()) say_on_early_interrupt(not_written);  // Ctrl-C while the catalog is read
@@ -72,7 +72,7 @@ int check(const CheckOptions& o) {
     fmt::print(stderr, "{}\n", not_written);
   else if (!o.write_baseline.empty())
     write_baseline_file(o.write_baseline, o.catalog, catalog, results);
-  if (!run.writes_lines()) print_check(o.format, o.catalog, catalog, results, run.baseline_mismatches(), o.explain);
+  if (!run.writes_lines()) print_check(reports::output_format(o.format), o.catalog, catalog, results, run.baseline_mismatches(), o.explain);
   // Writing a baseline records the present verdicts: not a failure.
   return o.write_baseline.empty() || interrupted() ? status : ok;
 }

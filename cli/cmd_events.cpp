@@ -55,7 +55,8 @@ int events_command(const EventsOptions& o) {
   }
   std::vector<std::string> hooks;
   for (Dart h : o.hooks) hooks.push_back(std::to_string(h));
-  campaign::EventsOutput out(o.format, o.catalog, o.rule, shard, {{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}});
+  campaign::EventsOutput out(reports::output_format(o.format), o.catalog, o.rule, shard,
+                             {{"orbits", o.orbits}, {"map", o.map}, {"hooks", hooks}, {"dynamic", o.dynamic}});
   int status = ok;
   std::size_t analysed = 0;
   analysis::catch_interrupts();  // Ctrl-C: the rules analysed so far are printed, exit 130

@@ -58,7 +58,10 @@ int fuzz(const FuzzCommand& c) {
   if (c.jobs > 1) {
     if (c.format == "jsonl") throw UsageError("--jobs: not with --format jsonl (run the shards, then merge)");
     // Every shard fuzzes with the same seed: drawn here unless given.
-    return campaign::run_jobs({c.jobs, c.shard, {.format = c.format}, c.seed ? std::nullopt : std::optional<std::uint64_t>(std::random_device{}()),
+    return campaign::run_jobs({c.jobs,
+                               c.shard,
+                               {.format = reports::output_format(c.format)},
+                               c.seed ? std::nullopt : std::optional<std::uint64_t>(std::random_device{}()),
                                c.time.empty() ? std::nullopt : std::optional(parse_duration(c.time, "--time"))});
   }
   // jsonl: one JSON object per rule on stdout as it finishes, then a summary.
@@ -91,7 +94,7 @@ int fuzz(const FuzzCommand& c) {
   const reports::FuzzRun fuzz_run{c.catalog,          o.seed,       run.seconds(), selected, interrupted(), run.baseline_mismatches(), std::nullopt,
                                   true,               reports::fuzz_search_options(c.runs, o.max_darts, o.event_checks, c.maps)};
   const int status = run.finish(results, selected, &fuzz_run);
-  if (!run.writes_lines()) print_fuzz(c.format, fuzz_run, results);
+  if (!run.writes_lines()) print_fuzz(reports::output_format(c.format), fuzz_run, results);
   return status;
 }
 

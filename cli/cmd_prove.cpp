@@ -34,7 +34,7 @@ using namespace analysis;  // the engines the commands call
 int prove(const ProveCommand& c) {
   if (c.jobs > 1) {
     if (c.format == "jsonl") throw UsageError("--jobs: not with --format jsonl (run the shards, then merge)");
-    return campaign::run_jobs({c.jobs, c.shard, {.format = c.format, .explain = c.explain}, std::nullopt, std::nullopt});
+    return campaign::run_jobs({c.jobs, c.shard, {.format = reports::output_format(c.format), .explain = c.explain}, std::nullopt, std::nullopt});
   }
   campaign::RuleRun run("prove", {c.catalog, c.rule, c.shard, c.baseline, c.format == "jsonl"});
   if (!c.out.empty()) ensure_directory(c.out);  // before the work, not after it
@@ -78,7 +78,7 @@ int prove(const ProveCommand& c) {
   if (stream)
     fmt::print("{}", reports::prove_totals_text(done, results));
   else if (!run.writes_lines())
-    print_prove(c.format, done, results);
+    print_prove(reports::output_format(c.format), done, results);
   return status;
 }
 

@@ -56,7 +56,7 @@ int query(const QueryOptions& o) {
   for (const auto& q : queries) run.names.push_back(q.name), run.query_darts.push_back(q.word.darts);
   const int status = found.all.distinct.empty() ? violation : ok;
   // jsonl: one run of a campaign over many maps (docs/scale.md), which merge gathers.
-  campaign::print_input_run(o.format, o.map,
+  campaign::print_input_run(reports::output_format(o.format), o.map,
                             {{"queries", o.queries},
                              {"hex", o.hex},
                              {"model", o.model},

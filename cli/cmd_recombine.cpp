@@ -74,9 +74,10 @@ int recombine(const RecombineOptions& o) {
   }
   const int status = run.sound() ? ok : soundness_bug;
   // jsonl: one run of a campaign over many meshes (docs/scale.md), which merge gathers.
-  campaign::print_input_run(o.format, o.mesh,
-                            {{"strategy", o.strategy}, {"search", run.search}, {"min_quality", o.min_quality}, {"conforming", o.conforming}, {"cells", o.cells}}, run,
-                            status);
+  campaign::print_input_run(
+      reports::output_format(o.format), o.mesh,
+      {{"strategy", o.strategy}, {"search", run.search}, {"min_quality", o.min_quality}, {"conforming", o.conforming}, {"cells", o.cells}}, run,
+      status);
   if (!o.report.empty()) {
     const std::filesystem::path dir(o.report);
     write_file((dir / "quality.svg").string(), reports::quality_histogram_svg(run.quality));

@@ -43,7 +43,7 @@ int report(const ReportOptions& o) {
     const bool seed = !o.fuzz.empty() && !o.seed;  // every shard fuzzes with the same seed
     return campaign::run_jobs({o.jobs,
                                o.shard,
-                               {.format = "html", .output = o.output, .engine = o.engine},
+                               {.format = reports::OutputFormat::html, .output = o.output, .engine = o.engine},
                                seed ? std::optional<std::uint64_t>(std::random_device{}()) : std::nullopt,
                                o.fuzz.empty() ? std::nullopt : std::optional(parse_duration(o.fuzz, "--fuzz"))});
   }

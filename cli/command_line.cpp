@@ -345,14 +345,14 @@ void add_report(CLI::App& app, Commands& commands) {
 void add_merge(CLI::App& app, Commands& commands) {
   auto o = std::make_shared<MergeOptions>();
   auto* m = app.add_subcommand("merge", "Merge the shards of one run (--shard K/N --format jsonl) into one result, in any output format");
-  m->add_option("shards", o->shards, "the shard files, one per shard, in any order")->required();
+  m->add_option("shards", o->request.shards, "the shard files, one per shard, in any order")->required();
   add_format(m, o->format, {"text", "json", "sarif", "junit", "html"}, "text, json, sarif, junit, or html (the report page, in -o DIR)");
-  m->add_option("-o,--output", o->output, "directory of the html page");
-  m->add_option("--catalog", o->catalog, "the catalog, where it is now (default: the path the shards name; it must be unchanged)");
-  m->add_flag("--explain", o->explain, "as check --explain and prove --explain");
-  m->add_flag("--incomplete", o->incomplete,
+  m->add_option("-o,--output", o->request.output, "directory of the html page");
+  m->add_option("--catalog", o->request.catalog, "the catalog, where it is now (default: the path the shards name; it must be unchanged)");
+  m->add_flag("--explain", o->request.explain, "as check --explain and prove --explain");
+  m->add_flag("--incomplete", o->request.incomplete,
               "also merge interrupted, killed, empty or missing shards: the result says how many rules it lacks, exit 130");
-  m->add_option("--engine", o->engine, "Graphviz layout engine of the html page")->capture_default_str();
+  m->add_option("--engine", o->request.engine, "Graphviz layout engine of the html page")->capture_default_str();
   commands.push_back({m, [o] { return merge(*o); }});
 }
 

@@ -11,6 +11,7 @@
 
 #include "analysis/exit_status.hpp"
 #include "campaign/merge.hpp"
+#include "reports/output_format.hpp"
 #include "reports/apply_output.hpp"
 #include "core/map.hpp"
 
@@ -189,8 +190,16 @@ struct ProveCommand {
 /// otherwise.
 int prove(const ProveCommand& c);
 
-/// `merge` is the campaign layer's (campaign/merge.hpp).
-using MergeOptions = campaign::MergeRequest;
-inline int merge(const MergeOptions& o) { return campaign::merge_shards(o); }
+/// `merge` is the campaign layer's (campaign/merge.hpp); --format is read
+/// as text and resolved here.
+struct MergeOptions {
+  campaign::MergeRequest request;
+  std::string format = "text";
+};
+inline int merge(const MergeOptions& o) {
+  campaign::MergeRequest r = o.request;
+  r.format = reports::output_format(o.format);
+  return campaign::merge_shards(r);
+}
 
 }  // namespace dartcheck::cli

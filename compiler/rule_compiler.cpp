@@ -11,7 +11,7 @@
 #include "compiler/comatch_text.hpp"
 #include "compiler/cpp_text.hpp"
 #include "compiler/term_compiler.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/pattern_graphs.hpp"
 
 namespace dartcheck::compiler {
 namespace {

@@ -11,7 +11,7 @@
 #include "compiler/comatch_text.hpp"
 #include "compiler/cpp_text.hpp"
 #include "core/disjoint_sets.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/term_facts.hpp"
 #include "rewriting/term_functions.hpp"
 
 namespace dartcheck::compiler {

@@ -1,6 +1,6 @@
 // The embedding part of a compiled rule (issue 41, 003 Def. 10-13): the
 // code around the topological rewrite that rule_compiler generates, doing
-// what rewriting/embedded_application.cpp's EmbeddedRewriter does with one
+// what rewriting/embedded_rewriter.cpp (the Applier on an embedded map) does with one
 // evaluation per orbit, in the same order and with the same refusals:
 //
 // - before the match, the embeddings the rule labels must be in the map;
@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "rewriting/operation.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/pattern_graphs.hpp"
 
 namespace dartcheck::compiler {
 

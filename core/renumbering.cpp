@@ -12,6 +12,14 @@ void Renumbering::map(Dart g, Dart h) {
 
 void Renumbering::deleted(Dart g) { g2h_.set(g, gone); }
 
+Renumbering Renumbering::compaction(std::size_t g_size, std::size_t h_size, std::span<const Dart> deleted,
+                                    std::span<const std::pair<Dart, Dart>> moved) {
+  Renumbering r(g_size, h_size, deleted.size() + moved.size());
+  for (Dart d : deleted) r.deleted(d);
+  for (auto [from, to] : moved) r.map(from, to);
+  return r;
+}
+
 void Renumbering::created(Dart h) { h2g_.set(h, gone); }
 
 Renumbering Renumbering::then(const Renumbering& next) const {

@@ -18,6 +18,12 @@ class Renumbering {
  public:
   /// `touched`: about how many darts will be set (a sizing hint).
   Renumbering(std::size_t g_size, std::size_t h_size, std::size_t touched);
+  /// The identity of an empty map (to be assigned).
+  Renumbering() : Renumbering(0, 0, 0) {}
+  /// A map made dense again after deleting `deleted` (its holes filled by
+  /// the darts `moved`, (old, new), as compact() reports them): every
+  /// other dart keeps its number.
+  static Renumbering compaction(std::size_t g_size, std::size_t h_size, std::span<const Dart> deleted, std::span<const std::pair<Dart, Dart>> moved);
 
   /// g of G became h of H.
   void map(Dart g, Dart h);
@@ -35,6 +41,15 @@ class Renumbering {
 
   /// This renumbering followed by `next` (G => H => K): G against K.
   Renumbering then(const Renumbering& next) const;
+
+  /// f(g, h) for every dart of G that became another dart h of H (not the
+  /// deleted ones, not those that kept their number): O(touched darts).
+  template <class F>
+  void for_each_moved(F&& f) const {
+    g2h_.for_each([&](Dart g, std::uint32_t v) {
+      if (const Dart h = decode(v, g); h != no_dart && h != g) f(g, h);
+    });
+  }
 
   /// Per-dart data of G carried to H: out[h] = data[to_g(h)], `fill` for
   /// created darts.

@@ -7,8 +7,8 @@
 #include <map>
 
 #include "analysis/rule_result.hpp"
-#include "campaign/result_record.hpp"
-#include "campaign/shard_stream.hpp"
+#include "campaign/detail/result_record.hpp"
+#include "campaign/detail/shard_stream.hpp"
 #include "core/input_error.hpp"
 #include "fuzz/harness.hpp"
 #include "io/catalog.hpp"

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 
 namespace dartcheck::inference {
 
@@ -10,9 +10,11 @@ Verification verify(const KappaGraph& graph, const GraphScheme& scheme, const In
   const Operation& op = rule.operation;
   Map host = graph.before();
   const Dart hooks[] = {start};
-  auto match = match_scheme(op.rule, op.words, host, hooks);
+  Applier applier(op);
+  auto match = applier.match(host, hooks);
   if (!match.ok()) return {false, fmt::format("the scheme does not apply to the before map at dart {}: {}", start, match.why)};
-  const auto& pattern = match.value->pattern.darts[0];
+  if (!match.value->pattern) return {false, "the inferred operation is not a rule scheme"};
+  const std::vector<Dart> pattern = match.value->pattern->darts[0];  // the rewrite takes the match's tables
   const auto& hook_darts = scheme.nodes[0].darts;
   if (pattern.size() != hook_darts.size())
     return {false, fmt::format("the pattern of dart {} has {} darts, the folded orbit {}", start, pattern.size(), hook_darts.size())};
@@ -29,12 +31,14 @@ Verification verify(const KappaGraph& graph, const GraphScheme& scheme, const In
   for (std::size_t x = 0; x < rule.node_of_left.size(); ++x) {
     const auto& node = scheme.nodes[static_cast<std::size_t>(rule.node_of_left[x])];
     for (std::size_t p = 0; p < pattern.size(); ++p)
-      if (match.value->node[x][p] != graph.local(node.darts[position[pattern[p]]]))
+      if (match.value->match[x][p] != graph.local(node.darts[position[pattern[p]]]))
         return {false,
                 fmt::format("node {} at pattern dart {} matches G dart {}, the folding put {} there", op.rule.left().name(static_cast<NodeId>(x)),
-                            pattern[p], match.value->node[x][p], graph.name(node.darts[position[pattern[p]]]))};
+                            pattern[p], match.value->match[x][p], graph.name(node.darts[position[pattern[p]]]))};
   }
-  const auto derivation = rewrite_scheme(op.rule, op.words, host, *match.value);
+  const auto rewritten = applier.rewrite(host, std::move(*match.value));
+  if (!rewritten.ok()) return {false, fmt::format("the scheme refuses to rewrite the before map at dart {}: {}", start, rewritten.why)};
+  const Application& derivation = *rewritten.value;
   if (host.size() != graph.after().size())
     return {false, fmt::format("the result has {} darts, the after map {}", host.size(), graph.after().size())};
   std::vector<Dart> renumbered(graph.before().size());
@@ -54,7 +58,7 @@ Verification verify(const KappaGraph& graph, const GraphScheme& scheme, const In
       phi[r] = h;
       if (left != no_node) {
         // Preserved: the result keeps the matched dart, and κ sends it to h.
-        const Dart g = match.value->node[left][p];
+        const Dart g = derivation.match[left][p];
         if (renumbered[g] != r) return {false, fmt::format("preserved G dart {} became result dart {}, not {}", g, renumbered[g], r)};
         if (graph.kappa(g) == no_dart || graph.local(graph.kappa(g)) != h)
           return {false, fmt::format("preserved G dart {} lands on H dart {}, but κ sends it elsewhere", g, h)};

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 
 namespace dartcheck {
 

@@ -1,5 +1,5 @@
 #include "io/catalog.hpp"
-#include "io/yaml_readers.hpp"
+#include "io/detail/yaml_readers.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -14,7 +14,7 @@
 #include "rewriting/jerboa_scheme.hpp"
 #include "io/map_io.hpp"
 #include "io/rule_terms_reader.hpp"
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 
 namespace dartcheck {
 

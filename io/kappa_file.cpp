@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 
 namespace dartcheck {

@@ -1,5 +1,5 @@
 #include "io/map_io.hpp"
-#include "io/yaml_readers.hpp"
+#include "io/detail/yaml_readers.hpp"
 
 #include <fmt/format.h>
 #include <limits>
@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "core/limits.hpp"
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 
 namespace dartcheck {
 namespace {
@@ -132,6 +132,16 @@ Map read_map_links(const std::string& file, const YAML::Node& node, const Model&
 }
 
 Map read_map_file(const std::string& path) { return read_map(path, load_yaml_file(path)); }
+
+Map read_map_text(const std::string& name, const std::string& text) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw yaml_input_error(name, e);
+  }
+  return read_map(name, root);
+}
 
 Map read_map(const std::string& file, const YAML::Node& node) {
   yaml::expect_map(file, node, "map");

@@ -23,6 +23,8 @@ namespace dartcheck {
 /// Reads the map file `path` (the YAML form below); InputError at the
 /// offending node.
 Map read_map_file(const std::string& path);
+/// The same from YAML text (`name` in messages, as a file's would be).
+Map read_map_text(const std::string& name, const std::string& text);
 
 /// Writes the explicit form (raw arrays, pred only where needed).
 void write_map(std::ostream& out, const Map& map);

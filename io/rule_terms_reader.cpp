@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 #include "rewriting/rule.hpp"
 #include "rewriting/term_functions.hpp"
 

@@ -1,4 +1,4 @@
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 
 #include "core/closest_name.hpp"
 

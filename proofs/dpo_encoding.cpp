@@ -1,4 +1,4 @@
-#include "proofs/dpo_encoding.hpp"
+#include "proofs/detail/dpo_encoding.hpp"
 
 namespace dartcheck::proofs {
 

@@ -15,11 +15,11 @@
 #include "checkers/rule_conditions.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/application.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "rewriting/instantiated_classes.hpp"
-#include "proofs/solver_watch.hpp"
+#include "proofs/detail/solver_watch.hpp"
 #include "proofs/symbolic_terms.hpp"
-#include "proofs/value_encoding.hpp"
+#include "proofs/detail/value_encoding.hpp"
 
 namespace dartcheck::proofs {
 
@@ -332,7 +332,7 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
         if (a.reading == Reading::arithmetic && a.host) {
           // The library's own application must break the same embedding.
           EmbeddedMap replay = *a.host;
-          const auto r2 = apply_embedded(rule, op.words, terms, replay, a.hooks, true);
+          const auto r2 = Applier(op).apply(replay, a.hooks, true);
           if (!r2.ok()) {
             a.replay = fmt::format("refused: {}", r2.why);
           } else {

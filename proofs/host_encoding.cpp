@@ -1,4 +1,4 @@
-#include "proofs/host_encoding.hpp"
+#include "proofs/detail/host_encoding.hpp"
 
 #include <bit>
 

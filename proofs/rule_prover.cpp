@@ -10,9 +10,9 @@
 #include "checkers/graph_constraints.hpp"
 #include "rewriting/graph_derivation.hpp"
 #include "rewriting/scheme_instantiation.hpp"
-#include "proofs/dpo_encoding.hpp"
-#include "proofs/scheme_encoding.hpp"
-#include "proofs/solver_watch.hpp"
+#include "proofs/detail/dpo_encoding.hpp"
+#include "proofs/detail/scheme_encoding.hpp"
+#include "proofs/detail/solver_watch.hpp"
 
 namespace dartcheck::proofs {
 

@@ -107,6 +107,10 @@ struct RuleProof {
 
 RuleProof prove_rule(const Operation& entry, const ProveOptions& options);
 
+/// Why the solver does not encode this rule scheme ("" if it does: one
+/// hook node with loops, the form of every operation of 002 Sec. 10).
+std::string scheme_out_of_scope(const Rule& core);
+
 /// The host of a solver answer as a D-graph of the class: the encoded links
 /// plus, on the other dimensions, L's arcs (Theorem 1) or L's arcs
 /// completed to permutations (D-combinatorial classes).

@@ -1,4 +1,4 @@
-#include "proofs/scheme_encoding.hpp"
+#include "proofs/detail/scheme_encoding.hpp"
 
 #include <algorithm>
 #include <stdexcept>

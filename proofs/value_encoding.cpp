@@ -1,4 +1,4 @@
-#include "proofs/value_encoding.hpp"
+#include "proofs/detail/value_encoding.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "proofs/word_congruence.hpp"
 
 #include "proofs/rule_prover.hpp"
-#include "proofs/dpo_encoding.hpp"
+#include "proofs/detail/dpo_encoding.hpp"
 
 namespace dartcheck::proofs {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "rewriting/derivation.hpp"
+#include "rewriting/compaction.hpp"
 
 namespace dartcheck::querymodify {
 namespace {
@@ -32,7 +32,9 @@ bool contains(const std::vector<Dart>& set, Dart d) { return std::binary_search(
 Renumbering remove(Map& m, const std::vector<Dart>& gone) {
   for (Dart d : gone)
     for (Dim i : m.model().dims) m.remove_link(i, d);
-  return compact(m, gone);
+  const std::size_t g_size = m.size();
+  const auto moved = compact(m, gone);
+  return Renumbering::compaction(g_size, m.size(), gone, moved);
 }
 
 }  // namespace
@@ -190,16 +192,15 @@ std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<
       outside[x] = o;
   }
   std::vector<Dart> matched(q_to_m.begin(), q_to_m.end());
-  const Renumbering moved = delete_volumes(m, matched);
-  std::unordered_map<Dart, Dart> where(moved.begin(), moved.end());
+  Renumbering moved = delete_volumes(m, matched);
   for (Dart& o : outside)
-    if (const auto it = where.find(o); o != no_dart && it != where.end()) o = it->second;
+    if (o != no_dart) o = moved.to_h(o);  // outside the match: kept
   auto t_to_m = copy_darts(m, t, std::vector<bool>(t.size(), true));
   for (Dart x = 0; x < q.size(); ++x) {
     if (outside[x] != no_dart) m.sew(3, t_to_m[q_to_t[x]], outside[x]);
     if (inside[x] != no_dart && x < inside[x]) m.sew(3, t_to_m[q_to_t[x]], t_to_m[q_to_t[inside[x]]]);
   }
-  if (moved_out) *moved_out = moved;
+  if (moved_out) *moved_out = std::move(moved);
   return t_to_m;
 }
 

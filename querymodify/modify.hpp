@@ -11,11 +11,9 @@
 #include <vector>
 
 #include "core/map.hpp"
+#include "core/renumbering.hpp"
 
 namespace dartcheck::querymodify {
-
-/// Darts moved into the slots of removed ones: (old, new).
-using Renumbering = std::vector<std::pair<Dart, Dart>>;
 
 /// Deletes the volumes made of `darts`. Every β3 link between a deleted
 /// dart and a kept one is unsewn first, whether or not the kept dart was
@@ -43,12 +41,13 @@ Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts);
 /// or a dart is 3-sewn.
 Renumbering merge_faces(Map& m, const std::vector<Dart>& darts);
 
-/// Carries per-dart data through a renumbering (old darts moved into the
-/// slots of removed ones), then fits it to the map's new size.
+/// Carries per-dart data through a renumbering of deleted darts (the
+/// slots of removed darts filled by the last ones), in place: O(darts
+/// moved), not a copy of the table.
 template <class T>
-void follow(std::vector<T>& per_dart, const Renumbering& moved, std::size_t size) {
-  for (const auto& [from, to] : moved) per_dart[to] = per_dart[from];
-  per_dart.resize(size);
+void follow(std::vector<T>& per_dart, const Renumbering& r) {
+  r.for_each_moved([&](Dart from, Dart to) { per_dart[to] = per_dart[from]; });
+  per_dart.resize(r.h_size());
 }
 
 /// Alg. 2: T contains Q (`q_to_t[q]`, m_QT, is the target dart of query
@@ -69,8 +68,8 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
 /// 3-free darts at least). T's boundary must be Q's: q_to_t maps Q's
 /// 3-free darts one to one onto T's and keeps β1 among them (throws
 /// std::invalid_argument otherwise, before changing `m`). Returns m_TM;
-/// `moved`, if given, receives the renumbering of the input's other darts
-/// (the match's darts are removed before T's are appended).
+/// `moved`, if given, receives the renumbering of the input once the
+/// match's darts are removed (T's are appended after).
 std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m,
                           Renumbering* moved = nullptr);
 

@@ -367,13 +367,12 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
     std::vector<Dart> darts;
     for (auto x : tets)
       for (Dart d = 12 * x; d < 12 * x + 12; ++d) darts.push_back(where[d]);
-    const auto moved = merge_volumes(mesh.map, darts);
-    for (const auto& [from, to] : moved) {
+    merge_volumes(mesh.map, darts).for_each_moved([&](Dart from, Dart to) {
       const Dart original = at[from];
       where[original] = to;
       at[to] = original;
       mesh.vertex[to] = mesh.vertex[from];
-    }
+    });
   }
   mesh.vertex.resize(mesh.map.size());
   r.merge_seconds = since(t);

@@ -7,8 +7,6 @@
 #include <map>
 #include <random>
 #include <stdexcept>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "core/orbit.hpp"
 #include "querymodify/overlap.hpp"
@@ -29,11 +27,9 @@ struct GridIds {
 // The boundary of a 3 x 3 square, counter-clockwise seen from above.
 constexpr std::uint32_t ring[12][2] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}, {3, 3}, {2, 3}, {1, 3}, {0, 3}, {0, 2}, {0, 1}};
 
-void renumber(std::vector<Dart>& darts, const Renumbering& moved) {
-  if (moved.empty()) return;
-  const std::unordered_map<Dart, Dart> where(moved.begin(), moved.end());
-  for (Dart& d : darts)
-    if (const auto it = where.find(d); it != where.end()) d = it->second;
+// Kept darts through a renumbering (a deleted one would become no_dart).
+void renumber(std::vector<Dart>& darts, const Renumbering& r) {
+  for (Dart& d : darts) d = r.to_h(d);
 }
 
 std::size_t volumes(const Map& m) {
@@ -130,30 +126,19 @@ Renumbering flatten_spot(Mesh& m, const SpotQuery& q, const std::vector<Dart>& q
   for (const auto& [xy, z] : height) mean += z;
   mean /= static_cast<double>(height.size());
   const Renumbering first = merge_volumes(m.map, q_to_m);
-  follow(m.points, first, m.map.size());
+  follow(m.points, first);
   renumber(upper, first);
   std::vector<Dart> kept;  // the merged face's darts: not on an edge between two upper faces
   for (Dart d : upper)
     if (std::find(upper.begin(), upper.end(), m.map.link(2, d)) == upper.end()) kept.push_back(d);
   const Renumbering second = merge_faces(m.map, upper);
-  follow(m.points, second, m.map.size());
+  follow(m.points, second);
   renumber(kept, second);
   OrbitWalker walker(m.map);
   const auto vertex = cell_generators(m.map.model(), 0);
   for (Dart d : kept)
     for (Dart e : walker.orbit(d, vertex)) m.points[e][2] = mean;
-  // The two renumberings as one, old dart -> final dart.
-  std::unordered_map<Dart, Dart> then(second.begin(), second.end());
-  std::unordered_set<Dart> holes;  // first's targets: slots of darts the merge removed
-  Renumbering both;
-  for (const auto& [from, to] : first) {
-    const auto it = then.find(to);
-    both.emplace_back(from, it == then.end() ? to : it->second);
-    holes.insert(to);
-  }
-  for (const auto& [from, to] : second)
-    if (!holes.contains(from)) both.emplace_back(from, to);
-  return both;
+  return first.then(second);
 }
 
 HouseRule house_rule() {

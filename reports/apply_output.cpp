@@ -23,7 +23,7 @@
 #include "io/mesh_writer.hpp"
 #include "reports/validity_text.hpp"
 #include "rewriting/application.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 
 namespace dartcheck::reports {
 
@@ -151,8 +151,8 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     fmt::print("values: {} drawn at random, one per <{}>-orbit (seed 1){}\n", e.name, fmt::join(e.orbit, ","),
                jba ? ": the file has no such embedding, and -o .jba does not write it" : "");
   }
-  const Map before = host->map;  // for the dart correspondence of a YAML result
-  auto result = apply_embedded(rule.rule, rule.words, terms, *host, o.hooks);
+  const std::size_t g_size = host->map.size();  // for the dart correspondence of a YAML result
+  auto result = Applier(rule).apply(*host, o.hooks);
   if (!result.ok()) {
     fmt::print("not applied ({}): {}\n", name_of(result.refusal), result.why);
     return violation;
@@ -196,13 +196,9 @@ int apply_terms(const ApplyRequest& o, const CatalogRule& rule, Map map) {
     write_file(o.output, text.str());
     if (!terminal().quiet) fmt::print("written: {} (positions from {})\n", o.output, pos->signature.name);
   } else if (!o.output.empty()) {
-    // The correspondence from the same application without values, whose
-    // H must be this one (the values do not change the topology).
-    Map topology = before;
-    const auto traced = dartcheck::apply(rule, topology, o.hooks);
-    if (!traced.ok() || !(topology == host->map))
-      throw std::logic_error(fmt::format("apply: rule '{}' gives another topology with its terms than without", rule.rule.name()));
-    write_file(o.output, result_yaml(host->map, preserved_pairs(traced.value->renumbering(rule.rule, topology.size()), before.size()), before.size()));
+    // The correspondence G -> H of the application itself.
+    const Renumbering traced = result.value->topology.renumbering(rule.rule, host->map.size());
+    write_file(o.output, result_yaml(host->map, preserved_pairs(traced, g_size), g_size));
     if (!terminal().quiet) fmt::print("written: {} (topology only; the values are printed above)\n", o.output);
   }
   return report.valid() && consistent ? ok : violation;
@@ -232,7 +228,7 @@ int apply_to_jba(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   JbaFile in{"dartcheck", Map(rule.rule.model()), {}, {}};
   if (o.map.ends_with(".jba")) in = read_jba(o.map);
   const Map before = map;
-  auto traced = dartcheck::apply(rule, map, o.hooks);
+  auto traced = Applier(rule).apply(map, o.hooks);
   if (!traced.ok()) {
     fmt::print("not applied ({}): {}\n", name_of(traced.refusal), traced.why);
     return violation;
@@ -266,7 +262,7 @@ int apply_to_jba(const ApplyRequest& o, const CatalogRule& rule, Map map) {
 // hooks' pattern graph (002 Sec. 6.3): the topology as YAML.
 int apply_topology(const ApplyRequest& o, const CatalogRule& rule, Map map) {
   const std::size_t before_size = map.size();
-  auto result = dartcheck::apply(rule, map, o.hooks);
+  auto result = Applier(rule).apply(map, o.hooks);
   if (!result.ok()) {
     fmt::print("not applied ({}): {}\n", name_of(result.refusal), result.why);
     return violation;

@@ -21,7 +21,7 @@
 #include "reports/rule_dot.hpp"
 #include "reports/rule_result_text.hpp"
 #include "reports/svg_figure.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/pattern_graphs.hpp"
 
 namespace dartcheck::reports {
 

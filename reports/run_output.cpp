@@ -22,11 +22,11 @@ namespace dartcheck::reports {
 
 using namespace analysis;
 
-void print_check(const std::string& format, const std::string& catalog_file, const Catalog& catalog, const Results& results,
+void print_check(OutputFormat format, const std::string& catalog_file, const Catalog& catalog, const Results& results,
                  const std::vector<std::string>& baseline_mismatches, bool explain) {
-  if (format == "sarif" || format == "junit") {
+  if (format == OutputFormat::sarif || format == OutputFormat::junit) {
     print_ci_format(format, "check", catalog_file, results, baseline_mismatches);
-  } else if (format == "json") {
+  } else if (format == OutputFormat::json) {
     const auto doc = results_document("check", catalog_file, catalog, results, baseline_mismatches);
     fmt::print("{}\n", json_text(doc));
   } else if (!terminal().quiet) {
@@ -34,16 +34,16 @@ void print_check(const std::string& format, const std::string& catalog_file, con
   }
 }
 
-void print_ci_format(const std::string& format, const std::string& command, const std::string& catalog_file, const Results& results,
+void print_ci_format(OutputFormat format, const std::string& command, const std::string& catalog_file, const Results& results,
                      const std::vector<std::string>& baseline_mismatches) {
-  if (format == "sarif")
+  if (format == OutputFormat::sarif)
     fmt::print("{}\n", sarif_document(catalog_file, results, dartcheck_version()));
   else
     fmt::print("{}", junit_document(command, catalog_file, results, baseline_mismatches));
 }
 
-void print_fuzz(const std::string& format, const FuzzRun& run, const Results& results) {
-  if (format == "json") {
+void print_fuzz(OutputFormat format, const FuzzRun& run, const Results& results) {
+  if (format == OutputFormat::json) {
     Json doc = json_document("fuzz");
     Json rows = Json::array();
     for (const auto& r : results) rows.push_back(rule_result_json(r));
@@ -55,8 +55,8 @@ void print_fuzz(const std::string& format, const FuzzRun& run, const Results& re
   }
 }
 
-void print_prove(const std::string& format, const ProveRun& run, const Results& results) {
-  if (format == "json")
+void print_prove(OutputFormat format, const ProveRun& run, const Results& results) {
+  if (format == OutputFormat::json)
     fmt::print("{}\n", json_text(prove_document(run, results)));
   else if (!terminal().quiet)
     fmt::print("{}", prove_text(run, results));

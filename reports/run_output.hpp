@@ -9,6 +9,7 @@
 
 #include "analysis/rule_result.hpp"
 #include "io/catalog.hpp"
+#include "reports/output_format.hpp"
 #include "reports/rule_result_text.hpp"
 
 namespace dartcheck::reports {
@@ -16,18 +17,18 @@ namespace dartcheck::reports {
 using Results = std::vector<analysis::RuleResult>;
 
 /// check's output in `format`: text (the table), json, sarif or junit.
-void print_check(const std::string& format, const std::string& catalog_file, const Catalog& catalog, const Results& results,
+void print_check(OutputFormat format, const std::string& catalog_file, const Catalog& catalog, const Results& results,
                  const std::vector<std::string>& baseline_mismatches, bool explain);
 
 /// SARIF or JUnit of any command's results.
-void print_ci_format(const std::string& format, const std::string& command, const std::string& catalog_file, const Results& results,
+void print_ci_format(OutputFormat format, const std::string& command, const std::string& catalog_file, const Results& results,
                      const std::vector<std::string>& baseline_mismatches);
 
 /// fuzz's output: text or json.
-void print_fuzz(const std::string& format, const FuzzRun& run, const Results& results);
+void print_fuzz(OutputFormat format, const FuzzRun& run, const Results& results);
 
 /// prove's output: text or json.
-void print_prove(const std::string& format, const ProveRun& run, const Results& results);
+void print_prove(OutputFormat format, const ProveRun& run, const Results& results);
 
 /// What report's page says about the stages that ran.
 struct ReportStages {

@@ -29,7 +29,7 @@
 #include "core/map.hpp"
 #include "rewriting/compiled_terms.hpp"
 #include "rewriting/pattern_walk.hpp"
-#include "rewriting/derivation.hpp"
+#include "rewriting/compaction.hpp"
 #include "rewriting/match.hpp"
 
 namespace dartcheck::compiled {

@@ -1,4 +1,4 @@
-#include "rewriting/derivation.hpp"
+#include "rewriting/detail/derivation.hpp"
 
 #include <algorithm>
 #include <unordered_map>
@@ -72,7 +72,11 @@ std::vector<std::pair<Dart, Dart>> compact(Map& g, std::vector<Dart> holes, std:
 Outcome<Derivation> apply_rule(const Rule& rule, Map& g, std::span<const Dart> hook_darts) {
   auto matched = match_from_hooks(rule, g, hook_darts);
   if (!matched.ok()) return refuse<Derivation>(matched.refusal, matched.why);
-  Derivation d{std::move(*matched.value), {}, {}};
+  return rewrite_rule(rule, g, std::move(*matched.value));
+}
+
+Outcome<Derivation> rewrite_rule(const Rule& rule, Map& g, Match match) {
+  Derivation d{std::move(match), {}, {}};
   if (auto why = dangling_violation(rule, g, d.match); !why.empty()) return refuse<Derivation>(Refusal::dangling, why);
   if (auto why = representability(rule, g, d.match); !why.empty()) return refuse<Derivation>(Refusal::not_representable, why);
 

@@ -1,7 +1,9 @@
 // DPO rewriting on small labeled graphs (002 Def. 2-4): hosts that are
 // arbitrary D-graphs, where a node may have several arcs with one label and
 // a match is not determined by hooks. Exhaustive, for the small hosts of
-// examples and brute-force checks; dense maps use apply_rule.
+// examples and brute-force checks (proofs, host search): the one
+// documented variant of application. Dense maps use the Applier
+// (application.hpp).
 #pragma once
 
 #include <vector>

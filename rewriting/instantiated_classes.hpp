@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "rewriting/rule.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/pattern_graphs.hpp"
 
 namespace dartcheck {
 

@@ -1,5 +1,5 @@
 // The walk that builds P_v (002 Def. 20): one BFS per hook dart along W's
-// generators, shared by the interpreter (scheme_application.cpp) and the
+// generators, shared by the interpreter (scheme_rewriter.cpp) and the
 // generated code (compiled_runtime.hpp), so that both number the pattern's
 // positions the same way.
 //

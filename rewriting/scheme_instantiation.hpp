@@ -2,10 +2,10 @@
 // explicit DPO rule (002 Def. 19), for the places that want it as a graph:
 // the solver's replay of a scheme counterexample through the library's
 // DPO derivation, and pictures. Application to maps never builds it
-// (core/scheme_application.hpp).
+// (the Applier, rewriting/application.hpp).
 #pragma once
 
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/pattern_graphs.hpp"
 
 namespace dartcheck {
 

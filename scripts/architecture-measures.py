@@ -13,7 +13,7 @@ measure is defined here, so that a before and an after are comparable:
   the N longest listed with --functions N;
 - application entry points: functions declared public in rewriting/*.hpp
   (not detail/) whose name is apply, apply_*, rewrite_*, derive or
-  match_scheme, and classes named *Rewriter;
+  match_scheme, and classes named *Rewriter or *Applier;
 - union-find copies: files with a parent-table loop `while (t[x] != x)`;
 - one-dart-per-orbit loops: lines `if (seen[d]) continue;` (any array named
   seen, visited, marked or done) in a loop over darts;
@@ -79,7 +79,7 @@ def main():
         print(f"  {length:4} {where}  {signature}")
 
     entry = re.compile(r"^[A-Za-z][^;(]*\b(apply|apply_\w+|rewrite_\w+|derive|match_scheme)\(", re.M)
-    rewriters = re.compile(r"^class (\w*Rewriter)\b", re.M)
+    rewriters = re.compile(r"^class (\w*(?:Rewriter|Applier))\b(?!;)", re.M)  # a definition, not a declaration
     points = []
     for p in files:
         if p.startswith("rewriting/") and p.endswith(".hpp") and "/detail/" not in p:

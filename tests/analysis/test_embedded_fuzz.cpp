@@ -18,7 +18,7 @@
 #include "checkers/rule_conditions.hpp"
 #include "analysis/embedded_fuzz.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "core/input_error.hpp"
 #include "io/mesh_io.hpp"
 #include "core/orbit.hpp"

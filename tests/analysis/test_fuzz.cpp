@@ -23,11 +23,8 @@
 #include "checkers/map_validity.hpp"
 #include "analysis/fuzz.hpp"
 #include "analysis/map_sources.hpp"
-#include "rewriting/derivation.hpp"
 #include "io/map_io.hpp"
-#include "io/yaml_readers.hpp"
-#include "rewriting/scheme_application.hpp"
-#include "io/yaml_util.hpp"
+#include "rewriting/application.hpp"
 
 using namespace dartcheck;
 using namespace dartcheck::analysis;
@@ -65,11 +62,7 @@ FuzzOptions options(std::size_t runs, std::uint64_t seed = 11) {
 // same H and the same violations come out.
 void expect_replays(const Operation& r, const Counterexample& cx) {
   Map h = cx.host;
-  Refusal refusal;
-  if (r.words.scheme)
-    refusal = apply_scheme(r.rule, r.words, h, cx.hooks).refusal;
-  else
-    refusal = apply_rule(r.rule, h, cx.hooks).refusal;
+  const Refusal refusal = Applier(r).apply(h, cx.hooks).refusal;
   if (!cx.unrepresentable.empty()) {
     EXPECT_EQ(refusal, Refusal::not_representable) << r.rule.name();
     return;
@@ -80,7 +73,7 @@ void expect_replays(const Operation& r, const Counterexample& cx) {
   EXPECT_EQ(check_map(h).violations, cx.violations) << r.rule.name();
   // The host file reads back to the same map (custom models inline).
   const std::string text = map_to_yaml(cx.host);
-  const Map back = read_map("<host>", YAML::Load(text));
+  const Map back = read_map_text("<host>", text);
   EXPECT_TRUE(back == cx.host) << r.rule.name() << "\n" << text;
 }
 

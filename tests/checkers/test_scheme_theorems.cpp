@@ -23,7 +23,7 @@
 #include "checkers/map_validity.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 #include "generators/random_maps.hpp"
 
 using namespace dartcheck;
@@ -143,10 +143,12 @@ Tally run_model(const std::string& model_name, const std::vector<std::string>& b
     for (const auto& c : verdict.conditions)
       if (!c.holds) (c.condition == RuleCondition::cycle ? cycle_fails : other_fails) = true;
     bool broken = false;
+    const Operation op{rule, words, {}, {}, {}, {}};
+    Applier applier(op);
     for (const Map& host : hosts) {
       for (Dart hook = 0; hook < host.size(); hook += 1 + static_cast<Dart>(host.size() / 24)) {
         Map h = host;
-        const auto out = apply_scheme(rule, words, h, std::span(&hook, 1));
+        const auto out = applier.apply(h, std::span(&hook, 1));
         if (out.refusal == Refusal::not_representable) {
           broken = true;
           if (verdict.consistent()) ++t.unsound;

@@ -37,7 +37,7 @@
 #include "generators/random_embedding.hpp"
 #include "io/mesh_io.hpp"
 #include "rewriting/application.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "rewriting/term_eval.hpp"
 
 #include DARTCHECK_COMPILED_SEED
@@ -318,9 +318,9 @@ bool hook_dependent(const Operation& op, const EmbeddedMap& component, const Emb
   const std::size_t n = component.map.size(), step = std::max<std::size_t>(1, n / 16);
   for (std::size_t h = step; h < n; h += step) {
     EmbeddedMap other = component;
-    EmbeddedRewriter rewriter(op.rule, op.words, *op.terms, other, Evaluation::one_per_orbit);
+    Applier rewriter(op, {Evaluation::one_per_orbit});
     const std::vector<Dart> hook{static_cast<Dart>(h)};
-    if (!rewriter.apply(hook, false).ok()) continue;
+    if (!rewriter.apply(other, hook, false).ok()) continue;
     const std::vector<std::vector<Dart>> parts = components_of(other.map);
     const std::vector<bool> used(parts.size(), false);
     if (matching_part(want, other, bits_of(other), parts, used, std::nullopt, nullptr, true) &&
@@ -344,12 +344,12 @@ void compare_everywhere(const Operation& op, const char* name, Everywhere everyw
     EmbeddedMap sub = extract(host, comp);
     const std::vector<Dart> hook{0};
     if (op.terms) {
-      EmbeddedRewriter rewriter(op.rule, op.words, *op.terms, sub, Evaluation::one_per_orbit);
-      if (const auto r = rewriter.apply(hook, false); !r.ok())
+      Applier rewriter(op, {Evaluation::one_per_orbit});
+      if (const auto r = rewriter.apply(sub, hook, false); !r.ok())
         refusals.push_back(name_of(r.refusal));
       else
         conflicts += r.value->conflicts.size();
-    } else if (const auto r = apply(op, sub.map, hook); !r.ok()) {
+    } else if (const auto r = Applier(op).apply(sub.map, hook); !r.ok()) {
       refusals.push_back(name_of(r.refusal));
     }
     // The result may have no dart left, or several components.
@@ -434,7 +434,7 @@ template <class Compiled>
 void compare_at(const Operation& op, const Compiled& compiled, const Map& host, const std::vector<Dart>& hooks, compiled::Workspace& ws,
                 Tally& tally) {
   Map interpreted = host, generated = host;
-  const auto expected = apply(op, interpreted, hooks);
+  const auto expected = Applier(op).apply(interpreted, hooks);
   const Refusal got = compiled.apply(generated, hooks, ws);
   const std::string where =
       fmt::format("rule '{}' at hooks {} of a {}-dart {}", compiled.name, fmt::join(hooks, ","), host.size(), host.model().name);
@@ -575,7 +575,7 @@ TEST(CompiledOperations, HostileIdentifiersCompileAndAgree) {
 }
 
 // Rules with embedding terms (003): the compiled function against the
-// interpreter's EmbeddedRewriter with one evaluation per orbit (what a
+// interpreter's Applier with one evaluation per orbit (what a
 // consistent rule allows, 003 Thm 4). Property: both refuse with the same
 // Refusal, leaving map and values unchanged; or both give equal maps and, at
 // every dart, the same value of every embedding, bit for bit (the compiled
@@ -611,8 +611,8 @@ template <class Compiled>
 void compare_embedded_at(const Operation& op, const Compiled& compiled, const EmbeddedMap& host, const std::vector<Dart>& hooks,
                          compiled::Workspace& ws, Tally& tally, bool theorem4) {
   EmbeddedMap interpreted = host, generated = host;
-  EmbeddedRewriter rewriter(op.rule, op.words, *op.terms, interpreted, Evaluation::one_per_orbit);
-  const auto expected = rewriter.apply(hooks, false);
+  Applier rewriter(op, {Evaluation::one_per_orbit});
+  const auto expected = rewriter.apply(interpreted, hooks, false);
   const Refusal got = compiled.apply(generated, hooks, ws);
   const std::string where =
       fmt::format("rule '{}' at hooks {} of a {}-dart {}", compiled.name, fmt::join(hooks, ","), host.map.size(), host.map.model().name);

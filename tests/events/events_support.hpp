@@ -55,7 +55,7 @@ inline Applied apply_with_events(const Operation& op, Map g, std::vector<Dart> h
   auto view = event_rule(op);
   if (!view.rule) throw std::runtime_error(view.why);
   Map h = g;
-  auto traced = dartcheck::apply(op, h, hooks);
+  auto traced = Applier(op).apply(h, hooks);
   if (!traced.ok()) throw std::runtime_error(traced.why);
   Applied a{std::move(g), std::move(h), std::move(*traced.value), std::move(*view.rule), {}, {}, {}, {}};
   a.rule.rule = &op.rule;

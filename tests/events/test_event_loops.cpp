@@ -94,7 +94,7 @@ void check_on(const Subject& s, const Map& g, Tally& t) {
       if (d != e) hook_sets.push_back({d, e});
   for (const auto& hk : hook_sets) {
     Map h = g;
-    auto traced = dartcheck::apply(*s.op, h, hk);
+    auto traced = Applier(*s.op).apply(h, hk);
     if (!traced.ok() || !check_map(h).valid()) continue;
     ++t.applied;
     for (const KindEvents& k : s.kinds) {

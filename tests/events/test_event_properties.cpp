@@ -61,7 +61,7 @@ std::size_t check_on(const Subject& s, const Map& g) {
   }
   for (const auto& hooks : hook_sets) {
     Map h = g;
-    auto traced = dartcheck::apply(*s.op, h, hooks);
+    auto traced = Applier(*s.op).apply(h, hooks);
     if (!traced.ok()) continue;
     ++applied;
     for (const OrbitKind& kind : s.kinds) {

@@ -10,7 +10,7 @@
 #include "generators/shapes.hpp"
 #include "inference/infer.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/application.hpp"
 
 namespace dartcheck::inference::test {
 
@@ -42,7 +42,7 @@ inline Map component(const Map& g, Dart start, Dart* new_start = nullptr) {
 /// The catalog scheme `rule` applied to g at `hook` (it must apply).
 inline Map applied(const Operation& op, Map g, Dart hook) {
   const Dart hooks[] = {hook};
-  auto r = apply_scheme(op.rule, op.words, g, hooks);
+  auto r = Applier(op).apply(g, hooks);
   if (!r.ok()) throw std::runtime_error(r.why);
   return g;
 }

@@ -83,14 +83,14 @@ Outcome check_case(const Operation& op, const Map& random, Dart hook) {
   Dart v = 0;
   const Map g = component(random, hook, &v);
   const Dart hooks[] = {v};
-  auto match = match_scheme(op.rule, op.words, g, hooks);
+  auto match = Applier(op).match(g, hooks);
   if (!match.ok()) return Outcome::refused;
-  if (match.value->pattern.darts[0].size() * op.rule.left().node_count() != g.size()) return Outcome::not_covering;
+  if (match.value->pattern->darts[0].size() * op.rule.left().node_count() != g.size()) return Outcome::not_covering;
   std::vector<Dim> dims;
   for (const auto& d : op.jerboa->parameter) dims.push_back(*d);
   if (!decisive(g, dims, v)) return Outcome::not_decisive;
   Map h = g;
-  auto derived = apply_scheme(op.rule, op.words, h, hooks);
+  auto derived = Applier(op).apply(h, hooks);
   if (!derived.ok()) return Outcome::refused;
   // κ: the preserved darts keep their place (renumbered when H is compacted).
   KappaSpec kappa;
@@ -100,7 +100,7 @@ Outcome check_case(const Operation& op, const Map& random, Dart hook) {
     if (from < g.size()) renumbered[from] = to;
   for (NodeId x = 0; x < op.rule.left().node_count(); ++x)
     if (op.rule.to_right(x) != no_node)
-      for (Dart d : match.value->node[x]) kappa.pairs.emplace_back(d, renumbered[d]);
+      for (Dart d : match.value->match[x]) kappa.pairs.emplace_back(d, renumbered[d]);
   const auto graph = make_kappa_graph(g, h, kappa);
   InferOptions o;
   o.start = v;

@@ -172,10 +172,10 @@ TEST(InferenceStarts, SkippedStartsFoldAsTheirAttemptOnApplications) {
       const Map g = component(build_random_map(op->rule.model(), draw_recipe(rng, 1 + static_cast<std::uint32_t>(k % 4), n)), 0);
       const Dart hook = static_cast<Dart>(rng() % g.size());
       const Dart hooks[] = {hook};
-      auto match = match_scheme(op->rule, op->words, g, hooks);
+      auto match = Applier(*op).match(g, hooks);
       if (!match.ok()) continue;
       Map h = g;
-      auto derived = apply_scheme(op->rule, op->words, h, hooks);
+      auto derived = Applier(*op).apply(h, hooks);
       if (!derived.ok()) continue;
       std::vector<Dart> renumbered(g.size());
       for (Dart x = 0; x < g.size(); ++x) renumbered[x] = x;
@@ -184,7 +184,7 @@ TEST(InferenceStarts, SkippedStartsFoldAsTheirAttemptOnApplications) {
       KappaSpec kappa;
       std::vector<bool> matched(g.size(), false);
       for (NodeId x = 0; x < op->rule.left().node_count(); ++x)
-        for (Dart d : match.value->node[x]) {
+        for (Dart d : match.value->match[x]) {
           matched[d] = true;
           if (op->rule.to_right(x) != no_node) kappa.pairs.emplace_back(d, renumbered[d]);
         }

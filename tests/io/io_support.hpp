@@ -12,7 +12,7 @@
 #include "core/input_error.hpp"
 #include "io/catalog.hpp"
 #include "io/map_io.hpp"
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 
 namespace dartcheck::testing_support {
 

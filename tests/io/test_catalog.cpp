@@ -9,10 +9,10 @@
 
 #include "checkers/map_validity.hpp"
 #include "io/catalog.hpp"
-#include "io/yaml_readers.hpp"
+#include "io/detail/yaml_readers.hpp"
 #include "core/input_error.hpp"
 #include "io/map_io.hpp"
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 #include "core/orbit.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_maps.hpp"

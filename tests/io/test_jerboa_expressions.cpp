@@ -24,7 +24,7 @@
 #include "io/jerboa_expression.hpp"
 #include "io/jerboa_jba.hpp"
 #include "io/jerboa_modeler.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "rewriting/term_eval.hpp"
 
 using namespace dartcheck;
@@ -503,7 +503,7 @@ EmbeddedMap applied_everywhere(const char* rule_name) {
   std::mt19937 rng(7);
   EmbeddedMap g = unit_cube(rule, rng);
   const std::vector<Dart> hook{0};  // the hook orbit <0,1,2,3>: the whole cube
-  const auto r = apply_embedded(rule.rule, rule.words, *rule.terms, g, hook);
+  const auto r = Applier(rule).apply(g, hook);
   EXPECT_TRUE(r.ok()) << r.why;
   return g;
 }
@@ -580,7 +580,7 @@ TEST(JerboaSubdivision, TriangulateFaceAtEveryFaceAddsTheFaceCenters) {
   ASSERT_EQ(faces.size(), 6U);
   for (Dart f : faces) {
     const std::vector<Dart> hook{f};
-    const auto r = apply_embedded(rule.rule, rule.words, *rule.terms, g, hook);
+    const auto r = Applier(rule).apply(g, hook);
     ASSERT_TRUE(r.ok()) << r.why;
   }
   EXPECT_EQ(g.map.size(), 48U * 3);  // each dart of a face gets two more

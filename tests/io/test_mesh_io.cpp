@@ -14,7 +14,7 @@
 #include "io/catalog.hpp"
 #include "core/input_error.hpp"
 #include "io/map_io.hpp"
-#include "io/yaml_util.hpp"
+#include "io/detail/yaml_util.hpp"
 #include "core/orbit.hpp"
 #include "generators/mesh_map.hpp"
 #include "io/mesh_io.hpp"

@@ -2,7 +2,7 @@
 // answers: the hand derivations the embedding catalog records (which
 // failures are false alarms, which break a map), the library's own
 // application (every arithmetic counterexample is replayed by
-// apply_embedded + check_embedding), and brute force: every host up to K
+// the Applier + check_embedding), and brute force: every host up to K
 // darts with values drawn from a small domain and as random dyadic reals,
 // applied by the library.
 #include <gtest/gtest.h>
@@ -19,7 +19,7 @@
 #include "generators/random_rules.hpp"
 #include "io/catalog.hpp"
 #include "proofs/embedding_prover.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "rewriting/term_functions.hpp"
 
 using namespace dartcheck;
@@ -178,7 +178,7 @@ std::size_t brute_force(const Operation& op, std::size_t k, const std::vector<do
             std::uniform_int_distribution<std::size_t> pick(0, domain.size() - 1);
             for (Dart x = 0; x < n; ++x)
               if (!host.embeddings[e].value(x)) host.label_orbit(e, x, Value::coords(ValueType::point2, {domain[pick(rng)], domain[pick(rng)], 0}));
-            auto r = apply_embedded(rule, op.words, *op.terms, host, hooks, false);
+            auto r = Applier(op).apply(host, hooks, false);
             if (!r.ok()) break;  // refused whatever the values
             broke = !check_embedding(host.map, host.embeddings[e], true).consistent();
           }

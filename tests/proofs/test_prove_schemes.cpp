@@ -17,7 +17,7 @@
 #include "analysis/fuzz.hpp"
 #include "io/catalog.hpp"
 #include "proofs/rule_prover.hpp"
-#include "proofs/scheme_encoding.hpp"
+#include "proofs/detail/scheme_encoding.hpp"
 
 using namespace dartcheck;
 using namespace dartcheck::proofs;

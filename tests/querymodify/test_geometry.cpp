@@ -143,7 +143,7 @@ TEST(PlaceTargetPoints, OneFourSplitLandsOnTheCentroid) {
   for (Dart x = 0; x < q.map.size(); ++x) matched.push_back(m_points[q_to_m[x]]);
   Renumbering moved;
   const auto t_to_m = replace(m.map, q.map, t.map, q_to_t, q_to_m, &moved);
-  follow(m_points, moved, m.map.size() - t.map.size());
+  follow(m_points, moved);
   m_points.resize(m.map.size());
   const auto placed = place_target_points(q.map, t.map, t_points, q_to_t, matched);
   for (Dart d = 0; d < t.map.size(); ++d) m_points[t_to_m[d]] = placed[d];

@@ -26,7 +26,7 @@
 #include "generators/mesh_map.hpp"
 #include "io/catalog.hpp"
 #include "io/mesh_io.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "tests/embedding_support.hpp"
 
 namespace dartcheck {
@@ -79,8 +79,8 @@ TEST(CatmullClark, CubeGetsTheHandDerivedPoints) {
     const Dart hook = 0;
     for (const char* name : {"catmull-clark-points", "catmull-clark"}) {
       const Operation& r = *subdivision_catalog().find_rule(name);
-      EmbeddedRewriter rewriter(r.rule, r.words, *r.terms, g, e);
-      const auto d = rewriter.apply(std::span(&hook, 1));
+      Applier rewriter(r, {e});
+      const auto d = rewriter.apply(g, std::span(&hook, 1));
       ASSERT_TRUE(d.ok()) << name << ": " << d.why;
       EXPECT_TRUE(d.value->conflicts.empty()) << name;
     }
@@ -104,7 +104,7 @@ TEST(CatmullClark, MissingHelperEmbeddingIsRefused) {
   const Map before = g.map;
   const Operation& r = *subdivision_catalog().find_rule("catmull-clark-points");
   const Dart hook = 0;
-  const auto d = apply_embedded(r.rule, r.words, *r.terms, g, std::span(&hook, 1));
+  const auto d = Applier(r).apply(g, std::span(&hook, 1));
   ASSERT_FALSE(d.ok());
   EXPECT_EQ(d.refusal, Refusal::no_value);
   EXPECT_NE(d.why.find("fpt"), std::string::npos) << d.why;
@@ -119,7 +119,7 @@ TEST(CatmullClark, MissingHelperEmbeddingIsRefused) {
 // instance per class, so it labels a partly labeled orbit from the
 // instance it reads: such a map is outside 003's theorems.) Where the
 // face has a value, both keep it.
-TEST(EmbeddedRewriter, OwnAccessWithoutValueIsRefused) {
+TEST(EmbeddedApplication, OwnAccessWithoutValueIsRefused) {
   const auto file = std::filesystem::temp_directory_path() / fmt::format("dartcheck-own-access-{}.yaml", ::getpid());
   {
     std::ofstream out(file);
@@ -142,7 +142,7 @@ TEST(EmbeddedRewriter, OwnAccessWithoutValueIsRefused) {
     const EmbeddedMap before = g;
     const Dart hook = 0;
     if (e == Evaluation::every_instance) {
-      const auto d = EmbeddedRewriter(r.rule, r.words, *r.terms, g, e).apply(std::span(&hook, 1));
+      const auto d = Applier(r, {e}).apply(g, std::span(&hook, 1));
       ASSERT_FALSE(d.ok());
       EXPECT_EQ(d.refusal, Refusal::no_value);
       EXPECT_NE(d.why.find("n0.col: dart 1 has no col value"), std::string::npos) << d.why;
@@ -150,7 +150,7 @@ TEST(EmbeddedRewriter, OwnAccessWithoutValueIsRefused) {
       for (Dart x = 0; x < g.map.size(); ++x) EXPECT_EQ(g.embeddings[0].value(x) != nullptr, x == 0);
     }
     g.label_orbit(0, 0, Value::coords(ValueType::color, {0, 1, 0}));
-    const auto d = EmbeddedRewriter(r.rule, r.words, *r.terms, g, e).apply(std::span(&hook, 1));
+    const auto d = Applier(r, {e}).apply(g, std::span(&hook, 1));
     ASSERT_TRUE(d.ok()) << d.why;
     for (Dart x = 0; x < g.map.size(); ++x) EXPECT_EQ(*g.embeddings[0].value(x), Value::coords(ValueType::color, {0, 1, 0}));
   }

@@ -20,7 +20,8 @@
 #include "checkers/rule_conditions.hpp"
 #include "analysis/embedded_fuzz.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
+#include "rewriting/detail/scheme_rewriter.hpp"
 #include "rewriting/instantiated_classes.hpp"
 #include "core/input_error.hpp"
 #include "io/mesh_io.hpp"
@@ -65,13 +66,13 @@ TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWr
       for (int round = 0; round < 80; ++round) {
         EmbeddedMap fresh = embed_randomly(build_random_map(r.rule.model(), draw_recipe(rng, 1 + round % 8, 2)), catalog->signatures, rng);
         EmbeddedMap reused = fresh;
-        EmbeddedRewriter rewriter(r.rule, r.words, *r.terms, reused, Evaluation::one_per_orbit);
+        Applier rewriter(r, {Evaluation::one_per_orbit});
         for (int step = 0; step < 3; ++step) {
           std::vector<Dart> hooks;
           for (std::size_t h = 0; h < r.rule.hooks().size(); ++h)
             hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(fresh.map.size() - 1))(rng));
-          const auto a = apply_embedded(r.rule, r.words, *r.terms, fresh, hooks);
-          const auto b = rewriter.apply(hooks);
+          const auto a = Applier(r).apply(fresh, hooks);
+          const auto b = rewriter.apply(reused, hooks);
           ASSERT_EQ(a.refusal, b.refusal) << r.rule.name() << ": " << a.why << " / " << b.why;
           if (!a.ok()) continue;
           ASSERT_TRUE(a.value->conflicts.empty()) << r.rule.name() << ": " << a.value->conflicts.front();
@@ -103,7 +104,7 @@ TEST(EmbeddedRewriter, OneEvaluationPerOrbitAndReuseWriteWhatFreshApplicationsWr
   EXPECT_GT(propagated, 10000u);
 }
 
-// The kept-label shortcut (EmbeddedRewriter::use_kept_label_shortcut), as
+// The kept-label shortcut (EvaluationOptions::kept_label_shortcut), as
 // its comment states it: under one evaluation per orbit, an application
 // with the shortcut and one without give the same refusal (and reason)
 // and the same H index for index: equal links, the same pool index at
@@ -137,14 +138,13 @@ TEST(EmbeddedRewriter, KeptLabelShortcutGivesTheWalksResultIndexForIndex) {
           e.set(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(with.map.size() - 1))(rng), random_value(e.signature.type, rng));
         }
         EmbeddedMap without = with;
-        EmbeddedRewriter a(r.rule, r.words, *r.terms, with, Evaluation::one_per_orbit);
-        EmbeddedRewriter b(r.rule, r.words, *r.terms, without, Evaluation::one_per_orbit);
-        b.use_kept_label_shortcut(false);
+        Applier a(r, {Evaluation::one_per_orbit});
+        Applier b(r, {Evaluation::one_per_orbit, false});
         for (int step = 0; step < 3; ++step) {
           std::vector<Dart> hooks;
           for (std::size_t h = 0; h < r.rule.hooks().size(); ++h)
             hooks.push_back(std::uniform_int_distribution<Dart>(0, static_cast<Dart>(with.map.size() - 1))(rng));
-          const auto x = a.apply(hooks), y = b.apply(hooks);
+          const auto x = a.apply(with, hooks), y = b.apply(without, hooks);
           ASSERT_EQ(x.refusal, y.refusal) << r.rule.name() << ": " << x.why << " / " << y.why;
           ASSERT_EQ(x.why, y.why) << r.rule.name();
           if (!x.ok()) {
@@ -225,7 +225,7 @@ TEST(EmbeddedRewriter, OverlapRefusalIsLemma3ByBruteForce) {
                   expected = expected || (classes.of(x, p) != classes.of(z, q) && std::find(orbit.begin(), orbit.end(), dart[z][q]) != orbit.end());
             }
         }
-        const auto a = apply_embedded(r.rule, r.words, *r.terms, g, hooks, false);
+        const auto a = Applier(r).apply(g, hooks, false);
         if (a.refusal == Refusal::label_mismatch || a.refusal == Refusal::no_value) continue;
         ASSERT_EQ(a.refusal == Refusal::overlap, expected) << r.rule.name() << ": " << a.why;
         ++checked;
@@ -251,7 +251,7 @@ TEST(EmbeddingCatalog, FaceStretchingOverlapsOnATriangle) {
     for (Dart d = 0; d < m.size(); ++d) m.sew(2, d, d);
     EmbeddedMap g = embed_randomly(std::move(m), {signatures[0]}, rng);
     const std::vector<Dart> hooks{0, 4};  // edges 0 and 2
-    const auto d = apply_embedded(r.rule, r.words, *r.terms, g, hooks);
+    const auto d = Applier(r).apply(g, hooks);
     if (n == 3) {
       EXPECT_EQ(d.refusal, Refusal::overlap) << d.why;
     } else {
@@ -277,7 +277,7 @@ TEST(EmbeddingApplication, TriangulatingAMeshPutsEachCentreAtItsFaceBarycenter) 
       for (auto v : f)
         for (std::size_t k = 0; k < 2; ++k) centre[k] += mesh.positions[v][k] / static_cast<double>(f.size());
       const std::vector<Dart> hook{first};
-      const auto d = apply_embedded(r.rule, r.words, *r.terms, g, hook);
+      const auto d = Applier(r).apply(g, hook);
       ASSERT_TRUE(d.ok()) << d.why;
       std::size_t centres = 0;
       for (const auto& w : d.value->written) {

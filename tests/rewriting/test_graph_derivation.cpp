@@ -5,7 +5,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "io/catalog.hpp"
-#include "rewriting/derivation.hpp"
+#include "rewriting/detail/derivation.hpp"
 #include "rewriting/graph_derivation.hpp"
 #include "io/map_io.hpp"
 #include "generators/random_maps.hpp"

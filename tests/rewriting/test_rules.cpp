@@ -4,7 +4,7 @@
 
 #include "checkers/map_validity.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/derivation.hpp"
+#include "rewriting/detail/derivation.hpp"
 #include "core/isomorphism.hpp"
 #include "core/orbit.hpp"
 #include "generators/random_maps.hpp"

@@ -19,7 +19,7 @@
 #include "checkers/rule_conditions.hpp"
 #include "analysis/embedded_fuzz.hpp"
 #include "io/catalog.hpp"
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/application.hpp"
 #include "core/input_error.hpp"
 #include "core/limits.hpp"
 #include "io/mesh_io.hpp"

@@ -1,4 +1,4 @@
-#include "rewriting/scheme_application.hpp"
+#include "rewriting/detail/scheme_rewriter.hpp"
 
 #include <algorithm>
 #include <iterator>

@@ -1,4 +1,4 @@
-#include "rewriting/embedded_application.hpp"
+#include "rewriting/detail/embedded_rewriter.hpp"
 
 #include <fmt/format.h>
 
@@ -14,11 +14,11 @@ namespace {
 // scheme with one pattern position.
 struct Instances {
   std::size_t np = 1;
-  // The scheme match's table (not copied), or one dart per node of a DPO
-  // match in `single`.
-  const std::vector<std::vector<Dart>>* dart = nullptr;
-  std::vector<std::vector<Dart>> single;
-  const PatternGraphs* pattern = nullptr;  // schemes only
+  const std::vector<std::vector<Dart>>* dart = nullptr;  // the Application's match (not copied)
+  const PatternGraphs* pattern = nullptr;                // schemes only
+
+  explicit Instances(const Application& a)
+      : np(a.pattern ? a.pattern->darts[0].size() : 1), dart(&a.match), pattern(a.pattern ? &*a.pattern : nullptr) {}
 
   Dart at(NodeId x, std::size_t p) const { return (*dart)[x][p]; }
   std::string name(const TopoGraph& side, NodeId x, std::size_t p) const {
@@ -53,6 +53,7 @@ struct Writer {
 }  // namespace
 
 struct EmbeddedRewriter::Context {
+  Applier& topology;  // the match and the rewrite
   const Rule& rule;
   const ArcWords& words;
   const RuleTerms& terms;
@@ -67,7 +68,6 @@ struct EmbeddedRewriter::Context {
   // may have gained embeddings between applications).
   std::vector<CompiledTerm> left_code, right_code;
   OrbitWalker walker;
-  SchemeRewriter scheme;
   // classes[u]: the classes of used[u] in the instantiated R, when one
   // evaluation per class or a write per class needs them (kept for the
   // next application's tables).
@@ -84,20 +84,29 @@ struct EmbeddedRewriter::Context {
   std::vector<std::uint32_t> pooled, writer_of;
   std::vector<Writer> writers;
   DartTable orbit_of, given;  // each left empty between applications
-  bool kept_shortcut = true;  // EmbeddedRewriter::use_kept_label_shortcut
-  EmbeddedRewriter::ShortcutCounts shortcuts;
+  bool kept_shortcut = true;  // EvaluationOptions::kept_label_shortcut
+  Applier::ShortcutCounts shortcuts;
 
-  Context(const Rule& r, const ArcWords& w, const RuleTerms& t, EmbeddedMap& map, Evaluation e)
-      : rule(r), words(w), terms(t), g(map), evaluation(e), facts(term_facts(r, t)), ev(map), walker(map.map), scheme(r, w) {
+  Context(Applier& a, const Operation& op, const RuleTerms& t, EmbeddedMap& map, const EvaluationOptions& o)
+      : topology(a),
+        rule(op.rule),
+        words(op.words),
+        terms(t),
+        g(map),
+        evaluation(o.evaluation),
+        facts(term_facts(op.rule, t)),
+        ev(map),
+        walker(map.map),
+        kept_shortcut(o.kept_label_shortcut) {
     classes.resize(used.size());
     class_source.resize(used.size());
     for (const EmbeddingSignature* sig : used) used_gens.push_back(dims_generators(sig->orbit));
   }
 
-  Outcome<EmbeddedDerivation> apply(std::span<const Dart> hook_darts, bool record);
+  Outcome<EmbeddedApplication> apply(std::span<const Dart> hook_darts, bool record);
   std::string overlap(const Instances& in, std::size_t u);
-  bool kept_classes(const Instances& in, std::size_t u, std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
-                    std::vector<std::uint32_t>& id, std::uint32_t& count);
+  bool kept_classes(const Instances& in, std::size_t u, std::uint32_t group, const std::vector<std::uint32_t>& group_of,
+                    const std::vector<int>& steps, std::vector<std::uint32_t>& id, std::uint32_t& count);
 };
 
 // The kept-label shortcut (EmbeddedRewriter::use_kept_label_shortcut) for
@@ -162,41 +171,29 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, std::size_t 
   return {};
 }
 
-Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
+Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
   const TopoGraph &L = rule.left(), &R = rule.right();
   // Every embedding the rule labels is written, so the map must have it.
   for (const EmbeddingSignature* e : used)
     if (!g.find(e->name))
-      return refuse<EmbeddedDerivation>(
+      return refuse<EmbeddedApplication>(
           Refusal::no_value, fmt::format("the rule labels {} <{}>, and the map has no embedding {}", e->name, fmt::join(e->orbit, ","), e->name));
-  // 1. The match (nothing is written yet).
-  Instances in;
-  std::optional<SchemeMatch> scheme_match;
-  std::vector<std::vector<Dart>> comatch;
-  // Every return hands a scheme's match and comatch tables back to the
-  // scheme rewriter, for the next application.
-  struct Recycle {
-    SchemeRewriter& scheme;
-    std::optional<SchemeMatch>& match;
-    std::vector<std::vector<Dart>>& comatch;
-    ~Recycle() {
-      if (match) scheme.recycle(std::move(*match));
-      if (match && !comatch.empty()) scheme.recycle(SchemeDerivation{0, 0, 0, {}, std::move(comatch)});
+  // 1. The match (nothing is written yet). Every return hands the
+  //    application's tables back to the Applier, for the next one, but the
+  //    one that gives them to the caller.
+  struct Held {
+    Applier& topology;
+    std::optional<Application> a;
+    ~Held() {
+      if (a) topology.recycle(std::move(*a));
     }
-  } const recycle{scheme, scheme_match, comatch};
-  if (words.scheme) {
-    auto m = scheme.match(g.map, hook_darts);
-    if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
-    scheme_match = std::move(*m.value);
-    in.np = scheme_match->pattern.darts[0].size();
-    in.dart = &scheme_match->node;
-    in.pattern = &scheme_match->pattern;
-  } else {
-    auto m = match_from_hooks(rule, g.map, hook_darts);
-    if (!m.ok()) return refuse<EmbeddedDerivation>(m.refusal, std::move(m.why));
-    for (Dart d : m.value->node) in.single.push_back({d});
-    in.dart = &in.single;
+  } held{topology, {}};
+  {
+    auto m = topology.match(g.map, hook_darts);
+    if (!m.ok()) return refuse<EmbeddedApplication>(m.refusal, std::move(m.why));
+    held.a = std::move(*m.value);
   }
+  Instances in(*held.a);
   const std::size_t np = in.np, nl = L.node_count();
 
   // 2. Evaluation (Def. 10) on G, and the labeled match of L. binding[p]
@@ -229,19 +226,19 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
         if (trivial && have) continue;
         const Value want = ev.value(left_code[k], binding(p));
         if (!have || !(*have == want))
-          return refuse<EmbeddedDerivation>(Refusal::label_mismatch,
-                                            fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding,
-                                                        t.term.str(), want.str(), in.at(x, p), have ? have->str() : "no value"));
+          return refuse<EmbeddedApplication>(Refusal::label_mismatch,
+                                             fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding,
+                                                         t.term.str(), want.str(), in.at(x, p), have ? have->str() : "no value"));
       }
     }
   } catch (const EvaluationError& e) {
-    return refuse<EmbeddedDerivation>(Refusal::no_value, fmt::format("a term of L has no value: {}", e.what()));
+    return refuse<EmbeddedApplication>(Refusal::no_value, fmt::format("a term of L has no value: {}", e.what()));
   }
   const bool extended = terms.instantiation == Instantiation::extended;
   if (extended)
     for (std::size_t u = 0; u < used.size(); ++u)
       if (!left_closed[u])
-        if (auto why = overlap(in, u); !why.empty()) return refuse<EmbeddedDerivation>(Refusal::overlap, std::move(why));
+        if (auto why = overlap(in, u); !why.empty()) return refuse<EmbeddedApplication>(Refusal::overlap, std::move(why));
 
   // The source of each labeled instance of R. With one evaluation per
   // class, every instance of a class takes its class's source
@@ -255,9 +252,8 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
     if (extended && (evaluation == Evaluation::one_per_orbit || closed[u])) {
       if (kept_shortcut && evaluation == Evaluation::one_per_orbit && closed[u] && !rule.deletes_nodes()) {
         const GroupNumbering kept = [&](std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
-                                        std::vector<std::uint32_t>& id, std::uint32_t& count) {
-          return kept_classes(in, u, group, group_of, steps, id, count);
-        };
+                                        std::vector<std::uint32_t>& id,
+                                        std::uint32_t& count) { return kept_classes(in, u, group, group_of, steps, id, count); };
         instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u], &kept);
       } else {
         instantiated_classes(R, words.right, in.pattern, used[u]->orbit, classes[u]);
@@ -297,29 +293,24 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       }
     }
   } catch (const EvaluationError& e) {
-    return refuse<EmbeddedDerivation>(Refusal::no_value, fmt::format("a term of R has no value: {}", e.what()));
+    return refuse<EmbeddedApplication>(Refusal::no_value, fmt::format("a term of R has no value: {}", e.what()));
   }
 
-  // 3. The topological rewrite.
-  EmbeddedDerivation out;
-  if (words.scheme) {
-    SchemeDerivation d = scheme.rewrite(g.map, *scheme_match);
-    out.matched = d.matched_darts;
-    out.added = d.added_darts;
-    out.moved = std::move(d.moved);
-    comatch = std::move(d.comatch);
-  } else {
-    auto d = apply_rule(rule, g.map, hook_darts);
-    if (!d.ok()) return refuse<EmbeddedDerivation>(d.refusal, std::move(d.why));
-    out.matched = L.node_count();
-    comatch.resize(R.node_count());
-    for (NodeId y = 0; y < R.node_count(); ++y) {
-      comatch[y] = {d.value->comatch[y]};
-      out.added += rule.to_left(y) == no_node;
-    }
-    out.moved = std::move(d.value->moved);
+  // 3. The topological rewrite (a DPO rule may still refuse: dangling,
+  //    not-representable).
+  {
+    auto d = topology.rewrite(g.map, std::move(*held.a));
+    held.a.reset();
+    if (!d.ok()) return refuse<EmbeddedApplication>(d.refusal, std::move(d.why));
+    held.a = std::move(*d.value);
   }
-  g.follow(out.moved);
+  in = Instances(*held.a);
+  const std::vector<std::vector<Dart>>& comatch = held.a->comatch;
+  EmbeddedApplication out;
+  out.matched = np * nl;
+  for (NodeId y = 0; y < R.node_count(); ++y)
+    if (rule.to_left(y) == no_node) out.added += comatch[y].size();
+  g.follow(held.a->moved);
   // Added darts may reuse deleted darts' slots: they start unlabeled (a
   // dart beyond an embedding's table has no value yet).
   for (NodeId y = 0; y < R.node_count(); ++y)
@@ -437,7 +428,13 @@ Outcome<EmbeddedDerivation> EmbeddedRewriter::Context::apply(std::span<const Dar
       for (auto [d, idx] : second_values) e->set_index(d, idx);
     }
   }
-  if (record) out.comatch = comatch;  // a copy: the tables go back to the scheme's pool
+  out.topology.g_size = held.a->g_size;
+  if (record) {
+    out.topology = std::move(*held.a);
+    held.a.reset();
+  } else {
+    out.topology.moved = held.a->moved;  // a copy: the tables go back to the Applier
+  }
   return {std::move(out), Refusal::none, {}};
 }
 
@@ -478,20 +475,13 @@ TermFacts term_facts(const Rule& r, const RuleTerms& t) {
   return f;
 }
 
-EmbeddedRewriter::EmbeddedRewriter(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g, Evaluation evaluation)
-    : c_(std::make_unique<Context>(rule, words, terms, g, evaluation)) {}
+EmbeddedRewriter::EmbeddedRewriter(Applier& topology, const Operation& op, const RuleTerms& terms, EmbeddedMap& g, const EvaluationOptions& options)
+    : c_(std::make_unique<Context>(topology, op, terms, g, options)) {}
 
 EmbeddedRewriter::~EmbeddedRewriter() = default;
 
-Outcome<EmbeddedDerivation> EmbeddedRewriter::apply(std::span<const Dart> hook_darts, bool record) { return c_->apply(hook_darts, record); }
+Outcome<EmbeddedApplication> EmbeddedRewriter::apply(std::span<const Dart> hook_darts, bool record) { return c_->apply(hook_darts, record); }
 
-void EmbeddedRewriter::use_kept_label_shortcut(bool on) { c_->kept_shortcut = on; }
-
-EmbeddedRewriter::ShortcutCounts EmbeddedRewriter::kept_label_shortcuts() const { return c_->shortcuts; }
-
-Outcome<EmbeddedDerivation> apply_embedded(const Rule& rule, const ArcWords& words, const RuleTerms& terms, EmbeddedMap& g,
-                                           std::span<const Dart> hook_darts, bool record) {
-  return EmbeddedRewriter(rule, words, terms, g).apply(hook_darts, record);
-}
+Applier::ShortcutCounts EmbeddedRewriter::kept_label_shortcuts() const { return c_->shortcuts; }
 
 }  // namespace dartcheck

@@ -10,7 +10,7 @@
 // jiji cycles there, is in docs/prove.md).
 #pragma once
 
-#include "proofs/host_encoding.hpp"
+#include "proofs/detail/host_encoding.hpp"
 
 namespace dartcheck::proofs {
 

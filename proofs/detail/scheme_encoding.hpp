@@ -23,12 +23,10 @@
 #pragma once
 
 #include "rewriting/rule.hpp"
-#include "proofs/host_encoding.hpp"
+#include "proofs/detail/host_encoding.hpp"
+#include "proofs/rule_prover.hpp"
 
 namespace dartcheck::proofs {
-
-/// Why the solver does not encode this scheme ("" if it does).
-std::string scheme_out_of_scope(const Rule& core);
 
 class SchemeEncoding : public HostEncoding {
  public:
