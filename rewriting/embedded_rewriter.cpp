@@ -42,6 +42,12 @@ struct Source {
   bool stored = false;
 };
 
+// A refusal found by one phase of an application.
+struct Refused {
+  Refusal refusal;
+  std::string why;
+};
+
 // The first labeled instance written to an orbit of H: its pool index,
 // its source, and the instance (term k, pattern copy p).
 struct Writer {
@@ -104,6 +110,14 @@ struct EmbeddedRewriter::Context {
   }
 
   Outcome<EmbeddedApplication> apply(std::span<const Dart> hook_darts, bool record);
+  // The phases of apply.
+  bool extended() const { return terms.instantiation == Instantiation::extended; }
+  std::span<const Dart> binding(const Instances& in, std::size_t p) const;
+  std::optional<Refused> label_match(const Instances& in);
+  std::optional<Refused> right_sources(const Instances& in);
+  void clear_labels(const std::vector<std::vector<Dart>>& comatch);
+  void write_classes(std::size_t u, const Instances& in, const std::vector<std::vector<Dart>>& comatch, bool record, EmbeddedApplication& out);
+  void write_instances(std::size_t u, const Instances& in, const std::vector<std::vector<Dart>>& comatch, bool record, EmbeddedApplication& out);
   std::string overlap(const Instances& in, std::size_t u);
   bool kept_classes(const Instances& in, std::size_t u, std::uint32_t group, const std::vector<std::uint32_t>& group_of,
                     const std::vector<int>& steps, std::vector<std::uint32_t>& id, std::uint32_t& count);
@@ -172,7 +186,6 @@ std::string EmbeddedRewriter::Context::overlap(const Instances& in, std::size_t 
 }
 
 Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Dart> hook_darts, bool record) {
-  const TopoGraph &L = rule.left(), &R = rule.right();
   // Every embedding the rule labels is written, so the map must have it.
   for (const EmbeddingSignature* e : used)
     if (!g.find(e->name))
@@ -194,10 +207,57 @@ Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Da
     held.a = std::move(*m.value);
   }
   Instances in(*held.a);
-  const std::size_t np = in.np, nl = L.node_count();
+  // 2. Evaluation (Def. 10) on G: the labeled match of L, Lemma 3, and
+  //    the value of each labeled instance of R.
+  if (auto r = label_match(in)) return refuse<EmbeddedApplication>(r->refusal, std::move(r->why));
+  if (auto r = right_sources(in)) return refuse<EmbeddedApplication>(r->refusal, std::move(r->why));
+  // 3. The topological rewrite (a DPO rule may still refuse: dangling,
+  //    not-representable).
+  {
+    auto d = topology.rewrite(g.map, std::move(*held.a));
+    held.a.reset();
+    if (!d.ok()) return refuse<EmbeddedApplication>(d.refusal, std::move(d.why));
+    held.a = std::move(*d.value);
+  }
+  in = Instances(*held.a);
+  const std::vector<std::vector<Dart>>& comatch = held.a->comatch;
+  const TopoGraph& R = rule.right();
+  EmbeddedApplication out;
+  out.matched = in.np * rule.left().node_count();
+  for (NodeId y = 0; y < R.node_count(); ++y)
+    if (rule.to_left(y) == no_node) out.added += comatch[y].size();
+  g.follow(held.a->moved);
+  // 4. Labels: those R drops, then R's.
+  clear_labels(comatch);
+  // pooled[i]: where evaluated[i] went once moved into its pool.
+  pooled.assign(evaluated.size(), Embedding::none);
+  for (std::size_t u = 0; u < used.size(); ++u) {
+    if (extended() && closed[u] && per_class[u])
+      write_classes(u, in, comatch, record, out);
+    else
+      write_instances(u, in, comatch, record, out);
+  }
+  out.topology.g_size = held.a->g_size;
+  if (record) {
+    out.topology = std::move(*held.a);
+    held.a.reset();
+  } else {
+    out.topology.moved = held.a->moved;  // a copy: the tables go back to the Applier
+  }
+  return {std::move(out), Refusal::none, {}};
+}
 
-  // 2. Evaluation (Def. 10) on G, and the labeled match of L. binding[p]
-  //    holds the darts of L's nodes in pattern copy p.
+std::span<const Dart> EmbeddedRewriter::Context::binding(const Instances& in, std::size_t p) const {
+  const std::size_t nl = rule.left().node_count();
+  return nl == 1 ? std::span<const Dart>(&(*in.dart)[0][p], 1) : std::span<const Dart>(flat.data() + p * nl, nl);
+}
+
+// The labeled match of L: each term of L, compiled for this map, evaluated
+// at its node's darts must equal their value; then Lemma 3 for each
+// embedding L does not close.
+std::optional<Refused> EmbeddedRewriter::Context::label_match(const Instances& in) {
+  const TopoGraph& L = rule.left();
+  const std::size_t np = in.np, nl = L.node_count();
   ev.memorise(true);
   ev.forget();
   const std::vector<std::string>& names = L.names();
@@ -205,16 +265,13 @@ Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Da
   right_code.resize(terms.right.size());
   for (std::size_t k = 0; k < terms.left.size(); ++k) ev.compile(terms.left[k].term, names, left_code[k]);
   for (std::size_t k = 0; k < terms.right.size(); ++k) ev.compile(terms.right[k].term, names, right_code[k]);
-  // With one node in L (a Jerboa hook), copy p's binding is the p-th
-  // entry of the match's own column: no table.
+  // binding(p): the darts of L's nodes in pattern copy p. With one node in
+  // L (a Jerboa hook), the p-th entry of the match's own column: no table.
   if (nl > 1) {
     flat.resize(np * nl);
     for (NodeId x = 0; x < nl; ++x)
       for (std::size_t p = 0; p < np; ++p) flat[p * nl + x] = in.at(x, p);
   }
-  auto binding = [&](std::size_t p) {
-    return nl == 1 ? std::span<const Dart>(&(*in.dart)[0][p], 1) : std::span<const Dart>(flat.data() + p * nl, nl);
-  };
   try {
     for (std::size_t k = 0; k < terms.left.size(); ++k) {
       const NodeTerm& t = terms.left[k];
@@ -224,22 +281,25 @@ Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Da
       for (std::size_t p = 0; p < np; ++p) {
         const Value* have = e ? e->value(in.at(x, p)) : nullptr;
         if (trivial && have) continue;
-        const Value want = ev.value(left_code[k], binding(p));
+        const Value want = ev.value(left_code[k], binding(in, p));
         if (!have || !(*have == want))
-          return refuse<EmbeddedApplication>(Refusal::label_mismatch,
-                                             fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p), t.embedding,
-                                                         t.term.str(), want.str(), in.at(x, p), have ? have->str() : "no value"));
+          return Refused{Refusal::label_mismatch, fmt::format("node {} of L is labeled {} = {} = {}, but dart {} has {}", in.name(L, x, p),
+                                                              t.embedding, t.term.str(), want.str(), in.at(x, p), have ? have->str() : "no value")};
       }
     }
   } catch (const EvaluationError& e) {
-    return refuse<EmbeddedApplication>(Refusal::no_value, fmt::format("a term of L has no value: {}", e.what()));
+    return Refused{Refusal::no_value, fmt::format("a term of L has no value: {}", e.what())};
   }
-  const bool extended = terms.instantiation == Instantiation::extended;
-  if (extended)
+  if (extended())
     for (std::size_t u = 0; u < used.size(); ++u)
       if (!left_closed[u])
-        if (auto why = overlap(in, u); !why.empty()) return refuse<EmbeddedApplication>(Refusal::overlap, std::move(why));
+        if (auto why = overlap(in, u); !why.empty()) return Refused{Refusal::overlap, std::move(why)};
+  return std::nullopt;
+}
 
+std::optional<Refused> EmbeddedRewriter::Context::right_sources(const Instances& in) {
+  const TopoGraph& R = rule.right();
+  const std::size_t np = in.np;
   // The source of each labeled instance of R. With one evaluation per
   // class, every instance of a class takes its class's source
   // (class_source[u][c]: no per-instance table); otherwise each instance
@@ -249,7 +309,7 @@ Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Da
   has_classes.assign(used.size(), 0);
   per_class.assign(used.size(), 0);
   for (std::size_t u = 0; u < used.size(); ++u) {
-    if (extended && (evaluation == Evaluation::one_per_orbit || closed[u])) {
+    if (extended() && (evaluation == Evaluation::one_per_orbit || closed[u])) {
       if (kept_shortcut && evaluation == Evaluation::one_per_orbit && closed[u] && !rule.deletes_nodes()) {
         const GroupNumbering kept = [&](std::uint32_t group, const std::vector<std::uint32_t>& group_of, const std::vector<int>& steps,
                                         std::vector<std::uint32_t>& id,
@@ -287,40 +347,28 @@ Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Da
             here = {e->slot[d], true};
           } else {
             here = {static_cast<std::uint32_t>(evaluated.size()), false};
-            evaluated.push_back(ev.value(right_code[k], binding(p)));
+            evaluated.push_back(ev.value(right_code[k], binding(in, p)));
           }
         }
       }
     }
   } catch (const EvaluationError& e) {
-    return refuse<EmbeddedApplication>(Refusal::no_value, fmt::format("a term of R has no value: {}", e.what()));
+    return Refused{Refusal::no_value, fmt::format("a term of R has no value: {}", e.what())};
   }
+  return std::nullopt;
+}
 
-  // 3. The topological rewrite (a DPO rule may still refuse: dangling,
-  //    not-representable).
-  {
-    auto d = topology.rewrite(g.map, std::move(*held.a));
-    held.a.reset();
-    if (!d.ok()) return refuse<EmbeddedApplication>(d.refusal, std::move(d.why));
-    held.a = std::move(*d.value);
-  }
-  in = Instances(*held.a);
-  const std::vector<std::vector<Dart>>& comatch = held.a->comatch;
-  EmbeddedApplication out;
-  out.matched = np * nl;
-  for (NodeId y = 0; y < R.node_count(); ++y)
-    if (rule.to_left(y) == no_node) out.added += comatch[y].size();
-  g.follow(held.a->moved);
-  // Added darts may reuse deleted darts' slots: they start unlabeled (a
-  // dart beyond an embedding's table has no value yet).
+// Added darts may reuse deleted darts' slots: they start unlabeled (a dart
+// beyond an embedding's table has no value yet).
+void EmbeddedRewriter::Context::clear_labels(const std::vector<std::vector<Dart>>& comatch) {
+  const TopoGraph& R = rule.right();
   for (NodeId y = 0; y < R.node_count(); ++y)
     if (rule.to_left(y) == no_node)
       for (Embedding& e : g.embeddings)
         for (Dart d : comatch[y])
           if (d < e.slot.size()) e.slot[d] = Embedding::none;
-
-  // 4. Labels. A preserved node labeled in L and not in R loses its value
-  //    (unless a label of R reaches it); R's labels are written next.
+  // A preserved node labeled in L and not in R loses its value (unless a
+  // label of R reaches it); R's labels are written next.
   for (std::size_t k = 0; k < terms.left.size(); ++k) {
     const NodeTerm& t = terms.left[k];
     const NodeId y = rule.to_right(left_node[k]);
@@ -328,114 +376,115 @@ Outcome<EmbeddedApplication> EmbeddedRewriter::Context::apply(std::span<const Da
     Embedding* e = g.find(t.embedding);
     const auto gens = dims_generators(e->signature.orbit);
     for (Dart d : comatch[y]) {
-      if (!extended) {
+      if (!extended()) {
         e->set_index(d, Embedding::none);
         continue;
       }
       for (Dart x : walker.orbit(d, gens)) e->set_index(x, Embedding::none);
     }
   }
-  // pooled[i]: where evaluated[i] went once moved into its pool.
-  pooled.assign(evaluated.size(), Embedding::none);
-  for (std::size_t u = 0; u < used.size(); ++u) {
-    const EmbeddingSignature* sig = used[u];
-    Embedding* e = g.find(sig->name);
-    const std::vector<OrbitWord>& gens = used_gens[u];
-    // The writer of each orbit of H this application labels: its first
-    // labeled instance. A closed embedding finds it by class (writer_of,
-    // per class), another by dart (given[d], set by walking the
-    // orbit from the writer).
-    writers.clear();
-    const InstantiatedClasses& cls = classes[u];
-    const bool by_class = extended && closed[u];
-    writer_of.assign(by_class ? cls.count : 0, DartTable::none);
-    if (by_class && per_class[u]) {
-      // Every instance of a class took the class's source, so no two
-      // disagree: each labeled class's value is pooled once, and each
-      // instance of the class (a whole orbit of H) takes it.
-      const std::vector<Source>& of_class = class_source[u];
-      auto value = [&](Source f) -> const Value& { return f.stored ? e->pool[f.index] : evaluated[f.index]; };
-      if (record)
-        for (std::size_t k = 0; k < terms.right.size(); ++k)
-          if (terms.right[k].embedding == sig->name)
-            for (std::size_t p = 0; p < np; ++p) {
-              const NodeId y = right_node[k];
-              out.written.push_back({sig->name, in.name(R, y, p), comatch[y][p], value(of_class[cls.of(y, p)])});
-            }
-      std::vector<std::uint32_t>& pool_index = writer_of;
-      for (std::uint32_t c = 0; c < cls.count; ++c)
-        if (const Source f = of_class[c]; f.index != Embedding::none) pool_index[c] = f.stored ? f.index : e->store(evaluated[f.index]);
-      for (NodeId y = 0; y < R.node_count(); ++y)
-        for (std::size_t p = 0; p < np; ++p)
-          if (const std::uint32_t v = pool_index[cls.of(y, p)]; v != DartTable::none) e->set_index(comatch[y][p], v);
-      continue;
-    }
-    std::vector<std::pair<Dart, std::uint32_t>> second_values;  // darts of a conflict
-    const DartTable::ClearOnExit emptied{given};
-    for (std::size_t k = 0; k < terms.right.size(); ++k) {
-      const NodeTerm& t = terms.right[k];
-      if (t.embedding != sig->name) continue;
-      const NodeId y = right_node[k];
-      for (std::size_t p = 0; p < np; ++p) {
-        const Dart d = comatch[y][p];
-        const Source from = per_class[u] ? class_source[u][cls.of(y, p)] : source[k * np + p];
-        Value& v = from.stored ? e->pool[from.index] : pooled[from.index] != Embedding::none ? e->pool[pooled[from.index]] : evaluated[from.index];
-        if (record) out.written.push_back({sig->name, in.name(R, y, p), d, v});
-        auto stored = [&] { return from.stored ? from.index : e->store(v); };
-        if (!extended) {
+}
+
+// Every instance of a class took the class's source, so no two disagree:
+// each labeled class's value is pooled once, and each instance of the
+// class (a whole orbit of H) takes it.
+void EmbeddedRewriter::Context::write_classes(std::size_t u, const Instances& in, const std::vector<std::vector<Dart>>& comatch, bool record,
+                                              EmbeddedApplication& out) {
+  const TopoGraph& R = rule.right();
+  const std::size_t np = in.np;
+  const EmbeddingSignature* sig = used[u];
+  Embedding* e = g.find(sig->name);
+  const InstantiatedClasses& cls = classes[u];
+  writer_of.assign(cls.count, DartTable::none);
+  const std::vector<Source>& of_class = class_source[u];
+  auto value = [&](Source f) -> const Value& { return f.stored ? e->pool[f.index] : evaluated[f.index]; };
+  if (record)
+    for (std::size_t k = 0; k < terms.right.size(); ++k)
+      if (terms.right[k].embedding == sig->name)
+        for (std::size_t p = 0; p < np; ++p) {
+          const NodeId y = right_node[k];
+          out.written.push_back({sig->name, in.name(R, y, p), comatch[y][p], value(of_class[cls.of(y, p)])});
+        }
+  std::vector<std::uint32_t>& pool_index = writer_of;
+  for (std::uint32_t c = 0; c < cls.count; ++c)
+    if (const Source f = of_class[c]; f.index != Embedding::none) pool_index[c] = f.stored ? f.index : e->store(evaluated[f.index]);
+  for (NodeId y = 0; y < R.node_count(); ++y)
+    for (std::size_t p = 0; p < np; ++p)
+      if (const std::uint32_t v = pool_index[cls.of(y, p)]; v != DartTable::none) e->set_index(comatch[y][p], v);
+}
+
+// The writer of each orbit of H this application labels is its first
+// labeled instance. A closed embedding finds it by class (writer_of, per
+// class), another by dart (given[d], set by walking the orbit from the
+// writer). Two values for one orbit are a conflict (003 Def. 13).
+void EmbeddedRewriter::Context::write_instances(std::size_t u, const Instances& in, const std::vector<std::vector<Dart>>& comatch, bool record,
+                                                EmbeddedApplication& out) {
+  const TopoGraph& R = rule.right();
+  const std::size_t np = in.np;
+  const EmbeddingSignature* sig = used[u];
+  Embedding* e = g.find(sig->name);
+  const std::vector<OrbitWord>& gens = used_gens[u];
+  writers.clear();
+  const InstantiatedClasses& cls = classes[u];
+  const bool by_class = extended() && closed[u];
+  writer_of.assign(by_class ? cls.count : 0, DartTable::none);
+  std::vector<std::pair<Dart, std::uint32_t>> second_values;  // darts of a conflict
+  const DartTable::ClearOnExit emptied{given};
+  for (std::size_t k = 0; k < terms.right.size(); ++k) {
+    const NodeTerm& t = terms.right[k];
+    if (t.embedding != sig->name) continue;
+    const NodeId y = right_node[k];
+    for (std::size_t p = 0; p < np; ++p) {
+      const Dart d = comatch[y][p];
+      const Source from = per_class[u] ? class_source[u][cls.of(y, p)] : source[k * np + p];
+      Value& v = from.stored ? e->pool[from.index] : pooled[from.index] != Embedding::none ? e->pool[pooled[from.index]] : evaluated[from.index];
+      if (record) out.written.push_back({sig->name, in.name(R, y, p), d, v});
+      auto stored = [&] { return from.stored ? from.index : e->store(v); };
+      if (!extended()) {
+        e->set_index(d, stored());
+        continue;
+      }
+      if (const std::uint32_t w = by_class ? writer_of[cls.of(y, p)] : given.get(d); w != DartTable::none) {
+        const Writer& first = writers[w];
+        // The orbit already has this value: the same source (one per
+        // orbit), the same stored value, or an equal evaluated one.
+        if ((from.index == first.from.index && from.stored == first.from.stored) || (from.stored && first.value == from.index) ||
+            e->pool[first.value] == v)
+          continue;
+        out.conflicts.push_back(
+            fmt::format("the {}-orbit of dart {} gets {} from {} and {} from {}: the extended rule breaks (A), so the propagation "
+                        "of 003 Def. 12 does not exist",
+                        sig->name, d, e->pool[first.value].str(), in.name(R, right_node[first.k], first.p), v.str(), in.name(R, y, p)));
+        if (by_class)
+          second_values.emplace_back(d, stored());  // H shows both values
+        else
           e->set_index(d, stored());
-          continue;
-        }
-        if (const std::uint32_t w = by_class ? writer_of[cls.of(y, p)] : given.get(d); w != DartTable::none) {
-          const Writer& first = writers[w];
-          // The orbit already has this value: the same source (one per
-          // orbit), the same stored value, or an equal evaluated one.
-          if ((from.index == first.from.index && from.stored == first.from.stored) || (from.stored && first.value == from.index) ||
-              e->pool[first.value] == v)
-            continue;
-          out.conflicts.push_back(
-              fmt::format("the {}-orbit of dart {} gets {} from {} and {} from {}: the extended rule breaks (A), so the propagation "
-                          "of 003 Def. 12 does not exist",
-                          sig->name, d, e->pool[first.value].str(), in.name(R, right_node[first.k], first.p), v.str(), in.name(R, y, p)));
-          if (by_class)
-            second_values.emplace_back(d, stored());  // H shows both values
-          else
-            e->set_index(d, stored());
-          continue;
-        }
-        // An evaluated value is written once as its orbit's first value:
-        // moved into the pool (it is compared through the pool afterwards).
-        std::uint32_t idx = from.index;
-        if (!from.stored) idx = pooled[from.index] != Embedding::none ? pooled[from.index] : (pooled[from.index] = e->store(std::move(v)));
-        const auto w = static_cast<std::uint32_t>(writers.size());
-        writers.push_back({idx, from, k, p});
-        if (by_class) {
-          writer_of[cls.of(y, p)] = w;
-          continue;
-        }
-        for (Dart x : walker.orbit(d, gens)) {
-          e->set_index(x, idx);
-          given.set(x, w);
-        }
+        continue;
+      }
+      // An evaluated value is written once as its orbit's first value:
+      // moved into the pool (it is compared through the pool afterwards).
+      std::uint32_t idx = from.index;
+      if (!from.stored) idx = pooled[from.index] != Embedding::none ? pooled[from.index] : (pooled[from.index] = e->store(std::move(v)));
+      const auto w = static_cast<std::uint32_t>(writers.size());
+      writers.push_back({idx, from, k, p});
+      if (by_class) {
+        writer_of[cls.of(y, p)] = w;
+        continue;
+      }
+      for (Dart x : walker.orbit(d, gens)) {
+        e->set_index(x, idx);
+        given.set(x, w);
       }
     }
-    // A written class is a whole orbit of H: each of its instances, labeled
-    // or not, takes the class's value.
-    if (by_class) {
-      for (NodeId y = 0; y < R.node_count(); ++y)
-        for (std::size_t p = 0; p < np; ++p)
-          if (const std::uint32_t w = writer_of[cls.of(y, p)]; w != DartTable::none) e->set_index(comatch[y][p], writers[w].value);
-      for (auto [d, idx] : second_values) e->set_index(d, idx);
-    }
   }
-  out.topology.g_size = held.a->g_size;
-  if (record) {
-    out.topology = std::move(*held.a);
-    held.a.reset();
-  } else {
-    out.topology.moved = held.a->moved;  // a copy: the tables go back to the Applier
+  // A written class is a whole orbit of H: each of its instances, labeled
+  // or not, takes the class's value.
+  if (by_class) {
+    for (NodeId y = 0; y < R.node_count(); ++y)
+      for (std::size_t p = 0; p < np; ++p)
+        if (const std::uint32_t w = writer_of[cls.of(y, p)]; w != DartTable::none) e->set_index(comatch[y][p], writers[w].value);
+    for (auto [d, idx] : second_values) e->set_index(d, idx);
   }
-  return {std::move(out), Refusal::none, {}};
 }
 
 NodeId kept_source(const TermFacts& facts, const RuleTerms& terms, const std::string& embedding, const std::function<bool(NodeId)>& in_group) {
