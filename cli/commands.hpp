@@ -12,7 +12,6 @@
 #include "analysis/exit_status.hpp"
 #include "campaign/merge.hpp"
 #include "reports/output_format.hpp"
-#include "reports/apply_output.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::cli {
@@ -81,7 +80,13 @@ struct DrawMapOptions {
 /// highlighted).
 int draw_map(const DrawMapOptions& o);
 
-using ApplyOptions = reports::ApplyRequest;
+/// What `dartcheck apply` was asked: the map as the user named it (a mesh
+/// gives an embedded rule its positions), the hooks, and the outputs.
+struct ApplyOptions {
+  std::string catalog, rule, map, output, kappa_out;
+  std::vector<Dart> hooks;
+  std::size_t limit = 50;  // violations printed (0: all)
+};
 int apply(const ApplyOptions& o);
 
 struct RunOptions {

@@ -1,30 +1,35 @@
-// apply's run: one application of a catalog rule at hook darts, the
-// result's validity (and, for an embedded rule, its embedding
-// consistency), the files asked for, printed as it goes.
+// The text of `dartcheck apply`'s run (cli/apply_run.cpp applies, checks
+// and writes; these render what it found): the refusal, the application
+// and the values it wrote, each embedding's consistency, the dart
+// correspondence.
 #pragma once
 
+#include <cstddef>
 #include <string>
-#include <vector>
 
-#include "core/map.hpp"
-#include "io/catalog.hpp"
+#include "checkers/embedding_consistency.hpp"
+#include "rewriting/application.hpp"
 
 namespace dartcheck::reports {
 
-/// What `dartcheck apply` was asked: the map as the user named it (a mesh
-/// gives an embedded rule its positions), the hooks, and the outputs.
-struct ApplyRequest {
-  std::string catalog, rule, map, output, kappa_out;
-  std::vector<Dart> hooks;
-  std::size_t limit = 50;  // violations printed (0: all)
-};
+/// "not applied (REFUSAL): WHY".
+std::string not_applied_text(Refusal refusal, const std::string& why);
 
-/// Applies `rule` to `host` (resolved from `request.map`, hooks checked)
-/// and writes -o as the rule allows: YAML always, Jerboa .jba for a
-/// topological rule (values carried through the dart correspondence),
-/// OFF/OBJ for an embedded rule with a point embedding. Throws InputError
-/// for an output the rule cannot give. Returns 0 if the rule applied and
-/// H is valid (and consistently embedded), 1 otherwise.
-int apply_and_write(const ApplyRequest& request, const CatalogRule& rule, Map host);
+/// An embedded rule's application: darts matched and added, the size of
+/// H, then each value written and each conflict (003 Def. 13).
+std::string embedded_application_text(const EmbeddedApplication& a, Instantiation instantiation, std::size_t h_size);
+
+/// A topological application: the pattern's size (schemes), H's size and
+/// the comatch per node of R.
+std::string application_text(const Rule& rule, const Application& a, std::size_t h_size);
+
+/// One embedding of H: its orbits and whether it is consistent, then up
+/// to `limit` of its conflicts (0: all). A `foreign` embedding (the file's,
+/// not the rule's modeler's) is said not to count.
+std::string embedding_check_text(const Embedding& e, const EmbeddingConsistency& c, bool foreign, std::size_t limit);
+
+/// How many preserved darts changed id ("" when none did), with the hint
+/// of --kappa-out unless `kappa_out` is set.
+std::string renumbered_text(std::size_t moved, std::size_t preserved, bool kappa_out);
 
 }  // namespace dartcheck::reports
