@@ -174,189 +174,256 @@ std::vector<std::string> failing_names(const std::vector<TermConditionVerdict>& 
   return r;
 }
 
-std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const ArcWords& words, const RuleTerms& terms) {
-  const TopoGraph &L = rule.left(), &R = rule.right();
-  const bool scheme = words.scheme, direct = terms.instantiation == Instantiation::direct;
-  std::vector<TermConditionVerdict> out;
-  for (const EmbeddingSignature& e : terms.embeddings) {
-    const std::string& pi = e.name;
-    const std::string orbit = fmt::format("<{}>", fmt::join(e.orbit, ","));
-    auto term = [&](char side, NodeId v) { return terms.find(side, (side == 'L' ? L : R).name(v), pi); };
-    auto shown = [&](const Term* t) { return t ? t->str() : std::string("unlabeled"); };
-    std::vector<bool> kept(L.arc_count());
-    for (ArcId a = 0; a < L.arc_count(); ++a) kept[a] = rule.preserved_left_arc(a);
-    const auto lo = orbits(L, words.left, e.orbit, false), ro = orbits(R, words.right, e.orbit, false);
-    const auto ko = orbits(L, words.left, e.orbit, false, &kept);
-    const auto re = orbits(R, words.right, e.orbit, scheme);
+namespace {
 
-    // (A), on L, K (labels where L and R agree, preserved arcs) and R.
-    TermConditionVerdict a{"A", pi, true, true, {}};
-    auto check_side = [&](char side, const char* side_name, const TopoGraph& g, const std::vector<NodeId>& orb, const std::vector<ConjWord>& ws,
-                          const std::vector<bool>* arc_keep, auto label_of) {
-      std::map<NodeId, std::vector<NodeId>> groups;
-      for (NodeId v = 0; v < g.node_count(); ++v) groups[orb[v]].push_back(v);
-      for (const auto& [root, nodes] : groups) {
-        const Term* first = nullptr;
-        NodeId first_node = 0;
+// What the conditions on one embedding pi read: its orbits on L, on K
+// (preserved arcs only), on R, and on R with a scheme's implicit arcs, and
+// the terms of pi on each side.
+struct PiOrbits {
+  const Rule& rule;
+  const ArcWords& words;
+  const RuleTerms& terms;
+  const EmbeddingSignature& e;
+  std::string orbit;  // "<0,1>"
+  std::vector<bool> kept;
+  std::vector<NodeId> lo, ro, ko, re;
+
+  PiOrbits(const Rule& r, const ArcWords& w, const RuleTerms& t, const EmbeddingSignature& sig)
+      : rule(r), words(w), terms(t), e(sig), orbit(fmt::format("<{}>", fmt::join(sig.orbit, ","))), kept(r.left().arc_count()) {
+    for (ArcId a = 0; a < r.left().arc_count(); ++a) kept[a] = r.preserved_left_arc(a);
+    lo = orbits(r.left(), w.left, sig.orbit, false);
+    ro = orbits(r.right(), w.right, sig.orbit, false);
+    ko = orbits(r.left(), w.left, sig.orbit, false, &kept);
+    re = orbits(r.right(), w.right, sig.orbit, w.scheme);
+  }
+  const Term* term(char side, NodeId v) const { return terms.find(side, (side == 'L' ? rule.left() : rule.right()).name(v), e.name); }
+};
+
+// (A), on L, K (labels where L and R agree, preserved arcs) and R.
+TermConditionVerdict condition_a(const PiOrbits& po) {
+  const Rule& rule = po.rule;
+  const ArcWords& words = po.words;
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  const std::string& pi = po.e.name;
+  const std::string& orbit = po.orbit;
+  const std::vector<NodeId>& lo = po.lo;
+  const std::vector<NodeId>& ro = po.ro;
+  const std::vector<NodeId>& ko = po.ko;
+  const std::vector<bool>& kept = po.kept;
+  const EmbeddingSignature& e = po.e;
+  const RuleTerms& terms = po.terms;
+  const bool scheme = words.scheme;
+  const bool direct = po.terms.instantiation == Instantiation::direct;
+  auto term = [&](char side, NodeId v) { return po.term(side, v); };
+  TermConditionVerdict a{"A", pi, true, true, {}};
+  auto check_side = [&](char side, const char* side_name, const TopoGraph& g, const std::vector<NodeId>& orb, const std::vector<ConjWord>& ws,
+                        const std::vector<bool>* arc_keep, auto label_of) {
+    std::map<NodeId, std::vector<NodeId>> groups;
+    for (NodeId v = 0; v < g.node_count(); ++v) groups[orb[v]].push_back(v);
+    for (const auto& [root, nodes] : groups) {
+      const Term* first = nullptr;
+      NodeId first_node = 0;
+      for (NodeId v : nodes) {
+        const Term* t = label_of(v);
+        if (!t) continue;
+        if (!first) {
+          first = t;
+          first_node = v;
+        } else if (!t->same(*first)) {
+          a.holds = false;
+          a.witnesses.push_back({0,
+                                 side,
+                                 {g.name(first_node), g.name(v)},
+                                 {},
+                                 {},
+                                 fmt::format("{}: nodes {} and {} share a {}-orbit {} ({}) but carry different terms {} and {}", side_name,
+                                             g.name(first_node), g.name(v), pi, orbit, list(g, nodes), first->str(), t->str())});
+        }
+      }
+      if (!first || !scheme) continue;
+      // Copies of a node in one orbit: the moves are the words of the
+      // orbit's arcs.
+      for (ArcId x = 0; x < g.arc_count(); ++x) {
+        const auto& arc = g.arc(x);
+        if (orb[arc.source] != root || !in_orbit(e.orbit, arc.label) || (arc_keep && !(*arc_keep)[x])) continue;
+        const ConjWord& w = arc_word(ws, x);
+        if (w.empty()) continue;
         for (NodeId v : nodes) {
           const Term* t = label_of(v);
-          if (!t) continue;
-          if (!first) {
-            first = t;
-            first_node = v;
-          } else if (!t->same(*first)) {
+          if (t && !copy_invariant(*t, w, L, words, terms, rule.model())) {
             a.holds = false;
             a.witnesses.push_back({0,
                                    side,
-                                   {g.name(first_node), g.name(v)},
+                                   {g.name(v)},
+                                   {arc_text(g, x, ws, true)},
                                    {},
-                                   {},
-                                   fmt::format("{}: nodes {} and {} share a {}-orbit {} ({}) but carry different terms {} and {}", side_name,
-                                               g.name(first_node), g.name(v), pi, orbit, list(g, nodes), first->str(), t->str())});
+                                   fmt::format("{}: the copies of {} joined by {} lie in one {}-orbit, but its term {} may differ between copies "
+                                               "(a variable is not read through an orbit that contains the L loop moving the copy)",
+                                               side_name, g.name(v), arc_text(g, x, ws, true), pi, t->str())});
+            break;
           }
         }
-        if (!first || !scheme) continue;
-        // Copies of a node in one orbit: the moves are the words of the
-        // orbit's arcs.
-        for (ArcId x = 0; x < g.arc_count(); ++x) {
-          const auto& arc = g.arc(x);
-          if (orb[arc.source] != root || !in_orbit(e.orbit, arc.label) || (arc_keep && !(*arc_keep)[x])) continue;
-          const ConjWord& w = arc_word(ws, x);
-          if (w.empty()) continue;
-          for (NodeId v : nodes) {
-            const Term* t = label_of(v);
-            if (t && !copy_invariant(*t, w, L, words, terms, rule.model())) {
-              a.holds = false;
-              a.witnesses.push_back({0,
-                                     side,
-                                     {g.name(v)},
-                                     {arc_text(g, x, ws, true)},
-                                     {},
-                                     fmt::format("{}: the copies of {} joined by {} lie in one {}-orbit, but its term {} may differ between copies "
-                                                 "(a variable is not read through an orbit that contains the L loop moving the copy)",
-                                                 side_name, g.name(v), arc_text(g, x, ws, true), pi, t->str())});
-              break;
-            }
-          }
-        }
-      }
-    };
-    check_side('L', "L", L, lo, words.left, nullptr, [&](NodeId v) { return term('L', v); });
-    check_side('L', "K", L, ko, words.left, &kept, [&](NodeId v) -> const Term* {
-      const NodeId r = rule.to_right(v);
-      if (r == no_node) return nullptr;
-      const Term *l = term('L', v), *rr = term('R', r);
-      return l && rr && l->same(*rr) ? l : nullptr;
-    });
-    check_side('R', "R", R, ro, words.right, nullptr, [&](NodeId v) { return term('R', v); });
-    if (!direct) split_orbits(rule, e, lo, ro, term, a);
-    out.push_back(std::move(a));
-
-    // (B): a preserved node whose term changes has a full, labeled R-orbit.
-    TermConditionVerdict b{"B", pi, true, direct, {}};
-    for (NodeId v = 0; v < L.node_count(); ++v) {
-      const NodeId r = rule.to_right(v);
-      if (r == no_node) continue;
-      const Term *tl = term('L', v), *tr = term('R', r);
-      if ((!tl && !tr) || (tl && tr && tl->same(*tr))) continue;
-      for (NodeId w = 0; w < R.node_count(); ++w) {
-        if (ro[w] != ro[r]) continue;
-        std::string why;
-        if (!term('R', w)) why = "is unlabeled";
-        for (Dim i : e.orbit) {
-          std::size_t n = 0;
-          for (const auto& arc : R.arcs()) n += arc.source == w && arc.label == i;
-          if (n != 1 && why.empty()) why = fmt::format("is the source of {} {}-arcs", n, i);
-        }
-        if (why.empty()) continue;
-        b.holds = false;
-        b.witnesses.push_back({0,
-                               'R',
-                               {R.name(r), R.name(w)},
-                               {},
-                               {},
-                               fmt::format("{} changes {} from {} to {}, but node {} of its R-orbit {} {}: the orbit is not fully matched", R.name(r),
-                                           pi, shown(tl), shown(tr), R.name(w), orbit, why)});
-        break;
       }
     }
-    out.push_back(std::move(b));
+  };
+  check_side('L', "L", L, lo, words.left, nullptr, [&](NodeId v) { return term('L', v); });
+  check_side('L', "K", L, ko, words.left, &kept, [&](NodeId v) -> const Term* {
+    const NodeId r = rule.to_right(v);
+    if (r == no_node) return nullptr;
+    const Term *l = term('L', v), *rr = term('R', r);
+    return l && rr && l->same(*rr) ? l : nullptr;
+  });
+  check_side('R', "R", R, ro, words.right, nullptr, [&](NodeId v) { return term('R', v); });
+  if (!direct) split_orbits(rule, e, lo, ro, term, a);
+  return a;
+}
 
-    // (C): an R-orbit that gains nodes keeps a value matched in L.
-    TermConditionVerdict c{"C", pi, true, true, {}};
-    std::vector<bool> reported(R.node_count(), false);
-    for (NodeId v = 0; v < L.node_count(); ++v) {
-      const NodeId r = rule.to_right(v);
-      if (r == no_node || reported[ro[r]]) continue;
-      std::string grows;
-      if (!scheme) {
-        for (NodeId w = 0; w < R.node_count() && grows.empty(); ++w) {
-          if (ro[w] != ro[r]) continue;
-          const NodeId lw = rule.to_left(w);
-          if (lw == no_node)
-            grows = fmt::format("gains the added node {}", R.name(w));
-          else if (lo[lw] != lo[v])
-            grows = fmt::format("joins {}, of another {}-orbit of L", R.name(w), pi);
-        }
-      } else {
-        for (ArcId x = 0; x < R.arc_count() && grows.empty(); ++x) {
-          const auto& arc = R.arc(x);
-          if (ro[arc.source] != ro[r] || !in_orbit(e.orbit, arc.label)) continue;
-          if (rule.to_left(arc.target) == no_node)
-            grows = fmt::format("gains the added node {}", R.name(arc.target));
-          else if (!rule.preserved_right_arc(x))
-            grows = fmt::format("gains the added arc {}", arc_text(R, x, words.right, true));
-        }
+// (B): a preserved node whose term changes has a full, labeled R-orbit.
+TermConditionVerdict condition_b(const PiOrbits& po) {
+  const Rule& rule = po.rule;
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  const std::string& pi = po.e.name;
+  const std::string& orbit = po.orbit;
+  const std::vector<NodeId>& ro = po.ro;
+  const EmbeddingSignature& e = po.e;
+  const bool direct = po.terms.instantiation == Instantiation::direct;
+  auto shown = [](const Term* t) { return t ? t->str() : std::string("unlabeled"); };
+  auto term = [&](char side, NodeId v) { return po.term(side, v); };
+  TermConditionVerdict b{"B", pi, true, direct, {}};
+  for (NodeId v = 0; v < L.node_count(); ++v) {
+    const NodeId r = rule.to_right(v);
+    if (r == no_node) continue;
+    const Term *tl = term('L', v), *tr = term('R', r);
+    if ((!tl && !tr) || (tl && tr && tl->same(*tr))) continue;
+    for (NodeId w = 0; w < R.node_count(); ++w) {
+      if (ro[w] != ro[r]) continue;
+      std::string why;
+      if (!term('R', w)) why = "is unlabeled";
+      for (Dim i : e.orbit) {
+        std::size_t n = 0;
+        for (const auto& arc : R.arcs()) n += arc.source == w && arc.label == i;
+        if (n != 1 && why.empty()) why = fmt::format("is the source of {} {}-arcs", n, i);
       }
-      if (grows.empty()) continue;
-      bool matched = false;
-      if (!scheme) {
-        for (NodeId u = 0; u < L.node_count() && !matched; ++u) {
-          const NodeId ru = rule.to_right(u);
-          matched = ru != no_node && lo[u] == lo[v] && ro[ru] == ro[r] && term('L', u);
-        }
-      } else {
-        matched = term('L', v) != nullptr;
+      if (why.empty()) continue;
+      b.holds = false;
+      b.witnesses.push_back({0,
+                             'R',
+                             {R.name(r), R.name(w)},
+                             {},
+                             {},
+                             fmt::format("{} changes {} from {} to {}, but node {} of its R-orbit {} {}: the orbit is not fully matched", R.name(r),
+                                         pi, shown(tl), shown(tr), R.name(w), orbit, why)});
+      break;
+    }
+  }
+  return b;
+}
+
+// (C): an R-orbit that gains nodes keeps a value matched in L.
+TermConditionVerdict condition_c(const PiOrbits& po) {
+  const Rule& rule = po.rule;
+  const ArcWords& words = po.words;
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  const std::string& pi = po.e.name;
+  const std::string& orbit = po.orbit;
+  const std::vector<NodeId>& lo = po.lo;
+  const std::vector<NodeId>& ro = po.ro;
+  const EmbeddingSignature& e = po.e;
+  const bool scheme = words.scheme;
+  auto term = [&](char side, NodeId v) { return po.term(side, v); };
+  TermConditionVerdict c{"C", pi, true, true, {}};
+  std::vector<bool> reported(R.node_count(), false);
+  for (NodeId v = 0; v < L.node_count(); ++v) {
+    const NodeId r = rule.to_right(v);
+    if (r == no_node || reported[ro[r]]) continue;
+    std::string grows;
+    if (!scheme) {
+      for (NodeId w = 0; w < R.node_count() && grows.empty(); ++w) {
+        if (ro[w] != ro[r]) continue;
+        const NodeId lw = rule.to_left(w);
+        if (lw == no_node)
+          grows = fmt::format("gains the added node {}", R.name(w));
+        else if (lo[lw] != lo[v])
+          grows = fmt::format("joins {}, of another {}-orbit of L", R.name(w), pi);
       }
-      if (matched) continue;
-      c.holds = false;
-      reported[ro[r]] = true;
-      c.witnesses.push_back({0,
+    } else {
+      for (ArcId x = 0; x < R.arc_count() && grows.empty(); ++x) {
+        const auto& arc = R.arc(x);
+        if (ro[arc.source] != ro[r] || !in_orbit(e.orbit, arc.label)) continue;
+        if (rule.to_left(arc.target) == no_node)
+          grows = fmt::format("gains the added node {}", R.name(arc.target));
+        else if (!rule.preserved_right_arc(x))
+          grows = fmt::format("gains the added arc {}", arc_text(R, x, words.right, true));
+      }
+    }
+    if (grows.empty()) continue;
+    bool matched = false;
+    if (!scheme) {
+      for (NodeId u = 0; u < L.node_count() && !matched; ++u) {
+        const NodeId ru = rule.to_right(u);
+        matched = ru != no_node && lo[u] == lo[v] && ro[ru] == ro[r] && term('L', u);
+      }
+    } else {
+      matched = term('L', v) != nullptr;
+    }
+    if (matched) continue;
+    c.holds = false;
+    reported[ro[r]] = true;
+    c.witnesses.push_back({0,
+                           'R',
+                           {R.name(r)},
+                           {},
+                           {},
+                           fmt::format("the {}-orbit {} of {} in R {}, but {} has no node of K in both its orbits labeled in L{}: its old value "
+                                       "would meet values that never were compared with it",
+                                       pi, orbit, R.name(r), grows, scheme ? "the node itself" : R.name(r),
+                                       scheme ? " (for a topological scheme the node itself must be labeled in L)" : "")});
+  }
+  return c;
+}
+
+// label: Def. 1's labeling, after propagation for extended rules.
+TermConditionVerdict condition_label(const PiOrbits& po) {
+  const Rule& rule = po.rule;
+  const TopoGraph& R = rule.right();
+  const std::string& pi = po.e.name;
+  const std::vector<NodeId>& re = po.re;
+  const bool direct = po.terms.instantiation == Instantiation::direct;
+  auto term = [&](char side, NodeId v) { return po.term(side, v); };
+  TermConditionVerdict lab{"label", pi, true, true, {}};
+  auto orbit_labeled = [&](NodeId r) {
+    for (NodeId w = 0; w < R.node_count(); ++w)
+      if (re[w] == re[r] && term('R', w)) return true;
+    return false;
+  };
+  for (NodeId r = 0; r < R.node_count(); ++r) {
+    const NodeId v = rule.to_left(r);
+    const bool needs = v == no_node || term('L', v);
+    if (!needs || term('R', r) || (!direct && orbit_labeled(r))) continue;
+    lab.holds = false;
+    lab.witnesses.push_back({0,
                              'R',
                              {R.name(r)},
                              {},
                              {},
-                             fmt::format("the {}-orbit {} of {} in R {}, but {} has no node of K in both its orbits labeled in L{}: its old value "
-                                         "would meet values that never were compared with it",
-                                         pi, orbit, R.name(r), grows, scheme ? "the node itself" : R.name(r),
-                                         scheme ? " (for a topological scheme the node itself must be labeled in L)" : "")});
-    }
-    out.push_back(std::move(c));
+                             v == no_node ? fmt::format("added node {} gets no {} value: {}", R.name(r), pi,
+                                                        direct ? "it is unlabeled in R (003 Def. 1)" : "no node of its R-orbit is labeled")
+                                          : fmt::format("preserved node {} is labeled in L ({}) but {}: its value would be lost (003 Def. 1)",
+                                                        R.name(r), term('L', v)->str(), direct ? "not in R" : "no node of its R-orbit is labeled")});
+  }
+  return lab;
+}
 
-    // label: Def. 1's labeling, after propagation for extended rules.
-    TermConditionVerdict lab{"label", pi, true, true, {}};
-    auto orbit_labeled = [&](NodeId r) {
-      for (NodeId w = 0; w < R.node_count(); ++w)
-        if (re[w] == re[r] && term('R', w)) return true;
-      return false;
-    };
-    for (NodeId r = 0; r < R.node_count(); ++r) {
-      const NodeId v = rule.to_left(r);
-      const bool needs = v == no_node || term('L', v);
-      if (!needs || term('R', r) || (!direct && orbit_labeled(r))) continue;
-      lab.holds = false;
-      lab.witnesses.push_back({0,
-                               'R',
-                               {R.name(r)},
-                               {},
-                               {},
-                               v == no_node
-                                   ? fmt::format("added node {} gets no {} value: {}", R.name(r), pi,
-                                                 direct ? "it is unlabeled in R (003 Def. 1)" : "no node of its R-orbit is labeled")
-                                   : fmt::format("preserved node {} is labeled in L ({}) but {}: its value would be lost (003 Def. 1)", R.name(r),
-                                                 term('L', v)->str(), direct ? "not in R" : "no node of its R-orbit is labeled")});
-    }
-    out.push_back(std::move(lab));
+}  // namespace
+
+std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const ArcWords& words, const RuleTerms& terms) {
+  std::vector<TermConditionVerdict> out;
+  for (const EmbeddingSignature& e : terms.embeddings) {
+    const PiOrbits po(rule, words, terms, e);
+    out.push_back(condition_a(po));
+    out.push_back(condition_b(po));
+    out.push_back(condition_c(po));
+    out.push_back(condition_label(po));
   }
   return out;
 }
