@@ -166,6 +166,161 @@ void sharpen_incomplete(const EventRule& r, KindEvents& k) {
   }
 }
 
+namespace {
+
+// A left orbit of the rule as its claims read it.
+struct LeftOrbit {
+  int li;
+  const RuleOrbit& x;
+  std::string name, incomplete;  // incomplete: " (incomplete: ...)" or ""
+  Certainty explicit_certainty, implicit_certainty;
+  std::vector<NodeId> preserved;  // its nodes that R keeps
+  std::set<int> ys;               // the right orbits they go to
+};
+
+// The explicit split and merge of a left orbit (Def. 3.2.1, 3.3.1): its
+// preserved nodes go to several right orbits, or meet another left
+// orbit's there.
+void explicit_claims(const EventRule& r, const KindEvents& k, const LeftOrbit& o, std::vector<EventClaim>& claims) {
+  const Rule& rule = *r.rule;
+  if (o.ys.size() >= 2) {
+    std::vector<std::string> parts;
+    for (int y : o.ys) parts.push_back(rule_orbit_name(r, k, false, y));
+    claims.push_back({Event::split,
+                      o.explicit_certainty,
+                      o.li,
+                      false,
+                      -1,
+                      {o.ys.begin(), o.ys.end()},
+                      fmt::format("the preserved nodes of {} go to {} (explicit, Def. 3.2.1){}", o.name, fmt::join(parts, ", "), o.incomplete)});
+  }
+  // Explicit merge: a preserved node of another left orbit lands in one of ys.
+  std::set<int> joined;
+  for (NodeId v = 0; v < rule.left().node_count(); ++v)
+    if (k.left.orbit_of[v] != o.li && rule.to_right(v) != no_node && o.ys.count(k.right.orbit_of[rule.to_right(v)]))
+      joined.insert(k.left.orbit_of[v]);
+  if (!joined.empty()) {
+    std::vector<std::string> parts;
+    for (int other : joined) parts.push_back(rule_orbit_name(r, k, true, other));
+    claims.push_back({Event::merge,
+                      o.explicit_certainty,
+                      o.li,
+                      false,
+                      -1,
+                      {joined.begin(), joined.end()},
+                      fmt::format("{} and {} meet in one right orbit (explicit, Def. 3.3.1){}", o.name, fmt::join(parts, ", "), o.incomplete)});
+  }
+}
+
+// The implicit split and merge along each position of the parameter,
+// per right orbit of the preserved nodes.
+void implicit_claims(const EventRule& r, const KindEvents& k, const LeftOrbit& o, std::vector<EventClaim>& claims) {
+  const OrbitKind& kind = k.kind;
+  for (int y : o.ys) {
+    const RuleOrbit& yo = k.right.orbits[static_cast<std::size_t>(y)];
+    for (std::size_t pos = 0; pos < r.parameter.size(); ++pos) {
+      const bool in_left = std::any_of(o.x.nodes.begin(), o.x.nodes.end(), [&](NodeId v) { return in_kind(kind, r.left.labels[v][pos]); });
+      const bool in_right = std::any_of(yo.nodes.begin(), yo.nodes.end(), [&](NodeId v) { return in_kind(kind, r.right.labels[v][pos]); });
+      if (in_left && !in_right)
+        claims.push_back({Event::split,
+                          o.implicit_certainty,
+                          o.li,
+                          true,
+                          static_cast<int>(pos),
+                          {y},
+                          fmt::format("position {} (letter {}) links {} inside <o> but no node of {} keeps it there (implicit, Def. 3.2.1){}", pos,
+                                      r.parameter[pos], o.name, rule_orbit_name(r, k, false, y), o.incomplete)});
+      if (!in_left && in_right)
+        claims.push_back({Event::merge,
+                          o.implicit_certainty,
+                          o.li,
+                          true,
+                          static_cast<int>(pos),
+                          {y},
+                          fmt::format("position {} (letter {}) links {} inside <o> but no node of {} did (implicit, Def. 3.3.1){}", pos,
+                                      r.parameter[pos], rule_orbit_name(r, k, false, y), o.name, o.incomplete)});
+    }
+  }
+}
+
+// Non-modification (Def. 3.4.2) when the orbit keeps its nodes, labels
+// and arcs; otherwise modification (Sec. 3.4.3), the potential events of
+// word orbit types, and the loop case of Prop. 3.2.1 and 3.3.1.
+void change_claims(const EventRule& r, const KindEvents& k, const LeftOrbit& o, std::vector<EventClaim>& claims) {
+  const Rule& rule = *r.rule;
+  const OrbitKind& kind = k.kind;
+  const bool unchanged = claims.empty() && o.preserved.size() == o.x.nodes.size() && o.ys.size() == 1 &&
+                         keeps_orbit(r, kind, o.x, k.right.orbits[static_cast<std::size_t>(*o.ys.begin())], {});
+  if (unchanged) {
+    claims.push_back({Event::non_modification,
+                      o.explicit_certainty,
+                      o.li,
+                      false,
+                      -1,
+                      {},
+                      o.x.complete ? fmt::format("{} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2)", o.name)
+                                   : fmt::format("{} keeps its nodes, o-labels and o-arcs, but the map's orbit may reach other matched parts{}",
+                                                 o.name, o.incomplete)});
+  } else {
+    // Orbit-word generators: a generator path may pass through matched darts
+    // and end outside the match, so an incomplete orbit whose paths the
+    // rule changes can split or merge without any of the paper's flags
+    // (found by the fuzz cross-check on fig18b-rewire-paths, <21>).
+    if (!kind.single_letters() && !o.x.complete) {
+      const bool has_split = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::split; });
+      const bool has_merge = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::merge; });
+      const std::string why =
+          fmt::format("a generator path of {} leaves the pattern and the rule changes the orbit (word orbit types){}", o.name, o.incomplete);
+      if (!has_split) claims.push_back({Event::split, Certainty::potential, o.li, false, -1, {}, why});
+      if (!has_merge) claims.push_back({Event::merge, Certainty::potential, o.li, false, -1, {}, why});
+    }
+    // The loop case of the proofs of Prop. 3.2.1 and 3.3.1: where the
+    // links at the positions the rule changes inside <o> are loops on the
+    // matched darts, the rule reads as one with explicit loops there. If
+    // that reading keeps the orbit (Def. 3.4.2), the orbit comes out
+    // identical: a no-modification on exactly those matches.
+    std::set<std::size_t> loops;
+    for (NodeId v : o.x.nodes)
+      if (const NodeId w = rule.to_right(v); w != no_node)
+        for (std::size_t pos = 0; pos < r.parameter.size(); ++pos) {
+          const auto &a = r.left.labels[v][pos], &b = r.right.labels[w][pos];
+          if ((in_kind(kind, a) || in_kind(kind, b)) && a != b) loops.insert(pos);
+        }
+    const bool explicit_change = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return !c.implicit; });
+    const bool loop_case = kind.single_letters() && !explicit_change && !loops.empty() && o.preserved.size() == o.x.nodes.size() &&
+                           o.ys.size() == 1 && keeps_orbit(r, kind, o.x, k.right.orbits[static_cast<std::size_t>(*o.ys.begin())], loops);
+    std::vector<std::string> loop_names;
+    for (std::size_t pos : loops) loop_names.push_back(fmt::format("{} (letter {})", pos, r.parameter[pos]));
+    // Modification (Sec. 3.4.3) is what remains when no split or merge
+    // happens: certain only when none was announced and no loop case
+    // keeps the orbit.
+    const bool certain_other = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.certainty == Certainty::certain; });
+    if (!certain_other) {
+      const Certainty c = !claims.empty() || loop_case ? o.implicit_certainty : o.explicit_certainty;
+      std::string why = claims.empty() ? fmt::format("{} changes its nodes, o-labels or o-arcs without a split or merge (Sec. 3.4.3)", o.name)
+                                       : fmt::format("{} is modified where the announced split or merge does not happen", o.name);
+      if (loop_case)
+        why += fmt::format(", unless the links at position{} {} stay the same (loops, or a fold)", loops.size() > 1 ? "s" : "",
+                           fmt::join(loop_names, ", "));
+      claims.push_back({Event::modification, c, o.li, false, -1, {}, why + o.incomplete});
+    }
+    if (loop_case)
+      claims.push_back({Event::non_modification,
+                        o.implicit_certainty,
+                        o.li,
+                        false,
+                        -1,
+                        {},
+                        fmt::format("where the links at position{} {} of the matched darts are loops (or folded so that the relabeled "
+                                    "links coincide), {} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2 on the loop case of the "
+                                    "proofs of Prop. 3.2.1, 3.3.1){}",
+                                    loops.size() > 1 ? "s" : "", fmt::join(loop_names, ", "), o.name, o.incomplete),
+                        {loops.begin(), loops.end()}});
+  }
+}
+
+}  // namespace
+
 KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
   KindEvents k{kind, side_orbits(r, r.left, kind), side_orbits(r, r.right, kind), {}};
   const Rule& rule = *r.rule;
@@ -187,143 +342,31 @@ KindEvents static_events(const EventRule& r, const OrbitKind& kind) {
 
   for (int li = 0; li < static_cast<int>(k.left.orbits.size()); ++li) {
     const RuleOrbit& x = k.left.orbits[static_cast<std::size_t>(li)];
-    const std::string xn = name(true, li);
-    const Certainty explicit_certainty = x.complete ? Certainty::certain : Certainty::potential;
-    const Certainty implicit_certainty = x.complete ? Certainty::conditional : Certainty::potential;
-    const std::string incomplete = x.complete ? std::string() : fmt::format(" ({})", incompleteness(x));
-    std::vector<NodeId> preserved;
+    LeftOrbit o{li,
+                x,
+                name(true, li),
+                x.complete ? std::string() : fmt::format(" ({})", incompleteness(x)),
+                x.complete ? Certainty::certain : Certainty::potential,
+                x.complete ? Certainty::conditional : Certainty::potential,
+                {},
+                {}};
     for (NodeId v : x.nodes)
-      if (rule.to_right(v) != no_node) preserved.push_back(v);
-    if (preserved.empty()) {
-      k.claims.push_back(
-          {Event::deletion, explicit_certainty, li, false, -1, {}, fmt::format("every node of {} is deleted (Prop. 3.4.1){}", xn, incomplete)});
-      continue;
-    }
-    std::set<int> ys;
-    for (NodeId v : preserved) ys.insert(k.right.orbit_of[rule.to_right(v)]);
-    std::vector<EventClaim> claims;
-    if (ys.size() >= 2) {
-      std::vector<std::string> parts;
-      for (int y : ys) parts.push_back(name(false, y));
-      claims.push_back({Event::split,
-                        explicit_certainty,
-                        li,
-                        false,
-                        -1,
-                        {ys.begin(), ys.end()},
-                        fmt::format("the preserved nodes of {} go to {} (explicit, Def. 3.2.1){}", xn, fmt::join(parts, ", "), incomplete)});
-    }
-    // Explicit merge: a preserved node of another left orbit lands in one of ys.
-    std::set<int> joined;
-    for (NodeId v = 0; v < rule.left().node_count(); ++v)
-      if (k.left.orbit_of[v] != li && rule.to_right(v) != no_node && ys.count(k.right.orbit_of[rule.to_right(v)])) joined.insert(k.left.orbit_of[v]);
-    if (!joined.empty()) {
-      std::vector<std::string> parts;
-      for (int o : joined) parts.push_back(name(true, o));
-      claims.push_back({Event::merge,
-                        explicit_certainty,
-                        li,
-                        false,
-                        -1,
-                        {joined.begin(), joined.end()},
-                        fmt::format("{} and {} meet in one right orbit (explicit, Def. 3.3.1){}", xn, fmt::join(parts, ", "), incomplete)});
-    }
-    // Implicit events along position k, per right orbit of the preserved nodes.
-    for (int y : ys) {
-      const RuleOrbit& yo = k.right.orbits[static_cast<std::size_t>(y)];
-      for (std::size_t pos = 0; pos < r.parameter.size(); ++pos) {
-        const bool in_left = std::any_of(x.nodes.begin(), x.nodes.end(), [&](NodeId v) { return in_kind(kind, r.left.labels[v][pos]); });
-        const bool in_right = std::any_of(yo.nodes.begin(), yo.nodes.end(), [&](NodeId v) { return in_kind(kind, r.right.labels[v][pos]); });
-        if (in_left && !in_right)
-          claims.push_back({Event::split,
-                            implicit_certainty,
-                            li,
-                            true,
-                            static_cast<int>(pos),
-                            {y},
-                            fmt::format("position {} (letter {}) links {} inside <o> but no node of {} keeps it there (implicit, Def. 3.2.1){}", pos,
-                                        r.parameter[pos], xn, name(false, y), incomplete)});
-        if (!in_left && in_right)
-          claims.push_back({Event::merge,
-                            implicit_certainty,
-                            li,
-                            true,
-                            static_cast<int>(pos),
-                            {y},
-                            fmt::format("position {} (letter {}) links {} inside <o> but no node of {} did (implicit, Def. 3.3.1){}", pos,
-                                        r.parameter[pos], name(false, y), xn, incomplete)});
-      }
-    }
-    // Non-modification (Def. 3.4.2): the same nodes, the same labels at the
-    // positions that are in <o> on either side, the same explicit o-arcs.
-    const bool unchanged = claims.empty() && preserved.size() == x.nodes.size() && ys.size() == 1 &&
-                           keeps_orbit(r, kind, x, k.right.orbits[static_cast<std::size_t>(*ys.begin())], {});
-    if (unchanged) {
-      claims.push_back(
-          {Event::non_modification,
-           explicit_certainty,
-           li,
-           false,
-           -1,
-           {},
-           x.complete ? fmt::format("{} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2)", xn)
-                      : fmt::format("{} keeps its nodes, o-labels and o-arcs, but the map's orbit may reach other matched parts{}", xn, incomplete)});
-    } else {
-      // Orbit-word generators: a generator path may pass through matched darts
-      // and end outside the match, so an incomplete orbit whose paths the
-      // rule changes can split or merge without any of the paper's flags
-      // (found by the fuzz cross-check on fig18b-rewire-paths, <21>).
-      if (!kind.single_letters() && !x.complete) {
-        const bool has_split = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::split; });
-        const bool has_merge = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.event == Event::merge; });
-        const std::string why =
-            fmt::format("a generator path of {} leaves the pattern and the rule changes the orbit (word orbit types){}", xn, incomplete);
-        if (!has_split) claims.push_back({Event::split, Certainty::potential, li, false, -1, {}, why});
-        if (!has_merge) claims.push_back({Event::merge, Certainty::potential, li, false, -1, {}, why});
-      }
-      // The loop case of the proofs of Prop. 3.2.1 and 3.3.1: where the
-      // links at the positions the rule changes inside <o> are loops on the
-      // matched darts, the rule reads as one with explicit loops there. If
-      // that reading keeps the orbit (Def. 3.4.2), the orbit comes out
-      // identical: a no-modification on exactly those matches.
-      std::set<std::size_t> loops;
-      for (NodeId v : x.nodes)
-        if (const NodeId w = rule.to_right(v); w != no_node)
-          for (std::size_t pos = 0; pos < r.parameter.size(); ++pos) {
-            const auto &a = r.left.labels[v][pos], &b = r.right.labels[w][pos];
-            if ((in_kind(kind, a) || in_kind(kind, b)) && a != b) loops.insert(pos);
-          }
-      const bool explicit_change = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return !c.implicit; });
-      const bool loop_case = kind.single_letters() && !explicit_change && !loops.empty() && preserved.size() == x.nodes.size() && ys.size() == 1 &&
-                             keeps_orbit(r, kind, x, k.right.orbits[static_cast<std::size_t>(*ys.begin())], loops);
-      std::vector<std::string> loop_names;
-      for (std::size_t pos : loops) loop_names.push_back(fmt::format("{} (letter {})", pos, r.parameter[pos]));
-      // Modification (Sec. 3.4.3) is what remains when no split or merge
-      // happens: certain only when none was announced and no loop case
-      // keeps the orbit.
-      const bool certain_other = std::any_of(claims.begin(), claims.end(), [](const EventClaim& c) { return c.certainty == Certainty::certain; });
-      if (!certain_other) {
-        const Certainty c = !claims.empty() || loop_case ? implicit_certainty : explicit_certainty;
-        std::string why = claims.empty() ? fmt::format("{} changes its nodes, o-labels or o-arcs without a split or merge (Sec. 3.4.3)", xn)
-                                         : fmt::format("{} is modified where the announced split or merge does not happen", xn);
-        if (loop_case)
-          why += fmt::format(", unless the links at position{} {} stay the same (loops, or a fold)", loops.size() > 1 ? "s" : "",
-                             fmt::join(loop_names, ", "));
-        claims.push_back({Event::modification, c, li, false, -1, {}, why + incomplete});
-      }
-      if (loop_case)
-        claims.push_back({Event::non_modification,
-                          implicit_certainty,
+      if (rule.to_right(v) != no_node) o.preserved.push_back(v);
+    if (o.preserved.empty()) {
+      k.claims.push_back({Event::deletion,
+                          o.explicit_certainty,
                           li,
                           false,
                           -1,
                           {},
-                          fmt::format("where the links at position{} {} of the matched darts are loops (or folded so that the relabeled "
-                                      "links coincide), {} keeps its nodes, o-labels and o-arcs (Prop. 3.4.2 on the loop case of the "
-                                      "proofs of Prop. 3.2.1, 3.3.1){}",
-                                      loops.size() > 1 ? "s" : "", fmt::join(loop_names, ", "), xn, incomplete),
-                          {loops.begin(), loops.end()}});
+                          fmt::format("every node of {} is deleted (Prop. 3.4.1){}", o.name, o.incomplete)});
+      continue;
     }
+    for (NodeId v : o.preserved) o.ys.insert(k.right.orbit_of[rule.to_right(v)]);
+    std::vector<EventClaim> claims;
+    explicit_claims(r, k, o, claims);
+    implicit_claims(r, k, o, claims);
+    change_claims(r, k, o, claims);
     k.claims.insert(k.claims.end(), claims.begin(), claims.end());
   }
   sharpen_incomplete(r, k);
