@@ -21,7 +21,7 @@
 //    differences, averages of multisets whose sizes the host fixes);
 //    functions outside it (length) stay uninterpreted and are listed.
 // A counterexample in the arithmetic reading is replayed by the library
-// (apply_embedded + check_embedding) with the model's values as doubles.
+// (the Applier on an embedded map + check_embedding) with the model's values as doubles.
 #pragma once
 
 #include <functional>

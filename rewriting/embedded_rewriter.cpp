@@ -123,7 +123,7 @@ struct EmbeddedRewriter::Context {
                     const std::vector<int>& steps, std::vector<std::uint32_t>& id, std::uint32_t& count);
 };
 
-// The kept-label shortcut (EmbeddedRewriter::use_kept_label_shortcut) for
+// The kept-label shortcut (EvaluationOptions::kept_label_shortcut) for
 // group `group` of R's nodes and embedding used[u]: one class per pattern
 // copy when the check holds, else false (the group is walked).
 bool EmbeddedRewriter::Context::kept_classes(const Instances& in, std::size_t u, std::uint32_t group, const std::vector<std::uint32_t>& group_of,
