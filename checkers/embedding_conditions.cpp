@@ -197,24 +197,19 @@ struct PiOrbits {
     re = orbits(r.right(), w.right, sig.orbit, w.scheme);
   }
   const Term* term(char side, NodeId v) const { return terms.find(side, (side == 'L' ? rule.left() : rule.right()).name(v), e.name); }
+
+  TermConditionVerdict condition_a() const;
+  TermConditionVerdict condition_b() const;
+  TermConditionVerdict condition_c() const;
+  TermConditionVerdict condition_label() const;
 };
 
 // (A), on L, K (labels where L and R agree, preserved arcs) and R.
-TermConditionVerdict condition_a(const PiOrbits& po) {
-  const Rule& rule = po.rule;
-  const ArcWords& words = po.words;
+TermConditionVerdict PiOrbits::condition_a() const {
   const TopoGraph &L = rule.left(), &R = rule.right();
-  const std::string& pi = po.e.name;
-  const std::string& orbit = po.orbit;
-  const std::vector<NodeId>& lo = po.lo;
-  const std::vector<NodeId>& ro = po.ro;
-  const std::vector<NodeId>& ko = po.ko;
-  const std::vector<bool>& kept = po.kept;
-  const EmbeddingSignature& e = po.e;
-  const RuleTerms& terms = po.terms;
+  const std::string& pi = e.name;
   const bool scheme = words.scheme;
-  const bool direct = po.terms.instantiation == Instantiation::direct;
-  auto term = [&](char side, NodeId v) { return po.term(side, v); };
+  const bool direct = terms.instantiation == Instantiation::direct;
   TermConditionVerdict a{"A", pi, true, true, {}};
   auto check_side = [&](char side, const char* side_name, const TopoGraph& g, const std::vector<NodeId>& orb, const std::vector<ConjWord>& ws,
                         const std::vector<bool>* arc_keep, auto label_of) {
@@ -274,21 +269,18 @@ TermConditionVerdict condition_a(const PiOrbits& po) {
     return l && rr && l->same(*rr) ? l : nullptr;
   });
   check_side('R', "R", R, ro, words.right, nullptr, [&](NodeId v) { return term('R', v); });
-  if (!direct) split_orbits(rule, e, lo, ro, term, a);
+  if (!direct)
+    split_orbits(
+        rule, e, lo, ro, [this](char side, NodeId v) { return term(side, v); }, a);
   return a;
 }
 
 // (B): a preserved node whose term changes has a full, labeled R-orbit.
-TermConditionVerdict condition_b(const PiOrbits& po) {
-  const Rule& rule = po.rule;
+TermConditionVerdict PiOrbits::condition_b() const {
   const TopoGraph &L = rule.left(), &R = rule.right();
-  const std::string& pi = po.e.name;
-  const std::string& orbit = po.orbit;
-  const std::vector<NodeId>& ro = po.ro;
-  const EmbeddingSignature& e = po.e;
-  const bool direct = po.terms.instantiation == Instantiation::direct;
+  const std::string& pi = e.name;
+  const bool direct = terms.instantiation == Instantiation::direct;
   auto shown = [](const Term* t) { return t ? t->str() : std::string("unlabeled"); };
-  auto term = [&](char side, NodeId v) { return po.term(side, v); };
   TermConditionVerdict b{"B", pi, true, direct, {}};
   for (NodeId v = 0; v < L.node_count(); ++v) {
     const NodeId r = rule.to_right(v);
@@ -320,17 +312,10 @@ TermConditionVerdict condition_b(const PiOrbits& po) {
 }
 
 // (C): an R-orbit that gains nodes keeps a value matched in L.
-TermConditionVerdict condition_c(const PiOrbits& po) {
-  const Rule& rule = po.rule;
-  const ArcWords& words = po.words;
+TermConditionVerdict PiOrbits::condition_c() const {
   const TopoGraph &L = rule.left(), &R = rule.right();
-  const std::string& pi = po.e.name;
-  const std::string& orbit = po.orbit;
-  const std::vector<NodeId>& lo = po.lo;
-  const std::vector<NodeId>& ro = po.ro;
-  const EmbeddingSignature& e = po.e;
+  const std::string& pi = e.name;
   const bool scheme = words.scheme;
-  auto term = [&](char side, NodeId v) { return po.term(side, v); };
   TermConditionVerdict c{"C", pi, true, true, {}};
   std::vector<bool> reported(R.node_count(), false);
   for (NodeId v = 0; v < L.node_count(); ++v) {
@@ -383,13 +368,10 @@ TermConditionVerdict condition_c(const PiOrbits& po) {
 }
 
 // label: Def. 1's labeling, after propagation for extended rules.
-TermConditionVerdict condition_label(const PiOrbits& po) {
-  const Rule& rule = po.rule;
+TermConditionVerdict PiOrbits::condition_label() const {
   const TopoGraph& R = rule.right();
-  const std::string& pi = po.e.name;
-  const std::vector<NodeId>& re = po.re;
-  const bool direct = po.terms.instantiation == Instantiation::direct;
-  auto term = [&](char side, NodeId v) { return po.term(side, v); };
+  const std::string& pi = e.name;
+  const bool direct = terms.instantiation == Instantiation::direct;
   TermConditionVerdict lab{"label", pi, true, true, {}};
   auto orbit_labeled = [&](NodeId r) {
     for (NodeId w = 0; w < R.node_count(); ++w)
@@ -420,10 +402,10 @@ std::vector<TermConditionVerdict> check_term_conditions(const Rule& rule, const 
   std::vector<TermConditionVerdict> out;
   for (const EmbeddingSignature& e : terms.embeddings) {
     const PiOrbits po(rule, words, terms, e);
-    out.push_back(condition_a(po));
-    out.push_back(condition_b(po));
-    out.push_back(condition_c(po));
-    out.push_back(condition_label(po));
+    out.push_back(po.condition_a());
+    out.push_back(po.condition_b());
+    out.push_back(po.condition_c());
+    out.push_back(po.condition_label());
   }
   return out;
 }
