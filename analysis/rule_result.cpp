@@ -217,6 +217,7 @@ void run_embedding_solver(RuleResult& r, const std::function<bool()>& stop) {
   p.embedding = proofs::prove_embeddings(e, o);
   p.interrupted = p.embedding->interrupted;
   p.seconds = p.embedding->seconds;
+  r.embedding_replays.assign(p.embedding->answers.size(), std::string());  // nowhere to write: none replays
   add_proof(r, std::move(p), {}, {});
 }
 

@@ -42,7 +42,8 @@ struct RuleResult {
   std::optional<HostSearch> host_search;
   std::optional<FuzzReport> scheme_search;
 
-  // Fuzz stage, with the command that replays its counterexample.
+  // Fuzz stage, with the command that replays its counterexample ("" when
+  // there is none or nowhere to write it).
   std::optional<FuzzReport> fuzz;
   std::string fuzz_replay;
   std::string events_replay;  // replays the event contradiction, if any
@@ -52,8 +53,8 @@ struct RuleResult {
   std::optional<proofs::RuleProof> proof;
   std::vector<std::string> proof_replays;
   std::vector<std::optional<Counterexample>> proof_maps;
-  // Per embedding answer of the proof: the shell commands that replay its
-  // counterexample files (apply, then validate-map), or empty.
+  // Per embedding answer of the proof (one entry each): the shell commands
+  // that replay its counterexample files (apply, then validate-map), or "".
   std::vector<std::string> embedding_replays;
   // 004's potential events decided on hosts up to K (prove), and per
   // event the command that replays its witness (with --out), or empty.

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/formatting.hpp"
+
 namespace dartcheck::campaign {
 
 using analysis::Counterexample;
@@ -11,173 +13,6 @@ using analysis::RuleResult;
 using reports::Json;
 
 namespace {
-
-// ---- Writing -------------------------------------------------------------
-
-Json model_json(const Model& m) {
-  Json pairs = Json::array();
-  for (const auto& [i, j] : m.exchangeable) pairs.push_back(Json::array({i, j}));
-  return Json{{"name", m.name},        {"dims", m.dims},       {"non_oriented", m.non_oriented},
-              {"exchangeable", pairs}, {"partial", m.partial}, {"loop_free", m.loop_free}};
-}
-
-// Every link and, for an oriented dimension, every predecessor record as
-// stored: a counterexample's H may hold records that disagree.
-Json map_json(const Map& m) {
-  Json dims = Json::array();
-  for (Dim i : m.model().dims) {
-    std::vector<Dart> links(m.size()), preds;
-    for (Dart d = 0; d < m.size(); ++d) links[d] = m.link(i, d);
-    Json dim{{"dim", i}, {"links", links}};
-    if (m.model().is_oriented(i)) {
-      for (Dart d = 0; d < m.size(); ++d) preds.push_back(m.inverse_link(i, d));
-      dim["predecessors"] = preds;
-    }
-    dims.push_back(std::move(dim));
-  }
-  return Json{{"model", model_json(m.model())}, {"darts", m.size()}, {"dims", std::move(dims)}};
-}
-
-Json graph_json(const TopoGraph& g) {
-  Json arcs = Json::array();
-  for (const auto& a : g.arcs()) arcs.push_back(Json::array({a.source, a.target, a.label}));
-  return Json{{"nodes", g.names()}, {"arcs", std::move(arcs)}};
-}
-
-Json violations_json(const std::vector<Violation>& vs) {
-  Json out = Json::array();
-  for (const auto& v : vs)
-    out.push_back(Json{{"constraint", static_cast<int>(v.constraint)}, {"i", v.i}, {"j", v.j}, {"element", v.element}, {"count", v.count}});
-  return out;
-}
-
-template <class T, class F>
-Json optional_json(const std::optional<T>& v, F&& f) {
-  return v ? f(*v) : Json(nullptr);
-}
-
-Json counterexample_json(const Counterexample& cx) {
-  Json match = Json::array();
-  for (const auto& [node, dart] : cx.match) match.push_back(Json::array({node, dart}));
-  Json comatch = Json::array();
-  for (const auto& [node, dart] : cx.comatch) comatch.push_back(Json::array({node, dart}));
-  return Json{{"host", map_json(cx.host)},
-              {"hooks", cx.hooks},
-              {"match", std::move(match)},
-              {"result", optional_json(cx.result, map_json)},
-              {"violations", violations_json(cx.violations)},
-              {"unrepresentable", cx.unrepresentable},
-              {"origin", cx.origin},
-              {"minimal", cx.minimal},
-              {"embedding_failures", cx.embedding_failures},
-              {"broken_embeddings", cx.broken_embeddings},
-              {"orbit_values", cx.orbit_values},
-              {"event_contradictions", cx.event_contradictions},
-              {"comatch", std::move(comatch)}};
-}
-
-Json fuzz_record(const FuzzReport& f) {
-  Json refusals = Json::object();
-  for (const auto& [why, n] : f.refusals) refusals[why] = n;
-  return Json{{"rule", f.rule},
-              {"static_failures", f.static_failures},
-              {"verdict", static_cast<int>(f.verdict)},
-              {"reason", f.reason},
-              {"checked", f.checked},
-              {"applications", f.applications},
-              {"hosts", f.hosts},
-              {"largest_host", f.largest_host},
-              {"exhaustive_darts", f.exhaustive_darts},
-              {"refusals", std::move(refusals)},
-              {"event_checks", f.event_checks},
-              {"out_of_time", f.out_of_time},
-              {"seconds", f.seconds},
-              {"counterexample", optional_json(f.counterexample, counterexample_json)},
-              {"event_contradiction", optional_json(f.event_contradiction, counterexample_json)}};
-}
-
-Json host_search_record(const HostSearch& s) {
-  return Json{{"matched", s.matched},
-              {"exhausted", s.exhausted},
-              {"hosts", s.hosts},
-              {"derivations", s.derivations},
-              {"largest_host", s.largest_host},
-              {"host", optional_json(s.host, graph_json)},
-              {"result", optional_json(s.result, graph_json)},
-              {"violations", violations_json(s.violations)}};
-}
-
-Json symbolic_host_json(const proofs::SymbolicHost& h) {
-  Json links = Json::array();
-  for (const auto& [dim, darts] : h.links) links.push_back(Json{{"dim", dim}, {"links", darts}});
-  return Json{{"size", h.size}, {"links", std::move(links)}};
-}
-
-Json answer_record(const proofs::ClassAnswer& a) {
-  return Json{{"class_name", a.class_name},
-              {"status", static_cast<int>(a.status)},
-              {"darts", a.darts},
-              {"minimal", a.minimal},
-              {"bound", a.bound},
-              {"core", a.core},
-              {"why", a.why},
-              {"host", optional_json(a.host, symbolic_host_json)},
-              {"host_graph", graph_json(a.host_graph)},
-              {"result_graph", graph_json(a.result_graph)},
-              {"replayed", a.replayed},
-              {"replay_failure", a.replay_failure},
-              {"seconds", a.seconds}};
-}
-
-// The solver's embedding answers, without their hosts (the files are
-// written before the record; the renderers read the rest).
-Json embedding_record(const proofs::EmbeddingProof& e) {
-  Json answers = Json::array();
-  for (const auto& a : e.answers)
-    answers.push_back(Json{{"embedding", a.embedding},
-                           {"static_failures", a.static_failures},
-                           {"reading", static_cast<int>(a.reading)},
-                           {"status", static_cast<int>(a.status)},
-                           {"darts", a.darts},
-                           {"why", a.why},
-                           {"uninterpreted", a.uninterpreted},
-                           {"functions", a.functions},
-                           {"replayed", a.replayed},
-                           {"replay", a.replay},
-                           {"disagree", a.disagree},
-                           {"note", a.note}});
-  return Json{{"answers", std::move(answers)}, {"hosts", e.hosts},         {"applications", e.applications}, {"queries", e.queries},
-              {"cached", e.cached},            {"out_of_scope", e.out_of_scope}, {"interrupted", e.interrupted}, {"seconds", e.seconds}};
-}
-
-Json potential_events_record(const analysis::PotentialEvents& p) {
-  Json events = Json::array();
-  for (const auto& e : p.events) events.push_back(Json{{"kind", e.kind}, {"claim", e.claim}, {"happens", e.happens}, {"darts", e.darts}});
-  return Json{{"events", std::move(events)},       {"hosts", p.hosts},   {"applications", p.applications},
-              {"not_decided", p.not_decided}, {"interrupted", p.interrupted}, {"seconds", p.seconds}};
-}
-
-Json proof_record(const proofs::RuleProof& p) {
-  Json constraints = Json::array();
-  for (const auto& c : p.constraints)
-    constraints.push_back(Json{{"kind", static_cast<int>(c.constraint.kind)},
-                               {"i", c.constraint.i},
-                               {"j", c.constraint.j},
-                               {"static_holds", c.static_holds ? Json(*c.static_holds) : Json(nullptr)},
-                               {"theorem", optional_json(c.theorem, answer_record)},
-                               {"model", answer_record(c.model)},
-                               {"agreement", static_cast<int>(c.agreement)},
-                               {"note", c.note}});
-  return Json{{"rule", p.rule},
-              {"model", p.model},
-              {"scheme", p.scheme},
-              {"out_of_scope", p.out_of_scope},
-              {"static_failures", p.static_failures},
-              {"constraints", std::move(constraints)},
-              {"interrupted", p.interrupted},
-              {"embedding", optional_json(p.embedding, embedding_record)},
-              {"seconds", p.seconds}};
-}
 
 // ---- Reading -------------------------------------------------------------
 
@@ -197,6 +32,7 @@ struct In {
   }
   In operator[](std::size_t k) const { return {j[k], fmt::format("{}[{}]", path, k)}; }
   bool null() const { return j.is_null(); }
+  bool has(std::string_view key) const { return j.is_object() && j.contains(std::string(key)); }
   std::size_t size() const {
     if (!j.is_array()) fail("an array");
     return j.size();
@@ -227,6 +63,14 @@ struct In {
     std::vector<std::string> out;
     for (std::size_t k = 0; k < size(); ++k) out.push_back((*this)[k].str());
     return out;
+  }
+  /// An enum written by its name (name_of), one of E's values 0..last.
+  template <class E>
+  E named(E last) const {
+    if (const auto e = dartcheck::named(str(), last)) return *e;
+    std::vector<std::string> names;
+    for (int k = 0; k <= static_cast<int>(last); ++k) names.push_back(fmt::format("\"{}\"", name_of(static_cast<E>(k))));
+    fail(fmt::format("one of {}", fmt::join(names, ", ")));
   }
   template <class F>
   auto optional(F&& f) const -> std::optional<decltype(f(*this))> {
@@ -330,11 +174,13 @@ Counterexample read_counterexample(const In& in) {
   return cx;
 }
 
-FuzzReport read_fuzz(const In& in) {
+// A fuzz stage (or a scheme's confirmation) and the replay commands of
+// its counterexample and event contradiction.
+FuzzReport read_fuzz(const In& in, std::string* replay = nullptr, std::string* events_replay = nullptr) {
   FuzzReport f;
   f.rule = in["rule"].str();
   f.static_failures = in["static_failures"].strings();
-  f.verdict = static_cast<analysis::FuzzClass>(in["verdict"].integer(0, static_cast<int>(analysis::FuzzClass::soundness_bug)));
+  f.verdict = in["class"].named(analysis::FuzzClass::soundness_bug);
   f.reason = in["reason"].str();
   f.checked = in["checked"].str();
   f.applications = in["applications"].count();
@@ -349,6 +195,8 @@ FuzzReport read_fuzz(const In& in) {
   f.seconds = in["seconds"].real();
   f.counterexample = in["counterexample"].optional(read_counterexample);
   f.event_contradiction = in["event_contradiction"].optional(read_counterexample);
+  if (replay) *replay = f.counterexample ? in["counterexample"]["replay"].str() : std::string();
+  if (events_replay) *events_replay = f.event_contradiction ? in["event_contradiction"]["replay"].str() : std::string();
   return f;
 }
 
@@ -359,8 +207,8 @@ HostSearch read_host_search(const In& in) {
   s.hosts = in["hosts"].count();
   s.derivations = in["derivations"].count();
   s.largest_host = in["largest_host"].count();
-  s.host = in["host"].optional(read_graph);
-  s.result = in["result"].optional(read_graph);
+  s.host = in["host_graph"].optional(read_graph);
+  s.result = in["result_graph"].optional(read_graph);
   s.violations = read_violations(in["violations"]);
   return s;
 }
@@ -380,14 +228,14 @@ proofs::SymbolicHost read_symbolic_host(const In& in) {
 
 proofs::ClassAnswer read_answer(const In& in) {
   proofs::ClassAnswer a;
-  a.class_name = in["class_name"].str();
-  a.status = static_cast<proofs::Status>(in["status"].integer(0, static_cast<int>(proofs::Status::vacuous)));
+  a.class_name = in["class"].str();
+  a.status = in["status"].named(proofs::Status::vacuous);
   a.darts = in["darts"].count();
   a.minimal = in["minimal"].boolean();
   a.bound = in["bound"].count();
   a.core = in["core"].strings();
   a.why = in["why"].str();
-  a.host = in["host"].optional(read_symbolic_host);
+  a.host = in["symbolic_host"].optional(read_symbolic_host);
   a.host_graph = read_graph(in["host_graph"]);
   a.result_graph = read_graph(in["result_graph"]);
   a.replayed = in["replayed"].boolean();
@@ -396,94 +244,103 @@ proofs::ClassAnswer read_answer(const In& in) {
   return a;
 }
 
-proofs::EmbeddingProof read_embedding(const In& in) {
+// The embeddings' answers of a proof (none when its embedding_search is
+// null) and their replay commands.
+std::optional<proofs::EmbeddingProof> read_embedding(const In& proof, std::vector<std::string>& replays) {
+  replays.clear();
+  const In search = proof["embedding_search"];
+  if (search.null()) return std::nullopt;
   proofs::EmbeddingProof e;
-  const In as = in["answers"];
+  const In as = proof["embedding"];
   for (std::size_t k = 0; k < as.size(); ++k) {
     const In a = as[k];
     proofs::EmbeddingAnswer x;
     x.embedding = a["embedding"].str();
-    x.static_failures = a["static_failures"].strings();
-    x.reading = static_cast<proofs::Reading>(a["reading"].integer(0, static_cast<int>(proofs::Reading::arithmetic)));
-    x.status = static_cast<proofs::EmbeddingAnswer::Status>(a["status"].integer(0, static_cast<int>(proofs::EmbeddingAnswer::Status::unknown)));
+    x.static_failures = a["static"].strings();
+    x.reading = a["reading"].named(proofs::Reading::arithmetic);
+    x.status = a["answer"].named(proofs::EmbeddingAnswer::Status::unknown);
     x.darts = a["darts"].count();
     x.why = a["why"].str();
     x.uninterpreted = a["uninterpreted"].strings();
     x.functions = a["functions"].strings();
     x.replayed = a["replayed"].boolean();
-    x.replay = a["replay"].str();
     x.disagree = a["disagree"].boolean();
     x.note = a["note"].str();
+    replays.push_back(a["replay"].str());
     e.answers.push_back(std::move(x));
   }
-  e.hosts = in["hosts"].count();
-  e.applications = in["applications"].count();
-  e.queries = in["queries"].count();
-  e.cached = in["cached"].count();
-  e.out_of_scope = in["out_of_scope"].str();
-  e.interrupted = in["interrupted"].boolean();
-  e.seconds = in["seconds"].real();
+  e.hosts = search["hosts"].count();
+  e.applications = search["applications"].count();
+  e.queries = search["queries"].count();
+  e.cached = search["cached"].count();
+  e.out_of_scope = search["out_of_scope"].str();
+  e.interrupted = search["interrupted"].boolean();
+  e.seconds = proof["embedding_seconds"].real();
   return e;
 }
 
-analysis::PotentialEvents read_potential_events(const In& in) {
+std::optional<bool> read_static(const In& in) {
+  const std::string s = in.str();
+  if (s == "none") return std::nullopt;
+  if (s != "holds" && s != "fails") in.fail("\"holds\", \"fails\" or \"none\"");
+  return s == "holds";
+}
+
+proofs::ConstraintProof read_constraint(const In& c) {
+  proofs::ConstraintProof cp;
+  cp.constraint = {static_cast<RuleCondition>(c["kind"].integer(0, static_cast<int>(RuleCondition::no_loop))), c["i"].integer(-1, max_dimension),
+                   c["j"].integer(-1, max_dimension)};
+  cp.static_holds = read_static(c["static"]);
+  cp.theorem = c["theorem"].optional(read_answer);
+  cp.model = read_answer(c["model"]);
+  cp.agreement = c["agreement"].named(proofs::Agreement::not_compared);
+  cp.note = c["note"].str();
+  return cp;
+}
+
+// The solver stage into `r`: the proof, per constraint its replay and
+// replayed map, per embedding answer its replay.
+void read_proof(RuleResult& r, const In& in) {
+  proofs::RuleProof p;
+  p.rule = in["rule"].str();
+  p.model = in["model"].str();
+  p.scheme = in["scheme"].boolean();
+  p.out_of_scope = in["out_of_scope"].null() ? std::string() : in["out_of_scope"].str();
+  p.static_failures = in["static_failures"].strings();
+  r.proof_replays.clear();
+  r.proof_maps.clear();
+  const In cs = in["constraints"];
+  for (std::size_t k = 0; k < cs.size(); ++k) {
+    p.constraints.push_back(read_constraint(cs[k]));
+    r.proof_replays.push_back(cs[k]["replay"].str());
+    r.proof_maps.push_back(cs[k]["map"].optional(read_counterexample));
+  }
+  p.interrupted = in["interrupted"].boolean();
+  p.embedding = read_embedding(in, r.embedding_replays);
+  p.seconds = in["seconds"].real();
+  r.proof = std::move(p);
+}
+
+// 004's potential events into `r`, with their replay commands.
+void read_potential_events(RuleResult& r, const In& in) {
   analysis::PotentialEvents p;
+  r.potential_event_replays.clear();
   const In es = in["events"];
-  for (std::size_t k = 0; k < es.size(); ++k)
-    p.events.push_back({es[k]["kind"].str(), es[k]["claim"].str(), es[k]["happens"].boolean(), es[k]["darts"].count(), std::nullopt, {}});
+  for (std::size_t k = 0; k < es.size(); ++k) {
+    const In answer = es[k]["answer"];
+    if (answer.str() != "witness" && answer.str() != "never") answer.fail("\"witness\" or \"never\"");
+    p.events.push_back({es[k]["orbit"].str(), es[k]["claim"].str(), answer.str() == "witness", es[k]["darts"].count(), std::nullopt, {}});
+    r.potential_event_replays.push_back(es[k]["replay"].str());
+  }
   p.hosts = in["hosts"].count();
   p.applications = in["applications"].count();
   p.not_decided = in["not_decided"].str();
   p.interrupted = in["interrupted"].boolean();
   p.seconds = in["seconds"].real();
-  return p;
-}
-
-proofs::RuleProof read_proof(const In& in) {
-  proofs::RuleProof p;
-  p.rule = in["rule"].str();
-  p.model = in["model"].str();
-  p.scheme = in["scheme"].boolean();
-  p.out_of_scope = in["out_of_scope"].str();
-  p.static_failures = in["static_failures"].strings();
-  const In cs = in["constraints"];
-  for (std::size_t k = 0; k < cs.size(); ++k) {
-    const In c = cs[k];
-    proofs::ConstraintProof cp;
-    cp.constraint = {static_cast<RuleCondition>(c["kind"].integer(0, static_cast<int>(RuleCondition::no_loop))), c["i"].integer(-1, max_dimension),
-                     c["j"].integer(-1, max_dimension)};
-    if (!c["static_holds"].null()) cp.static_holds = c["static_holds"].boolean();
-    cp.theorem = c["theorem"].optional(read_answer);
-    cp.model = read_answer(c["model"]);
-    cp.agreement = static_cast<proofs::Agreement>(c["agreement"].integer(0, static_cast<int>(proofs::Agreement::not_compared)));
-    cp.note = c["note"].str();
-    p.constraints.push_back(std::move(cp));
-  }
-  p.interrupted = in["interrupted"].boolean();
-  p.embedding = in["embedding"].optional(read_embedding);
-  p.seconds = in["seconds"].real();
-  return p;
+  r.potential_events = std::move(p);
 }
 
 }  // namespace
-
-Json result_record(const RuleResult& r) {
-  Json maps = Json::array();
-  for (const auto& m : r.proof_maps) maps.push_back(optional_json(m, counterexample_json));
-  return Json{{"failures", r.failures},
-              {"static_ms", r.static_ms},
-              {"host_search", optional_json(r.host_search, host_search_record)},
-              {"scheme_search", optional_json(r.scheme_search, fuzz_record)},
-              {"fuzz", optional_json(r.fuzz, fuzz_record)},
-              {"fuzz_replay", r.fuzz_replay},
-              {"events_replay", r.events_replay},
-              {"proof", optional_json(r.proof, proof_record)},
-              {"proof_replays", r.proof_replays},
-              {"proof_maps", std::move(maps)},
-              {"embedding_replays", r.embedding_replays},
-              {"potential_events", optional_json(r.potential_events, potential_events_record)},
-              {"potential_event_replays", r.potential_event_replays}};
-}
 
 void restore_record(RuleResult& r, const Json& record) {
   const In in{record, "record"};
@@ -492,19 +349,24 @@ void restore_record(RuleResult& r, const Json& record) {
     throw RecordError(fmt::format("record.failures: the shard found [{}] for rule '{}', the catalog now gives [{}] (did the catalog change?)",
                                   fmt::join(failures, ", "), r.name(), fmt::join(r.failures, ", ")));
   r.static_ms = in["static_ms"].real();
-  r.host_search = in["host_search"].optional(read_host_search);
-  r.scheme_search = in["scheme_search"].optional(read_fuzz);
-  r.fuzz = in["fuzz"].optional(read_fuzz);
-  r.fuzz_replay = in["fuzz_replay"].str();
-  r.events_replay = in["events_replay"].str();
-  r.proof = in["proof"].optional(read_proof);
-  r.proof_replays = in["proof_replays"].strings();
+  r.host_search.reset();
+  r.scheme_search.reset();
+  if (const In c = in["confirmation"]; !c.null()) {
+    if (c.has("fuzz"))
+      r.scheme_search = read_fuzz(c["fuzz"]);
+    else
+      r.host_search = read_host_search(c);
+  }
+  r.fuzz = in["fuzz"].optional([&](const In& f) { return read_fuzz(f, &r.fuzz_replay, &r.events_replay); });
+  if (!r.fuzz) r.fuzz_replay.clear(), r.events_replay.clear();
+  r.proof.reset();
+  r.proof_replays.clear();
   r.proof_maps.clear();
-  const In maps = in["proof_maps"];
-  for (std::size_t k = 0; k < maps.size(); ++k) r.proof_maps.push_back(maps[k].optional(read_counterexample));
-  r.embedding_replays = in["embedding_replays"].strings();
-  r.potential_events = in["potential_events"].optional(read_potential_events);
-  r.potential_event_replays = in["potential_event_replays"].strings();
+  r.embedding_replays.clear();
+  if (const In p = in["proof"]; !p.null()) read_proof(r, p);
+  r.potential_events.reset();
+  r.potential_event_replays.clear();
+  if (const In p = in["potential_events"]; !p.null()) read_potential_events(r, p);
   analysis::compare_with_record(r);
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <concepts>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -22,6 +23,16 @@ template <class T>
 concept NamedEnum = std::is_enum_v<T> && requires(T t) {
   { name_of(t) } -> std::convertible_to<std::string_view>;
 };
+
+/// The inverse of name_of over the values 0..last of an enum numbered
+/// from 0 (reading back what a record wrote by name), or nullopt.
+template <NamedEnum E>
+std::optional<E> named(std::string_view name, E last) {
+  using U = std::underlying_type_t<E>;
+  for (U k = 0; k <= static_cast<U>(last); ++k)
+    if (name_of(static_cast<E>(k)) == name) return static_cast<E>(k);
+  return std::nullopt;
+}
 
 /// A class that prints as its str(); specialised to true by each class.
 template <class T>

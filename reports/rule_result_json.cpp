@@ -1,4 +1,5 @@
 #include "reports/rule_result_json.hpp"
+#include "reports/detail/record_json.hpp"
 #include "reports/json_document.hpp"
 
 #include <map>
@@ -35,7 +36,11 @@ Json embedding_json(const EmbeddingCheck& e) {
   return Json{{"check", e.name}, {"holds", e.holds}, {"required", e.required}, {"source", e.source}, {"witnesses", texts}};
 }
 
-Json answer_json(const proofs::ClassAnswer& a) {
+using detail::optional_json;
+
+bool with_record(JsonDetail level) { return level == JsonDetail::record; }
+
+Json answer_json(const proofs::ClassAnswer& a, JsonDetail level) {
   Json j{{"class", a.class_name}, {"status", proofs::name_of(a.status)},  {"darts", a.darts}, {"minimal", a.minimal},
          {"bound", a.bound},      {"proved_for_all", a.proved_for_all()}, {"core", a.core},   {"why", a.why},
          {"seconds", a.seconds}};
@@ -44,33 +49,37 @@ Json answer_json(const proofs::ClassAnswer& a) {
     j["host"] = arcs_text(a.host_graph);
     j["result"] = arcs_text(a.result_graph);
   }
-  return j;
-}
-
-Json confirmation_json(const RuleResult& r) {
-  Json j{{"text", r.confirmation_text()}};
-  if (r.host_search) {
-    const auto& s = *r.host_search;
-    j["search"] = "hosts of the model containing L";
-    j["matched"] = s.matched;
-    j["exhausted"] = s.exhausted;
-    j["largest_host"] = s.largest_host;
-    j["confirmed"] = s.host.has_value();
-    if (s.host) {
-      j["host"] = arcs_text(*s.host);
-      j["result"] = arcs_text(*s.result);
-    }
-  } else if (r.scheme_search) {
-    j["search"] = "small, catalog and random maps of the model";
-    j["confirmed"] = r.scheme_search->counterexample.has_value();
-    j["fuzz"] = fuzz_json(*r.scheme_search, "", "");
+  if (with_record(level)) {
+    j["replayed"] = a.replayed;
+    j["replay_failure"] = a.replay_failure;
+    j["symbolic_host"] = optional_json(a.host, detail::symbolic_host_json);
+    j["host_graph"] = detail::graph_json(a.host_graph);
+    j["result_graph"] = detail::graph_json(a.result_graph);
   }
   return j;
 }
 
-}  // namespace
+// A counterexample of fuzz (or of a scheme's confirmation).
+Json fuzz_counterexample_json(const Counterexample& cx, const std::string& replay, JsonDetail level) {
+  Json j{{"darts", cx.host.size()},
+         {"hooks", cx.hooks},
+         {"broken", cx.broken()},
+         {"minimal", cx.minimal},
+         {"origin", cx.origin},
+         {"unrepresentable", cx.unrepresentable},
+         {"embedding", cx.embedding_failures},
+         {"replay", replay}};
+  if (with_record(level)) detail::add_counterexample_record(j, cx);
+  return j;
+}
 
-Json fuzz_json(const FuzzReport& f, const std::string& replay, const std::string& events_replay) {
+Json event_contradiction_json(const Counterexample& cx, const std::string& replay, JsonDetail level) {
+  Json j{{"darts", cx.host.size()}, {"hooks", cx.hooks}, {"origin", cx.origin}, {"contradictions", cx.event_contradictions}, {"replay", replay}};
+  if (with_record(level)) detail::add_counterexample_record(j, cx);
+  return j;
+}
+
+Json fuzz_json(const FuzzReport& f, const std::string& replay, const std::string& events_replay, JsonDetail level) {
   Json refusals = Json::object();
   for (const auto& [why, n] : f.refusals) refusals[why] = n;
   Json j{{"class", name_of(f.verdict)},
@@ -85,77 +94,146 @@ Json fuzz_json(const FuzzReport& f, const std::string& replay, const std::string
          {"reason", f.reason},
          {"checked", f.checked},
          {"outcome", outcome_text(f)}};
-  if (f.counterexample) {
-    const auto& cx = *f.counterexample;
-    j["counterexample"] = Json{{"darts", cx.host.size()},
-                               {"hooks", cx.hooks},
-                               {"broken", cx.broken()},
-                               {"minimal", cx.minimal},
-                               {"origin", cx.origin},
-                               {"unrepresentable", cx.unrepresentable},
-                               {"embedding", cx.embedding_failures},
-                               {"replay", replay}};
-  } else {
-    j["counterexample"] = nullptr;
-  }
-  if (f.event_contradiction) {
-    const auto& cx = *f.event_contradiction;
-    j["event_contradiction"] = Json{{"darts", cx.host.size()},
-                                    {"hooks", cx.hooks},
-                                    {"origin", cx.origin},
-                                    {"contradictions", cx.event_contradictions},
-                                    {"replay", events_replay}};
-  } else {
-    j["event_contradiction"] = nullptr;
+  j["counterexample"] = f.counterexample ? fuzz_counterexample_json(*f.counterexample, replay, level) : Json(nullptr);
+  j["event_contradiction"] = f.event_contradiction ? event_contradiction_json(*f.event_contradiction, events_replay, level) : Json(nullptr);
+  if (with_record(level)) {
+    j["rule"] = f.rule;
+    j["static_failures"] = f.static_failures;
   }
   return j;
 }
 
-Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays, const std::vector<std::string>& embedding_replays) {
-  Json constraints = Json::array();
-  for (std::size_t i = 0; i < p.constraints.size(); ++i) {
-    const auto& c = p.constraints[i];
-    constraints.push_back(Json{{"constraint", c.constraint.name()},
-                               {"static", c.static_holds ? (*c.static_holds ? "holds" : "fails") : "none"},
-                               {"theorem", c.theorem ? answer_json(*c.theorem) : Json(nullptr)},
-                               {"model", answer_json(c.model)},
-                               {"agreement", proofs::name_of(c.agreement)},
-                               {"note", c.note},
-                               {"replay", i < replays.size() ? replays[i] : std::string()}});
+Json confirmation_json(const RuleResult& r, JsonDetail level) {
+  Json j{{"text", r.confirmation_text()}};
+  if (r.host_search) {
+    const auto& s = *r.host_search;
+    j["search"] = "hosts of the model containing L";
+    j["matched"] = s.matched;
+    j["exhausted"] = s.exhausted;
+    j["largest_host"] = s.largest_host;
+    j["confirmed"] = s.host.has_value();
+    if (s.host) {
+      j["host"] = arcs_text(*s.host);
+      j["result"] = arcs_text(*s.result);
+    }
+    if (with_record(level)) {
+      j["hosts"] = s.hosts;
+      j["derivations"] = s.derivations;
+      j["host_graph"] = optional_json(s.host, detail::graph_json);
+      j["result_graph"] = optional_json(s.result, detail::graph_json);
+      j["violations"] = detail::violations_json(s.violations);
+    }
+  } else if (r.scheme_search) {
+    j["search"] = "small, catalog and random maps of the model";
+    j["confirmed"] = r.scheme_search->counterexample.has_value();
+    j["fuzz"] = fuzz_json(*r.scheme_search, "", "", level);
   }
-  // The embeddings' answers (proofs/embedding_prover), one per embedding
-  // and reading.
+  return j;
+}
+
+// One constraint of the solver stage, its replay and (record) the map its
+// counterexample replayed on.
+Json constraint_proof_json(const proofs::ConstraintProof& c, const std::string& replay, const std::optional<Counterexample>* map, JsonDetail level) {
+  Json j{{"constraint", c.constraint.name()},
+         {"static", c.static_holds ? (*c.static_holds ? "holds" : "fails") : "none"},
+         {"theorem", c.theorem ? answer_json(*c.theorem, level) : Json(nullptr)},
+         {"model", answer_json(c.model, level)},
+         {"agreement", proofs::name_of(c.agreement)},
+         {"note", c.note},
+         {"replay", replay}};
+  if (with_record(level)) {
+    j["kind"] = static_cast<int>(c.constraint.kind);
+    j["i"] = c.constraint.i;
+    j["j"] = c.constraint.j;
+    j["map"] = map && *map ? [&] {
+      Json cx = Json::object();
+      detail::add_counterexample_record(cx, **map);
+      return cx;
+    }()
+                           : Json(nullptr);
+  }
+  return j;
+}
+
+// The embeddings' answers (proofs/embedding_prover), one per embedding
+// and reading.
+Json embedding_answer_json(const proofs::EmbeddingAnswer& a, const std::string& replay, JsonDetail level) {
+  Json j{{"condition", a.condition()},
+         {"static", a.static_failures},
+         {"reading", proofs::name_of(a.reading)},
+         {"answer", proofs::name_of(a.status)},
+         {"darts", a.darts},
+         {"why", a.why},
+         {"replayed", a.replayed},
+         {"replay", replay},
+         {"uninterpreted", a.uninterpreted},
+         {"disagree", a.disagree},
+         {"note", a.note}};
+  if (with_record(level)) {
+    j["embedding"] = a.embedding;
+    j["functions"] = a.functions;
+  }
+  return j;
+}
+
+// The k-th entry of a list written one per constraint, answer or event.
+const std::string& entry(const std::vector<std::string>& list, std::size_t k) {
+  static const std::string none;
+  return k < list.size() ? list[k] : none;
+}
+
+Json proof_json(const RuleResult& r, JsonDetail level) {
+  const proofs::RuleProof& p = *r.proof;
+  Json constraints = Json::array();
+  for (std::size_t i = 0; i < p.constraints.size(); ++i)
+    constraints.push_back(constraint_proof_json(p.constraints[i], entry(r.proof_replays, i), i < r.proof_maps.size() ? &r.proof_maps[i] : nullptr, level));
   Json embedding = Json::array();
   if (p.embedding)
-    for (std::size_t i = 0; i < p.embedding->answers.size(); ++i) {
-      const auto& a = p.embedding->answers[i];
-      embedding.push_back(Json{{"condition", a.condition()},
-                               {"static", a.static_failures},
-                               {"reading", proofs::name_of(a.reading)},
-                               {"answer", proofs::name_of(a.status)},
-                               {"darts", a.darts},
-                               {"why", a.why},
-                               {"replayed", a.replayed},
-                               {"replay", i < embedding_replays.size() ? embedding_replays[i] : std::string()},
-                               {"uninterpreted", a.uninterpreted},
-                               {"disagree", a.disagree},
-                               {"note", a.note}});
+    for (std::size_t i = 0; i < p.embedding->answers.size(); ++i)
+      embedding.push_back(embedding_answer_json(p.embedding->answers[i], entry(r.embedding_replays, i), level));
+  Json search = nullptr;
+  if (p.embedding) {
+    search = Json{{"hosts", p.embedding->hosts}, {"applications", p.embedding->applications}, {"queries", p.embedding->queries}, {"cached", p.embedding->cached}};
+    if (with_record(level)) {
+      search["out_of_scope"] = p.embedding->out_of_scope;
+      search["interrupted"] = p.embedding->interrupted;
     }
-  return Json{{"scheme", p.scheme},
-              {"embedding", std::move(embedding)},
-              {"embedding_seconds", p.embedding ? p.embedding->seconds : 0.0},
-              {"embedding_search", p.embedding ? Json{{"hosts", p.embedding->hosts},
-                                                      {"applications", p.embedding->applications},
-                                                      {"queries", p.embedding->queries},
-                                                      {"cached", p.embedding->cached}}
-                                               : Json(nullptr)},
-              {"out_of_scope", p.out_of_scope.empty() ? Json(nullptr) : Json(p.out_of_scope)},
-              {"seconds", p.seconds},
-              {"constraints", std::move(constraints)},
-              {"agree", p.count(proofs::Agreement::agree)},
-              {"disagree", p.count(proofs::Agreement::disagree)},
-              {"unresolved", p.count(proofs::Agreement::unresolved)},
-              {"not_compared", p.count(proofs::Agreement::not_compared)}};
+  }
+  Json j{{"scheme", p.scheme},
+         {"embedding", std::move(embedding)},
+         {"embedding_seconds", p.embedding ? p.embedding->seconds : 0.0},
+         {"embedding_search", std::move(search)},
+         {"out_of_scope", p.out_of_scope.empty() ? Json(nullptr) : Json(p.out_of_scope)},
+         {"seconds", p.seconds},
+         {"constraints", std::move(constraints)},
+         {"agree", p.count(proofs::Agreement::agree)},
+         {"disagree", p.count(proofs::Agreement::disagree)},
+         {"unresolved", p.count(proofs::Agreement::unresolved)},
+         {"not_compared", p.count(proofs::Agreement::not_compared)}};
+  if (with_record(level)) {
+    j["rule"] = p.rule;
+    j["model"] = p.model;
+    j["static_failures"] = p.static_failures;
+    j["interrupted"] = p.interrupted;
+  }
+  return j;
+}
+
+// 004's potential events decided on hosts up to K (prove).
+Json potential_events_json(const RuleResult& r, JsonDetail level) {
+  const PotentialEvents& p = *r.potential_events;
+  Json events = Json::array();
+  for (std::size_t i = 0; i < p.events.size(); ++i) {
+    const auto& pe = p.events[i];
+    events.push_back(Json{{"orbit", pe.kind},
+                          {"claim", pe.claim},
+                          {"answer", pe.happens ? "witness" : "never"},
+                          {"darts", pe.darts},
+                          {"replay", entry(r.potential_event_replays, i)}});
+  }
+  Json j{{"events", std::move(events)}, {"hosts", p.hosts}, {"applications", p.applications}, {"not_decided", p.not_decided}, {"seconds", p.seconds}};
+  if (with_record(level)) j["interrupted"] = p.interrupted;
+  return j;
 }
 
 // A Jerboa rule's expressions: the Java, and the term it was read as or
@@ -175,7 +253,9 @@ Json expressions_json(const std::vector<NodeExpression>& expressions) {
   return out;
 }
 
-Json rule_result_json(const RuleResult& r) {
+}  // namespace
+
+Json rule_result_json(const RuleResult& r, JsonDetail level) {
   const CatalogRule& e = *r.entry;
   Json conditions = Json::array();
   for (const auto& v : r.verdict.conditions) conditions.push_back(condition_json(v));
@@ -201,26 +281,13 @@ Json rule_result_json(const RuleResult& r) {
   j["matches_record"] = r.matches_record();
   j["mismatches"] = r.mismatches;
   j["unsound"] = r.unsound();
-  j["confirmation"] = r.host_search || r.scheme_search ? confirmation_json(r) : Json(nullptr);
-  j["fuzz"] = r.fuzz ? fuzz_json(*r.fuzz, r.fuzz_replay, r.events_replay) : Json(nullptr);
-  j["proof"] = r.proof ? proof_json(*r.proof, r.proof_replays, r.embedding_replays) : Json(nullptr);
-  if (r.potential_events) {
-    // 004's potential events decided on hosts up to K (prove).
-    Json events = Json::array();
-    for (std::size_t i = 0; i < r.potential_events->events.size(); ++i) {
-      const auto& pe = r.potential_events->events[i];
-      events.push_back(Json{{"orbit", pe.kind},
-                            {"claim", pe.claim},
-                            {"answer", pe.happens ? "witness" : "never"},
-                            {"darts", pe.darts},
-                            {"replay", i < r.potential_event_replays.size() ? r.potential_event_replays[i] : std::string()}});
-    }
-    j["potential_events"] = Json{{"events", std::move(events)},
-                                 {"hosts", r.potential_events->hosts},
-                                 {"applications", r.potential_events->applications},
-                                 {"not_decided", r.potential_events->not_decided},
-                                 {"seconds", r.potential_events->seconds}};
-  }
+  j["confirmation"] = r.host_search || r.scheme_search ? confirmation_json(r, level) : Json(nullptr);
+  j["fuzz"] = r.fuzz ? fuzz_json(*r.fuzz, r.fuzz_replay, r.events_replay, level) : Json(nullptr);
+  j["proof"] = r.proof ? proof_json(r, level) : Json(nullptr);
+  if (r.potential_events)
+    j["potential_events"] = potential_events_json(r, level);
+  else if (with_record(level))
+    j["potential_events"] = nullptr;
   return j;
 }
 

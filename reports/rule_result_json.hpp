@@ -12,16 +12,17 @@
 
 namespace dartcheck::reports {
 
+/// How much of a result the JSON holds: what the report shows, or also
+/// what the report leaves out or shows as text (maps, D-graphs, solver
+/// hosts, every count), so that a campaign's shard record reads back
+/// without loss (campaign/detail/result_record.hpp). One writer for both:
+/// a field added to the report is in the record.
+enum class JsonDetail { report, record };
+
 /// One rule: location, model, static conditions with witnesses, embedding
 /// checks, the recorded verdict and how this run compares with it, and
-/// each stage that ran (confirmation, fuzz, solver).
-Json rule_result_json(const analysis::RuleResult& r);
-
-/// A fuzz stage's report (also inside rule_result_json).
-Json fuzz_json(const analysis::FuzzReport& f, const std::string& replay, const std::string& events_replay);
-
-/// A solver stage's proof (also inside rule_result_json).
-Json proof_json(const proofs::RuleProof& p, const std::vector<std::string>& replays, const std::vector<std::string>& embedding_replays);
+/// each stage that ran (confirmation, fuzz, solver, potential events).
+Json rule_result_json(const analysis::RuleResult& r, JsonDetail detail = JsonDetail::report);
 
 /// The rules a catalog names but dartcheck does not check, with why.
 Json skipped_json(const std::vector<SkippedRule>& skipped);

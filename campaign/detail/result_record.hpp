@@ -1,15 +1,18 @@
-// A rule's result as a shard writes it and merge reads it back: every
-// stage that costs time (model-level confirmation, fuzz, proof) without
-// loss, so that merge renders exactly what the unsharded run renders. The
-// static stage is not in the record: it is deterministic and takes
-// milliseconds, so merge recomputes it from the catalog (and compares the
-// failing conditions with the record's, to catch a catalog that changed).
+// A rule's result as a shard writes it and merge reads it back: the rule's
+// JSON as the report writes it, with what the report leaves out
+// (reports::JsonDetail::record), so that every stage that costs time
+// (model-level confirmation, fuzz, proof, potential events) reads back
+// without loss and merge renders exactly what the unsharded run renders.
+// The static stage is read from the catalog instead: it is deterministic
+// and takes milliseconds, so merge recomputes it (and compares the failing
+// conditions with the record's, to catch a catalog that changed).
 #pragma once
 
 #include <stdexcept>
 
 #include "analysis/rule_result.hpp"
 #include "reports/json_document.hpp"
+#include "reports/rule_result_json.hpp"
 
 namespace dartcheck::campaign {
 
@@ -20,8 +23,8 @@ class RecordError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The record of `r`'s costly stages, its static failures and time.
-reports::Json result_record(const analysis::RuleResult& r);
+/// The record of `r`: its JSON with every stage's data.
+inline reports::Json result_record(const analysis::RuleResult& r) { return reports::rule_result_json(r, reports::JsonDetail::record); }
 
 /// Puts the stages of `record` into `r`, whose static stage is computed
 /// already. Throws RecordError on a malformed record, and when the record's

@@ -177,7 +177,7 @@ TEST(ResultRecord, DamagedRecordsNameWhere) {
   refused([](Json& j) { j["fuzz"]["counterexample"]["host"]["dims"][0]["links"][0] = 1000; }, "record.fuzz.counterexample.host.dims[0].links[0]");
   refused([](Json& j) { j["fuzz"].erase("hosts"); }, "record.fuzz: no key \"hosts\"");
   refused([](Json& j) { j["fuzz"]["applications"] = -3; }, "record.fuzz.applications");
-  refused([](Json& j) { j["fuzz"]["verdict"] = 9; }, "record.fuzz.verdict");
+  refused([](Json& j) { j["fuzz"]["class"] = "nine"; }, "record.fuzz.class");
   refused([](Json& j) { j["fuzz"]["counterexample"]["hooks"] = "0"; }, "record.fuzz.counterexample.hooks");
   refused([](Json& j) { j["failures"] = Json::array(); }, "did the catalog change?");
 }
