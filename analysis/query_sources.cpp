@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "analysis/map_sources.hpp"
 #include "core/input_error.hpp"
 #include "querymodify/hex_queries.hpp"
@@ -39,7 +40,7 @@ std::vector<NamedQuery> named_queries(const std::vector<std::string>& targets, b
     if (start >= q.size()) throw UsageError(fmt::format("--start {}: the query {} has {} darts", start, target, q.size()));
     try {
       queries.push_back({target, query_word(q, start, free_links)});
-    } catch (const std::invalid_argument& e) {
+    } catch (const ValueError& e) {
       throw InputError(target, 0, 0, e.what());
     }
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "analysis/exit_status.hpp"
 #include "analysis/map_sources.hpp"
 #include "checkers/map_validity.hpp"
@@ -18,7 +19,7 @@ void check_orbit_syntax(const std::vector<std::string>& texts) {
   for (const std::string& t : texts) {
     try {
       orbit_kind_entries(t);
-    } catch (const std::invalid_argument& e) {
+    } catch (const ValueError& e) {
       throw UsageError(fmt::format("--orbit: {}", e.what()));
     }
   }
@@ -30,7 +31,7 @@ std::vector<OrbitKind> requested_orbit_kinds(const std::vector<std::string>& tex
   for (const std::string& t : texts) {
     try {
       out.push_back(parse_orbit_kind(t, model));
-    } catch (const std::invalid_argument& e) {
+    } catch (const ValueError& e) {
       throw UsageError(fmt::format("--orbit: {}", e.what()));
     }
   }

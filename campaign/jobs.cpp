@@ -17,6 +17,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "core/terminal.hpp"
 #include "analysis/exit_status.hpp"
 #include "analysis/interrupt.hpp"
@@ -71,7 +72,7 @@ pid_t spawn(const std::vector<std::string>& args, const std::string& out, const 
   pid_t pid = 0;
   const int rc = posix_spawn(&pid, "/proc/self/exe", &files, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&files);
-  if (rc != 0) throw std::runtime_error(fmt::format("--jobs: cannot start a shard process: {}", std::strerror(rc)));
+  if (rc != 0) throw Error(fmt::format("--jobs: cannot start a shard process: {}", std::strerror(rc)));
   return pid;
 }
 
@@ -81,7 +82,7 @@ void set_command_line(int argc, char** argv) { command_line().assign(argv, argv 
 
 int run_jobs(const JobsRun& run) {
   if (!run.shard.empty()) throw UsageError("--jobs with --shard: run a shard on one job, or the whole run on several");
-  if (command_line().empty()) throw std::logic_error("run_jobs: the command line was not saved");
+  if (command_line().empty()) throw InternalError("run_jobs: the command line was not saved");
   analysis::catch_interrupts();  // Ctrl-C reaches the shards too (one process group); they stop and say so
   analysis::count_second_interrupt();  // a second signal kills the shards before the parent goes
   // The shards' files go in $TMPDIR (or /tmp), in a directory of this run's own.
@@ -89,7 +90,7 @@ int run_jobs(const JobsRun& run) {
   const std::string parent = tmp && *tmp ? tmp : "/tmp";
   std::string dir_template = parent + "/dartcheck-jobs-XXXXXX";
   const char* dir = mkdtemp(dir_template.data());
-  if (!dir) throw std::runtime_error(fmt::format("--jobs: cannot create a directory in {}: {}", printable(parent), std::strerror(errno)));
+  if (!dir) throw Error(fmt::format("--jobs: cannot create a directory in {}: {}", printable(parent), std::strerror(errno)));
   struct Cleanup {
     std::string dir;
     ~Cleanup() {
@@ -152,7 +153,7 @@ int run_jobs(const JobsRun& run) {
     }
     if (pid < 0) {
       if (errno == EINTR) continue;
-      throw std::runtime_error(fmt::format("--jobs: waiting for the shards: {}", std::strerror(errno)));
+      throw Error(fmt::format("--jobs: waiting for the shards: {}", std::strerror(errno)));
     }
     const auto it = running.find(pid);
     if (it == running.end()) continue;

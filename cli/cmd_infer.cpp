@@ -8,6 +8,7 @@
 
 #include <filesystem>
 
+#include "core/error.hpp"
 #include "analysis/map_sources.hpp"
 #include "cli/commands.hpp"
 #include "core/terminal.hpp"
@@ -65,7 +66,7 @@ int infer(const InferCommand& o) {
   std::vector<Dim> orbit;
   try {
     orbit = parse_inference_orbit(o.orbit, before.model());
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     throw command_line(fmt::format("--orbit: {}", e.what()));
   }
   // A folding of an invalid example "verifies" a rule whose catalog then fails `run`.
@@ -76,13 +77,13 @@ int infer(const InferCommand& o) {
   std::optional<KappaGraph> graph;
   try {
     graph.emplace(make_kappa_graph(std::move(before), std::move(after), spec));
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     throw InputError(o.kappa == "identity" ? "<command line>" : o.kappa, 0, 0, e.what());
   }
   std::vector<Attempt> attempts;
   try {
     attempts = infer(*graph, orbit, options);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     throw command_line(fmt::format("--start: {}", e.what()));
   }
   const reports::InferRun run{o.before,           o.after,   orbit_type_str(OrbitType(orbit.begin(), orbit.end())), g_size, h_size,

@@ -2,6 +2,7 @@
 // of two words.
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "cli/commands.hpp"
 #include "core/conjugate_words.hpp"
 #include "core/input_error.hpp"
@@ -12,7 +13,7 @@ namespace dartcheck::cli {
 static ConjWord parse_arg(const std::string& text, const Model& model, const char* which) {
   try {
     return parse_conj_word(text, model);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     throw UsageError(fmt::format("{}: {}", which, e.what()));
   }
 }

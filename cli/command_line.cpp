@@ -421,9 +421,10 @@ void add_output_options(CLI::App& app, OutputOptions& o) {
   app.add_flag("-q,--quiet", o.quiet, "no tables, summaries or progress: only errors, failures and MISMATCH lines (stderr) and the exit status");
 }
 
-// Runs the parsed command; the one place where each kind of error becomes
-// its exit status (commands.hpp): input 2, output 4, anything else 2 with
-// its message.
+// Runs the parsed command; the one place where each kind of error
+// (core/error.hpp) becomes its exit status (commands.hpp): input, usage and
+// a value without its position 2, output 4, a broken invariant 3 (a defect
+// of dartcheck, as a soundness bug), anything else 2 with its message.
 int run_command(const Commands& commands) {
   try {
     for (const auto& [sub, run] : commands)
@@ -439,6 +440,10 @@ int run_command(const Commands& commands) {
   } catch (const OutputError& e) {
     fmt::print(stderr, "{}\n", painted_diagnostic(diagnostic("error", "", 0, 0, printable(e.what()))));
     return output_error;
+  } catch (const InternalError& e) {
+    fmt::print(stderr, "{}\n",
+               painted_diagnostic(diagnostic("error", "", 0, 0, fmt::format("internal error (a defect of dartcheck): {}", printable(e.what())))));
+    return soundness_bug;
   } catch (const std::bad_alloc&) {
     fmt::print(stderr, "dartcheck: error: out of memory (the input is larger than this machine can hold; see --limit-darts)\n");
     return bad_input;

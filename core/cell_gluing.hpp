@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/map.hpp"
 #include "core/polyhedron.hpp"
 
@@ -20,12 +21,12 @@ namespace dartcheck {
 /// Cells, faces or a shape that make no map of the requested model: the
 /// message says which face, edge or vertex and why; `culprit` and `index`
 /// say which input element shows it, so that readers can name its line.
-class BuildError : public std::runtime_error {
+class BuildError : public Error {
  public:
   /// What `index` counts: the input's faces, or its cells (volumes, tetrahedra).
   enum class Culprit { none, face, cell };
   explicit BuildError(const std::string& message, Culprit culprit = Culprit::none, std::size_t index = 0)
-      : std::runtime_error(message), culprit_(culprit), index_(index) {}
+      : Error(message), culprit_(culprit), index_(index) {}
   Culprit culprit() const { return culprit_; }
   std::size_t index() const { return index_; }
 

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "core/limits.hpp"
 
 namespace dartcheck {
@@ -31,10 +32,10 @@ ConjWord parse_conj_word(std::string_view text, const Model& model) {
   bool pending_bar = false;
   std::size_t k = 0;
   auto fail = [&](std::size_t at, const std::string& what) {
-    throw std::invalid_argument(fmt::format("word '{}', character {}: {}", text, at + 1, what));
+    throw ValueError(fmt::format("word '{}', character {}: {}", text, at + 1, what));
   };
   if (text.size() > limits().word_length)
-    throw std::invalid_argument(over_limit("a word's length", text.size(), limits().word_length, "--limit-word-length"));
+    throw ValueError(over_limit("a word's length", text.size(), limits().word_length, "--limit-word-length"));
   while (k < text.size()) {
     const char c = text[k];
     if (c == '~') {

@@ -33,6 +33,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/formatting.hpp"
 #include "core/map.hpp"
 #include "core/model.hpp"
@@ -80,7 +81,7 @@ class ConjWord {
 /// Parses a word: digits are dimensions (0-9), "~" or a combining overbar
 /// (U+0304) after a digit marks a conjugate, "ε", "e" or "" is the empty
 /// word. Bars on non-oriented dimensions of `model` are dropped (d̄ = d).
-/// Throws std::invalid_argument naming the 1-based character position.
+/// Throws ValueError naming the 1-based character position.
 ConjWord parse_conj_word(std::string_view text, const Model& model);
 
 /// Target of the w-path from d in a map, following i-arcs backwards for a
@@ -89,9 +90,9 @@ Dart follow(const Map& map, Dart d, const ConjWord& w);
 
 /// A word whose rewritings in a non-confluent R_{N,E} are more than
 /// limits().rewrite_words (--limit-rewrite-words).
-class RewriteLimit : public std::runtime_error {
+class RewriteLimit : public Error {
  public:
-  using std::runtime_error::runtime_error;
+  using Error::Error;
 };
 
 /// R_{N,E} for one model, with memoized normal forms.

@@ -1,5 +1,7 @@
 #include "core/input_error.hpp"
 
+#include "core/error.hpp"
+
 #include <fmt/format.h>
 
 namespace dartcheck {
@@ -38,7 +40,7 @@ std::string printable(std::string_view text) {
 
 // Messages may quote the input: they are made printable here, once for all.
 InputError::InputError(std::string file, int line, int column, const std::string& message)
-    : std::runtime_error(printable(position(file, line, column)) + ": " + printable(message)),
+    : Error(printable(position(file, line, column)) + ": " + printable(message)),
       file_(std::move(file)),
       message_(printable(message)),
       line_(line),

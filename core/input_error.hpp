@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/formatting.hpp"
 
 namespace dartcheck {
@@ -21,7 +22,7 @@ inline constexpr std::string_view command_line = "<command line>";
 /// note; the message is written as given (make it printable first).
 std::string diagnostic(std::string_view severity, std::string_view file, int line, int column, std::string_view message);
 
-class InputError : public std::runtime_error {
+class InputError : public Error {
  public:
   /// `line` and `column` are 1-based; 0 means unknown. what() is
   /// "file:line:column: message".

@@ -1,5 +1,7 @@
 #include "core/orbit_notation.hpp"
 
+#include "core/error.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -9,7 +11,7 @@ namespace dartcheck {
 
 void read_orbit_entries(std::string_view text, const std::function<void(const OrbitEntry&)>& entry) {
   auto fail = [&](std::size_t pos, std::string_view what) {
-    throw std::invalid_argument(fmt::format("orbit type '{}', at byte {}: {}", text, pos + 1, what));
+    throw ValueError(fmt::format("orbit type '{}', at byte {}: {}", text, pos + 1, what));
   };
   std::size_t i = 0;
   auto skip_spaces = [&] {
@@ -57,7 +59,7 @@ OrbitType parse_orbit_type(std::string_view text) {
   OrbitType t;
   read_orbit_entries(text, [&](const OrbitEntry& e) {
     auto fail = [&](std::string_view what) {
-      throw std::invalid_argument(fmt::format("orbit type '{}', at byte {}: {}", text, e.offset + e.text.size(), what));
+      throw ValueError(fmt::format("orbit type '{}', at byte {}: {}", text, e.offset + e.text.size(), what));
     };
     if (e.text == "_") {
       t.emplace_back(std::nullopt);

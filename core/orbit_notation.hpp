@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/model.hpp"
 
 namespace dartcheck {
@@ -25,7 +26,7 @@ struct OrbitEntry {
 
 /// Calls `entry` with each entry of `text` as it is read, so that the
 /// first error in reading order is the one reported, the caller's (a
-/// dimension too large) or the notation's: std::invalid_argument
+/// dimension too large) or the notation's: ValueError
 /// "orbit type '<0;1>', at byte 3: expected ',' or '>'".
 void read_orbit_entries(std::string_view text, const std::function<void(const OrbitEntry&)>& entry);
 
@@ -36,7 +37,7 @@ std::vector<OrbitEntry> orbit_entries(std::string_view text);
 /// removing symbol '_'.
 using OrbitType = std::vector<std::optional<Dim>>;
 
-/// Parses "<0,_,2>" (also with ⟨ ⟩). Throws std::invalid_argument naming
+/// Parses "<0,_,2>" (also with ⟨ ⟩). Throws ValueError naming
 /// the byte position of the problem, and when a dimension repeats (a
 /// relabeling function is injective, 000 Def. 4.1).
 OrbitType parse_orbit_type(std::string_view text);

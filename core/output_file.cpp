@@ -1,5 +1,6 @@
 #include "core/output_file.hpp"
 
+#include "core/error.hpp"
 #include "core/input_error.hpp"
 
 #include <fcntl.h>
@@ -22,7 +23,7 @@ namespace dartcheck {
 namespace fs = std::filesystem;
 
 OutputError::OutputError(std::string file, const std::string& reason)
-    : std::runtime_error(file + ": cannot write: " + reason), file_(std::move(file)) {}
+    : Error(file + ": cannot write: " + reason), file_(std::move(file)) {}
 
 namespace {
 

@@ -11,11 +11,13 @@
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace dartcheck {
 
 /// An output that could not be written: names the file and the reason.
 /// The command line handler turns it into exit status 4.
-class OutputError : public std::runtime_error {
+class OutputError : public Error {
  public:
   OutputError(std::string file, const std::string& reason);
   const std::string& file() const { return file_; }

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/error.hpp"
 #include "core/orbit.hpp"
 #include "core/dart_index.hpp"
 #include "core/disjoint_sets.hpp"
@@ -231,7 +232,7 @@ EventLog instantiated_log(const Map& g, const Map& h, const EventRule& r, const 
     const std::uint32_t v = m.get(d);
     // A preserved dart outside every instantiated orbit would contradict
     // 004 Sec. 2.2 (the rewrite changes only matched darts' links).
-    if (v == DartIndex::none) throw std::logic_error(fmt::format("dart {} is outside the instantiated orbits", d));
+    if (v == DartIndex::none) throw InternalError(fmt::format("dart {} is outside the instantiated orbits", d));
     return v;
   };
   return {k.kind,

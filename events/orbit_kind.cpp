@@ -1,5 +1,6 @@
 #include "events/orbit_kind.hpp"
 
+#include "core/error.hpp"
 #include "core/orbit_notation.hpp"
 
 #include <algorithm>
@@ -30,8 +31,8 @@ std::string OrbitKind::str() const {
 }
 
 std::vector<OrbitEntry> orbit_kind_entries(std::string_view text) {
-  std::vector<OrbitEntry> entries = orbit_entries(text);  // std::invalid_argument with the byte
-  if (entries.empty()) throw std::invalid_argument(fmt::format("orbit type '{}' is empty: give at least one dimension", text));
+  std::vector<OrbitEntry> entries = orbit_entries(text);  // ValueError with the byte
+  if (entries.empty()) throw ValueError(fmt::format("orbit type '{}' is empty: give at least one dimension", text));
   return entries;
 }
 
@@ -40,20 +41,20 @@ OrbitKind parse_orbit_kind(std::string_view text, const Model& model) {
   OrbitKind kind;
   for (const OrbitEntry& e : entries) {
     const std::string& entry = e.text;
-    if (entry == "_") throw std::invalid_argument(fmt::format("orbit type '{}': entry '{}' is not a dimension", text, entry));
+    if (entry == "_") throw ValueError(fmt::format("orbit type '{}': entry '{}' is not a dimension", text, entry));
     OrbitWord w;
     if (model.is_generalized()) {
       // G-maps: an entry is one dimension (10-15 have two digits).
-      if (entry.size() > 2) throw std::invalid_argument(fmt::format("orbit type '{}': '{}' is not a dimension", text, entry));
+      if (entry.size() > 2) throw ValueError(fmt::format("orbit type '{}': '{}' is not a dimension", text, entry));
       w.push_back(std::stoi(entry));
     } else {
       // O-maps: a word of one-digit dimensions ("21": along 2, then 1).
       for (char c : entry) w.push_back(c - '0');
     }
     for (Dim d : w)
-      if (!model.contains(d)) throw std::invalid_argument(fmt::format("orbit type '{}': {} is not a dimension of {}", text, d, model.name));
+      if (!model.contains(d)) throw ValueError(fmt::format("orbit type '{}': {} is not a dimension of {}", text, d, model.name));
     if (std::find(kind.generators.begin(), kind.generators.end(), w) != kind.generators.end())
-      throw std::invalid_argument(fmt::format("orbit type '{}': '{}' repeats", text, entry));
+      throw ValueError(fmt::format("orbit type '{}': '{}' repeats", text, entry));
     kind.generators.push_back(std::move(w));
   }
   std::sort(kind.generators.begin(), kind.generators.end(),

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/model.hpp"
 #include "core/orbit.hpp"
 #include "core/orbit_notation.hpp"
@@ -28,11 +29,11 @@ struct OrbitKind {
 
 /// Parses "<0,1>" (or "<21,31>" on an O-map): entries separated by commas,
 /// each a dimension of the model (G-maps) or a word of one-digit
-/// dimensions (O-maps). Throws std::invalid_argument naming the entry.
+/// dimensions (O-maps). Throws ValueError naming the entry.
 OrbitKind parse_orbit_kind(std::string_view text, const Model& model);
 
 /// The entries of an orbit type, whatever the model: the syntax that
-/// parse_orbit_kind checks first (std::invalid_argument naming the byte,
+/// parse_orbit_kind checks first (ValueError naming the byte,
 /// or an empty type), so that a command refuses a malformed --orbit once,
 /// before any work, and skips only the rules whose model it does not fit.
 std::vector<OrbitEntry> orbit_kind_entries(std::string_view text);

@@ -14,11 +14,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view text = fuzzing::as_text(data + 1, size - 1);
   try {
     (void)parse_conj_word(text, model);
-  } catch (const std::invalid_argument&) {
+  } catch (const ValueError&) {
   }
   try {
     (void)parse_orbit_type(text);
-  } catch (const std::invalid_argument&) {
+  } catch (const ValueError&) {
   }
   return 0;
 }

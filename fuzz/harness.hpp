@@ -1,6 +1,6 @@
 // What every libFuzzer harness shares. A reader may reject its input only
 // with the error types its header documents (InputError, TermError,
-// std::invalid_argument for words and orbit types); anything else that
+// ValueError for words and orbit types); anything else that
 // escapes -- another exception, a crash, a sanitizer report, a time-out --
 // is a finding. Readers that take a file name get the input through a file
 // of the right extension in /dev/shm (or the temporary folder).

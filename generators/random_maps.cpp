@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/orbit.hpp"
 
 namespace dartcheck {
@@ -82,7 +83,7 @@ Map build_random_map(const Model& model, const MapRecipe& recipe) {
   const Dim n = model.dimension();
   Map m(model);
   if (model.is_generalized()) {
-    if (n < 1 || n > 3) throw std::invalid_argument("random G-maps are built for dimensions 1 to 3");
+    if (n < 1 || n > 3) throw ValueError("random G-maps are built for dimensions 1 to 3");
     for (auto k : recipe.face_sizes) add_gmap_face(m, k);
     if (n >= 2) loop_all(m, 2);
     if (n >= 3) loop_all(m, 3);
@@ -90,7 +91,7 @@ Map build_random_map(const Model& model, const MapRecipe& recipe) {
       for (const SewStep& s : recipe.sewings) sew_gmap(m, s);
     return m;
   }
-  if (n < 2 || n > 3) throw std::invalid_argument("random O-maps are built for dimensions 2 and 3");
+  if (n < 2 || n > 3) throw ValueError("random O-maps are built for dimensions 2 and 3");
   const int copies = n == 3 ? 2 : 1;
   std::vector<std::pair<Dart, std::size_t>> faces;
   for (auto k : recipe.face_sizes)

@@ -1,5 +1,7 @@
 #include "inference/infer.hpp"
 
+#include "core/error.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -15,8 +17,8 @@ std::vector<Dim> parse_inference_orbit(const std::string& text, const Model& mod
   const OrbitType t = parse_orbit_type(text);
   std::vector<Dim> out;
   for (const auto& d : t) {
-    if (!d) throw std::invalid_argument(fmt::format("the inference orbit type {} contains '_'", text));
-    if (!model.contains(*d)) throw std::invalid_argument(fmt::format("dimension {} of {} is not a dimension of {}", *d, text, model.name));
+    if (!d) throw ValueError(fmt::format("the inference orbit type {} contains '_'", text));
+    if (!model.contains(*d)) throw ValueError(fmt::format("dimension {} of {} is not a dimension of {}", *d, text, model.name));
     out.push_back(*d);
   }
   return out;
@@ -141,7 +143,7 @@ std::vector<Attempt> infer(const KappaGraph& graph, const std::vector<Dim>& orbi
   std::vector<Attempt> out;
   if (options.start) {
     if (*options.start >= graph.before().size())
-      throw std::invalid_argument(fmt::format("start dart {} is not a dart of the before map ({} darts)", *options.start, graph.before().size()));
+      throw ValueError(fmt::format("start dart {} is not a dart of the before map ({} darts)", *options.start, graph.before().size()));
     FoldScratch scratch(graph);
     std::vector<Dart> covers;
     bool failed = false;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "checkers/rule_conditions.hpp"
 #include "inference/folding.hpp"
 #include "inference/inferred_rule.hpp"
@@ -77,7 +78,7 @@ struct InferOptions {
 std::vector<Attempt> infer(const KappaGraph& graph, const std::vector<Dim>& orbit, const InferOptions& options);
 
 /// Parses "<0,1,2>" as an inference orbit type: distinct dimensions of the
-/// model, no '_'. Throws std::invalid_argument.
+/// model, no '_'. Throws ValueError.
 std::vector<Dim> parse_inference_orbit(const std::string& text, const Model& model);
 
 }  // namespace dartcheck::inference

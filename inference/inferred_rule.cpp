@@ -1,5 +1,7 @@
 #include "inference/inferred_rule.hpp"
 
+#include "core/error.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -65,7 +67,7 @@ RuleOrWhy to_rule(const GraphScheme& scheme, const Model& model, const std::stri
     Rule rule(name, model, std::move(left), std::move(right), {"n0"}, left_words, right_words);
     Operation op{std::move(rule), ArcWords{true, std::move(left_words), std::move(right_words)}, std::move(labels), {}, {}, std::nullopt};
     return {InferredRule{std::move(op), std::move(node_of_left), std::move(node_of_right), preserved, std::move(names)}, {}};
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     return {std::nullopt, fmt::format("the inferred scheme is not a rule with one hook: {}", e.what())};
   }
 }

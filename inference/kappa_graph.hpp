@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/input_error.hpp"
 #include "core/map.hpp"
 #include "io/kappa_file.hpp"
@@ -54,7 +55,7 @@ class KappaGraph {
 /// κ as a file or a caller states it: io/kappa_file.hpp.
 using dartcheck::KappaSpec;
 
-/// Builds κ(G, H). Throws std::invalid_argument with a sentence when the
+/// Builds κ(G, H). Throws ValueError with a sentence when the
 /// maps have different models, a model is not a G-map (κ-graphs are
 /// defined on n-G-maps), a dart is out of range, κ is not injective or not
 /// a function, or two associated orbits differ in shape; an InputError at

@@ -1,4 +1,5 @@
 #include "io/catalog.hpp"
+#include "core/error.hpp"
 #include "io/detail/yaml_readers.hpp"
 
 #include <algorithm>
@@ -112,7 +113,7 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
         const OrbitType t = parse_orbit_type(yaml::as_string(file, kv.second, "orbit type"));
         add_implicit_arcs(g, *words, v, *jerboa, t, *model);
         if (orbit_types) orbit_types->push_back(t);
-      } catch (const std::invalid_argument& e) {
+      } catch (const ValueError& e) {
         fail_at(file, kv.second, fmt::format("node '{}': {}", name, e.what()));
       }
     }
@@ -150,7 +151,7 @@ TopoGraph read_side(const std::string& file, const YAML::Node& side, const char*
         if (!model || !words) fail_at(file, a, fmt::format("arc '{}': a scheme label (w,i) is not allowed here", text));
         try {
           w = parse_conj_word(*arc->word, *model);
-        } catch (const std::invalid_argument& e) {
+        } catch (const ValueError& e) {
           fail_at(file, a, fmt::format("arc '{}': {}", text, e.what()));
         }
         if (has_words) *has_words = true;
@@ -260,7 +261,7 @@ std::optional<OrbitType> jerboa_parameter(const std::string& file, const YAML::N
   OrbitType t;
   try {
     t = parse_orbit_type(yaml::as_string(file, label, "orbit type"));
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     fail_at(file, label, e.what());
   }
   if (std::find(t.begin(), t.end(), std::nullopt) != t.end())
@@ -292,7 +293,7 @@ void add_rule(Catalog& c, const std::string& file, const YAML::Node& v, const st
   std::optional<Rule> rule;
   try {
     rule.emplace(name, model, std::move(left), std::move(right), std::move(hooks), words.left, words.right);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     fail_at(file, hn ? hn : v, fmt::format("rule '{}': {}", name, e.what()));
   }
   CatalogRule cr{{std::move(*rule), words, std::move(labels), {}, {}, std::nullopt},
@@ -382,10 +383,10 @@ static Catalog read_yaml_catalog(const std::string& file) {
       const auto orbit = yaml::require(file, e, "orbit");
       try {
         for (const auto& k : parse_orbit_type(yaml::as_string(file, orbit, "orbit type"))) {
-          if (!k) throw std::invalid_argument("an embedding's orbit type cannot contain '_'");
+          if (!k) throw ValueError("an embedding's orbit type cannot contain '_'");
           d.orbit.push_back(*k);
         }
-      } catch (const std::invalid_argument& x) {
+      } catch (const ValueError& x) {
         fail_at(file, orbit, fmt::format("embedding '{}': {}", d.name, x.what()));
       }
       // A Jerboa class (a modeler's export) has the reading the .jme gives it.

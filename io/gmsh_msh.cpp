@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "core/error.hpp"
 #include "io/line_reader.hpp"
 #include "io/volume_cells.hpp"
 
@@ -230,7 +231,7 @@ class Reader {
 void element_data(std::ostream& out, const std::vector<CellField>& fields, std::size_t elements) {
   for (const CellField& f : fields) {
     if (f.values.size() != elements)
-      throw std::logic_error(fmt::format("cell field {} has {} values for {} cells", f.name, f.values.size(), elements));
+      throw InternalError(fmt::format("cell field {} has {} values for {} cells", f.name, f.values.size(), elements));
     out << fmt::format("$ElementData\n1\n\"{}\"\n1\n0\n3\n0\n1\n{}\n", f.name, elements);
     for (std::size_t k = 0; k < elements; ++k)
       out << k + 1 << ' ' << (f.integer ? fmt::format("{}", static_cast<long long>(f.values[k])) : fmt::format("{}", f.values[k])) << '\n';
@@ -253,7 +254,7 @@ void write_gmsh(std::ostream& out, const TetMesh& m, GmshVersion version, const 
 void write_gmsh(std::ostream& out, const Points& points, const VolumeCells& cells, int dimension, GmshVersion version,
                 const std::vector<CellField>& fields) {
   for (CellKind k : cells.kind)
-    if (gmsh_type(k) == 0) throw std::logic_error(fmt::format("gmsh has no element for a {}", k));
+    if (gmsh_type(k) == 0) throw InternalError(fmt::format("gmsh has no element for a {}", k));
   const std::size_t n = points.size(), e = cells.size();
   if (version == GmshVersion::v22) {
     out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";

@@ -17,6 +17,7 @@
 #include <ostream>
 #include <string>
 
+#include "core/error.hpp"
 #include "io/tet_mesh_io.hpp"
 #include "io/volume_cells.hpp"
 
@@ -32,12 +33,12 @@ enum class GmshVersion { v41, v22 };
 /// order (which for hexahedra, prisms and pyramids is medit's, that of
 /// TetMesh): hexahedra, prisms, pyramids, then tetrahedra, element tags
 /// from 1 in that order (write_vtu numbers its cells the same way); each
-/// field as an $ElementData view. Throws std::logic_error when a field has
+/// field as an $ElementData view. Throws InternalError when a field has
 /// not one value per cell.
 void write_gmsh(std::ostream& out, const TetMesh& m, GmshVersion version = GmshVersion::v41, const std::vector<CellField>& fields = {});
 /// The same for any cells over `points` in gmsh's corner order, in one
 /// entity of `dimension` (2 for a polygon mesh's faces, 3 for volumes).
-/// Throws std::logic_error for a polygon of more than 4 corners, which
+/// Throws InternalError for a polygon of more than 4 corners, which
 /// gmsh has no element for (callers refuse it first).
 void write_gmsh(std::ostream& out, const Points& points, const VolumeCells& cells, int dimension, GmshVersion version = GmshVersion::v41,
                 const std::vector<CellField>& fields = {});

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/model.hpp"
 #include "rewriting/term.hpp"
 
@@ -53,9 +54,9 @@ struct ReadExpression {
 
 /// Java that the modeler could not have been built with; `offset` is a
 /// 0-based position in the code.
-class JerboaCodeError : public std::runtime_error {
+class JerboaCodeError : public Error {
  public:
-  JerboaCodeError(std::size_t offset, const std::string& message) : std::runtime_error(message), offset_(offset) {}
+  JerboaCodeError(std::size_t offset, const std::string& message) : Error(message), offset_(offset) {}
   std::size_t offset() const { return offset_; }
 
  private:

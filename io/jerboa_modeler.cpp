@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <pugixml.hpp>
 
+#include "core/error.hpp"
 #include "core/disjoint_sets.hpp"
 #include "core/input_error.hpp"
 #include "io/input_file.hpp"
@@ -330,7 +331,7 @@ void read_rule(Catalog& c, const Positions& p, const std::string& raw, const Mod
       rule.emplace(name, model, std::move(lg), std::move(rg), hooks);
     else
       rule.emplace(name, model, std::move(lg), std::move(rg), hooks, words.left, words.right);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     return skip(e.what());
   }
   if (parameter.empty())

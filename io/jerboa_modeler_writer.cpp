@@ -8,6 +8,7 @@
 #include <pugixml.hpp>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/input_error.hpp"
 
 namespace dartcheck {
@@ -19,7 +20,7 @@ std::string positional(const OrbitType& t) {
   return s;
 }
 
-// Throws std::invalid_argument for an explicit arc without its reverse.
+// Throws ValueError for an explicit arc without its reverse.
 // Where the editor draws node `k` of a side: rows of six, so a preserved
 // node (the same index on both sides for inferred rules) sits at the same
 // place in L and R.
@@ -65,7 +66,7 @@ void write_side(pugi::xml_node parent, const char* tag, const TopoGraph& g, cons
       if (!done[f] && b.label == a.label && b.source == a.target && b.target == a.source && arc_word(words, f).empty()) done[f] = paired = true;
     }
     if (!paired)
-      throw std::invalid_argument(fmt::format("the arc {} -{}-> {} of <{}> has no reverse: Jerboa's arcs are non-oriented", g.name(a.source), a.label,
+      throw ValueError(fmt::format("the arc {} -{}-> {} of <{}> has no reverse: Jerboa's arcs are non-oriented", g.name(a.source), a.label,
                                               g.name(a.target), tag));
     auto x = arcs.append_child("arc");
     x.append_attribute("dim") = a.label;
@@ -107,7 +108,7 @@ std::optional<std::string> xml_name_problem(std::string_view name) {
 void write_jme(std::ostream& out, const std::string& modeler, int dimension, const std::vector<const Operation*>& rules) {
   const auto check_name = [](std::string_view what, const std::string& name) {
     if (const auto problem = xml_name_problem(name))
-      throw std::invalid_argument(fmt::format("{} '{}' cannot be written in a .jme (XML 1.0): it holds {}", what, printable(name), *problem));
+      throw ValueError(fmt::format("{} '{}' cannot be written in a .jme (XML 1.0): it holds {}", what, printable(name), *problem));
   };
   check_name("modeler name", modeler);
   for (const Operation* op : rules) {
@@ -138,7 +139,7 @@ void write_jme(std::ostream& out, const std::string& modeler, int dimension, con
   auto list = m.append_child("rules");
   list.append_attribute("count") = rules.size();
   for (const Operation* op : rules) {
-    if (!op->jerboa) throw std::invalid_argument(fmt::format("rule {} has no Jerboa labels: it cannot be written as a .jme rule", op->rule.name()));
+    if (!op->jerboa) throw ValueError(fmt::format("rule {} has no Jerboa labels: it cannot be written as a .jme rule", op->rule.name()));
     auto r = list.append_child("rule");
     r.append_attribute("name") = op->rule.name().c_str();
     for (const char* a : {"module", "category"}) r.append_attribute(a) = "";

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
 #include "rewriting/operation.hpp"
 
 namespace dartcheck {
@@ -24,7 +25,7 @@ std::optional<std::string> xml_name_problem(std::string_view name);
 
 /// Writes a modeler named `modeler` of dimension n (the rules' n-G-map
 /// model) holding `rules`, which must all carry Jerboa labels. Throws
-/// std::invalid_argument for a rule without them or with an explicit arc
+/// ValueError for a rule without them or with an explicit arc
 /// whose reverse is missing (Jerboa's arcs are non-oriented), and for a
 /// name XML cannot hold (xml_name_problem).
 void write_jme(std::ostream& out, const std::string& modeler, int dimension, const std::vector<const Operation*>& rules);

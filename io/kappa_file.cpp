@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "io/detail/yaml_util.hpp"
 #include "rewriting/jerboa_scheme.hpp"
 
@@ -46,7 +47,7 @@ KappaSpec read_kappa(const std::string& file, const Model& model) {
           if (!d || !model.contains(*d)) fail_at(file, type, fmt::format("orbit: expected dimensions of {}, no '_'", model.name));
           pair.orbit.push_back(*d);
         }
-      } catch (const std::invalid_argument& e) {
+      } catch (const ValueError& e) {
         fail_at(file, type, fmt::format("orbit: {}", e.what()));
       }
       pair.before = static_cast<Dart>(yaml::as_int(file, yaml::require(file, o, "before"), "before dart", 0, most));

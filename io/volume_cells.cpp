@@ -1,5 +1,7 @@
 #include "io/volume_cells.hpp"
 
+#include "core/error.hpp"
+
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -45,7 +47,7 @@ VolumeCells volume_cells(const TetMesh& m, CornerConvention convention) {
 VolumeCells polygon_cells(const std::vector<std::vector<std::uint32_t>>& faces) {
   VolumeCells out;
   for (const auto& f : faces) {
-    if (f.size() < 3) throw std::logic_error(fmt::format("a face of {} corners", f.size()));
+    if (f.size() < 3) throw InternalError(fmt::format("a face of {} corners", f.size()));
     out.kind.push_back(f.size() == 3 ? CellKind::triangle : f.size() == 4 ? CellKind::quadrangle : CellKind::polygon);
     out.connectivity.insert(out.connectivity.end(), f.begin(), f.end());
     out.offset.push_back(static_cast<std::uint32_t>(out.connectivity.size()));

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/formatting.hpp"
 #include "io/tet_mesh_io.hpp"
 
@@ -50,7 +51,7 @@ VolumeCells volume_cells(const TetMesh& m, CornerConvention convention);
 
 /// A polygon mesh's faces as cells: each face's corners in its order, the
 /// kind from their number (at least 3; fewer is a caller's defect,
-/// std::logic_error).
+/// InternalError).
 VolumeCells polygon_cells(const std::vector<std::vector<std::uint32_t>>& faces);
 
 /// gmsh's element type (5, 6, 7, 4, 2, 3; 0 for a polygon, which gmsh

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "io/volume_cells.hpp"
 
 namespace dartcheck {
@@ -12,7 +13,7 @@ namespace {
 void check_fields(const VolumeCells& cells, const std::vector<CellField>& fields) {
   for (const CellField& f : fields)
     if (f.values.size() != cells.size())
-      throw std::logic_error(fmt::format("cell field {} has {} values for {} cells", f.name, f.values.size(), cells.size()));
+      throw InternalError(fmt::format("cell field {} has {} values for {} cells", f.name, f.values.size(), cells.size()));
 }
 
 // A value as text: integers without a point, doubles in their shortest

@@ -9,11 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "io/volume_cells.hpp"
 
 namespace dartcheck {
 
-/// Throws std::logic_error when a field has not one value per cell
+/// Throws InternalError when a field has not one value per cell
 /// (a caller's defect: the fields are computed from the same mesh).
 void write_vtu(std::ostream& out, const TetMesh& m, const std::vector<CellField>& fields = {});
 void write_legacy_vtk(std::ostream& out, const TetMesh& m, const std::vector<CellField>& fields = {});

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "checkers/graph_constraints.hpp"
 #include "rewriting/graph_derivation.hpp"
 #include "rewriting/scheme_instantiation.hpp"
@@ -214,7 +215,7 @@ void replay_scheme(const Operation& entry, const HostClass& cls, const HConstrai
     // ι(L, P_v) has one node per pattern dart (L is the hook alone).
     std::vector<NodeId> nodes(pattern.value->darts.front().begin(), pattern.value->darts.front().end());
     derive_and_check(inst, std::move(nodes), cls, c, a);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     a.replay_failure = fmt::format("the instantiated rule is not a rule: {}", e.what());
   }
 }

@@ -1,3 +1,4 @@
+#include "core/error.hpp"
 #include "proofs/detail/scheme_encoding.hpp"
 
 #include <algorithm>
@@ -23,8 +24,8 @@ SchemeEncoding::SchemeEncoding(z3::context& ctx, const Rule& core, const ArcWord
       hook_kept_(core.to_right(0) != no_node),
       blocks_(1 + added_nodes(core)),
       np_(ctx_) {
-  if (!scheme_out_of_scope(core).empty()) throw std::invalid_argument(scheme_out_of_scope(core));
-  if (cls.symbolic != core.model().dim_set()) throw std::invalid_argument("a scheme's host class must encode every dimension");
+  if (!scheme_out_of_scope(core).empty()) throw ValueError(scheme_out_of_scope(core));
+  if (cls.symbolic != core.model().dim_set()) throw ValueError("a scheme's host class must encode every dimension");
   std::size_t next = 1;
   for (NodeId y = 0; y < core.right().node_count(); ++y) block_.push_back(core.to_left(y) == no_node ? next++ : 0);
   hlink_.assign(max_dimension + 1, {});

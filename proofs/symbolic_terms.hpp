@@ -22,6 +22,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/map.hpp"
 #include "rewriting/term.hpp"
 #include "rewriting/term_functions.hpp"
@@ -75,13 +76,13 @@ class SymPool {
 
 /// A term the host cannot evaluate whatever its values (a missing
 /// neighbour, an empty center): the library refuses that application.
-class NoValue : public std::runtime_error {
-  using std::runtime_error::runtime_error;
+class NoValue : public Error {
+  using Error::Error;
 };
 /// A term this encoding does not cover (an each body that differs inside
 /// a sub-orbit: whether it has a value depends on the values).
-class NotEncoded : public std::runtime_error {
-  using std::runtime_error::runtime_error;
+class NotEncoded : public Error {
+  using Error::Error;
 };
 
 /// The host's topology and its orbits per embedding.

@@ -1,5 +1,7 @@
 #include "querymodify/annotation.hpp"
 
+#include "core/error.hpp"
+
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -75,11 +77,11 @@ std::optional<QueryMatch> annotate(const Map& input, const QueryWord& w, Dart st
 
 void QueryTrie::add(const QueryWord& w, int id) {
   if (dims_.empty()) dims_ = w.dims;
-  if (w.dims != dims_) throw std::invalid_argument("a prefix tree holds words of one model");
+  if (w.dims != dims_) throw ValueError("a prefix tree holds words of one model");
   std::uint32_t labels = 1;  // label 1 is the start dart
   for (std::uint32_t letter : w.letters)
     if (!is_boundary_condition(letter) && letter > labels) {
-      if (letter != labels + 1) throw std::invalid_argument("a query word must number its labels in order of first use");
+      if (letter != labels + 1) throw ValueError("a query word must number its labels in order of first use");
       ++labels;
     }
   std::uint32_t at = 0;

@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/map.hpp"
 #include "querymodify/query_word.hpp"
 
@@ -63,7 +64,7 @@ class QueryTrie {
  public:
   /// Adds the word of query `id`. The word must number its labels in
   /// order of first use, as query_word() does (throws
-  /// std::invalid_argument otherwise): the search then knows that the only
+  /// ValueError otherwise): the search then knows that the only
   /// new label allowed at any position is the next one.
   void add(const QueryWord& w, int id);
   std::size_t queries() const { return count_; }

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/orbit.hpp"
 
 namespace dartcheck::querymodify {
@@ -71,7 +72,7 @@ std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std
   double sum = 0;
   for (double v : w) sum += v;
   if (!(std::abs(sum) > eps))
-    throw std::invalid_argument(fmt::format("mean value coordinates of ({}, {}, {}) are undefined: the weights cancel", x[0], x[1], x[2]));
+    throw ValueError(fmt::format("mean value coordinates of ({}, {}, {}) are undefined: the weights cancel", x[0], x[1], x[2]));
   for (double& v : w) v /= sum;
   return w;
 }
@@ -79,7 +80,7 @@ std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std
 std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<const Point3> t_points, std::span<const Dart> q_to_t,
                                         std::span<const Point3> matched_points) {
   if (t_points.size() != t.size() || q_to_t.size() != q.size() || matched_points.size() != q.size())
-    throw std::invalid_argument("place_target_points needs a point per target dart, and an image and a matched point per query dart");
+    throw ValueError("place_target_points needs a point per target dart, and an image and a matched point per query dart");
   // T's vertices.
   const OrbitPartition t_vertices = partition_orbits(t, cell_generators(t.model(), 0));
   const std::vector<std::uint32_t>& vertex = t_vertices.of;
@@ -89,7 +90,7 @@ std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<co
   std::vector<Point3> at(vertices);
   for (Dart x = 0; x < q.size(); ++x) {
     if (q_to_t[x] == no_dart) continue;
-    if (q_to_t[x] >= t.size()) throw std::invalid_argument(fmt::format("m_QT sends query dart {} outside the target", x));
+    if (q_to_t[x] >= t.size()) throw ValueError(fmt::format("m_QT sends query dart {} outside the target", x));
     const std::uint32_t v = vertex[q_to_t[x]];
     if (!kept[v]) kept[v] = true, at[v] = matched_points[x];
   }
@@ -121,7 +122,7 @@ std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<co
   for (Dart d = 0; d < t.size(); ++d) {
     const std::uint32_t v = vertex[d];
     if (!kept[v] && !placed[v]) {
-      if (triangles.empty()) throw std::invalid_argument("the target creates a vertex but the query has no boundary to place it by");
+      if (triangles.empty()) throw ValueError("the target creates a vertex but the query has no boundary to place it by");
       const auto w = mean_value_coordinates(cage_t, triangles, t_points[d]);
       Point3 p{0, 0, 0};
       for (std::size_t j = 0; j < w.size(); ++j)

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::querymodify {
@@ -23,7 +24,7 @@ using Point3 = std::array<double, 3>;
 /// precision), for x inside or outside the surface. Triangles must be
 /// oriented alike; degenerate ones (collinear corners) carry no weight.
 /// On a vertex or a triangle, x gets that vertex's or the triangle's own
-/// barycentric coordinates. Throws std::invalid_argument when the weights
+/// barycentric coordinates. Throws ValueError when the weights
 /// cancel out (no triangle sees x).
 std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std::span<const std::array<std::uint32_t, 3>> triangles,
                                            const Point3& x);
@@ -38,7 +39,7 @@ std::vector<double> mean_value_coordinates(std::span<const Point3> vertices, std
 /// Q's 3-free darts, fanned into triangles), applied to those vertices'
 /// input points. An affine map between T's and the input's points of the
 /// kept vertices thus carries the created vertices along (tested). Throws
-/// std::invalid_argument if a vertex is created and Q has no boundary.
+/// ValueError if a vertex is created and Q has no boundary.
 std::vector<Point3> place_target_points(const Map& q, const Map& t, std::span<const Point3> t_points, std::span<const Dart> q_to_t,
                                         std::span<const Point3> matched_points);
 

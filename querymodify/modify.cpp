@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "core/error.hpp"
 #include "rewriting/compaction.hpp"
 
 namespace dartcheck::querymodify {
@@ -19,11 +20,11 @@ std::vector<Dart> volume_set(const Map& m, const std::vector<Dart>& darts) {
   std::sort(in.begin(), in.end());
   in.erase(std::unique(in.begin(), in.end()), in.end());
   for (Dart d : in)
-    if (d >= m.size()) throw std::invalid_argument(fmt::format("dart {} is not in the map", d));
+    if (d >= m.size()) throw ValueError(fmt::format("dart {} is not in the map", d));
   for (Dart d : in)
     for (Dim i : {1, 2})
       if (const Dart e = m.link(i, d); e != no_dart && !std::binary_search(in.begin(), in.end(), e))
-        throw std::invalid_argument(fmt::format("darts {} and {} are {}-linked but only {} is listed: not whole volumes", d, e, i, d));
+        throw ValueError(fmt::format("darts {} and {} are {}-linked but only {} is listed: not whole volumes", d, e, i, d));
   return in;
 }
 
@@ -68,12 +69,12 @@ Renumbering merge_across(Map& m, const std::vector<Dart>& in, Dim a, Dim b) {
     }
     Dart y = m.link(a, x);
     for (std::size_t guard = 0; inner(y); ++guard) {
-      if (guard > in.size()) throw std::logic_error(fmt::format("turning through the removed {}-cells did not leave them", b - 1));
+      if (guard > in.size()) throw InternalError(fmt::format("turning through the removed {}-cells did not leave them", b - 1));
       y = m.link(a, m.link(b, y));
     }
     if (y != m.link(a, x)) relink.emplace_back(x, y);
   }
-  if (!in.empty() && gone.size() == in.size()) throw std::invalid_argument("nothing would be left of the merged cells");
+  if (!in.empty() && gone.size() == in.size()) throw ValueError("nothing would be left of the merged cells");
   for (Dart d : gone) m.remove_link(a, d);  // first: an oriented a's predecessor records must end on kept darts
   for (const auto& [x, y] : relink) m.set_link(a, x, y);
   return remove(m, gone);
@@ -88,12 +89,12 @@ Renumbering merge_faces(Map& m, const std::vector<Dart>& darts) {
   std::sort(in.begin(), in.end());
   in.erase(std::unique(in.begin(), in.end()), in.end());
   for (Dart d : in) {
-    if (d >= m.size()) throw std::invalid_argument(fmt::format("dart {} is not in the map", d));
-    if (m.link(3, d) != no_dart) throw std::invalid_argument(fmt::format("dart {} is 3-sewn: only 3-free faces can be merged", d));
+    if (d >= m.size()) throw ValueError(fmt::format("dart {} is not in the map", d));
+    if (m.link(3, d) != no_dart) throw ValueError(fmt::format("dart {} is 3-sewn: only 3-free faces can be merged", d));
   }
   for (Dart d : in)
     if (const Dart e = m.link(1, d); !contains(in, e))
-      throw std::invalid_argument(fmt::format("darts {} and {} are 1-linked but only {} is listed: not whole faces", d, e, d));
+      throw ValueError(fmt::format("darts {} and {} are 1-linked but only {} is listed: not whole faces", d, e, d));
   return merge_across(m, in, 1, 2);
 }
 
@@ -117,10 +118,10 @@ std::vector<Dart> copy_darts(Map& m, const Map& t, const std::vector<bool>& copy
 }
 
 void check_models(const Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m) {
-  if (!(q.model() == m.model()) || !(t.model() == m.model())) throw std::invalid_argument("the query, the target and the input must have one model");
-  if (q_to_t.size() != q.size() || q_to_m.size() != q.size()) throw std::invalid_argument("m_QT and m_QM must give a dart for every query dart");
+  if (!(q.model() == m.model()) || !(t.model() == m.model())) throw ValueError("the query, the target and the input must have one model");
+  if (q_to_t.size() != q.size() || q_to_m.size() != q.size()) throw ValueError("m_QT and m_QM must give a dart for every query dart");
   for (Dart x = 0; x < q.size(); ++x)
-    if (q_to_m[x] >= m.size()) throw std::invalid_argument(fmt::format("m_QM sends query dart {} outside the input", x));
+    if (q_to_m[x] >= m.size()) throw ValueError(fmt::format("m_QM sends query dart {} outside the input", x));
 }
 
 }  // namespace
@@ -129,13 +130,13 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
   check_models(m, q, t, q_to_t, q_to_m);
   std::vector<Dart> t_to_q(t.size(), no_dart);
   for (Dart x = 0; x < q.size(); ++x) {
-    if (q_to_t[x] >= t.size() || t_to_q[q_to_t[x]] != no_dart) throw std::invalid_argument(fmt::format("m_QT is not injective at query dart {}", x));
+    if (q_to_t[x] >= t.size() || t_to_q[q_to_t[x]] != no_dart) throw ValueError(fmt::format("m_QT is not injective at query dart {}", x));
     t_to_q[q_to_t[x]] = x;
   }
   for (Dart x = 0; x < q.size(); ++x)
     for (Dim i : q.model().dims)
       if (const Dart y = q.link(i, x); y != no_dart && t.link(i, q_to_t[x]) != q_to_t[y])
-        throw std::invalid_argument(fmt::format("the target does not keep the query's {}-link from dart {}", i, x));
+        throw ValueError(fmt::format("the target does not keep the query's {}-link from dart {}", i, x));
   std::vector<bool> fresh(t.size());
   for (Dart d = 0; d < t.size(); ++d) fresh[d] = t_to_q[d] == no_dart;
   // Lines 4-6, checked first: a new dart meets the query only by β3, at
@@ -146,9 +147,9 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
     for (Dim i : t.model().dims) {
       const Dart e = t.link(i, d);
       if (e == no_dart || fresh[e]) continue;
-      if (i != 3) throw std::invalid_argument(fmt::format("target dart {} is {}-linked to the query's image: only β3 may join new volumes", d, i));
+      if (i != 3) throw ValueError(fmt::format("target dart {} is {}-linked to the query's image: only β3 may join new volumes", d, i));
       const Dart at = q_to_m[t_to_q[e]];
-      if (m.link(3, at) != no_dart) throw std::invalid_argument(fmt::format("input dart {} must be 3-free to receive a new volume", at));
+      if (m.link(3, at) != no_dart) throw ValueError(fmt::format("input dart {} must be 3-free to receive a new volume", at));
       glue.emplace_back(d, at);
     }
   }
@@ -171,11 +172,11 @@ std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<
     ++q_free;
     const Dart y = q_to_t[x];
     if (y >= t.size() || t.link(3, y) != no_dart || t_boundary_of[y] != no_dart)
-      throw std::invalid_argument(fmt::format("m_QT must send query boundary dart {} to a boundary dart of the target, one to one", x));
+      throw ValueError(fmt::format("m_QT must send query boundary dart {} to a boundary dart of the target, one to one", x));
     t_boundary_of[y] = x;
-    if (t.link(1, y) != q_to_t[q.link(1, x)]) throw std::invalid_argument(fmt::format("m_QT does not keep β1 at query boundary dart {}", x));
+    if (t.link(1, y) != q_to_t[q.link(1, x)]) throw ValueError(fmt::format("m_QT does not keep β1 at query boundary dart {}", x));
   }
-  if (q_free != t_free) throw std::invalid_argument(fmt::format("the query has {} boundary darts, the target {}", q_free, t_free));
+  if (q_free != t_free) throw ValueError(fmt::format("the query has {} boundary darts, the target {}", q_free, t_free));
   // The outside neighbour of each boundary dart, then the match goes. A
   // match whose boundary '*' let two of its boundary faces be 3-sewn to
   // each other keeps that link between their images in T.

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/map.hpp"
 #include "core/renumbering.hpp"
 
@@ -20,14 +21,14 @@ namespace dartcheck::querymodify {
 /// matched: 001's Alg. 3 unsews only the 3-links inside the query, which
 /// leaves a kept dart 3-sewn to a deleted one when a deleted volume
 /// touches the rest of the mesh (tests show it). Throws
-/// std::invalid_argument if `darts` is not a union of volumes.
+/// ValueError if `darts` is not a union of volumes.
 Renumbering delete_volumes(Map& m, const std::vector<Dart>& darts);
 
 /// Merges the volumes made of `darts` into one by removing every face
 /// between two of them (001 Alg. 4, lines 1-2): each remaining dart's
 /// β2 becomes the next remaining dart around its edge, found by turning
 /// through the removed faces (β2 then β3); edges and vertices inside the
-/// merged volume disappear with their faces. Throws std::invalid_argument
+/// merged volume disappear with their faces. Throws ValueError
 /// if `darts` is not a union of volumes.
 Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts);
 
@@ -37,7 +38,7 @@ Renumbering merge_volumes(Map& m, const std::vector<Dart>& darts);
 /// the merged face, found by turning through the removed edges (β2 then
 /// β1), so edges and vertices inside a merged face disappear with them
 /// (001 Sec. 7.4 merges the upper faces of flattened terrain volumes this
-/// way). Throws std::invalid_argument if `darts` is not a union of faces
+/// way). Throws ValueError if `darts` is not a union of faces
 /// or a dart is 3-sewn.
 Renumbering merge_faces(Map& m, const std::vector<Dart>& darts);
 
@@ -56,7 +57,7 @@ void follow(std::vector<T>& per_dart, const Renumbering& r) {
 /// among themselves, and each that T 3-sews to an image of Q is 3-sewn to
 /// that image's input dart. Returns m_TM (the input dart of each target
 /// dart: the copies, and the matched darts for images of Q). Throws
-/// std::invalid_argument, before changing `m`, if m_QT does not keep a
+/// ValueError, before changing `m`, if m_QT does not keep a
 /// link of Q, if a new dart is linked to an image of Q other than by β3,
 /// or if the input dart it must be 3-sewn to is not 3-free (001: such
 /// darts must be free before the operation; a query marks them ε).
@@ -67,7 +68,7 @@ std::vector<Dart> extend(Map& m, const Map& q, const Map& t, const std::vector<D
 /// its outside neighbour to its image in T (`q_to_t`, defined on Q's
 /// 3-free darts at least). T's boundary must be Q's: q_to_t maps Q's
 /// 3-free darts one to one onto T's and keeps β1 among them (throws
-/// std::invalid_argument otherwise, before changing `m`). Returns m_TM;
+/// ValueError otherwise, before changing `m`). Returns m_TM;
 /// `moved`, if given, receives the renumbering of the input once the
 /// match's darts are removed (T's are appended after).
 std::vector<Dart> replace(Map& m, const Map& q, const Map& t, const std::vector<Dart>& q_to_t, const std::vector<Dart>& q_to_m,

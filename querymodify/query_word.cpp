@@ -1,5 +1,7 @@
 #include "querymodify/query_word.hpp"
 
+#include "core/error.hpp"
+
 #include <fmt/format.h>
 
 #include <stdexcept>
@@ -53,7 +55,7 @@ const char* boundary_symbol(BoundaryCondition c) {
 QueryWord query_word(const Map& query, Dart start, BoundaryCondition free_links, const std::vector<BoundaryOverride>& overrides) {
   const Labeling l = bfs_labeling(query, start);
   if (l.darts.size() != query.size())
-    throw std::invalid_argument(
+    throw ValueError(
         fmt::format("the query is not connected: {} of its {} darts are reached from dart {}", l.darts.size(), query.size(), start));
   QueryWord w;
   w.dims = query.model().dims;
@@ -66,7 +68,7 @@ QueryWord query_word(const Map& query, Dart start, BoundaryCondition free_links,
     std::size_t i = 0;
     while (i < w.dims.size() && w.dims[i] != o.dim) ++i;
     if (o.dart >= query.size() || i == w.dims.size() || !is_free(query, o.dim, o.dart))
-      throw std::invalid_argument(fmt::format("boundary condition on dart {} dimension {}: not a free link of the query", o.dart, o.dim));
+      throw ValueError(fmt::format("boundary condition on dart {} dimension {}: not a free link of the query", o.dart, o.dim));
     w.letters[(l.label[o.dart] - 1) * w.dims.size() + i] = static_cast<std::uint32_t>(o.condition);
   }
   return w;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/map.hpp"
 
 namespace dartcheck::querymodify {
@@ -58,7 +59,7 @@ struct QueryWord {
 
 /// The query word of `query` labeled from `start`; every free link gets
 /// `free_links`, except those listed in `overrides` (query dart, dimension,
-/// condition). Throws std::invalid_argument if the query is not connected
+/// condition). Throws ValueError if the query is not connected
 /// (001 Sec. 5: queries are connected) or an override names a link that is
 /// not free.
 struct BoundaryOverride {

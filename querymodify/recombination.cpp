@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "core/error.hpp"
 #include "querymodify/cell_contacts.hpp"
 #include "querymodify/cell_quality.hpp"
 #include "querymodify/cell_subdivisions.hpp"
@@ -281,7 +282,7 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   r.search = strategy == Strategy::greedy ? Search::words : search;
   r.contacts = contacts;
   if (contacts == Contacts::conforming && r.search == Search::words)
-    throw std::invalid_argument("recombine: conforming contacts need the global strategy's vertex search");
+    throw ValueError("recombine: conforming contacts need the global strategy's vertex search");
   if (progress && r.search == Search::words) progress("matching the hex queries' words", 0, 0);
   const std::vector<Chosen> chosen = r.search == Search::words ? by_words(mesh, queries, strategy, points, min_quality, r)
                                                                : by_vertices(mesh, points, min_quality, contacts, r, progress);

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/error.hpp"
 #include "querymodify/progress.hpp"
 #include "querymodify/annotation.hpp"
 #include "querymodify/cell_search.hpp"
@@ -105,7 +106,7 @@ struct Recombination {
 /// (a pattern closed on itself: words see darts, not vertices) and, with
 /// points, one whose best scaled Jacobian is not above `min_quality`.
 /// Contacts::conforming with the greedy strategy or the word search is a
-/// std::invalid_argument. `cells` adds pyramids, prisms and pyramids
+/// ValueError. `cells` adds pyramids, prisms and pyramids
 /// after the hexes (Cells), each pass by the global order (best quality
 /// first, above `min_quality`) on the tetrahedra still free; with
 /// Contacts::conforming each cell conforms to every cell selected before.

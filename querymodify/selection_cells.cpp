@@ -1,5 +1,7 @@
 #include "querymodify/selection_cells.hpp"
 
+#include "core/error.hpp"
+
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -14,7 +16,7 @@ std::vector<CellField> selection_fields(std::size_t tetrahedra, const std::vecto
   for (std::size_t k = 0; k < matches.size(); ++k)
     for (Dart d : matches[k].darts) {
       const std::size_t t = d / 12;
-      if (t >= tetrahedra) throw std::logic_error(fmt::format("dart {} of match {} is outside a map of {} tetrahedra", d, k, tetrahedra));
+      if (t >= tetrahedra) throw InternalError(fmt::format("dart {} of match {} is outside a map of {} tetrahedra", d, k, tetrahedra));
       if (last[t] == k) continue;  // one count per match
       last[t] = k;
       ++count.values[t];

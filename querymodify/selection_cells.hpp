@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/error.hpp"
 #include "io/volume_cells.hpp"
 #include "querymodify/annotation.hpp"
 
@@ -17,7 +18,7 @@ namespace dartcheck::querymodify {
 /// tetrahedron (-1: none); `query`, that match's query (-1: none);
 /// `matches`, how many matches have a dart in it (more than one only where
 /// the matches overlap, as `--strategy all` shows them). Throws
-/// std::logic_error for a dart outside the map (a caller's defect).
+/// InternalError for a dart outside the map (a caller's defect).
 std::vector<CellField> selection_fields(std::size_t tetrahedra, const std::vector<QueryMatch>& matches);
 
 }  // namespace dartcheck::querymodify

@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/orbit.hpp"
 #include "querymodify/overlap.hpp"
 
@@ -91,7 +92,7 @@ std::vector<Polyhedron> voxel_cells(std::uint32_t n) {
 
 std::vector<Point3> voxel_points(std::uint32_t n, const std::vector<double>& heights) {
   if (heights.size() != std::size_t{n + 1} * (n + 1))
-    throw std::invalid_argument(fmt::format("a {0} x {0} voxel grid needs {1} heights, not {2}", n, (n + 1) * (n + 1), heights.size()));
+    throw ValueError(fmt::format("a {0} x {0} voxel grid needs {1} heights, not {2}", n, (n + 1) * (n + 1), heights.size()));
   std::vector<Point3> p(2 * heights.size());
   for (std::uint32_t j = 0; j <= n; ++j)
     for (std::uint32_t i = 0; i <= n; ++i) {
@@ -230,7 +231,7 @@ Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
     for (Dart e : around) used[e] = true;
     chosen.push_back(query_to_input(spot.mesh.map, 0, m));
   }
-  if (chosen.size() < spots) throw std::runtime_error(fmt::format("only {} vertex-disjoint spots on a {} x {} grid", chosen.size(), n, n));
+  if (chosen.size() < spots) throw Error(fmt::format("only {} vertex-disjoint spots on a {} x {} grid", chosen.size(), n, n));
   for (std::size_t s = 0; s < chosen.size(); ++s) {
     const Renumbering moved = flatten_spot(x.mesh, spot, chosen[s]);
     for (std::size_t later = s + 1; later < chosen.size(); ++later) renumber(chosen[later], moved);
@@ -257,7 +258,7 @@ Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
   const Dart apex_dart = [&] {
     for (Dart d = 0; d < house.target.map.size(); ++d)
       if (house.target.points[d][2] > 4) return d;
-    throw std::logic_error("the house has no apex");
+    throw InternalError("the house has no apex");
   }();
   for (const QueryMatch& m : sites.distinct) {
     const auto q_to_m = query_to_input(house.query.map, 0, m);

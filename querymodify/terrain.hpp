@@ -88,7 +88,7 @@ struct Experiment {
 /// random order, each unless it shares a mesh vertex with one taken
 /// before (flattening moves the shared vertices, so neighbouring spots
 /// would unflatten each other), until `spots` are taken; step (3) extends
-/// every distinct match of the spot query. Throws std::runtime_error if
+/// every distinct match of the spot query. Throws Error if
 /// fewer than `spots` vertex-disjoint spots exist.
 Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed);
 

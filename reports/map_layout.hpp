@@ -26,7 +26,7 @@ std::vector<std::array<double, 2>> exploded_layout(const Map& map, const std::ve
 /// vertices as far apart as their graph distance (a grid comes out as a
 /// grid, a cube's 8 vertices as a cube). Per dart, its vertex's point; the
 /// input of exploded_layout. The layout is deterministic (neato's fixed
-/// start). Throws std::runtime_error when Graphviz fails.
+/// start). Throws Error when Graphviz fails.
 std::vector<std::array<double, 3>> skeleton_points(const Map& map);
 
 }  // namespace dartcheck::reports

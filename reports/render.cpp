@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "core/input_error.hpp"
 #include "core/output_file.hpp"
 
@@ -64,12 +65,12 @@ void with_layout(std::string_view dot, std::string_view engine, Use use) {
   // last font name across contexts, so freeing a context and making a new
   // one reads freed memory (AddressSanitizer shows it).
   static const std::unique_ptr<GVC_t, int (*)(GVC_t*)> gvc(gvContext(), gvFreeContext);
-  if (!gvc) throw std::runtime_error("Graphviz: no context");
+  if (!gvc) throw Error("Graphviz: no context");
   const std::string text(dot);
   std::unique_ptr<Agraph_t, int (*)(Agraph_t*)> g(agmemread(text.c_str()), agclose);
-  if (!g) throw std::runtime_error(take_error("Graphviz cannot read the DOT text"));
+  if (!g) throw Error(take_error("Graphviz cannot read the DOT text"));
   const std::string eng(engine);
-  if (gvLayout(gvc.get(), g.get(), eng.c_str()) != 0) throw std::runtime_error(take_error("Graphviz layout '" + eng + "' failed"));
+  if (gvLayout(gvc.get(), g.get(), eng.c_str()) != 0) throw Error(take_error("Graphviz layout '" + eng + "' failed"));
   try {
     use(gvc.get(), g.get());
   } catch (...) {
@@ -86,7 +87,7 @@ std::string render_data(GVC_t* gvc, Agraph_t* g, const std::string& format) {
   const int rc = gvRenderData(gvc, g, format.c_str(), &data, &length);
   std::string out = rc == 0 && data ? std::string(data, length) : std::string();
   if (data) gvFreeRenderData(data);
-  if (rc != 0) throw std::runtime_error(take_error("Graphviz cannot render format '" + format + "'"));
+  if (rc != 0) throw Error(take_error("Graphviz cannot render format '" + format + "'"));
   return out;
 }
 
@@ -107,7 +108,7 @@ std::vector<NodePosition> node_positions(std::string_view dot, std::string_view 
       char pos_name[] = "pos", width_name[] = "width", height_name[] = "height";
       const char* pos = agget(n, pos_name);
       if (!pos || std::sscanf(pos, "%lf,%lf,%lf", &p.at[0], &p.at[1], &p.at[2]) < 2)
-        throw std::runtime_error(fmt::format("Graphviz gave node {} no position", p.name));
+        throw Error(fmt::format("Graphviz gave node {} no position", p.name));
       const char *width = agget(n, width_name), *height = agget(n, height_name);
       if (width) std::sscanf(width, "%lf", &p.width);
       if (height) std::sscanf(height, "%lf", &p.height);
@@ -122,14 +123,14 @@ std::string format_of(std::string_view file) {
   const std::string ext = dot == std::string_view::npos ? "" : std::string(file.substr(dot + 1));
   if (ext == "svg" || ext == "png" || ext == "dot" || ext == "pdf") return ext;
   if (ext == "gv") return "dot";
-  throw std::invalid_argument("'" + std::string(file) + "': expected a file name ending in .svg, .png, .pdf, .dot or .gv");
+  throw ValueError("'" + std::string(file) + "': expected a file name ending in .svg, .png, .pdf, .dot or .gv");
 }
 
 std::size_t write_picture(std::string_view dot, const std::string& file, std::string_view engine) {
   std::string format;
   try {
     format = format_of(file);
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     throw UsageError(fmt::format("-o: {}", e.what()));
   }
   const std::string data = format == "dot" ? std::string(dot) : render(dot, format, engine);

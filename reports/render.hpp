@@ -7,11 +7,13 @@
 #include <vector>
 #include <string_view>
 
+#include "core/error.hpp"
+
 namespace dartcheck::reports {
 
 /// Lays out `dot` with `engine` ("dot", "neato", ...) and renders it in
 /// `format` ("svg", "png", "dot" for the laid-out graph, ...). Throws
-/// std::runtime_error with Graphviz's message if the text does not parse
+/// Error with Graphviz's message if the text does not parse
 /// or the format or engine is unknown.
 std::string render(std::string_view dot, std::string_view format, std::string_view engine = "dot");
 
@@ -27,7 +29,7 @@ struct NodePosition {
 std::vector<NodePosition> node_positions(std::string_view dot, std::string_view engine);
 
 /// The output format a file name asks for: its extension (svg, png, dot,
-/// gv as dot, pdf). Throws std::invalid_argument naming the extensions
+/// gv as dot, pdf). Throws ValueError naming the extensions
 /// accepted.
 std::string format_of(std::string_view file);
 

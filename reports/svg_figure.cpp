@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "reports/html_page.hpp"
 
 namespace dartcheck::reports {
@@ -30,14 +31,14 @@ double points(std::string_view value) {
   if (value.ends_with("pt")) value.remove_suffix(2);
   double v = 0;
   const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-  if (ec != std::errc() || end != value.data() + value.size()) throw std::runtime_error(fmt::format("not an SVG length in points: '{}'", value));
+  if (ec != std::errc() || end != value.data() + value.size()) throw Error(fmt::format("not an SVG length in points: '{}'", value));
   return v;
 }
 
 std::string_view root_tag(std::string_view svg) {
   const auto start = svg.find("<svg");
   const auto end = start == std::string_view::npos ? start : svg.find('>', start);
-  if (end == std::string_view::npos) throw std::runtime_error("not an SVG picture: no <svg> element");
+  if (end == std::string_view::npos) throw Error("not an SVG picture: no <svg> element");
   return svg.substr(start, end - start);
 }
 
@@ -63,7 +64,7 @@ std::string placed(std::string_view svg, SvgSize size, std::string_view prefix, 
 SvgSize svg_size(std::string_view svg) {
   const auto tag = root_tag(svg);
   const auto width = attribute(tag, "width"), height = attribute(tag, "height");
-  if (width.empty() || height.empty()) throw std::runtime_error("SVG picture without width and height");
+  if (width.empty() || height.empty()) throw Error("SVG picture without width and height");
   return {points(width), points(height)};
 }
 

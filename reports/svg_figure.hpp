@@ -16,7 +16,7 @@ struct SvgSize {
   double height = 0;
 };
 
-/// Reads width="..pt" height="..pt" of the root <svg>; std::runtime_error
+/// Reads width="..pt" height="..pt" of the root <svg>; Error
 /// when the text has no such root (not Graphviz output).
 SvgSize svg_size(std::string_view svg);
 

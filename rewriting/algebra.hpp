@@ -13,15 +13,16 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/error.hpp"
 #include "rewriting/value.hpp"
 
 namespace dartcheck {
 
 /// Thrown by a function that has no value at its arguments (center of an
 /// empty multiset); evaluation reports it with the term.
-class EvaluationError : public std::runtime_error {
+class EvaluationError : public Error {
  public:
-  using std::runtime_error::runtime_error;
+  using Error::Error;
 };
 
 namespace algebra {

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/conjugate_words.hpp"
 #include "core/graph.hpp"
 #include "core/model.hpp"
@@ -25,7 +26,7 @@ namespace dartcheck {
 /// Adds to `g` (whose arc words are `words`, one per arc) the implicit arcs
 /// of node v labeled `label` under the parameter orbit type `parameter`: an
 /// (o_k, label_k)-loop for each position k whose label is not '_'. Throws
-/// std::invalid_argument if the lengths differ (000 Def. 4.2's size
+/// ValueError if the lengths differ (000 Def. 4.2's size
 /// condition), the parameter has a '_', or a dimension is not in the model.
 /// A Jerboa scheme's node labels, kept beside their translation so that
 /// pictures and writers show the notation the user wrote: one orbit type

@@ -4,6 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "core/disjoint_sets.hpp"
 
 namespace dartcheck {
@@ -11,10 +12,10 @@ namespace {
 
 void check_side(const TopoGraph& g, const Model& model, const char* side) {
   for (NodeId v = 0; v < g.node_count(); ++v)
-    if (g.find(g.name(v)) != v) throw std::invalid_argument(fmt::format("{} declares node '{}' twice", side, g.name(v)));
+    if (g.find(g.name(v)) != v) throw ValueError(fmt::format("{} declares node '{}' twice", side, g.name(v)));
   for (const auto& a : g.arcs())
     if (!model.contains(a.label))
-      throw std::invalid_argument(fmt::format("{} has an arc {} -{}-> {} whose label is not a dimension of {}", side, g.name(a.source), a.label,
+      throw ValueError(fmt::format("{} has an arc {} -{}-> {} whose label is not a dimension of {}", side, g.name(a.source), a.label,
                                               g.name(a.target), model.name));
 }
 
@@ -64,7 +65,7 @@ Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::
            const std::vector<ConjWord>& right_words)
     : name_(std::move(name)), model_(std::move(model)), left_(std::move(left)), right_(std::move(right)) {
   if ((!left_words.empty() && left_words.size() != left_.arc_count()) || (!right_words.empty() && right_words.size() != right_.arc_count()))
-    throw std::invalid_argument("a rule scheme needs one word per arc");
+    throw ValueError("a rule scheme needs one word per arc");
   check_side(left_, model_, "L");
   check_side(right_, model_, "R");
   for (NodeId v = 0; v < left_.node_count(); ++v) left_to_right_.push_back(right_.find(left_.name(v)).value_or(no_node));
@@ -77,16 +78,16 @@ Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::
   std::vector<int> hooked(static_cast<std::size_t>(count), -1);
   for (const auto& h : hooks) {
     auto v = left_.find(h);
-    if (!v) throw std::invalid_argument(fmt::format("hook '{}' is not a node of L", h));
+    if (!v) throw ValueError(fmt::format("hook '{}' is not a node of L", h));
     if (hooked[comp[*v]] >= 0)
-      throw std::invalid_argument(fmt::format("hooks '{}' and '{}' are in the same connected component of L (one hook per component)",
+      throw ValueError(fmt::format("hooks '{}' and '{}' are in the same connected component of L (one hook per component)",
                                               left_.name(static_cast<NodeId>(hooked[comp[*v]])), h));
     hooked[comp[*v]] = static_cast<int>(*v);
     hooks_.push_back(*v);
   }
   for (NodeId v = 0; v < left_.node_count(); ++v)
     if (hooked[comp[v]] < 0)
-      throw std::invalid_argument(fmt::format("the connected component of L containing '{}' has no hook (one hook per component)", left_.name(v)));
+      throw ValueError(fmt::format("the connected component of L containing '{}' has no hook (one hook per component)", left_.name(v)));
 }
 
 Rule Rule::inverse(std::vector<std::string> hooks) const { return Rule(name_ + "^-1", model_, right_, left_, std::move(hooks)); }

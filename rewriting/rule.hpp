@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/conjugate_words.hpp"
 #include "core/graph.hpp"
 #include "core/model.hpp"
@@ -20,7 +21,7 @@ inline constexpr NodeId no_node = static_cast<NodeId>(-1);
 
 class Rule {
  public:
-  /// Builds a rule and its interface. Throws std::invalid_argument when an
+  /// Builds a rule and its interface. Throws ValueError when an
   /// arc label is not a dimension of the model, a side repeats a node name,
   /// a hook is not a node of L, or a connected component of L has no hook
   /// or several (002 Sec. 6.3: one hook per component).

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/formatting.hpp"
 #include "core/model.hpp"
 #include "rewriting/value.hpp"
@@ -77,9 +78,9 @@ struct Term {
 };
 
 /// A parse or type error at a 0-based offset of the term's text.
-class TermError : public std::runtime_error {
+class TermError : public Error {
  public:
-  TermError(std::size_t offset, const std::string& message) : std::runtime_error(message), offset_(offset) {}
+  TermError(std::size_t offset, const std::string& message) : Error(message), offset_(offset) {}
   std::size_t offset() const { return offset_; }
 
  private:

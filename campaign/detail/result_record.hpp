@@ -10,6 +10,7 @@
 
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "analysis/rule_result.hpp"
 #include "reports/json_document.hpp"
 #include "reports/rule_result_json.hpp"
@@ -18,9 +19,9 @@ namespace dartcheck::campaign {
 
 /// A record that is not what a shard writes: the JSON path and what was
 /// expected ("record.fuzz.counterexample.host.links[2]: a dart < 12").
-class RecordError : public std::runtime_error {
+class RecordError : public Error {
  public:
-  using std::runtime_error::runtime_error;
+  using Error::Error;
 };
 
 /// The record of `r`: its JSON with every stage's data.

@@ -70,7 +70,7 @@ std::optional<std::pair<Rule, ArcWords>> build(const SchemeSpec& s, const Model&
   TopoGraph l = side(s.left_nodes, s.left, words.left), r = side(s.right_nodes, s.right, words.right);
   try {
     return std::pair{Rule("mutant", model, std::move(l), std::move(r), s.hooks, words.left, words.right), words};
-  } catch (const std::invalid_argument&) {
+  } catch (const ValueError&) {
     return std::nullopt;
   }
 }

@@ -43,9 +43,9 @@ TEST(ConjWord, ParseAndPrint) {
   EXPECT_EQ(parse_conj_word("1\u03042", o).str(), "~12") << "combining overbar after the digit";
   EXPECT_EQ(parse_conj_word("~2", o).str(), "2") << "2 is non-oriented in an O-map: 2̄ = 2";
   EXPECT_TRUE(parse_conj_word("ε", o).empty());
-  EXPECT_THROW(parse_conj_word("13", o), std::invalid_argument) << "3 is not a dimension of a 2-O-map";
-  EXPECT_THROW(parse_conj_word("1~", o), std::invalid_argument);
-  EXPECT_THROW(parse_conj_word("1x", o), std::invalid_argument);
+  EXPECT_THROW(parse_conj_word("13", o), ValueError) << "3 is not a dimension of a 2-O-map";
+  EXPECT_THROW(parse_conj_word("1~", o), ValueError);
+  EXPECT_THROW(parse_conj_word("1x", o), ValueError);
 }
 
 TEST(ConjugateRewriting, Conjugate) {

@@ -35,7 +35,7 @@ TEST(OrbitNotation, ErrorsNameTheByte) {
   auto error = [](const char* text) {
     try {
       orbit_entries(text);
-    } catch (const std::invalid_argument& e) {
+    } catch (const ValueError& e) {
       return std::string(e.what());
     }
     return std::string("accepted");

@@ -196,13 +196,13 @@ TEST(InferenceCases, KappaErrorsAreSentences) {
   const Map a = shape("polygon:3"), b = shape("polygon:4");
   KappaSpec k;
   k.pairs = {{0, 1}, {1, 1}};
-  EXPECT_THROW(make_kappa_graph(a, b, k), std::invalid_argument);
+  EXPECT_THROW(make_kappa_graph(a, b, k), ValueError);
   k.pairs = {{0, 99}};
-  EXPECT_THROW(make_kappa_graph(a, b, k), std::invalid_argument);
+  EXPECT_THROW(make_kappa_graph(a, b, k), ValueError);
   KappaSpec o;
   o.orbits.push_back({{0, 1}, 0, 0});  // a triangle's face is not a square's
-  EXPECT_THROW(make_kappa_graph(a, b, o), std::invalid_argument);
-  EXPECT_THROW(make_kappa_graph(a, build_shape(Model::omap(2), parse_shape("polygon:3")), KappaSpec{}), std::invalid_argument);
+  EXPECT_THROW(make_kappa_graph(a, b, o), ValueError);
+  EXPECT_THROW(make_kappa_graph(a, build_shape(Model::omap(2), parse_shape("polygon:3")), KappaSpec{}), ValueError);
 }
 
 // A dart preserved for some darts of a node only: the node cannot be both

@@ -42,7 +42,7 @@ void jme_round_trip(const Catalog& source, int dimension, const std::string& fil
         ops.push_back(&r);
       } else {
         std::ostringstream sink;
-        EXPECT_THROW(write_jme(sink, "m", dimension, {&r}), std::invalid_argument) << r.rule.name();
+        EXPECT_THROW(write_jme(sink, "m", dimension, {&r}), ValueError) << r.rule.name();
       }
     }
   ASSERT_FALSE(ops.empty());

@@ -147,7 +147,7 @@ TEST(ConformingRecombination, WordSearchRefusesIt) {
   std::mt19937 rng(1);
   const HexGrid g = random_hexes(1, rng);
   TetMap t = build_tet_map(g.tets);
-  EXPECT_THROW(recombine(t, hex_queries(), Strategy::global, &g.points, 0.0, Search::words, Contacts::conforming), std::invalid_argument);
+  EXPECT_THROW(recombine(t, hex_queries(), Strategy::global, &g.points, 0.0, Search::words, Contacts::conforming), ValueError);
 }
 
 }  // namespace

@@ -146,7 +146,7 @@ TEST(Modify, ExtendRefusesASewnFace) {
   const TetMap q = build_tet_map({{0, 1, 2, 3}}, &p), t = build_tet_map({{0, 1, 2, 3}, {1, 2, 3, 4}}, &p);
   std::vector<Dart> identity(12);
   for (Dart d = 0; d < 12; ++d) identity[d] = d;
-  EXPECT_THROW(extend(host.map, q.map, t.map, identity, identity), std::invalid_argument);
+  EXPECT_THROW(extend(host.map, q.map, t.map, identity, identity), ValueError);
   EXPECT_EQ(host.map, before);
 }
 

@@ -306,7 +306,7 @@ TEST(MapSvg, CubeRendersOneNodePerDartAndOneEdgePerPair) {
 TEST(Render, BadDotAndUnknownFormatAreErrorsNotCrashes) {
   EXPECT_THROW(reports::render("digraph { a -> ", "svg"), std::runtime_error);
   EXPECT_THROW(reports::render("digraph { a -> b }", "nosuchformat"), std::runtime_error);
-  EXPECT_THROW(reports::format_of("picture.txt"), std::invalid_argument);
+  EXPECT_THROW(reports::format_of("picture.txt"), ValueError);
   EXPECT_EQ(reports::format_of("x.gv"), "dot");
 }
 

@@ -43,12 +43,12 @@ TEST(Rule, InterfaceIsTheIntersectionWithMultiplicity) {
 
 TEST(Rule, HooksOnePerComponent) {
   auto two = side({"a", "b"}, {});
-  EXPECT_THROW(Rule("r", Model::gmap(2), two, two, {"a"}), std::invalid_argument) << "b's component has no hook";
+  EXPECT_THROW(Rule("r", Model::gmap(2), two, two, {"a"}), ValueError) << "b's component has no hook";
   EXPECT_NO_THROW(Rule("r", Model::gmap(2), two, two, {"a", "b"}));
   auto one = side({"a", "b"}, {{0, 1, 0}});
-  EXPECT_THROW(Rule("r", Model::gmap(2), one, one, {"a", "b"}), std::invalid_argument);
-  EXPECT_THROW(Rule("r", Model::gmap(2), one, one, {"z"}), std::invalid_argument);
-  EXPECT_THROW(Rule("r", Model::gmap(2), side({"a"}, {{0, 0, 3}}), side({"a"}, {}), {"a"}), std::invalid_argument) << "3 is not in [0,2]";
+  EXPECT_THROW(Rule("r", Model::gmap(2), one, one, {"a", "b"}), ValueError);
+  EXPECT_THROW(Rule("r", Model::gmap(2), one, one, {"z"}), ValueError);
+  EXPECT_THROW(Rule("r", Model::gmap(2), side({"a"}, {{0, 0, 3}}), side({"a"}, {}), {"a"}), ValueError) << "3 is not in [0,2]";
 }
 
 // 000 Fig. 7(a) on the square of polygon_faces(4): darts 2e, 2e+1 are side e.

@@ -266,10 +266,10 @@ TEST(OrbitType, ParsesAndRefusesLargeDimensions) {
   try {
     parse_orbit_type("<09999999999,_,@");
     FAIL() << "accepted a dimension above 15";
-  } catch (const std::invalid_argument& e) {
+  } catch (const ValueError& e) {
     EXPECT_NE(std::string(e.what()).find("dimension 09999999999 is above 15"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(parse_orbit_type("<16>"), std::invalid_argument);
+  EXPECT_THROW(parse_orbit_type("<16>"), ValueError);
 }
 
 // A SchemeRewriter kept across applications (its tables reused, and left
@@ -371,7 +371,7 @@ TEST(SchemeApplication, IsTheDerivationOfTheInstantiatedRule) {
             hooks.push_back(static_cast<Dart>(std::stoul(name.substr(name.find('@') + 1))));
           }
           rule_ok = apply_rule(inst, by_rule, hooks).ok();
-        } catch (const std::invalid_argument&) {
+        } catch (const ValueError&) {
           rule_ok = false;  // ι(S, P_v) is not a rule: no derivation
         }
         ASSERT_EQ(s.ok(), rule_ok) << r.rule.name() << " at dart " << v << ": " << s.why;
