@@ -11,7 +11,7 @@ namespace dartcheck {
 
 void read_orbit_entries(std::string_view text, const std::function<void(const OrbitEntry&)>& entry) {
   auto fail = [&](std::size_t pos, std::string_view what) {
-    throw ValueError(fmt::format("orbit type '{}', at byte {}: {}", text, pos + 1, what));
+    throw OrbitNotationError(pos, fmt::format("orbit type '{}', at byte {}: {}", text, pos + 1, what));
   };
   std::size_t i = 0;
   auto skip_spaces = [&] {

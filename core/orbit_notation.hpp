@@ -24,6 +24,18 @@ struct OrbitEntry {
   std::size_t offset;  // 0-based byte of its first character in the input
 };
 
+/// The notation's own error (not the caller's): what() names the text and
+/// the 1-based byte; offset() is that byte, 0-based, for a caller that
+/// reads the orbit type inside a longer text.
+class OrbitNotationError : public ValueError {
+ public:
+  OrbitNotationError(std::size_t offset, const std::string& message) : ValueError(message), offset_(offset) {}
+  std::size_t offset() const { return offset_; }
+
+ private:
+  std::size_t offset_;
+};
+
 /// Calls `entry` with each entry of `text` as it is read, so that the
 /// first error in reading order is the one reported, the caller's (a
 /// dimension too large) or the notation's: ValueError

@@ -9,6 +9,7 @@
 
 #include "core/input_error.hpp"
 #include "core/limits.hpp"
+#include "core/orbit_notation.hpp"
 #include "rewriting/term_functions.hpp"
 
 namespace dartcheck {
@@ -31,6 +32,16 @@ class Lexer {
     return t;
   }
   bool at(const char* p) const { return tok_.kind == Token::punct && tok_.text == p; }
+  /// The raw text from the current token (an opening bracket) through the
+  /// first `close` after it, read past; an orbit type is read by
+  /// core/orbit_notation, not token by token.
+  std::string_view take_through(char close) {
+    const std::size_t open = tok_.offset, end = s_.find(close, open + 1);
+    if (end == std::string::npos) throw TermError(open, fmt::format("'{}' is never closed by '{}'", tok_.text, close));
+    k_ = end + 1;
+    advance();
+    return std::string_view(s_).substr(open, end + 1 - open);
+  }
 
  private:
   void advance() {
@@ -257,25 +268,30 @@ class Parser {
     r.name = t.text;
     return r;
   }
-  // '<' dims '>': dimensions separated by ',' or spaces, sorted, without
-  // repeats; `what` names the operator in messages.
+  // An orbit type in core/orbit_notation's syntax ("<0,2>"), sorted; '_',
+  // a dimension above max_dimension and a repeat are refused (nothing of
+  // what was written is dropped); `what` names the operator in messages.
   std::vector<Dim> dims(const std::string& what) {
-    expect("<", fmt::format("to open the orbit type of {}", what).c_str());
+    if (!lex_.at("<")) expect("<", fmt::format("to open the orbit type of {}", what).c_str());
+    const std::size_t at = lex_.peek().offset;
+    const std::string_view text = lex_.take_through('>');
     std::vector<Dim> out;
-    while (!lex_.at(">")) {
-      const Token d = lex_.take();
-      if (d.kind != Token::number || d.text.find('.') != std::string::npos)
-        throw TermError(d.offset, fmt::format("expected a dimension or '>' in the orbit type of {}, found {}", what, describe(d)));
+    const auto entry = [&](const OrbitEntry& e) {
+      const std::size_t offset = at + e.offset;
+      if (e.text == "_") throw TermError(offset, fmt::format("'_' in the orbit type of {} is not a dimension: an orbit removes none", what));
       int dim = -1;
-      const auto e = std::from_chars(d.text.data(), d.text.data() + d.text.size(), dim);
-      if (e.ec != std::errc{} || e.ptr != d.text.data() + d.text.size() || dim > max_dimension)
-        throw TermError(d.offset, fmt::format("'{}' in the orbit type of {} is not a dimension (0 to {})", d.text, what, max_dimension));
+      const auto r = std::from_chars(e.text.data(), e.text.data() + e.text.size(), dim);
+      if (r.ec != std::errc{} || dim > max_dimension)
+        throw TermError(offset, fmt::format("'{}' in the orbit type of {} is not a dimension (0 to {})", e.text, what, max_dimension));
+      if (std::find(out.begin(), out.end(), dim) != out.end()) throw TermError(offset, fmt::format("dimension {} appears twice in the orbit type of {}", dim, what));
       out.push_back(dim);
-      if (lex_.at(",")) lex_.take();
+    };
+    try {
+      read_orbit_entries(text, entry);
+    } catch (const OrbitNotationError& e) {
+      throw TermError(at + e.offset(), fmt::format("the orbit type of {}: {}", what, e.what()));
     }
-    lex_.take();  // '>'
     std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
   }
   // each(x in <o>(y): t) or each(x in <o>_<s>(y): t).

@@ -24,6 +24,7 @@
 #include "core/limits.hpp"
 #include "io/mesh_io.hpp"
 #include "core/orbit.hpp"
+#include "core/orbit_notation.hpp"
 #include "rewriting/term_eval.hpp"
 #include "generators/mesh_map.hpp"
 #include "generators/random_embedding.hpp"
@@ -134,6 +135,26 @@ TEST(Terms, HostileTermsStopAtTheLimits) {
   EXPECT_EQ(parse_error("pos<99999999999>(a)"), "4: '99999999999' in the orbit type of 'pos' is not a dimension (0 to 15)");
   EXPECT_EQ(parse_error("pos<0,16>(a)").rfind("6: ", 0), 0u);
   EXPECT_EQ(parse_error(std::string("a + \x01")), "4: unexpected character '\\x01'");
+}
+
+// A collect's orbit type is read as every orbit type of a catalog
+// (core/orbit_notation: commas, spaces around them), kept as a sorted set;
+// what the notation refuses, or what an orbit cannot hold ('_', a repeat),
+// is an error at the '<' or at the entry, never dropped.
+TEST(Terms, CollectOrbitTypesAreOrbitNotation) {
+  EXPECT_EQ(parse_term("mid<1, 0>(pos)").str(), "mid<0,1>(pos)");
+  EXPECT_EQ(parse_term("mid<>(pos)").str(), "mid<>(pos)");
+  EXPECT_EQ(parse_error("mid<0,0>(pos)"), "6: dimension 0 appears twice in the orbit type of 'mid'");
+  EXPECT_EQ(parse_error("mid<0,_>(pos)"), "6: '_' in the orbit type of 'mid' is not a dimension: an orbit removes none");
+  EXPECT_EQ(parse_error("mid<0 1>(pos)"), "6: the orbit type of 'mid': orbit type '<0 1>', at byte 4: expected ',' or '>'");
+  EXPECT_EQ(parse_error("mid<0,1(pos)"), "3: '<' is never closed by '>'");
+  for (const char* text : {"<0,1>", "<2>", "< 0 , 3 >"}) {
+    const OrbitType core = parse_orbit_type(text);
+    std::vector<Dim> dims;
+    for (const auto& d : core) dims.push_back(*d);
+    std::sort(dims.begin(), dims.end());
+    EXPECT_EQ(parse_term(fmt::format("mid{}(pos)", text)).orbit, dims) << text;
+  }
 }
 
 TEST(Terms, UserFunctionsRegisteredWithTheirProfile) {
