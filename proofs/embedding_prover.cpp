@@ -15,7 +15,6 @@
 #include "checkers/rule_conditions.hpp"
 #include "core/orbit.hpp"
 #include "rewriting/application.hpp"
-#include "rewriting/application.hpp"
 #include "rewriting/instantiated_classes.hpp"
 #include "proofs/detail/solver_watch.hpp"
 #include "proofs/symbolic_terms.hpp"
@@ -207,180 +206,201 @@ EmbeddedMap valued_host(const Operation& op, const Map& g, const Derived& d, Val
   return host;
 }
 
-}  // namespace
+// The functions an embedding's terms call (for "every interpretation of ...").
+std::vector<std::string> functions_of(const RuleTerms& terms, const std::string& embedding) {
+  std::set<std::string> names;
+  std::function<void(const Term&)> walk = [&](const Term& t) {
+    if (t.kind == Term::Kind::call && !t.implicit) names.insert(t.name);
+    for (const Term& a : t.args) walk(a);
+  };
+  for (const auto* side : {&terms.left, &terms.right})
+    for (const NodeTerm& t : *side)
+      if (t.embedding == embedding) walk(t.term);
+  return std::vector<std::string>(names.begin(), names.end());
+}
 
-EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions& o) {
-  EmbeddingProof out;
-  const auto start = Clock::now();
-  if (!op.terms) {
-    out.out_of_scope = "no embedding terms";
-    return out;
-  }
+// One embedding in one reading, while the hosts are searched.
+struct Search {
+  EmbeddingAnswer answer;
+  std::size_t embedding = 0;
+  bool settled = false;
+  std::string unknown;  // why the answer cannot be none
+};
+
+// Every embedding in both readings, with the static conditions it fails.
+std::vector<Search> searches_of(const Operation& op) {
   const RuleTerms& terms = *op.terms;
-  const Rule& rule = op.rule;
-  const TopoGraph& L = rule.left();
-  const auto verdicts = check_term_conditions(rule, op.words, terms);
-  struct Search {
-    EmbeddingAnswer answer;
-    std::size_t embedding = 0;
-    bool settled = false;
-    std::string unknown;  // why the answer cannot be none
-  };
-  std::vector<Search> searches;
-  // The functions each embedding's terms call (for "every interpretation of ...").
-  auto functions_of = [&](const std::string& embedding) {
-    std::set<std::string> names;
-    std::function<void(const Term&)> walk = [&](const Term& t) {
-      if (t.kind == Term::Kind::call && !t.implicit) names.insert(t.name);
-      for (const Term& a : t.args) walk(a);
-    };
-    for (const auto* side : {&terms.left, &terms.right})
-      for (const NodeTerm& t : *side)
-        if (t.embedding == embedding) walk(t.term);
-    return std::vector<std::string>(names.begin(), names.end());
-  };
+  const auto verdicts = check_term_conditions(op.rule, op.words, terms);
+  std::vector<Search> out;
   for (std::size_t k = 0; k < terms.embeddings.size(); ++k)
     for (Reading r : {Reading::uninterpreted, Reading::arithmetic}) {
       Search s;
       s.embedding = k;
       s.answer.embedding = terms.embeddings[k].name;
       s.answer.reading = r;
-      s.answer.functions = functions_of(s.answer.embedding);
+      s.answer.functions = functions_of(terms, s.answer.embedding);
       for (const auto& v : verdicts)
         if (v.embedding == s.answer.embedding && v.required && !v.holds) s.answer.static_failures.push_back(v.name());
-      searches.push_back(std::move(s));
+      out.push_back(std::move(s));
     }
-  z3::context ctx;
-  const SolverWatch watch(ctx, o.stop);
-  z3::params params(ctx);
-  params.set("rlimit", o.rlimit);
-  params.set("ctrl_c", false);
-  std::unordered_map<std::string, z3::check_result> cache;
-  std::set<std::string> uninterpreted;
-  Applier applier(op);
-  std::string not_encoded;
-  auto all_settled = [&] { return std::all_of(searches.begin(), searches.end(), [](const Search& s) { return s.settled; }); };
-  auto stopped = [&] { return watch.fired() || (o.stop && o.stop()); };
+  return out;
+}
+
+// The search over rooted hosts: per application, every unsettled
+// embedding and reading asked of Z3 (queries with one text asked once).
+class HostQueries {
+ public:
+  HostQueries(const Operation& op, const EmbeddingProveOptions& o, EmbeddingProof& out)
+      : op_(op), o_(o), out_(out), searches_(searches_of(op)), watch_(ctx_, o.stop), params_(ctx_), applier_(op) {
+    params_.set("rlimit", o.rlimit);
+    params_.set("ctrl_c", false);
+  }
+
+  bool all_settled() const { return std::all_of(searches_.begin(), searches_.end(), [](const Search& s) { return s.settled; }); }
+  bool stopped() const { return watch_.fired() || (o_.stop && o_.stop()); }
 
   // One application: every unsettled embedding and reading asked.
-  auto ask = [&](const Map& g, std::span<const Dart> hooks) {
-    auto d = derive(op, applier, g, hooks, not_encoded, o.fault == EmbeddingProveOptions::Fault::fresh_writes);
-    if (o.fault == EmbeddingProveOptions::Fault::no_breaks) return;
+  void ask(const Map& g, std::span<const Dart> hooks) {
+    auto d = derive(op_, applier_, g, hooks, not_encoded_, o_.fault == EmbeddingProveOptions::Fault::fresh_writes);
+    if (o_.fault == EmbeddingProveOptions::Fault::no_breaks) return;
     if (!d) return;
-    ++out.applications;
-    for (Search& s : searches) {
+    ++out_.applications;
+    for (Search& s : searches_) {
       if (s.settled) continue;
       const OrbitQuestion& q = d->questions[s.embedding];
       if (q.orbits.empty() && q.valueless == no_dart) continue;  // consistent whatever the values
-      const std::string key = query_key(s.answer.reading, *d, q);
-      if (const auto it = cache.find(key); it != cache.end() && it->second != z3::sat) {
-        ++out.cached;
-        continue;
-      }
       try {  // a Z3 error (a literal it cannot read, memory) makes this answer unknown, not a crash
-        ValueEncoding enc(ctx, d->pool, s.answer.reading);
-        z3::solver solver(ctx);
-        solver.set(params);
-        for (const auto& [a, b] : d->equal) solver.add(enc.equal(a, b));
-        z3::expr_vector breaks(ctx);
-        if (q.valueless != no_dart) breaks.push_back(ctx.bool_val(true));
-        for (const auto& v : q.orbits)
-          for (std::size_t k = 1; k < v.size(); ++k) breaks.push_back(!enc.equal(v[0], v[k]));
-        solver.add(z3::mk_or(breaks));
-        for (const auto& p : enc.premises()) solver.add(p);
-        ++out.queries;
-        const auto asked = Clock::now();
-        const z3::check_result r = solver.check();
-        out.z3_seconds += std::chrono::duration<double>(Clock::now() - asked).count();
-        cache[key] = r;
-        for (const auto& f : enc.uninterpreted()) uninterpreted.insert(f);
-        if (r == z3::unknown) {
-          s.unknown = stopped() ? "interrupted (SIGINT or SIGTERM)"
-                                : fmt::format("Z3's rlimit of {} per query reached on a {}-dart host", o.rlimit, g.size());
-          continue;
-        }
-        if (r == z3::unsat) continue;
-        // A counterexample: prefer values doubles hold exactly.
-        EmbeddingAnswer& a = s.answer;
-        s.settled = true;
-        a.status = EmbeddingAnswer::Status::counterexample;
-        a.darts = g.size();
-        a.hooks.assign(hooks.begin(), hooks.end());
-        if (a.reading == Reading::arithmetic) {
-          solver.push();
-          for (const auto& c : enc.small_integers(16)) solver.add(c);
-          const bool small = solver.check() == z3::sat;
-          if (!small) solver.pop();
-          if (small || solver.check() == z3::sat) {
-            const z3::model m = solver.get_model();
-            a.host = valued_host(op, g, *d, enc, &m);
-          }
-        } else {
-          a.host = valued_host(op, g, *d, enc, nullptr);
-        }
-        // What breaks, in the solver's model.
-        const z3::model m = solver.get_model();
-        if (q.valueless != no_dart) {
-          a.why = fmt::format("dart {} of H has no {} value", q.valueless, a.embedding);
-        } else {
-          for (std::size_t k = 0; k < q.orbits.size() && a.why.empty(); ++k)
-            for (std::size_t j = 1; j < q.orbits[k].size() && a.why.empty(); ++j)
-              if (m.eval(!enc.equal(q.orbits[k][0], q.orbits[k][j]), true).is_true())
-                a.why = fmt::format("the {}-orbit of dart {} of H gets {} and {}", a.embedding, q.at[k], d->pool.str(q.orbits[k][0]),
-                                    d->pool.str(q.orbits[k][j]));
-        }
-        if (a.reading == Reading::arithmetic && a.host) {
-          // The library's own application must break the same embedding.
-          EmbeddedMap replay = *a.host;
-          const auto r2 = Applier(op).apply(replay, a.hooks, true);
-          if (!r2.ok()) {
-            a.replay = fmt::format("refused: {}", r2.why);
-          } else {
-            const auto c = check_embedding(replay.map, *replay.find(a.embedding), true);
-            a.replayed = !c.consistent();
-            a.replay = a.replayed ? c.conflicts.front().describe(a.embedding, terms.embeddings[s.embedding].orbit)
-                                  : fmt::format("the library's application leaves {} consistent", a.embedding);
-          }
-        }
+        ask(s, g, hooks, *d, q);
       } catch (const z3::exception& e) {
         s.unknown = fmt::format("Z3: {}", e.msg());
       }
     }
-  };
-
-  const RootedHosts searched = for_each_rooted_host(
-      op, o.max_darts,
-      [&](const Map& g, std::span<const Dart> hooks) {
-        ask(g, hooks);
-        return !all_settled() && !stopped();
-      },
-      o.host_budget);
-  out.hosts = searched.hosts;
-  const std::size_t largest = searched.complete;
-  const bool budget_hit = searched.budget_hit;
-  out.interrupted = stopped();
-  for (Search& s : searches) {
-    EmbeddingAnswer& a = s.answer;
-    if (a.reading == Reading::arithmetic) a.uninterpreted.assign(uninterpreted.begin(), uninterpreted.end());
-    if (s.settled) {
-      out.answers.push_back(std::move(a));
-      continue;
-    }
-    a.darts = largest;
-    if (out.interrupted)
-      s.unknown = "interrupted (SIGINT or SIGTERM)";
-    else if (budget_hit && largest < (op.is_scheme() ? 1 : L.node_count()))
-      s.unknown = fmt::format("the host budget of {} maps was reached at {} darts", o.host_budget, largest + 1);
-    else if (!not_encoded.empty())
-      s.unknown = fmt::format("a term outside the encoding: {}", not_encoded);
-    a.status = s.unknown.empty() ? EmbeddingAnswer::Status::none : EmbeddingAnswer::Status::unknown;
-    a.why = s.unknown;
-    if (a.status == EmbeddingAnswer::Status::none && budget_hit)
-      a.why = fmt::format("searched up to {} darts: the host budget of {} maps was reached at {}", largest, o.host_budget, largest + 1);
-    out.answers.push_back(std::move(a));
   }
-  // Theorems 2 and 4 speak of rules whose topological conditions hold too.
-  const bool topology = check_rule(rule, op.words).consistent();
+
+  // The answers once the search ended: settled ones as found, the others
+  // none or unknown (and why), on hosts up to `largest` darts.
+  void finish(std::size_t largest, bool budget_hit) {
+    out_.interrupted = stopped();
+    for (Search& s : searches_) {
+      EmbeddingAnswer& a = s.answer;
+      if (a.reading == Reading::arithmetic) a.uninterpreted.assign(uninterpreted_.begin(), uninterpreted_.end());
+      if (s.settled) {
+        out_.answers.push_back(std::move(a));
+        continue;
+      }
+      a.darts = largest;
+      if (out_.interrupted)
+        s.unknown = "interrupted (SIGINT or SIGTERM)";
+      else if (budget_hit && largest < (op_.is_scheme() ? 1 : op_.rule.left().node_count()))
+        s.unknown = fmt::format("the host budget of {} maps was reached at {} darts", o_.host_budget, largest + 1);
+      else if (!not_encoded_.empty())
+        s.unknown = fmt::format("a term outside the encoding: {}", not_encoded_);
+      a.status = s.unknown.empty() ? EmbeddingAnswer::Status::none : EmbeddingAnswer::Status::unknown;
+      a.why = s.unknown;
+      if (a.status == EmbeddingAnswer::Status::none && budget_hit)
+        a.why = fmt::format("searched up to {} darts: the host budget of {} maps was reached at {}", largest, o_.host_budget, largest + 1);
+      out_.answers.push_back(std::move(a));
+    }
+  }
+
+ private:
+  // One embedding and reading on one application: is there a valuation
+  // of the unknowns, equal on L's labels, under which an orbit of H gets
+  // two values (or a dart none)?
+  void ask(Search& s, const Map& g, std::span<const Dart> hooks, const Derived& d, const OrbitQuestion& q) {
+    const std::string key = query_key(s.answer.reading, d, q);
+    if (const auto it = cache_.find(key); it != cache_.end() && it->second != z3::sat) {
+      ++out_.cached;
+      return;
+    }
+    ValueEncoding enc(ctx_, d.pool, s.answer.reading);
+    z3::solver solver(ctx_);
+    solver.set(params_);
+    for (const auto& [a, b] : d.equal) solver.add(enc.equal(a, b));
+    z3::expr_vector breaks(ctx_);
+    if (q.valueless != no_dart) breaks.push_back(ctx_.bool_val(true));
+    for (const auto& v : q.orbits)
+      for (std::size_t k = 1; k < v.size(); ++k) breaks.push_back(!enc.equal(v[0], v[k]));
+    solver.add(z3::mk_or(breaks));
+    for (const auto& p : enc.premises()) solver.add(p);
+    ++out_.queries;
+    const auto asked = Clock::now();
+    const z3::check_result r = solver.check();
+    out_.z3_seconds += std::chrono::duration<double>(Clock::now() - asked).count();
+    cache_[key] = r;
+    for (const auto& f : enc.uninterpreted()) uninterpreted_.insert(f);
+    if (r == z3::unknown) {
+      s.unknown = stopped() ? "interrupted (SIGINT or SIGTERM)" : fmt::format("Z3's rlimit of {} per query reached on a {}-dart host", o_.rlimit, g.size());
+      return;
+    }
+    if (r == z3::sat) settle(s, g, hooks, d, q, enc, solver);
+  }
+
+  // A counterexample: its host with values (doubles preferred exact),
+  // what breaks in the solver's model, and the library's own replay.
+  void settle(Search& s, const Map& g, std::span<const Dart> hooks, const Derived& d, const OrbitQuestion& q, ValueEncoding& enc, z3::solver& solver) {
+    EmbeddingAnswer& a = s.answer;
+    s.settled = true;
+    a.status = EmbeddingAnswer::Status::counterexample;
+    a.darts = g.size();
+    a.hooks.assign(hooks.begin(), hooks.end());
+    if (a.reading == Reading::arithmetic) {
+      solver.push();
+      for (const auto& c : enc.small_integers(16)) solver.add(c);
+      const bool small = solver.check() == z3::sat;
+      if (!small) solver.pop();
+      if (small || solver.check() == z3::sat) {
+        const z3::model m = solver.get_model();
+        a.host = valued_host(op_, g, d, enc, &m);
+      }
+    } else {
+      a.host = valued_host(op_, g, d, enc, nullptr);
+    }
+    const z3::model m = solver.get_model();
+    if (q.valueless != no_dart) {
+      a.why = fmt::format("dart {} of H has no {} value", q.valueless, a.embedding);
+    } else {
+      for (std::size_t k = 0; k < q.orbits.size() && a.why.empty(); ++k)
+        for (std::size_t j = 1; j < q.orbits[k].size() && a.why.empty(); ++j)
+          if (m.eval(!enc.equal(q.orbits[k][0], q.orbits[k][j]), true).is_true())
+            a.why = fmt::format("the {}-orbit of dart {} of H gets {} and {}", a.embedding, q.at[k], d.pool.str(q.orbits[k][0]), d.pool.str(q.orbits[k][j]));
+    }
+    if (a.reading == Reading::arithmetic && a.host) replay(s);
+  }
+
+  // The library's own application must break the same embedding.
+  void replay(Search& s) {
+    EmbeddingAnswer& a = s.answer;
+    EmbeddedMap replay = *a.host;
+    const auto r = Applier(op_).apply(replay, a.hooks, true);
+    if (!r.ok()) {
+      a.replay = fmt::format("refused: {}", r.why);
+      return;
+    }
+    const auto c = check_embedding(replay.map, *replay.find(a.embedding), true);
+    a.replayed = !c.consistent();
+    a.replay = a.replayed ? c.conflicts.front().describe(a.embedding, op_.terms->embeddings[s.embedding].orbit)
+                          : fmt::format("the library's application leaves {} consistent", a.embedding);
+  }
+
+  const Operation& op_;
+  const EmbeddingProveOptions& o_;
+  EmbeddingProof& out_;
+  std::vector<Search> searches_;
+  z3::context ctx_;
+  SolverWatch watch_;
+  z3::params params_;
+  std::unordered_map<std::string, z3::check_result> cache_;
+  std::set<std::string> uninterpreted_;
+  Applier applier_;
+  std::string not_encoded_;
+};
+
+// Theorems 2 and 4 speak of rules whose topological conditions hold too:
+// a break they forbid, or a counterexample the library does not replay,
+// is a disagreement; a none where a static condition fails, a false alarm.
+void judge(const Operation& op, EmbeddingProof& out) {
+  const bool topology = check_rule(op.rule, op.words).consistent();
   for (EmbeddingAnswer& a : out.answers) {
     const bool holds = a.static_failures.empty() && topology;
     if (a.status == EmbeddingAnswer::Status::counterexample && holds) {
@@ -397,6 +417,28 @@ EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions
                            a.reading == Reading::uninterpreted ? " for any interpretation of the operations" : " in real arithmetic", a.darts);
     }
   }
+}
+
+}  // namespace
+
+EmbeddingProof prove_embeddings(const Operation& op, const EmbeddingProveOptions& o) {
+  EmbeddingProof out;
+  const auto start = Clock::now();
+  if (!op.terms) {
+    out.out_of_scope = "no embedding terms";
+    return out;
+  }
+  HostQueries queries(op, o, out);
+  const RootedHosts searched = for_each_rooted_host(
+      op, o.max_darts,
+      [&](const Map& g, std::span<const Dart> hooks) {
+        queries.ask(g, hooks);
+        return !queries.all_settled() && !queries.stopped();
+      },
+      o.host_budget);
+  out.hosts = searched.hosts;
+  queries.finish(searched.complete, searched.budget_hit);
+  judge(op, out);
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return out;
 }
