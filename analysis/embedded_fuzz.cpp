@@ -66,6 +66,112 @@ void mark_orbit(const EmbeddedMap& h, const Embedding& e, Dart d, std::vector<st
   }
 }
 
+// Hosts: the given maps of the model, then every map of up to 6 darts
+// (containing L for a DPO rule), at most 2,000 -- a rule whose L random
+// maps rarely match (a free dart, a loop) still applies, as in the
+// topological fuzzer's first phase -- then random maps growing to
+// max_darts (in rounds, so small hosts come first).
+class EmbeddedHosts {
+ public:
+  EmbeddedHosts(const Operation& entry, const std::vector<Map>& seeds, std::size_t max_darts) : model_(entry.rule.model()), max_darts_(max_darts) {
+    for (const Map& m : seeds)
+      if (m.model() == model_) given_.push_back(m);
+    user_maps_ = given_.size();
+    const std::size_t small_budget = 2000;
+    for (std::size_t n = 1; n <= std::min<std::size_t>(6, max_darts) && small_count_ < small_budget; ++n)
+      for_each_small_map(
+          model_, n,
+          [&](const std::vector<std::vector<NodeId>>& sigma) {
+            Map m(model_, n);
+            for (std::size_t k = 0; k < model_.dims.size(); ++k)
+              for (Dart d = 0; d < n; ++d) m.set_link(model_.dims[k], d, sigma[k][d]);
+            given_.push_back(std::move(m));
+            ++small_count_;
+            return small_count_ < small_budget;
+          },
+          small_budget - small_count_, entry.is_scheme() ? nullptr : &entry.rule.left());
+  }
+
+  /// The next host, or none when the given ones are used up and the
+  /// model has no random generator (or 8 draws were too large).
+  std::optional<Map> next(std::mt19937& rng) {
+    kind_ = next_given_ < user_maps_ ? "given" : next_given_ < given_.size() ? "enumerated" : "random";
+    if (next_given_ < given_.size()) return given_[next_given_++];
+    if (!has_random_generator(model_)) return std::nullopt;
+    for (int tries = 0; tries < 8; ++tries) {
+      Map m = build_random_map(model_, draw_recipe(rng, static_cast<std::uint32_t>(faces_), model_.dimension()));
+      faces_ = faces_ % 12 + 1;
+      if (m.size() <= max_darts_ && m.size() > 0) return m;
+    }
+    return std::nullopt;
+  }
+  /// Of the last host: given, enumerated or random.
+  const char* kind() const { return kind_; }
+  std::size_t small_count() const { return small_count_; }
+
+ private:
+  const Model& model_;
+  std::size_t max_darts_;
+  std::vector<Map> given_;  // the seeds of the model, then the small maps
+  std::size_t user_maps_ = 0, small_count_ = 0, next_given_ = 0, faces_ = 1;
+  const char* kind_ = "random";
+};
+
+// What an application broke: H's topology, the rule's value conflicts and
+// every embedding's orbits with two values or none; nullopt if nothing.
+std::optional<Counterexample> broken(const EmbeddedMap& planted, const EmbeddedMap& h, const EmbeddedApplication& d, std::span<const Dart> hooks) {
+  Counterexample cx{planted.map, {hooks.begin(), hooks.end()}, {}, h.map, {}, {}, {}, false, {}, {}, {}, {}, {}};
+  cx.violations = check_map(h.map).violations;
+  for (const auto& c : d.conflicts) cx.embedding_failures.push_back(c);
+  for (const Embedding& e : h.embeddings) {
+    const auto r = check_embedding(h.map, e, true);
+    for (const auto& c : r.conflicts) {
+      cx.embedding_failures.push_back(c.describe(e.signature.name, e.signature.orbit));
+      mark_orbit(h, e, c.dart, cx.orbit_values);
+    }
+    if (!r.consistent()) cx.broken_embeddings.push_back(e.signature.name);
+  }
+  if (cx.violations.empty() && cx.embedding_failures.empty()) return std::nullopt;
+  return cx;
+}
+
+// The match and the comatch, for the pictures: the application again (it
+// is deterministic), recorded this time; schemes show their match as P_v
+// from the hooks.
+void add_match(const Operation& entry, const EmbeddedMap& planted, std::span<const Dart> hooks, Counterexample& cx) {
+  if (!entry.is_scheme())
+    if (const auto m = match_darts(entry, planted.map, hooks); !m.empty())
+      for (NodeId v = 0; v < entry.rule.left().node_count(); ++v) cx.match.emplace_back(entry.rule.left().name(v), m[v][0]);
+  EmbeddedMap again = planted;
+  if (const auto r = Applier(entry).apply(again, hooks, true); r.ok())
+    for (NodeId y = 0; y < entry.rule.right().node_count() && y < r.value->topology.comatch.size(); ++y)
+      for (Dart dart : r.value->topology.comatch[y]) cx.comatch.emplace_back(entry.rule.right().name(y), dart);
+}
+
+// The verdict and its reason once the run ended.
+void classify(FuzzReport& out, bool static_holds, std::size_t small_count) {
+  if (out.counterexample) {
+    out.verdict = static_holds ? FuzzClass::soundness_bug : FuzzClass::confirmed;
+    return;
+  }
+  std::vector<std::string> refused;
+  for (const auto& [why, count] : out.refusals) refused.push_back(fmt::format("{} {}", count, why));
+  const std::string refusals = refused.empty() ? "" : fmt::format(" (refused: {})", fmt::join(refused, ", "));
+  if (static_holds) {
+    out.verdict = FuzzClass::consistent;
+    if (out.applications == 0) out.reason = fmt::format("never applied{}", refusals);
+    return;
+  }
+  out.verdict = FuzzClass::unconfirmed;
+  out.reason = out.applications == 0
+                   ? fmt::format("never applied{}", refusals)
+                   : fmt::format("no failure in {} on {} of up to {} darts: the static conditions are sufficient, not necessary{}",
+                                 counted(out.applications, "application"),
+                                 counted(out.hosts, "embedded map") + fmt::format(" ({} enumerated maps of up to 6 darts, then random ones)", small_count),
+                                 out.largest_host, refusals);
+  if (out.out_of_time) out.reason += " (stopped by --time)";
+}
+
 }  // namespace
 
 FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& seeds, const FuzzOptions& o) {
@@ -75,58 +181,18 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
   const RuleVerdict verdict = o.static_check ? o.static_check(entry) : check_rule(entry.rule, entry.words);
   out.static_failures = static_failures(verdict);
   for (const auto& name : failing_names(check_term_conditions(entry.rule, entry.words, terms))) out.static_failures.push_back(name);
-  const bool static_holds = out.static_failures.empty();
-  const Model& model = entry.rule.model();
   const auto start = Clock::now();
   std::mt19937 rng(static_cast<std::mt19937::result_type>(rule_seed(o.seed, out.rule)));
-
-  // Hosts: the given maps of the model, then random maps growing to
-  // max_darts (in rounds, so small hosts come first).
-  std::vector<Map> given;
-  for (const Map& m : seeds)
-    if (m.model() == model) given.push_back(m);
-  // Then every map of up to 6 darts (containing L for a DPO rule), at
-  // most 2,000: a rule whose L random maps rarely match (a free dart, a
-  // loop) still applies, as in the topological fuzzer's first phase.
-  std::vector<Map> small;
-  const std::size_t small_budget = 2000;
-  for (std::size_t n = 1; n <= std::min<std::size_t>(6, o.max_darts) && small.size() < small_budget; ++n)
-    for_each_small_map(
-        model, n,
-        [&](const std::vector<std::vector<NodeId>>& sigma) {
-          Map m(model, n);
-          for (std::size_t k = 0; k < model.dims.size(); ++k)
-            for (Dart d = 0; d < n; ++d) m.set_link(model.dims[k], d, sigma[k][d]);
-          small.push_back(std::move(m));
-          return small.size() < small_budget;
-        },
-        small_budget - small.size(), entry.is_scheme() ? nullptr : &entry.rule.left());
-  const std::size_t user_maps = given.size();
-  const std::size_t small_count = small.size();
-  for (Map& m : small) given.push_back(std::move(m));
-  std::size_t next_given = 0, faces = 1;
-  const char* host_kind = "random";  // of the last host: given, every small map, random
-  auto next_host = [&]() -> std::optional<Map> {
-    host_kind = next_given < user_maps ? "given" : next_given < given.size() ? "enumerated" : "random";
-    if (next_given < given.size()) return given[next_given++];
-    if (!has_random_generator(model)) return std::nullopt;
-    for (int tries = 0; tries < 8; ++tries) {
-      Map m = build_random_map(model, draw_recipe(rng, static_cast<std::uint32_t>(faces), model.dimension()));
-      faces = faces % 12 + 1;
-      if (m.size() <= o.max_darts && m.size() > 0) return m;
-    }
-    return std::nullopt;
-  };
-
+  EmbeddedHosts hosts(entry, seeds, o.max_darts);
   Applier applier(entry);
   std::size_t attempts = 0;
-  while (out.applications < o.runs && attempts < o.runs * 20) {
+  while (out.applications < o.runs && attempts < o.runs * 20 && !out.counterexample) {
     if (o.deadline && Clock::now() > *o.deadline) {
       out.out_of_time = true;
       break;
     }
     if (interrupted()) break;
-    auto host = next_host();
+    auto host = hosts.next(rng);
     if (!host) break;
     ++out.hosts;
     out.largest_host = std::max(out.largest_host, host->size());
@@ -151,53 +217,16 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
         continue;
       }
       ++out.applications;
-      Counterexample cx{planted.map, hooks, {}, h.map, {}, {}, {}, false, {}, {}, {}, {}, {}};
-      cx.violations = check_map(h.map).violations;
-      for (const auto& c : d.value->conflicts) cx.embedding_failures.push_back(c);
-      for (const Embedding& e : h.embeddings) {
-        const auto r = check_embedding(h.map, e, true);
-        for (const auto& c : r.conflicts) {
-          cx.embedding_failures.push_back(c.describe(e.signature.name, e.signature.orbit));
-          mark_orbit(h, e, c.dart, cx.orbit_values);
-        }
-        if (!r.consistent()) cx.broken_embeddings.push_back(e.signature.name);
+      if (auto cx = broken(planted, h, *d.value, hooks)) {
+        cx->origin = fmt::format("{} {}-dart {} with random values (host {} of the run)", hosts.kind(), planted.map.size(), entry.rule.model().name, out.hosts);
+        add_match(entry, planted, hooks, *cx);
+        out.counterexample = std::move(cx);
+        break;
       }
-      if (cx.violations.empty() && cx.embedding_failures.empty()) continue;
-      cx.origin = fmt::format("{} {}-dart {} with random values (host {} of the run)", host_kind, planted.map.size(), model.name, out.hosts);
-      // The match and the comatch, for the pictures: the application
-      // again (it is deterministic), recorded this time; schemes show
-      // their match as P_v from the hooks.
-      if (!entry.is_scheme())
-        if (const auto m = match_darts(entry, planted.map, hooks); !m.empty())
-          for (NodeId v = 0; v < entry.rule.left().node_count(); ++v) cx.match.emplace_back(entry.rule.left().name(v), m[v][0]);
-      EmbeddedMap again = planted;
-      if (const auto r = Applier(entry).apply(again, hooks, true); r.ok())
-        for (NodeId y = 0; y < entry.rule.right().node_count() && y < r.value->topology.comatch.size(); ++y)
-          for (Dart dart : r.value->topology.comatch[y]) cx.comatch.emplace_back(entry.rule.right().name(y), dart);
-      out.counterexample = std::move(cx);
-      break;
     }
-    if (out.counterexample) break;
   }
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  if (out.counterexample) {
-    out.verdict = static_holds ? FuzzClass::soundness_bug : FuzzClass::confirmed;
-    return out;
-  }
-  std::vector<std::string> refused;
-  for (const auto& [why, count] : out.refusals) refused.push_back(fmt::format("{} {}", count, why));
-  const std::string refusals = refused.empty() ? "" : fmt::format(" (refused: {})", fmt::join(refused, ", "));
-  if (static_holds) {
-    out.verdict = FuzzClass::consistent;
-    if (out.applications == 0) out.reason = fmt::format("never applied{}", refusals);
-    return out;
-  }
-  out.verdict = FuzzClass::unconfirmed;
-  out.reason = out.applications == 0
-                   ? fmt::format("never applied{}", refusals)
-                   : fmt::format("no failure in {} on {} of up to {} darts: the static conditions are sufficient, not necessary{}",
-                                 counted(out.applications, "application"), counted(out.hosts, "embedded map") + fmt::format(" ({} enumerated maps of up to 6 darts, then random ones)", small_count), out.largest_host, refusals);
-  if (out.out_of_time) out.reason += " (stopped by --time)";
+  classify(out, out.static_failures.empty(), hosts.small_count());
   return out;
 }
 

@@ -272,32 +272,14 @@ void find_optimal_paths(CycleSide& s) {
   }
 }
 
-}  // namespace
-
-ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& words, bool complete) {
-  auto v = verdict(RuleCondition::cycle, i, j);
-  for (Dim d : {i, j})
-    if (!check_incident_arcs(rule, d, words).holds || !check_dangling(rule, d, words).holds) {
-      v.skipped = fmt::format("the rule fails I({}) or dangling({}): the cycle condition assumes a combinatorial rule", d, d);
-      return v;
-    }
-  ConjugateRewriting rw(rule.model());
-  const TopoGraph &L = rule.left(), &R = rule.right();
-  CycleSide left('L', L), right('R', R);
-  for (ArcId e = 0; e < L.arc_count(); ++e)
-    if (L.arc(e).label == i || L.arc(e).label == j)
-      left.add({L.arc(e).source, L.arc(e).target, L.arc(e).label, !rule.preserved_left_arc(e), arc_word(words.left, e), ""});
-  for (ArcId e = 0; e < R.arc_count(); ++e)
-    if (R.arc(e).label == i || R.arc(e).label == j)
-      right.add({R.arc(e).source, R.arc(e).target, R.arc(e).label, !rule.preserved_right_arc(e), arc_word(words.right, e), ""});
-
-  // ij-completion (Sec. 5.2.1): an iji-path s ~> t of L closes with a
-  // j-arc t -> s in every host satisfying C(i,j); add it to L, and to the
-  // interface when both ends are preserved. Its word closes the cycle: the
-  // conjugate of the path's word. Completing R would restrict the matches,
-  // so only L is completed. The first open path in arc order is closed,
-  // then the search starts again.
-  for (bool grew = complete; grew;) {
+// ij-completion (Sec. 5.2.1): an iji-path s ~> t of L closes with a
+// j-arc t -> s in every host satisfying C(i,j); add it to L, and to the
+// interface when both ends are preserved. Its word closes the cycle: the
+// conjugate of the path's word. Completing R would restrict the matches,
+// so only L is completed. The first open path in arc order is closed,
+// then the search starts again.
+void complete_left(const Rule& rule, ConjugateRewriting& rw, CycleSide& left, CycleSide& right) {
+  for (bool grew = true; grew;) {
     grew = false;
     for (int a = 0; a < static_cast<int>(left.arcs.size()) && !grew; ++a)
       for (int b : left.from[left.at(a).target]) {
@@ -318,13 +300,11 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
         if (grew) break;
       }
   }
-  for (CycleSide* s : {&left, &right}) {
-    find_cycles(*s);
-    find_optimal_paths(*s);
-  }
+}
 
-  // Sub-condition 1 (Def. 15, 26): every optimal path has exactly one
-  // coherent optimal path on the other side, with a congruent W-label.
+// Sub-condition 1 (Def. 15, 26): every optimal path has exactly one
+// coherent optimal path on the other side, with a congruent W-label.
+void check_optimal_paths(const Rule& rule, ConjugateRewriting& rw, const CycleSide& left, const CycleSide& right, Dim i, Dim j, ConditionVerdict& v) {
   for (const CycleSide* s : {&left, &right}) {
     const CycleSide* o = s == &left ? &right : &left;
     auto across = [&](NodeId x) { return s == &left ? rule.to_right(x) : rule.to_left(x); };
@@ -358,8 +338,10 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
       }
     }
   }
+}
 
-  // Def. 27: the W-label of every ijij-cycle reduces to ε.
+// Def. 27: the W-label of every ijij-cycle reduces to ε.
+void check_cycle_labels(ConjugateRewriting& rw, const CycleSide& left, const CycleSide& right, Dim i, Dim j, ConditionVerdict& v) {
   for (const CycleSide* s : {&left, &right}) {
     std::set<std::array<int, 4>> reported;  // a cycle once, not once per rotation
     for (const auto& c : s->cycles) {
@@ -377,9 +359,12 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
                  fmt::format("({},{})-cycle {} in {} has W-label {}, which does not reduce to ε", i, j, path_text(*s, p), s->name, w.str())});
     }
   }
+}
 
-  // Sub-conditions 2 and 3: a preserved node losing an i-arc, and an added
-  // node, must be the source of an i-arc in R on a cycle or optimal path.
+// Sub-conditions 2 and 3: a preserved node losing an i-arc, and an added
+// node, must be the source of an i-arc in R on a cycle or optimal path.
+void check_sources(const Rule& rule, const CycleSide& left, const CycleSide& right, Dim i, Dim j, ConditionVerdict& v) {
+  const TopoGraph& R = rule.right();
   std::vector<bool> on_cycle_or_path(right.arcs.size(), false);
   for (const auto& c : right.cycles)
     for (int e : c) on_cycle_or_path[static_cast<std::size_t>(e)] = true;
@@ -407,6 +392,36 @@ ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& wor
                               : fmt::format("added node {} is the source of no {}-arc in R on a ({},{})-cycle or optimal path", R.name(y), d, i, j)});
     }
   }
+}
+
+}  // namespace
+
+ConditionVerdict check_cycle(const Rule& rule, Dim i, Dim j, const ArcWords& words, bool complete) {
+  auto v = verdict(RuleCondition::cycle, i, j);
+  for (Dim d : {i, j})
+    if (!check_incident_arcs(rule, d, words).holds || !check_dangling(rule, d, words).holds) {
+      v.skipped = fmt::format("the rule fails I({}) or dangling({}): the cycle condition assumes a combinatorial rule", d, d);
+      return v;
+    }
+  ConjugateRewriting rw(rule.model());
+  const TopoGraph &L = rule.left(), &R = rule.right();
+  CycleSide left('L', L), right('R', R);
+  for (ArcId e = 0; e < L.arc_count(); ++e)
+    if (L.arc(e).label == i || L.arc(e).label == j)
+      left.add({L.arc(e).source, L.arc(e).target, L.arc(e).label, !rule.preserved_left_arc(e), arc_word(words.left, e), ""});
+  for (ArcId e = 0; e < R.arc_count(); ++e)
+    if (R.arc(e).label == i || R.arc(e).label == j)
+      right.add({R.arc(e).source, R.arc(e).target, R.arc(e).label, !rule.preserved_right_arc(e), arc_word(words.right, e), ""});
+
+  if (complete) complete_left(rule, rw, left, right);
+  for (CycleSide* s : {&left, &right}) {
+    find_cycles(*s);
+    find_optimal_paths(*s);
+  }
+
+  check_optimal_paths(rule, rw, left, right, i, j, v);
+  check_cycle_labels(rw, left, right, i, j, v);
+  check_sources(rule, left, right, i, j, v);
   return v;
 }
 

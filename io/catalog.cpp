@@ -363,6 +363,157 @@ Catalog read_catalog(const std::string& file) {
   }
 }
 
+// The catalog's embeddings: [{name, type, orbit: "<1,2,3>"}].
+static void read_embedding_decls(const std::string& file, const YAML::Node& ebds, Catalog& c) {
+  yaml::expect_sequence(file, ebds, "embeddings");
+  for (const auto& e : ebds) {
+    yaml::expect_map(file, e, "embedding");
+    yaml::allow_keys(file, e, {"name", "type", "orbit"});
+    EmbeddingDecl d{yaml::as_string(file, yaml::require(file, e, "name"), "embedding name"),
+                    e["type"] ? yaml::as_string(file, e["type"], "embedding type") : "",
+                    {},
+                    where(file, e)};
+    const auto orbit = yaml::require(file, e, "orbit");
+    try {
+      for (const auto& k : parse_orbit_type(yaml::as_string(file, orbit, "orbit type"))) {
+        if (!k) throw ValueError("an embedding's orbit type cannot contain '_'");
+        d.orbit.push_back(*k);
+      }
+    } catch (const ValueError& x) {
+      fail_at(file, orbit, fmt::format("embedding '{}': {}", d.name, x.what()));
+    }
+    // A Jerboa class (a modeler's export) has the reading the .jme gives it.
+    if (const auto t = jerboa_value_type(d.type) ? jerboa_value_type(d.type) : type_by_name(d.type)) c.signatures.push_back({d.name, *t, d.orbit});
+    c.embeddings.push_back(std::move(d));
+  }
+}
+
+// Rules an import could not represent: [{name, why}].
+static void read_skipped(const std::string& file, const YAML::Node& sk, Catalog& c) {
+  yaml::expect_sequence(file, sk, "skipped");
+  for (const auto& x : sk) {
+    yaml::expect_map(file, x, "skipped rule");
+    c.skipped.push_back(
+        {yaml::as_string(file, yaml::require(file, x, "name"), "name"), yaml::as_string(file, yaml::require(file, x, "why"), "why"), where(file, x)});
+  }
+}
+
+namespace {
+
+// The maps and rules of a catalog, each read on its own: an error in one is
+// kept and the next is read, up to `max_errors` (the rest of the file then
+// unread).
+class EntryReader {
+ public:
+  EntryReader(const std::string& file, const YAML::Node& root, Catalog& c) : file_(file), c_(c) {
+    if (const auto models = root["models"]) {
+      yaml::expect_map(file, models, "models");
+      for (const auto& kv : models) custom_.push_back(yaml::custom_model(file, kv.first.Scalar(), kv.second));
+    }
+    if (root["model"]) default_model_ = read_model(file, root["model"], custom_);
+  }
+
+  template <class Entry, class Read>
+  void each(const Entry& entry, const Read& read) {
+    if (errors_.size() >= max_errors) return;
+    try {
+      read(entry);
+    } catch (const InputError& e) {
+      errors_.push_back(e);
+    } catch (const YAML::Exception& e) {
+      errors_.push_back(yaml_input_error(file_, e));
+    }
+  }
+
+  void map(const YAML::Node& name, const YAML::Node& n) {
+    failed_maps_.insert(name.Scalar());
+    yaml::expect_map(file_, n, "map");
+    yaml::allow_keys(file_, n, {"model", "darts", "links", "pred", "shape", "file"});
+    MapSource m{name.Scalar(), model_of(n), std::nullopt, {}, {}, where(file_, name)};
+    if (c_.find_map(m.name)) fail_at(file_, name, fmt::format("map '{}' is declared twice", m.name));
+    const int forms = (n["darts"] ? 1 : 0) + (n["shape"] ? 1 : 0) + (n["file"] ? 1 : 0);
+    if (forms != 1) fail_at(file_, n, "a map needs exactly one of 'darts' + 'links', 'shape', 'file'");
+    if (n["shape"]) m.shape = yaml::as_string(file_, n["shape"], "shape");
+    if (n["file"]) {
+      m.mesh = yaml::as_string(file_, n["file"], "file");
+      if (!m.mesh.empty() && m.mesh.front() != '/') {
+        const auto slash = file_.rfind('/');
+        if (slash != std::string::npos) m.mesh = file_.substr(0, slash + 1) + m.mesh;
+      }
+    }
+    if (n["darts"]) m.map = read_map_links(file_, n, m.model);
+    failed_maps_.erase(m.name);
+    c_.maps.push_back(std::move(m));
+  }
+
+  void rule(const YAML::Node& n) {
+    yaml::expect_map(file_, n, "rule");
+    yaml::allow_keys(file_, n,
+                     {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats", "labels",
+                      "parameters", "instantiation", "embeddings"});
+    const auto name = yaml::as_string(file_, yaml::require(file_, n, "name"), "name");
+    const Model model = model_of(n);
+    const auto left = yaml::require(file_, n, "left"), right = yaml::require(file_, n, "right");
+    yaml::expect_map(file_, left, "left");
+    yaml::expect_map(file_, right, "right");
+    add_rule(c_, file_, n, name, model, left, right, n);
+    if (const auto ex = n["examples"]) examples(name, ex);
+    if (const auto vs = n["variants"]) {
+      // Broken (or alternative) variants: the base rule with arcs removed
+      // or added, each with its own verdict.
+      yaml::expect_sequence(file_, vs, "variants");
+      for (const auto& v : vs) {
+        yaml::expect_map(file_, v, "variant");
+        yaml::allow_keys(file_, v, {"name", "note", "verdict", "remove", "add", "nodes", "labels", "parameters", "instantiation", "embeddings"});
+        const auto vname = name + "/" + yaml::as_string(file_, yaml::require(file_, v, "name"), "variant name");
+        const auto* base_rule = c_.find_rule(name);
+        const std::optional<RuleTerms> base_terms = base_rule->terms;
+        add_rule(c_, file_, v, vname, model, edit_side(file_, left, v, "left"), edit_side(file_, right, v, "right"), n, base_terms ? &*base_terms : nullptr);
+      }
+    }
+  }
+
+  // One error as itself, several as InputErrors.
+  void throw_errors() {
+    if (errors_.size() == 1) throw errors_.front();
+    if (!errors_.empty()) {
+      const bool stopped = errors_.size() >= max_errors;
+      throw InputErrors(std::move(errors_), stopped);
+    }
+  }
+
+ private:
+  static constexpr std::size_t max_errors = 20;
+
+  Model model_of(const YAML::Node& n) const {
+    if (n["model"]) return read_model(file_, n["model"], custom_);
+    if (!default_model_) fail_at(file_, n, "missing key 'model' (and the catalog sets no default model)");
+    return *default_model_;
+  }
+
+  // The examples of the rule just added, each naming a map of the catalog.
+  void examples(const std::string& name, const YAML::Node& ex) {
+    auto& base = c_.rules.back();
+    yaml::expect_sequence(file_, ex, "examples");
+    for (const auto& e : ex) {
+      base.examples.push_back(read_example(file_, e));
+      if (!c_.find_map(base.examples.back().map) && !failed_maps_.count(base.examples.back().map))
+        fail_at(file_, e["map"], fmt::format("example of rule '{}': no map named '{}' under 'maps'", name, base.examples.back().map));
+      if (const auto& iso = base.examples.back().isomorphic_to; !iso.empty() && !c_.find_map(iso))
+        fail_at(file_, e["isomorphic-to"], fmt::format("example of rule '{}': isomorphic-to names '{}', which is not under 'maps'", name, iso));
+    }
+  }
+
+  const std::string& file_;
+  Catalog& c_;
+  std::vector<Model> custom_;
+  std::optional<Model> default_model_;
+  std::vector<InputError> errors_;
+  std::set<std::string> failed_maps_;  // their examples' "no map named" would only repeat the error
+};
+
+}  // namespace
+
 static Catalog read_yaml_catalog(const std::string& file) {
   const YAML::Node root = load_yaml_file(file);
   Catalog c;
@@ -370,138 +521,18 @@ static Catalog read_yaml_catalog(const std::string& file) {
   if (!root.IsMap()) throw InputError(file, 1, 1, "a catalog is a mapping with keys models, maps, rules");
   yaml::allow_keys(file, root, {"models", "maps", "rules", "model", "description", "modeler", "embeddings", "skipped"});
   if (root["modeler"]) c.modeler = yaml::as_string(file, root["modeler"], "modeler");
-  if (const auto ebds = root["embeddings"]) {
-    // [{name, type, orbit: "<1,2,3>"}]
-    yaml::expect_sequence(file, ebds, "embeddings");
-    for (const auto& e : ebds) {
-      yaml::expect_map(file, e, "embedding");
-      yaml::allow_keys(file, e, {"name", "type", "orbit"});
-      EmbeddingDecl d{yaml::as_string(file, yaml::require(file, e, "name"), "embedding name"),
-                      e["type"] ? yaml::as_string(file, e["type"], "embedding type") : "",
-                      {},
-                      where(file, e)};
-      const auto orbit = yaml::require(file, e, "orbit");
-      try {
-        for (const auto& k : parse_orbit_type(yaml::as_string(file, orbit, "orbit type"))) {
-          if (!k) throw ValueError("an embedding's orbit type cannot contain '_'");
-          d.orbit.push_back(*k);
-        }
-      } catch (const ValueError& x) {
-        fail_at(file, orbit, fmt::format("embedding '{}': {}", d.name, x.what()));
-      }
-      // A Jerboa class (a modeler's export) has the reading the .jme gives it.
-      if (const auto t = jerboa_value_type(d.type) ? jerboa_value_type(d.type) : type_by_name(d.type)) c.signatures.push_back({d.name, *t, d.orbit});
-      c.embeddings.push_back(std::move(d));
-    }
-  }
-  if (const auto sk = root["skipped"]) {
-    // Rules an import could not represent: [{name, why}]
-    yaml::expect_sequence(file, sk, "skipped");
-    for (const auto& x : sk) {
-      yaml::expect_map(file, x, "skipped rule");
-      c.skipped.push_back({yaml::as_string(file, yaml::require(file, x, "name"), "name"), yaml::as_string(file, yaml::require(file, x, "why"), "why"),
-                           where(file, x)});
-    }
-  }
-
-  std::vector<Model> custom;
-  if (const auto models = root["models"]) {
-    yaml::expect_map(file, models, "models");
-    for (const auto& kv : models) custom.push_back(yaml::custom_model(file, kv.first.Scalar(), kv.second));
-  }
-  std::optional<Model> default_model;
-  if (root["model"]) default_model = read_model(file, root["model"], custom);
-  auto model_of = [&](const YAML::Node& n) {
-    if (n["model"]) return read_model(file, n["model"], custom);
-    if (!default_model) fail_at(file, n, "missing key 'model' (and the catalog sets no default model)");
-    return *default_model;
-  };
-
-  // Each map and each rule is read on its own: an error in one is kept and
-  // the next is read, up to `max_errors` (the rest of the file then unread).
-  constexpr std::size_t max_errors = 20;
-  std::vector<InputError> errors;
-  std::set<std::string> failed_maps;  // their examples' "no map named" would only repeat the error
-  auto each = [&](const auto& entry, const auto& read) {
-    if (errors.size() >= max_errors) return;
-    try {
-      read(entry);
-    } catch (const InputError& e) {
-      errors.push_back(e);
-    } catch (const YAML::Exception& e) {
-      errors.push_back(yaml_input_error(file, e));
-    }
-  };
+  if (const auto ebds = root["embeddings"]) read_embedding_decls(file, ebds, c);
+  if (const auto sk = root["skipped"]) read_skipped(file, sk, c);
+  EntryReader entries(file, root, c);
   if (const auto maps = root["maps"]) {
     yaml::expect_map(file, maps, "maps");
-    for (const auto& entry : maps) each(entry, [&](const auto& kv) {
-      failed_maps.insert(kv.first.Scalar());
-      const YAML::Node& n = kv.second;
-      yaml::expect_map(file, n, "map");
-      yaml::allow_keys(file, n, {"model", "darts", "links", "pred", "shape", "file"});
-      MapSource m{kv.first.Scalar(), model_of(n), std::nullopt, {}, {}, where(file, kv.first)};
-      if (c.find_map(m.name)) fail_at(file, kv.first, fmt::format("map '{}' is declared twice", m.name));
-      const int forms = (n["darts"] ? 1 : 0) + (n["shape"] ? 1 : 0) + (n["file"] ? 1 : 0);
-      if (forms != 1) fail_at(file, n, "a map needs exactly one of 'darts' + 'links', 'shape', 'file'");
-      if (n["shape"]) m.shape = yaml::as_string(file, n["shape"], "shape");
-      if (n["file"]) {
-        m.mesh = yaml::as_string(file, n["file"], "file");
-        if (!m.mesh.empty() && m.mesh.front() != '/') {
-          const auto slash = file.rfind('/');
-          if (slash != std::string::npos) m.mesh = file.substr(0, slash + 1) + m.mesh;
-        }
-      }
-      if (n["darts"]) m.map = read_map_links(file, n, m.model);
-      failed_maps.erase(m.name);
-      c.maps.push_back(std::move(m));
-    });
+    for (const auto& kv : maps) entries.each(kv, [&](const auto& e) { entries.map(e.first, e.second); });
   }
-
   if (const auto rules = root["rules"]) {
     yaml::expect_sequence(file, rules, "rules");
-    for (const auto& entry : rules) each(entry, [&](const YAML::Node& n) {
-      yaml::expect_map(file, n, "rule");
-      yaml::allow_keys(file, n,
-                       {"name", "model", "note", "hooks", "left", "right", "examples", "verdict", "variants", "expressions", "caveats", "labels",
-                        "parameters", "instantiation", "embeddings"});
-      const auto name = yaml::as_string(file, yaml::require(file, n, "name"), "name");
-      const Model model = model_of(n);
-      const auto left = yaml::require(file, n, "left"), right = yaml::require(file, n, "right");
-      yaml::expect_map(file, left, "left");
-      yaml::expect_map(file, right, "right");
-      add_rule(c, file, n, name, model, left, right, n);
-      auto& base = c.rules.back();
-      if (const auto ex = n["examples"]) {
-        yaml::expect_sequence(file, ex, "examples");
-        for (const auto& e : ex) {
-          base.examples.push_back(read_example(file, e));
-          if (!c.find_map(base.examples.back().map) && !failed_maps.count(base.examples.back().map))
-            fail_at(file, e["map"], fmt::format("example of rule '{}': no map named '{}' under 'maps'", name, base.examples.back().map));
-          if (const auto& iso = base.examples.back().isomorphic_to; !iso.empty() && !c.find_map(iso))
-            fail_at(file, e["isomorphic-to"], fmt::format("example of rule '{}': isomorphic-to names '{}', which is not under 'maps'", name, iso));
-        }
-      }
-      if (const auto vs = n["variants"]) {
-        // Broken (or alternative) variants: the base rule with arcs removed
-        // or added, each with its own verdict.
-        yaml::expect_sequence(file, vs, "variants");
-        for (const auto& v : vs) {
-          yaml::expect_map(file, v, "variant");
-          yaml::allow_keys(file, v, {"name", "note", "verdict", "remove", "add", "nodes", "labels", "parameters", "instantiation", "embeddings"});
-          const auto vname = name + "/" + yaml::as_string(file, yaml::require(file, v, "name"), "variant name");
-          const auto* base_rule = c.find_rule(name);
-          const std::optional<RuleTerms> base_terms = base_rule->terms;
-          add_rule(c, file, v, vname, model, edit_side(file, left, v, "left"), edit_side(file, right, v, "right"), n,
-                   base_terms ? &*base_terms : nullptr);
-        }
-      }
-    });
+    for (const auto& n : rules) entries.each(n, [&](const YAML::Node& e) { entries.rule(e); });
   }
-  if (errors.size() == 1) throw errors.front();
-  if (!errors.empty()) {
-    const bool stopped = errors.size() >= max_errors;
-    throw InputErrors(std::move(errors), stopped);
-  }
+  entries.throw_errors();
   return c;
 }
 
