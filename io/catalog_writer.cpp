@@ -105,14 +105,8 @@ void write_terms(YAML::Emitter& y, const RuleTerms& t) {
   y << YAML::Key << "instantiation" << YAML::Value << (t.instantiation == Instantiation::extended ? "extended" : "direct");
 }
 
-}  // namespace
-
-std::string catalog_yaml(const Catalog& c, const std::string& description) {
-  YAML::Emitter y;
-  y << YAML::BeginMap;
-  if (!c.modeler.empty()) y << YAML::Key << "modeler" << YAML::Value << c.modeler;
-  y << YAML::Key << "description" << YAML::Value << (description.empty() ? fmt::format("converted by dartcheck from {}", c.file) : description);
-  // Models that are not presets are declared, so the catalog reads back.
+// Models that are not presets are declared, so the catalog reads back.
+void write_custom_models(YAML::Emitter& y, const Catalog& c) {
   std::vector<const Model*> models, custom;
   for (const auto& r : c.rules) models.push_back(&r.rule.model());
   for (const auto& m : c.maps)
@@ -123,39 +117,42 @@ std::string catalog_yaml(const Catalog& c, const std::string& description) {
     if ((!preset || !(*preset == m)) && std::none_of(custom.begin(), custom.end(), [&](const Model* x) { return x->name == m.name; }))
       custom.push_back(&m);
   }
-  if (!custom.empty()) {
-    y << YAML::Key << "models" << YAML::Value << YAML::BeginMap;
-    for (const Model* m : custom) {
-      const auto dims_of = [&](DimSet s) {
-        std::vector<Dim> out;
-        for (Dim i : m->dims)
-          if (has_dim(s, i)) out.push_back(i);
-        return out;
-      };
-      y << YAML::Key << m->name << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "dims" << YAML::Value << m->dims << YAML::Key
-        << "non_oriented" << YAML::Value << dims_of(m->non_oriented) << YAML::Key << "exchangeable" << YAML::Value << YAML::BeginSeq;
-      for (const auto& [i, j] : m->exchangeable) y << YAML::Flow << YAML::BeginSeq << i << j << YAML::EndSeq;
-      y << YAML::EndSeq;
-      if (m->partial) y << YAML::Key << "partial" << YAML::Value << dims_of(m->partial);
-      if (m->loop_free) y << YAML::Key << "loop_free" << YAML::Value << true;
-      y << YAML::EndMap;
+  if (custom.empty()) return;
+  y << YAML::Key << "models" << YAML::Value << YAML::BeginMap;
+  for (const Model* m : custom) {
+    const auto dims_of = [&](DimSet s) {
+      std::vector<Dim> out;
+      for (Dim i : m->dims)
+        if (has_dim(s, i)) out.push_back(i);
+      return out;
+    };
+    y << YAML::Key << m->name << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "dims" << YAML::Value << m->dims << YAML::Key
+      << "non_oriented" << YAML::Value << dims_of(m->non_oriented) << YAML::Key << "exchangeable" << YAML::Value << YAML::BeginSeq;
+    for (const auto& [i, j] : m->exchangeable) y << YAML::Flow << YAML::BeginSeq << i << j << YAML::EndSeq;
+    y << YAML::EndSeq;
+    if (m->partial) y << YAML::Key << "partial" << YAML::Value << dims_of(m->partial);
+    if (m->loop_free) y << YAML::Key << "loop_free" << YAML::Value << true;
+    y << YAML::EndMap;
+  }
+  y << YAML::EndMap;
+}
+
+// The maps given by their links (shapes and mesh files are not written).
+void write_maps(YAML::Emitter& y, const Catalog& c) {
+  if (std::none_of(c.maps.begin(), c.maps.end(), [](const MapSource& m) { return m.map.has_value(); })) return;
+  y << YAML::Key << "maps" << YAML::Value << YAML::BeginMap;
+  for (const auto& m : c.maps)
+    if (m.map) {
+      // A map file names a custom model in full; in a catalog the
+      // `models` section above declares it, and maps name it.
+      YAML::Node node = YAML::Load(map_to_yaml(*m.map));
+      node["model"] = m.map->model().name;
+      y << YAML::Key << m.name << YAML::Value << node;
     }
-    y << YAML::EndMap;
-  }
-  bool explicit_maps = false;
-  for (const auto& m : c.maps) explicit_maps |= m.map.has_value();
-  if (explicit_maps) {
-    y << YAML::Key << "maps" << YAML::Value << YAML::BeginMap;
-    for (const auto& m : c.maps)
-      if (m.map) {
-        // A map file names a custom model in full; in a catalog the
-        // `models` section above declares it, and maps name it.
-        YAML::Node node = YAML::Load(map_to_yaml(*m.map));
-        node["model"] = m.map->model().name;
-        y << YAML::Key << m.name << YAML::Value << node;
-      }
-    y << YAML::EndMap;
-  }
+  y << YAML::EndMap;
+}
+
+void write_embeddings_and_skipped(YAML::Emitter& y, const Catalog& c) {
   if (!c.embeddings.empty()) {
     y << YAML::Key << "embeddings" << YAML::Value << YAML::BeginSeq;
     for (const auto& e : c.embeddings)
@@ -169,69 +166,88 @@ std::string catalog_yaml(const Catalog& c, const std::string& description) {
       y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << s.name << YAML::Key << "why" << YAML::Value << s.why << YAML::EndMap;
     y << YAML::EndSeq;
   }
-  y << YAML::Key << "rules" << YAML::Value << YAML::BeginSeq;
-  for (const auto& r : c.rules) {
-    const Rule& rule = r.rule;
-    y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << rule.name() << YAML::Key << "model" << YAML::Value << rule.model().name;
-    if (!r.note.empty()) y << YAML::Key << "note" << YAML::Value << r.note;
-    if (r.expected_failures) {
-      y << YAML::Key << "verdict" << YAML::Value;
-      if (r.expected_failures->empty()) {
-        y << "consistent";
-      } else {
-        y << YAML::Flow << YAML::BeginSeq;
-        for (const auto& f : *r.expected_failures) y << YAML::DoubleQuoted << f;
-        y << YAML::EndSeq;
-      }
-    }
-    if (!rule.hooks().empty()) {
-      y << YAML::Key << "hooks" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-      for (NodeId h : rule.hooks()) y << rule.left().name(h);
-      y << YAML::EndSeq;
-    }
-    y << YAML::Key << "left" << YAML::Value;
-    side(y, rule.left(), r.words.left, r.jerboa ? &r.jerboa->left : nullptr, rule.model());
-    y << YAML::Key << "right" << YAML::Value;
-    side(y, rule.right(), r.words.right, r.jerboa ? &r.jerboa->right : nullptr, rule.model());
-    if (!r.expressions.empty()) {
-      y << YAML::Key << "expressions" << YAML::Value << YAML::BeginMap;
-      // Grouped by node, in the order the nodes first carry one.
-      std::vector<std::string> nodes;
-      for (const auto& x : r.expressions)
-        if (std::find(nodes.begin(), nodes.end(), x.node) == nodes.end()) nodes.push_back(x.node);
-      for (const auto& n : nodes) {
-        y << YAML::Key << n << YAML::Value << YAML::BeginMap;
-        for (const auto& x : r.expressions)
-          if (x.node == n) y << YAML::Key << x.embedding << YAML::Value << YAML::DoubleQuoted << x.code;
-        y << YAML::EndMap;
-      }
-      y << YAML::EndMap;
-    }
-    if (r.terms && !r.expressions.empty()) write_terms(y, *r.terms);
-    if (!r.examples.empty()) {
-      y << YAML::Key << "examples" << YAML::Value << YAML::BeginSeq;
-      for (const auto& e : r.examples) {
-        y << YAML::Flow << YAML::BeginMap << YAML::Key << "map" << YAML::Value << e.map << YAML::Key << "hooks" << YAML::Value << YAML::Flow
-          << YAML::BeginSeq;
-        for (Dart h : e.hooks) y << h;
-        y << YAML::EndSeq << YAML::Key << "expect" << YAML::Value << e.expect;
-        if (e.cells) {
-          y << YAML::Key << "cells" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-          for (auto x : *e.cells) y << x;
-          y << YAML::EndSeq;
-        }
-        if (!e.isomorphic_to.empty()) y << YAML::Key << "isomorphic-to" << YAML::Value << e.isomorphic_to;
-        y << YAML::EndMap;
-      }
-      y << YAML::EndSeq;
-    }
-    if (!r.caveats.empty()) {
-      y << YAML::Key << "caveats" << YAML::Value << YAML::BeginSeq;
-      for (const auto& x : r.caveats) y << x;
-      y << YAML::EndSeq;
-    }
+}
+
+// A Jerboa rule's expressions, grouped by node in the order the nodes
+// first carry one.
+void write_expressions(YAML::Emitter& y, const std::vector<NodeExpression>& expressions) {
+  y << YAML::Key << "expressions" << YAML::Value << YAML::BeginMap;
+  std::vector<std::string> nodes;
+  for (const auto& x : expressions)
+    if (std::find(nodes.begin(), nodes.end(), x.node) == nodes.end()) nodes.push_back(x.node);
+  for (const auto& n : nodes) {
+    y << YAML::Key << n << YAML::Value << YAML::BeginMap;
+    for (const auto& x : expressions)
+      if (x.node == n) y << YAML::Key << x.embedding << YAML::Value << YAML::DoubleQuoted << x.code;
     y << YAML::EndMap;
   }
+  y << YAML::EndMap;
+}
+
+void write_examples(YAML::Emitter& y, const std::vector<Example>& examples) {
+  y << YAML::Key << "examples" << YAML::Value << YAML::BeginSeq;
+  for (const auto& e : examples) {
+    y << YAML::Flow << YAML::BeginMap << YAML::Key << "map" << YAML::Value << e.map << YAML::Key << "hooks" << YAML::Value << YAML::Flow
+      << YAML::BeginSeq;
+    for (Dart h : e.hooks) y << h;
+    y << YAML::EndSeq << YAML::Key << "expect" << YAML::Value << e.expect;
+    if (e.cells) {
+      y << YAML::Key << "cells" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+      for (auto x : *e.cells) y << x;
+      y << YAML::EndSeq;
+    }
+    if (!e.isomorphic_to.empty()) y << YAML::Key << "isomorphic-to" << YAML::Value << e.isomorphic_to;
+    y << YAML::EndMap;
+  }
+  y << YAML::EndSeq;
+}
+
+void write_rule(YAML::Emitter& y, const CatalogRule& r) {
+  const Rule& rule = r.rule;
+  y << YAML::BeginMap << YAML::Key << "name" << YAML::Value << rule.name() << YAML::Key << "model" << YAML::Value << rule.model().name;
+  if (!r.note.empty()) y << YAML::Key << "note" << YAML::Value << r.note;
+  if (r.expected_failures) {
+    y << YAML::Key << "verdict" << YAML::Value;
+    if (r.expected_failures->empty()) {
+      y << "consistent";
+    } else {
+      y << YAML::Flow << YAML::BeginSeq;
+      for (const auto& f : *r.expected_failures) y << YAML::DoubleQuoted << f;
+      y << YAML::EndSeq;
+    }
+  }
+  if (!rule.hooks().empty()) {
+    y << YAML::Key << "hooks" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (NodeId h : rule.hooks()) y << rule.left().name(h);
+    y << YAML::EndSeq;
+  }
+  y << YAML::Key << "left" << YAML::Value;
+  side(y, rule.left(), r.words.left, r.jerboa ? &r.jerboa->left : nullptr, rule.model());
+  y << YAML::Key << "right" << YAML::Value;
+  side(y, rule.right(), r.words.right, r.jerboa ? &r.jerboa->right : nullptr, rule.model());
+  if (!r.expressions.empty()) write_expressions(y, r.expressions);
+  if (r.terms && !r.expressions.empty()) write_terms(y, *r.terms);
+  if (!r.examples.empty()) write_examples(y, r.examples);
+  if (!r.caveats.empty()) {
+    y << YAML::Key << "caveats" << YAML::Value << YAML::BeginSeq;
+    for (const auto& x : r.caveats) y << x;
+    y << YAML::EndSeq;
+  }
+  y << YAML::EndMap;
+}
+
+}  // namespace
+
+std::string catalog_yaml(const Catalog& c, const std::string& description) {
+  YAML::Emitter y;
+  y << YAML::BeginMap;
+  if (!c.modeler.empty()) y << YAML::Key << "modeler" << YAML::Value << c.modeler;
+  y << YAML::Key << "description" << YAML::Value << (description.empty() ? fmt::format("converted by dartcheck from {}", c.file) : description);
+  write_custom_models(y, c);
+  write_maps(y, c);
+  write_embeddings_and_skipped(y, c);
+  y << YAML::Key << "rules" << YAML::Value << YAML::BeginSeq;
+  for (const auto& r : c.rules) write_rule(y, r);
   y << YAML::EndSeq << YAML::EndMap;
   return std::string(y.c_str()) + "\n";
 }

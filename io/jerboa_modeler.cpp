@@ -267,6 +267,71 @@ std::vector<std::string> caveats_of(const pugi::xml_node& rule) {
   return out;
 }
 
+// The rule's hooks: in the order of <paramstopo>, then any other HOOK node
+// of L; a HOOK on the right side, or a <paramtopo> naming no HOOK of L,
+// fails the file.
+std::vector<std::string> rule_hooks(const Positions& p, const pugi::xml_node& r, const JmeSide& left, const JmeSide& right) {
+  std::vector<std::string> hooks;
+  for (const auto& t : r.child("paramstopo").children("paramtopo")) {
+    const std::string h = t.attribute("name").value();
+    const JmeNode* n = left.find(h);
+    if (!n) p.fail(t, fmt::format("<paramtopo> names '{}', which is not a node of <left>", h));
+    if (!n->hook) p.fail(t, fmt::format("<paramtopo> names '{}', which is not a HOOK node", h));
+    hooks.push_back(h);
+  }
+  for (const auto& n : left.nodes)
+    if (n.hook && std::find(hooks.begin(), hooks.end(), n.name) == hooks.end()) hooks.push_back(n.name);
+  for (const auto& n : right.nodes)
+    if (n.hook) p.fail(n.xml, fmt::format("node '{}' of <right> is a HOOK: hooks belong to the left side", n.name));
+  return hooks;
+}
+
+// One <expr> of a right node: its Java, and the term it reads as or why it
+// is opaque (docs/jerboa-expressions.md); Java that is not Java fails the
+// file at its position.
+NodeExpression read_expression(const Positions& p, const std::string& raw, const ModelerScope& ms, const JerboaScope& scope, const std::string& rule,
+                               const JmeNode& n, const pugi::xml_node& e, const EmbeddingDecl& decl) {
+  const std::string ebd = e.attribute("ebd").value();
+  const std::string code = e.child_value();
+  const auto first = code.find_first_not_of(" \t\r\n");
+  const std::size_t lead = first == std::string::npos ? 0 : first;
+  NodeExpression x{n.name, ebd, trimmed(code), p.at(e), std::nullopt, {}, {}};
+  const auto sig = std::find_if(ms.typed.begin(), ms.typed.end(), [&](const EmbeddingSignature& t) { return t.name == ebd; });
+  if (sig == ms.typed.end()) {
+    x.reason = fmt::format("the embedding {} has the Java class {}, whose values dartcheck does not read", ebd, decl.type);
+    x.reason_location = x.location;
+    return x;
+  }
+  try {
+    ReadExpression read = read_jerboa_expression(x.code, scope, sig->type);
+    x.term = std::move(read.term);
+    x.reason = std::move(read.reason);
+    x.reason_location = p.at(text_offset(raw, e, lead + read.offset));
+  } catch (const JerboaCodeError& err) {
+    const auto w = p.at(text_offset(raw, e, lead + err.offset()));
+    throw InputError(w.file, w.line, w.column, fmt::format("rule '{}', node '{}', expression for {}: {}", rule, n.name, ebd, err.what()));
+  }
+  return x;
+}
+
+// Every <expr> of the rule's nodes: the right side's read, the left
+// side's a caveat (Jerboa reads embeddings on the left).
+void read_expressions(const Catalog& c, const Positions& p, const std::string& raw, const ModelerScope& ms, const JerboaScope& scope, const JmeSide& left,
+                      const JmeSide& right, CatalogRule& cr) {
+  for (const auto* side : {&left, &right})
+    for (const auto& n : side->nodes)
+      for (const auto& e : n.xml.children("expr")) {
+        const std::string ebd = e.attribute("ebd").value();
+        const auto decl = std::find_if(c.embeddings.begin(), c.embeddings.end(), [&](const EmbeddingDecl& d) { return d.name == ebd; });
+        if (decl == c.embeddings.end())
+          p.fail(e, fmt::format("node '{}': <expr ebd=\"{}\">, but the modeler declares no embedding '{}'", n.name, ebd, ebd));
+        if (side == &left)
+          cr.caveats.push_back(fmt::format("expression for {} on node '{}' of the left side ignored (Jerboa reads embeddings on the left)", ebd, n.name));
+        else
+          cr.expressions.push_back(read_expression(p, raw, ms, scope, cr.rule.name(), n, e, *decl));
+      }
+}
+
 void read_rule(Catalog& c, const Positions& p, const std::string& raw, const ModelerScope& ms, const pugi::xml_node& r, const Model& model,
                int dimension) {
   const std::string name = r.attribute("name").value();
@@ -290,19 +355,7 @@ void read_rule(Catalog& c, const Positions& p, const std::string& raw, const Mod
   auto skip = [&](std::string why) { c.skipped.push_back({name, std::move(why), at}); };
   if (auto why = unrepresentable(r); !why.empty()) return skip(why);
 
-  // Hooks in the order of <paramstopo>, then any other HOOK node of L.
-  std::vector<std::string> hooks;
-  for (const auto& t : r.child("paramstopo").children("paramtopo")) {
-    const std::string h = t.attribute("name").value();
-    const JmeNode* n = left.find(h);
-    if (!n) p.fail(t, fmt::format("<paramtopo> names '{}', which is not a node of <left>", h));
-    if (!n->hook) p.fail(t, fmt::format("<paramtopo> names '{}', which is not a HOOK node", h));
-    hooks.push_back(h);
-  }
-  for (const auto& n : left.nodes)
-    if (n.hook && std::find(hooks.begin(), hooks.end(), n.name) == hooks.end()) hooks.push_back(n.name);
-  for (const auto& n : right.nodes)
-    if (n.hook) p.fail(n.xml, fmt::format("node '{}' of <right> is a HOOK: hooks belong to the left side", n.name));
+  const std::vector<std::string> hooks = rule_hooks(p, r, left, right);
   if (hooks.empty() && !left.nodes.empty()) return skip("the left side has nodes but no hook: Jerboa needs one hook per connected component of L");
 
   // The parameter orbit type is the first hook's label (000 Sec. 4.3.2).
@@ -354,39 +407,7 @@ void read_rule(Catalog& c, const Positions& p, const std::string& raw, const Mod
   JerboaScope scope{&cr.rule.model(), ms.typed, {}, {}, {}};
   for (const auto& n : left.nodes) scope.nodes.push_back(n.name);
   read_parameters(r, scope, cr.caveats);
-  for (const auto* side : {&left, &right})
-    for (const auto& n : side->nodes)
-      for (const auto& e : n.xml.children("expr")) {
-        const std::string ebd = e.attribute("ebd").value();
-        const auto decl = std::find_if(c.embeddings.begin(), c.embeddings.end(), [&](const EmbeddingDecl& d) { return d.name == ebd; });
-        if (decl == c.embeddings.end())
-          p.fail(e, fmt::format("node '{}': <expr ebd=\"{}\">, but the modeler declares no embedding '{}'", n.name, ebd, ebd));
-        if (side == &left) {
-          cr.caveats.push_back(
-              fmt::format("expression for {} on node '{}' of the left side ignored (Jerboa reads embeddings on the left)", ebd, n.name));
-          continue;
-        }
-        const std::string code = e.child_value();
-        const auto first = code.find_first_not_of(" \t\r\n");
-        const std::size_t lead = first == std::string::npos ? 0 : first;
-        NodeExpression x{n.name, ebd, trimmed(code), p.at(e), std::nullopt, {}, {}};
-        const auto sig = std::find_if(ms.typed.begin(), ms.typed.end(), [&](const EmbeddingSignature& t) { return t.name == ebd; });
-        if (sig == ms.typed.end()) {
-          x.reason = fmt::format("the embedding {} has the Java class {}, whose values dartcheck does not read", ebd, decl->type);
-          x.reason_location = x.location;
-        } else {
-          try {
-            ReadExpression read = read_jerboa_expression(x.code, scope, sig->type);
-            x.term = std::move(read.term);
-            x.reason = std::move(read.reason);
-            x.reason_location = p.at(text_offset(raw, e, lead + read.offset));
-          } catch (const JerboaCodeError& err) {
-            const auto w = p.at(text_offset(raw, e, lead + err.offset()));
-            throw InputError(w.file, w.line, w.column, fmt::format("rule '{}', node '{}', expression for {}: {}", name, n.name, ebd, err.what()));
-          }
-        }
-        cr.expressions.push_back(std::move(x));
-      }
+  read_expressions(c, p, raw, ms, scope, left, right, cr);
   // A rule whose every expression is read, on a modeler whose every
   // embedding is typed, is checked, applied and compiled with its terms.
   const bool all_read = std::all_of(cr.expressions.begin(), cr.expressions.end(), [](const NodeExpression& x) { return x.read(); });
