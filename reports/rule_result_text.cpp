@@ -344,9 +344,12 @@ std::string condition_cell(const RuleVerdict& v, RuleCondition kind) {
   return skipped ? "skipped" : "ok";
 }
 
-std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& results, std::size_t baseline_mismatches, const TableOptions& o) {
-  std::string out;
-  const bool colour = terminal().color_stdout;
+namespace {
+
+// The table's cells and column widths, fitted to the terminal: the
+// verdict column keeps at least 20 columns (a longer verdict wraps under
+// itself); the names give up the rest.
+CheckColumns check_columns(const Catalog& catalog, const std::vector<RuleResult>& results, std::size_t width) {
   CheckColumns t;
   t.embedded = !catalog.embeddings.empty();
   for (const auto& r : results) {
@@ -362,13 +365,95 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
     t.verdict = std::max(t.verdict, columns(t.verdicts.back()));
     for (std::size_t c = 0; c < 5; ++c) t.cell[c] = std::max(t.cell[c], columns(t.cells.back()[c]));
   }
-  const std::size_t width = terminal().width;
-  // The verdict column keeps at least 20 columns (a longer verdict wraps
-  // under itself); the names give up the rest.
   const std::size_t verdict_room = std::min<std::size_t>(t.verdict, 20);
   t.compact = 12 + t.fixed() + verdict_room > width;
   if (t.name + t.fixed() + verdict_room > width)
     t.name = std::max<std::size_t>(12, width > t.fixed() + verdict_room ? width - t.fixed() - verdict_room : 0);
+  return t;
+}
+
+// What follows a rule's row: a differing verdict, caveats, expressions,
+// the confirmation, the solver, and with --explain the witnesses.
+std::string rule_notes(const RuleResult& r, const TableOptions& o, std::size_t indent, bool colour) {
+  std::string out;
+  const auto& v = r.verdict;
+  if (!r.matches_record())
+    out += paint(row_note(indent, r.first_run_finding() && r.mismatches.size() == 1
+                                      ? fmt::format("no verdict recorded in the {}: see stderr", r.record_source_name())
+                                      : fmt::format("differs from the {}: see stderr", r.record_source_name())),
+                 Tone::error, colour);
+  for (const auto& caveat : r.entry->caveats) out += row_note(indent, "note: " + printable(caveat));
+  for (const auto& x : r.entry->expressions) {
+    if (!x.read())
+      out += row_note(indent, printable(fmt::format("opaque: {}.{}: {} ({})", x.node, x.embedding, x.reason, x.reason_location.str())));
+    else if (o.explain)
+      out += row_note(indent, printable(fmt::format("read: {}.{} = {}", x.node, x.embedding, x.term->str())));
+  }
+  if (r.host_search || r.scheme_search) out += row_note(indent, r.confirmation_text());
+  for (const auto& line : r.solver_lines()) out += row_note(indent, printable(line));
+  if (o.explain && !r.failures.empty()) {
+    for (const auto& cond : v.conditions) {
+      if (cond.holds) continue;
+      for (const auto& w : cond.witnesses)
+        out += row_note(indent + 2, fmt::format("{}{}: {}", cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
+                                                printable(w.text)));
+    }
+    for (const auto& e : r.embedding)
+      for (const auto& w : e.witnesses)
+        out += row_note(indent + 2, fmt::format("{}{}: {}", e.name, e.required ? "" : " (not required)", printable(w.text)));
+    if (r.scheme_search && r.scheme_search->counterexample) {
+      out += row_note(indent + 2, fmt::format("host: {}", printable(r.scheme_search->counterexample->origin)));
+      // A command to paste, never wrapped: the same search, written out.
+      out += fmt::format("{:{}}to write it with the match, H and a replay command, run: {}\n", "", indent + 2,
+                         printable(fmt::format("dartcheck fuzz {} --rule {} --seed 1{} -o DIR", shell_quote(o.catalog), shell_quote(r.name()),
+                                               fuzz_search_options(scheme_confirmation_runs, scheme_confirmation_darts, 0, {}))));
+    }
+    if (r.host_search && r.host_search->host) {
+      out += row_note(indent + 2, "host G: " + printable(arcs_text(*r.host_search->host)));
+      out += row_note(indent + 2, "result H: " + printable(arcs_text(*r.host_search->result)));
+    }
+  }
+  return out;
+}
+
+// After the rows: the rules not checked, the embeddings' note, the
+// expressions read, and the one summary line.
+std::string check_summary(const Catalog& catalog, const std::vector<RuleResult>& results, std::size_t baseline_mismatches, const CheckColumns& t) {
+  std::string out;
+  const bool whole_catalog = results.size() == catalog.rules.size();
+  if (whole_catalog)
+    for (const auto& sk : catalog.skipped)
+      out += printable(fmt::format("{}  not checked ({}): {}", padded(sk.name, t.name), sk.location.str(), sk.why)) + "\n";
+  // Jerboa's expressions: how many were read as terms (docs/jerboa-expressions.md).
+  std::size_t read = 0, opaque = 0;
+  for (const auto& r : catalog.rules)
+    for (const auto& x : r.expressions) ++(x.read() ? read : opaque);
+  if (t.embedded) {
+    out += '\n';
+    out += row_note(0, fmt::format("embeddings: {}{}", sufficiency_note,
+                                   opaque ? "; a rule with an opaque expression gets Jerboa's presence checks, its expressions compared as text" : ""));
+  }
+  if (read + opaque)
+    out += fmt::format("\n{}: {} expressions read, {} opaque\n", catalog.modeler.empty() ? catalog.file : catalog.modeler, read, opaque);
+  const auto counts = count_results(results);
+  const std::size_t mismatches = changed_verdicts(results) + baseline_mismatches;
+  const std::string_view source = results.empty() ? "catalog" : results.front().record_source_name();
+  // The summary stays on one line, for the logs that grep it.
+  out += fmt::format("\n{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}{}\n", plural(counts.rules, "rule", "rules"),
+                     counts.consistent, counts.failing,
+                     catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
+                     plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source,
+                     counts.first_run_findings ? fmt::format(", {} with none recorded", counts.first_run_findings) : std::string());
+  return out;
+}
+
+}  // namespace
+
+std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& results, std::size_t baseline_mismatches, const TableOptions& o) {
+  std::string out;
+  const bool colour = terminal().color_stdout;
+  const std::size_t width = terminal().width;
+  CheckColumns t = check_columns(catalog, results, width);
   const std::size_t indent = t.name + 2;
   if (!catalog.modeler.empty()) {
     std::vector<std::string> e;
@@ -396,73 +481,14 @@ std::string check_table(const Catalog& catalog, const std::vector<RuleResult>& r
   out += row("rule", "model", {"I", "dangling", "O", "C", "embeddings"}, "ms", "verdict", false);
   for (std::size_t k = 0; k < results.size(); ++k) {
     const auto& r = results[k];
-    const auto& v = r.verdict;
     const std::vector<std::string> verdict = verdict_lines(t.verdicts[k], r.failures.empty() ? Tone::good : Tone::warning);
     const bool own_line = columns(t.names[k]) > t.name;
     if (own_line) out += t.names[k] + "\n";
     out += row(own_line ? "" : t.names[k], t.models[k], t.cells[k], fmt::format("{:.2f}", r.static_ms), verdict.front(), true);
     for (std::size_t l = 1; l < verdict.size(); ++l) out += std::string(t.name + t.fixed(), ' ') + verdict[l] + "\n";
-    if (!r.matches_record())
-      out += paint(row_note(indent, r.first_run_finding() && r.mismatches.size() == 1
-                                        ? fmt::format("no verdict recorded in the {}: see stderr", r.record_source_name())
-                                        : fmt::format("differs from the {}: see stderr", r.record_source_name())),
-                   Tone::error, colour);
-    for (const auto& caveat : r.entry->caveats) out += row_note(indent, "note: " + printable(caveat));
-    for (const auto& x : r.entry->expressions) {
-      if (!x.read())
-        out += row_note(indent, printable(fmt::format("opaque: {}.{}: {} ({})", x.node, x.embedding, x.reason, x.reason_location.str())));
-      else if (o.explain)
-        out += row_note(indent, printable(fmt::format("read: {}.{} = {}", x.node, x.embedding, x.term->str())));
-    }
-    if (r.host_search || r.scheme_search) out += row_note(indent, r.confirmation_text());
-    for (const auto& line : r.solver_lines()) out += row_note(indent, printable(line));
-    if (o.explain && !r.failures.empty()) {
-      for (const auto& cond : v.conditions) {
-        if (cond.holds) continue;
-        for (const auto& w : cond.witnesses)
-          out += row_note(indent + 2, fmt::format("{}{}: {}", cond.name(), w.subcondition ? fmt::format(" sub-condition {}", w.subcondition) : "",
-                                                  printable(w.text)));
-      }
-      for (const auto& e : r.embedding)
-        for (const auto& w : e.witnesses)
-          out += row_note(indent + 2, fmt::format("{}{}: {}", e.name, e.required ? "" : " (not required)", printable(w.text)));
-      if (r.scheme_search && r.scheme_search->counterexample) {
-        out += row_note(indent + 2, fmt::format("host: {}", printable(r.scheme_search->counterexample->origin)));
-        // A command to paste, never wrapped: the same search, written out.
-        out += fmt::format("{:{}}to write it with the match, H and a replay command, run: {}\n", "", indent + 2,
-                           printable(fmt::format("dartcheck fuzz {} --rule {} --seed 1{} -o DIR", shell_quote(o.catalog), shell_quote(r.name()),
-                                                 fuzz_search_options(scheme_confirmation_runs, scheme_confirmation_darts, 0, {}))));
-      }
-      if (r.host_search && r.host_search->host) {
-        out += row_note(indent + 2, "host G: " + printable(arcs_text(*r.host_search->host)));
-        out += row_note(indent + 2, "result H: " + printable(arcs_text(*r.host_search->result)));
-      }
-    }
+    out += rule_notes(r, o, indent, colour);
   }
-  const bool whole_catalog = results.size() == catalog.rules.size();
-  if (whole_catalog)
-    for (const auto& sk : catalog.skipped)
-      out += printable(fmt::format("{}  not checked ({}): {}", padded(sk.name, t.name), sk.location.str(), sk.why)) + "\n";
-  // Jerboa's expressions: how many were read as terms (docs/jerboa-expressions.md).
-  std::size_t read = 0, opaque = 0;
-  for (const auto& r : catalog.rules)
-    for (const auto& x : r.expressions) ++(x.read() ? read : opaque);
-  if (t.embedded) {
-    out += '\n';
-    out += row_note(0, fmt::format("embeddings: {}{}", sufficiency_note,
-                                   opaque ? "; a rule with an opaque expression gets Jerboa's presence checks, its expressions compared as text" : ""));
-  }
-  if (read + opaque)
-    out += fmt::format("\n{}: {} expressions read, {} opaque\n", catalog.modeler.empty() ? catalog.file : catalog.modeler, read, opaque);
-  const auto counts = count_results(results);
-  const std::size_t mismatches = changed_verdicts(results) + baseline_mismatches;
-  const std::string_view source = results.empty() ? "catalog" : results.front().record_source_name();
-  // The summary stays on one line, for the logs that grep it.
-  out += fmt::format("\n{}, {} consistent, {} with failing conditions{}; {} differ{} from the {}{}\n", plural(counts.rules, "rule", "rules"),
-                     counts.consistent, counts.failing,
-                     catalog.skipped.empty() || !whole_catalog ? "" : fmt::format(", {} not checked", catalog.skipped.size()),
-                     plural(mismatches, "verdict", "verdicts"), mismatches == 1 ? "s" : "", source,
-                     counts.first_run_findings ? fmt::format(", {} with none recorded", counts.first_run_findings) : std::string());
+  out += check_summary(catalog, results, baseline_mismatches, t);
   return out;
 }
 
