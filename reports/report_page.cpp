@@ -300,29 +300,9 @@ std::string events_table(const Operation& op) {
          "</table>\n";
 }
 
-}  // namespace
-
-std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
-  const auto& e = *r.entry;
-  const std::string name = e.rule.name(), stem = file_stem(name);
-  std::string out = fmt::format("<h2 id=\"{}\">{}</h2>\n<p>{} on {}; {}:{}. L has {} nodes, R has {}.</p>\n", html_id(name), html_text(name),
-                                html_text(kind_of(e)), html_text(e.rule.model().name), html_text(e.location.file), e.location.line,
-                                e.rule.left().node_count(), e.rule.right().node_count());
-  if (!e.note.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_text(e.note));
-  out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(r.verdict_text()), html_text(r.recorded_text()),
-                     r.matches_record()      ? ""
-                     : r.first_run_finding() ? " <span class=\"mismatch\">(a finding: nothing recorded)</span>"
-                                             : " <span class=\"mismatch\">(MISMATCH)</span>");
-  if (const std::string c = r.confirmation_text(); !c.empty())
-    out += fmt::format("<p>Model-level confirmation (as check's): {}</p>\n", html_text(c));
-  auto embedded = embedding_picture(e, r.embedding);
-  auto witnesses = failed_witnesses(r.verdict);
-  witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
-  auto captions = failure_captions(r.verdict);
-  captions.insert(captions.end(), embedded.captions.begin(), embedded.captions.end());
-  out += pictures.add(rule_dot(e.rule, e.words, witnesses, labels_of(e), embedded.terms, captions), "rules/" + stem + ".svg");
-
-  // Every failing condition with its witnesses; skipped ones with the reason.
+// Every failing condition with its witnesses; skipped ones with the reason.
+std::string failing_html(const RuleResult& r) {
+  const std::string& name = r.name();
   std::string failing;
   for (const auto& c : r.verdict.conditions) {
     if (c.holds && c.skipped.empty()) continue;
@@ -344,73 +324,115 @@ std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
     for (const auto& w : c.witnesses) failing += fmt::format("<li>{}</li>\n", html_text(w.text));
     failing += "</ul></li>\n";
   }
-  if (!failing.empty()) out += "<h3>Conditions that fail</h3>\n<ul>\n" + failing + "</ul>\n";
-  if (!e.expressions.empty()) {
-    // Each expression's Java, and the term it was read as or why not
-    // (docs/jerboa-expressions.md).
-    out += "<h3>Embedding expressions</h3>\n<ul>\n";
-    for (const auto& x : e.expressions)
-      out += fmt::format("<li>{}.{}: <code>{}</code><br>{}</li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code),
-                         x.read() ? fmt::format("read as <code>{}</code>", html_text(x.term->str()))
-                                  : fmt::format("<b>opaque</b>: {} ({})", html_text(x.reason), html_text(x.reason_location.str())));
+  return failing.empty() ? std::string() : "<h3>Conditions that fail</h3>\n<ul>\n" + failing + "</ul>\n";
+}
+
+// Each expression's Java, and the term it was read as or why not
+// (docs/jerboa-expressions.md).
+std::string expressions_html(const std::vector<NodeExpression>& expressions) {
+  if (expressions.empty()) return "";
+  std::string out;
+  out += "<h3>Embedding expressions</h3>\n<ul>\n";
+  for (const auto& x : expressions)
+    out += fmt::format("<li>{}.{}: <code>{}</code><br>{}</li>\n", html_text(x.node), html_text(x.embedding), html_text(x.code),
+                       x.read() ? fmt::format("read as <code>{}</code>", html_text(x.term->str()))
+                                : fmt::format("<b>opaque</b>: {} ({})", html_text(x.reason), html_text(x.reason_location.str())));
+  out += "</ul>\n";
+  return out;
+}
+
+// The fuzz stage: its outcome, refusals, counterexample and event
+// contradiction.
+std::string fuzz_html(const RuleResult& r, Pictures& pictures) {
+  const std::string stem = file_stem(r.name());
+  std::string out;
+  const auto& f = *r.fuzz;
+  out += fmt::format("<h3>Fuzz</h3>\n<p>{}</p>\n", html_text(outcome_text(f)));
+  if (!f.refusals.empty()) {
+    std::vector<std::string> refused;
+    for (const auto& [why, n] : f.refusals) refused.push_back(fmt::format("{} {}", n, why));
+    out += fmt::format("<p class=\"note\">Refused matches: {}.</p>\n", html_text(fmt::format("{}", fmt::join(refused, ", "))));
+  }
+  if (f.counterexample)
+    out += counterexample_html(r, *f.counterexample, "Fuzz counterexample", r.fuzz_replay, pictures, "counterexamples/" + stem + ".fuzz.svg");
+  if (f.event_contradiction) {
+    const auto& cx = *f.event_contradiction;
+    out += fmt::format(
+        "<h4 class=\"bug\">Event analysis contradicted (a defect of dartcheck's event analysis, not of the rule)</h4>\n"
+        "<p>At hook{} {} of a {}-dart map ({}):</p>\n<ul>\n",
+        cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), html_text(cx.origin));
+    for (const auto& c : cx.event_contradictions) out += fmt::format("<li>{}</li>\n", html_text(c));
+    out += "</ul>\n";
+    if (!r.events_replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(r.events_replay));
+  }
+  return out;
+}
+
+// The solver stage: per constraint its answers and counterexample, per
+// embedding its refined verdict.
+std::string proof_html(const RuleResult& r, Pictures& pictures) {
+  const std::string stem = file_stem(r.name());
+  std::string out;
+  const auto& p = *r.proof;
+  out += "<h3>Prove (Z3)</h3>\n";
+  if (!p.out_of_scope.empty()) {
+    out += fmt::format("<p>Out of the solver's scope: {}</p>\n", html_text(p.out_of_scope));
+  } else {
+    out += "<table>\n<tr><th>constraint</th><th>static</th><th>theorem class</th><th>maps of the model</th><th>agreement</th><th>note</th></tr>\n";
+    for (const auto& c : p.constraints)
+      out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_text(c.constraint.name()),
+                         c.static_holds ? (*c.static_holds ? "holds" : "fails") : "-",
+                         html_text(c.theorem  ? answer_text(*c.theorem)
+                                   : p.scheme ? "(scheme: maps only)"
+                                              : "(no theorem)"),
+                         html_text(answer_text(c.model)), c.agreement == proofs::Agreement::disagree ? "bug" : "none", proofs::name_of(c.agreement),
+                         html_text(c.note));
+    out += "</table>\n";
+    for (std::size_t k = 0; k < p.constraints.size(); ++k)
+      if (r.proof_maps[k])
+        out += counterexample_html(r, *r.proof_maps[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
+                                   r.proof_replays[k], pictures, "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
+  }
+  // Embeddings: the refined verdict per embedding (docs/prove.md, Embeddings).
+  const auto lines = r.solver_lines();
+  if (!lines.empty()) {
+    out += "<ul>\n";
+    for (const auto& line : lines) out += fmt::format("<li>{}</li>\n", html_text(line));
+    for (const auto& replay : r.embedding_replays)
+      if (!replay.empty()) out += fmt::format("<li>Replay: <code>{}</code></li>\n", html_text(replay));
     out += "</ul>\n";
   }
+  return out;
+}
+
+}  // namespace
+
+std::string rule_section_html(const RuleResult& r, Pictures& pictures) {
+  const auto& e = *r.entry;
+  const std::string name = e.rule.name(), stem = file_stem(name);
+  std::string out = fmt::format("<h2 id=\"{}\">{}</h2>\n<p>{} on {}; {}:{}. L has {} nodes, R has {}.</p>\n", html_id(name), html_text(name),
+                                html_text(kind_of(e)), html_text(e.rule.model().name), html_text(e.location.file), e.location.line,
+                                e.rule.left().node_count(), e.rule.right().node_count());
+  if (!e.note.empty()) out += fmt::format("<p class=\"note\">{}</p>\n", html_text(e.note));
+  out += fmt::format("<p>Static verdict: <b>{}</b>; recorded: {}{}</p>\n", html_text(r.verdict_text()), html_text(r.recorded_text()),
+                     r.matches_record()      ? ""
+                     : r.first_run_finding() ? " <span class=\"mismatch\">(a finding: nothing recorded)</span>"
+                                             : " <span class=\"mismatch\">(MISMATCH)</span>");
+  if (const std::string c = r.confirmation_text(); !c.empty()) out += fmt::format("<p>Model-level confirmation (as check's): {}</p>\n", html_text(c));
+  auto embedded = embedding_picture(e, r.embedding);
+  auto witnesses = failed_witnesses(r.verdict);
+  witnesses.insert(witnesses.end(), embedded.witnesses.begin(), embedded.witnesses.end());
+  auto captions = failure_captions(r.verdict);
+  captions.insert(captions.end(), embedded.captions.begin(), embedded.captions.end());
+  out += pictures.add(rule_dot(e.rule, e.words, witnesses, labels_of(e), embedded.terms, captions), "rules/" + stem + ".svg");
+
+  out += failing_html(r);
+  out += expressions_html(e.expressions);
   for (const auto& caveat : e.caveats) out += fmt::format("<p class=\"note\">Not represented: {}</p>\n", html_text(caveat));
   out += events_table(e);
 
-  if (r.fuzz) {
-    const auto& f = *r.fuzz;
-    out += fmt::format("<h3>Fuzz</h3>\n<p>{}</p>\n", html_text(outcome_text(f)));
-    if (!f.refusals.empty()) {
-      std::vector<std::string> refused;
-      for (const auto& [why, n] : f.refusals) refused.push_back(fmt::format("{} {}", n, why));
-      out += fmt::format("<p class=\"note\">Refused matches: {}.</p>\n", html_text(fmt::format("{}", fmt::join(refused, ", "))));
-    }
-    if (f.counterexample)
-      out += counterexample_html(r, *f.counterexample, "Fuzz counterexample", r.fuzz_replay, pictures, "counterexamples/" + stem + ".fuzz.svg");
-    if (f.event_contradiction) {
-      const auto& cx = *f.event_contradiction;
-      out += fmt::format(
-          "<h4 class=\"bug\">Event analysis contradicted (a defect of dartcheck's event analysis, not of the rule)</h4>\n"
-          "<p>At hook{} {} of a {}-dart map ({}):</p>\n<ul>\n",
-          cx.hooks.size() > 1 ? "s" : "", fmt::join(cx.hooks, ","), cx.host.size(), html_text(cx.origin));
-      for (const auto& c : cx.event_contradictions) out += fmt::format("<li>{}</li>\n", html_text(c));
-      out += "</ul>\n";
-      if (!r.events_replay.empty()) out += fmt::format("<p>Replay: <code>{}</code></p>\n", html_text(r.events_replay));
-    }
-  }
-  if (r.proof) {
-    const auto& p = *r.proof;
-    out += "<h3>Prove (Z3)</h3>\n";
-    if (!p.out_of_scope.empty()) {
-      out += fmt::format("<p>Out of the solver's scope: {}</p>\n", html_text(p.out_of_scope));
-    } else {
-      out += "<table>\n<tr><th>constraint</th><th>static</th><th>theorem class</th><th>maps of the model</th><th>agreement</th><th>note</th></tr>\n";
-      for (const auto& c : p.constraints)
-        out += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n",
-                           html_text(c.constraint.name()), c.static_holds ? (*c.static_holds ? "holds" : "fails") : "-",
-                           html_text(c.theorem  ? answer_text(*c.theorem)
-                                     : p.scheme ? "(scheme: maps only)"
-                                                : "(no theorem)"),
-                           html_text(answer_text(c.model)), c.agreement == proofs::Agreement::disagree ? "bug" : "none", proofs::name_of(c.agreement),
-                           html_text(c.note));
-      out += "</table>\n";
-      for (std::size_t k = 0; k < p.constraints.size(); ++k)
-        if (r.proof_maps[k])
-          out +=
-              counterexample_html(r, *r.proof_maps[k], fmt::format("Solver counterexample for {}", p.constraints[k].constraint.name()),
-                                  r.proof_replays[k], pictures, "counterexamples/" + stem + ".prove." + constraint_stem(p.constraints[k]) + ".svg");
-    }
-    // Embeddings: the refined verdict per embedding (docs/prove.md, Embeddings).
-    const auto lines = r.solver_lines();
-    if (!lines.empty()) {
-      out += "<ul>\n";
-      for (const auto& line : lines) out += fmt::format("<li>{}</li>\n", html_text(line));
-      for (const auto& replay : r.embedding_replays)
-        if (!replay.empty()) out += fmt::format("<li>Replay: <code>{}</code></li>\n", html_text(replay));
-      out += "</ul>\n";
-    }
-  }
+  if (r.fuzz) out += fuzz_html(r, pictures);
+  if (r.proof) out += proof_html(r, pictures);
   return out;
 }
 
