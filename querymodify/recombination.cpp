@@ -274,6 +274,45 @@ void add_quads(const Corners& c, const Faces& faces, std::vector<std::array<std:
     }
 }
 
+// Merges the chosen hexes' and the cells' tetrahedra into volumes (the
+// vertex table follows the darts); each merge's renumbering shifts the
+// darts of later cells.
+void merge_cells(TetMap& mesh, const std::vector<Chosen>& chosen, Recombination& r, const Progress& progress) {
+  if (progress) progress("merging the cells' tetrahedra", 0, 0);
+  const auto t = Clock::now();
+  std::vector<Dart> where(mesh.map.size());
+  for (Dart d = 0; d < where.size(); ++d) where[d] = d;
+  std::vector<Dart> at(mesh.map.size());  // current dart -> original
+  for (Dart d = 0; d < at.size(); ++d) at[d] = d;
+  std::vector<std::span<const std::uint32_t>> merged;
+  for (const auto& h : chosen) merged.push_back(h.tets);
+  for (const auto& c : r.prisms.cells) merged.push_back(c.tets_of());
+  for (const auto& c : r.pyramids.cells) merged.push_back(c.tets_of());
+  for (const auto tets : merged) {
+    std::vector<Dart> darts;
+    for (auto x : tets)
+      for (Dart d = 12 * x; d < 12 * x + 12; ++d) darts.push_back(where[d]);
+    merge_volumes(mesh.map, darts).for_each_moved([&](Dart from, Dart to) {
+      const Dart original = at[from];
+      where[original] = to;
+      at[to] = original;
+      mesh.vertex[to] = mesh.vertex[from];
+    });
+  }
+  mesh.vertex.resize(mesh.map.size());
+  r.merge_seconds = since(t);
+}
+
+// For conforming contacts: the hexes placed, so that a prism or pyramid
+// only joins them face to face.
+std::optional<Placed> conforming_placement(const TetMap& mesh, const Recombination& r) {
+  std::uint32_t vertices = 0;
+  for (const auto& tet : mesh.tets) vertices = std::max(vertices, *std::max_element(tet.begin(), tet.end()) + 1);
+  std::optional<Placed> placed(std::in_place, vertices);
+  for (const auto& h : r.hex_corners) placed->add(h, hex_shape());
+  return placed;
+}
+
 }  // namespace
 
 Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Strategy strategy, const std::vector<std::array<double, 3>>* points,
@@ -299,12 +338,7 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   std::vector<std::array<std::uint32_t, 4>> quads;
   for (const auto& h : r.hex_corners) add_quads(h, hex_faces(), quads);
   std::optional<Placed> placed;
-  if (contacts == Contacts::conforming && (cells.prisms || cells.pyramids)) {
-    std::uint32_t vertices = 0;
-    for (const auto& tet : mesh.tets) vertices = std::max(vertices, *std::max_element(tet.begin(), tet.end()) + 1);
-    placed.emplace(vertices);
-    for (const auto& h : r.hex_corners) placed->add(h, hex_shape());
-  }
+  if (contacts == Contacts::conforming && (cells.prisms || cells.pyramids)) placed = conforming_placement(mesh, r);
   Placed* const conforming = placed ? &*placed : nullptr;
   std::vector<std::array<std::uint32_t, 4>> bases;  // the pyramids' bases (each also a quad of a hex or prism)
   // Pyramids on the quads so far that face two free tetrahedra with one
@@ -353,30 +387,7 @@ Recombination recombine(TetMap& mesh, const std::vector<HexQuery>& queries, Stra
   r.quads_facing_triangles = quads_facing_triangles(quads, faces);
   for (std::size_t k = 0; k < used.size(); ++k)
     if (!used[k]) r.remaining_tets.push_back(k);
-  if (progress) progress("merging the cells' tetrahedra", 0, 0);
-  const auto t = Clock::now();
-  // Merge the selected hexes; renumberings shift later hexes' darts.
-  std::vector<Dart> where(mesh.map.size());
-  for (Dart d = 0; d < where.size(); ++d) where[d] = d;
-  std::vector<Dart> at(mesh.map.size());  // current dart -> original
-  for (Dart d = 0; d < at.size(); ++d) at[d] = d;
-  std::vector<std::span<const std::uint32_t>> merged;
-  for (const auto& h : chosen) merged.push_back(h.tets);
-  for (const auto& c : r.prisms.cells) merged.push_back(c.tets_of());
-  for (const auto& c : r.pyramids.cells) merged.push_back(c.tets_of());
-  for (const auto tets : merged) {
-    std::vector<Dart> darts;
-    for (auto x : tets)
-      for (Dart d = 12 * x; d < 12 * x + 12; ++d) darts.push_back(where[d]);
-    merge_volumes(mesh.map, darts).for_each_moved([&](Dart from, Dart to) {
-      const Dart original = at[from];
-      where[original] = to;
-      at[to] = original;
-      mesh.vertex[to] = mesh.vertex[from];
-    });
-  }
-  mesh.vertex.resize(mesh.map.size());
-  r.merge_seconds = since(t);
+  merge_cells(mesh, chosen, r, progress);
   r.hexes = chosen.size();
   r.tets = r.remaining_tets.size();
   return r;

@@ -14,16 +14,11 @@ std::span<const Value> bag(std::span<const Operand> a, std::size_t k) { return m
 std::string cpp_type(VT t) { return fmt::format("dartcheck::ValueType::{}", t); }
 std::string cpp_call(std::string_view f, std::string_view args) { return fmt::format("dartcheck::algebra::{}({})", f, args); }
 
-// Every function calls rewriting/algebra.hpp, and its `cpp` text is that
-// same call with the arguments as {0}, {1}, ... .
-FunctionRegistry make_builtin() {
-  using namespace algebra;
-  FunctionRegistry r;
-  const Sort real = Sort::of(VT::real), integer = Sort::of(VT::integer), color = Sort::of(VT::color);
-  r.add(
-      "real", {integer}, real, [](auto a) { return to_real(val(a, 0)); }, cpp_call("to_real", "{0}"));
+using namespace algebra;
 
-  // Constructors.
+// point2(x, y), vector3(x, y, z), color(r, g, b), ...
+void add_constructors(FunctionRegistry& r) {
+  const Sort real = Sort::of(VT::real);
   for (VT t : {VT::point2, VT::vector2})
     r.add(
         std::string(name_of(t)), {real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1)); },
@@ -32,8 +27,11 @@ FunctionRegistry make_builtin() {
     r.add(
         std::string(name_of(t)), {real, real, real}, Sort::of(t), [t](auto a) { return coords(t, val(a, 0), val(a, 1), val(a, 2)); },
         cpp_call("coords", cpp_type(t) + ", {0}, {1}, {2}"));
+}
 
-  // Point and vector arithmetic, in 2D and 3D: a·x + b·y (combine).
+// Point and vector arithmetic, in 2D and 3D: a·x + b·y (combine).
+void add_point_arithmetic(FunctionRegistry& r) {
+  const Sort real = Sort::of(VT::real);
   for (const auto& types : {std::pair{VT::point2, VT::vector2}, std::pair{VT::point3, VT::vector3}}) {
     const VT p = types.first, v = types.second;  // named: clang 14 cannot capture structured bindings
     const Sort P = Sort::of(p), V = Sort::of(v);
@@ -69,9 +67,13 @@ FunctionRegistry make_builtin() {
     r.add(
         "length", {V}, real, [](auto a) { return length(val(a, 0)); }, cpp_call("length", "{0}"));
   }
-  // Jerboa's Vec3 methods (docs/jerboa-expressions.md): Vec3 is read as a
-  // point3 (a position) and its methods as coordinate arithmetic on points,
-  // vectors and colors alike, as Java computes them.
+}
+
+// Jerboa's Vec3 methods (docs/jerboa-expressions.md): Vec3 is read as a
+// point3 (a position) and its methods as coordinate arithmetic on points,
+// vectors and colors alike, as Java computes them.
+void add_vec3_methods(FunctionRegistry& r) {
+  const Sort real = Sort::of(VT::real);
   for (VT t : {VT::point3, VT::vector3, VT::color}) {
     const Sort P = Sort::of(t);
     const std::string tt = cpp_type(t);
@@ -98,8 +100,12 @@ FunctionRegistry make_builtin() {
       r.add(
           std::string(1, "xyz"[k]), {P}, real, [k](auto a) { return coordinate(val(a, 0), k); }, cpp_call("coordinate", fmt::format("{{0}}, {}", k)));
   }
+}
 
-  // Colors: the average (003 Sec. 3.4 "mix : color x color -> color").
+// Colors: the average (003 Sec. 3.4 "mix : color x color -> color"), and
+// the arithmetic, sums and counts of scalars.
+void add_colors_and_scalars(FunctionRegistry& r) {
+  const Sort real = Sort::of(VT::real), integer = Sort::of(VT::integer), color = Sort::of(VT::color);
   const std::string tc = cpp_type(VT::color);
   r.add(
       "mix", {color, color}, color, [](auto a) { return combine(VT::color, val(a, 0), 0.5, val(a, 1), 0.5); },
@@ -135,6 +141,18 @@ FunctionRegistry make_builtin() {
   for (int t = 0; t <= static_cast<int>(VT::string); ++t)
     r.add(
         "count", {Sort::bag(static_cast<VT>(t))}, integer, [](auto a) { return count(bag(a, 0)); }, cpp_call("count", "{0}"));
+}
+
+// Every function calls rewriting/algebra.hpp, and its `cpp` text is that
+// same call with the arguments as {0}, {1}, ... .
+FunctionRegistry make_builtin() {
+  FunctionRegistry r;
+  r.add(
+      "real", {Sort::of(VT::integer)}, Sort::of(VT::real), [](auto a) { return to_real(val(a, 0)); }, cpp_call("to_real", "{0}"));
+  add_constructors(r);
+  add_point_arithmetic(r);
+  add_vec3_methods(r);
+  add_colors_and_scalars(r);
   return r;
 }
 
