@@ -76,6 +76,52 @@ pid_t spawn(const std::vector<std::string>& args, const std::string& out, const 
   return pid;
 }
 
+// The shards' files: in $TMPDIR (or /tmp), in a directory of this run's
+// own, removed with what it holds when the run ends.
+class JobsDirectory {
+ public:
+  JobsDirectory() {
+    const char* tmp = std::getenv("TMPDIR");
+    const std::string parent = tmp && *tmp ? tmp : "/tmp";
+    std::string dir_template = parent + "/dartcheck-jobs-XXXXXX";
+    if (!mkdtemp(dir_template.data()))
+      throw Error(fmt::format("--jobs: cannot create a directory in {}: {}", printable(parent), std::strerror(errno)));
+    path_ = dir_template;
+  }
+  JobsDirectory(const JobsDirectory&) = delete;
+  JobsDirectory& operator=(const JobsDirectory&) = delete;
+  ~JobsDirectory() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// A second signal: every shard killed and reaped.
+void kill_shards(std::map<pid_t, std::size_t>& running) {
+  for (const auto& [pid, k] : running) ::kill(pid, SIGKILL);
+  for (int status = 0; !running.empty();) {
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid > 0)
+      running.erase(pid);
+    else if (errno != EINTR)
+      running.clear();  // no child left to wait for
+  }
+}
+
+// A shard's exit status if it stops the run, else 0: 0, 1 and 3 are
+// verdicts, which the merge reports; 130 and SIGTERM after a signal are
+// the stop this run asked for; anything else stops it.
+int shard_failure(int status) {
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  const bool stopped = analysis::interrupted() && (code == analysis::interrupted_exit || code == 128 + SIGTERM);
+  if (code == exit_status::ok || code == exit_status::violation || code == exit_status::soundness_bug || stopped) return 0;
+  return code;
+}
+
 }  // namespace
 
 void set_command_line(int argc, char** argv) { command_line().assign(argv, argv + argc); }
@@ -85,19 +131,8 @@ int run_jobs(const JobsRun& run) {
   if (command_line().empty()) throw InternalError("run_jobs: the command line was not saved");
   analysis::catch_interrupts();  // Ctrl-C reaches the shards too (one process group); they stop and say so
   analysis::count_second_interrupt();  // a second signal kills the shards before the parent goes
-  // The shards' files go in $TMPDIR (or /tmp), in a directory of this run's own.
-  const char* tmp = std::getenv("TMPDIR");
-  const std::string parent = tmp && *tmp ? tmp : "/tmp";
-  std::string dir_template = parent + "/dartcheck-jobs-XXXXXX";
-  const char* dir = mkdtemp(dir_template.data());
-  if (!dir) throw Error(fmt::format("--jobs: cannot create a directory in {}: {}", printable(parent), std::strerror(errno)));
-  struct Cleanup {
-    std::string dir;
-    ~Cleanup() {
-      std::error_code ec;
-      std::filesystem::remove_all(dir, ec);
-    }
-  } cleanup{dir};
+  const JobsDirectory jobs_dir;
+  const std::string& dir = jobs_dir.path();
 
   // Four shards per job, started as jobs finish: a rule hashes to a shard
   // whatever its cost, so finer shards even out the processes' loads.
@@ -115,14 +150,7 @@ int run_jobs(const JobsRun& run) {
   };
   for (std::size_t next = 0; (next < shards && !analysis::interrupted()) || !running.empty();) {
     if (analysis::interrupted_twice()) {
-      signal_shards(SIGKILL);
-      for (int status = 0; !running.empty();) {
-        const pid_t pid = waitpid(-1, &status, 0);
-        if (pid > 0)
-          running.erase(pid);
-        else if (errno != EINTR)
-          running.clear();  // no child left to wait for
-      }
+      kill_shards(running);
       fmt::print(stderr, "interrupted again: the shards were killed; nothing is merged\n");
       return analysis::interrupted_exit;
     }
@@ -159,11 +187,7 @@ int run_jobs(const JobsRun& run) {
     if (it == running.end()) continue;
     const std::size_t k = it->second;
     running.erase(it);
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    // 0, 1 and 3 are verdicts, which the merge reports; 130 and a signal
-    // are the stop this run asked for; anything else stops it.
-    const bool stopped = analysis::interrupted() && (code == analysis::interrupted_exit || code == 128 + SIGTERM);
-    if (code != exit_status::ok && code != exit_status::violation && code != exit_status::soundness_bug && !stopped) {
+    if (const int code = shard_failure(status); code != 0) {
       fmt::print(stderr, "shard {}/{} exited with {}:\n{}", k, shards, code, read_input(fmt::format("{}/{}.err", dir, k)));
       if (!failed) failed = code;
     }

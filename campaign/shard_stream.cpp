@@ -136,6 +136,56 @@ void ShardWriter::line(const char* type, Json payload, std::optional<Json> recor
   std::fflush(stdout);  // a shard killed later keeps this line
 }
 
+namespace {
+
+// One line of a shard as JSON.
+Json parse_shard_line(std::string_view text, const std::string& file, int line) {
+  Json j;
+  try {
+    j = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    throw InputError(file, line, static_cast<int>(std::min<std::size_t>(e.byte, text.size() + 1)),
+                     fmt::format("not a JSON line of --format jsonl: {}", e.what()));
+  } catch (const Json::exception& e) {
+    // A number out of double's range ("4.61e607", found by fuzz_shard)
+    // is nlohmann's out_of_range, not a parse_error.
+    throw InputError(file, line, 1, fmt::format("not a JSON line of --format jsonl: {}", e.what()));
+  }
+  return j;
+}
+
+// A line of another version may mean the same keys differently: refused, not guessed.
+void check_format_version(const Json& j, const std::string& file, int line) {
+  if (!j.contains("format_version") || j["format_version"] != reports::json_format_version)
+    throw InputError(
+        file, line, 1,
+        fmt::format("format_version {}: this dartcheck reads version {} (run the shard again with this version)",
+                    j.contains("format_version") ? printable(j["format_version"].dump()) : std::string("missing"), reports::json_format_version));
+}
+
+// The summary line: the fields merge reads, of the types it reads them
+// as; a run a signal stopped is read only with `incomplete`.
+void read_summary(const Json& j, const std::string& file, int line, bool incomplete, ShardFile& out) {
+  if (!j.contains("summary") || !j["summary"].is_object()) throw InputError(file, line, 1, "a summary line without a \"summary\" object");
+  out.summary = j["summary"];
+  // The fields merge reads, of the types it reads them as.
+  const Json& sum = out.summary;
+  const auto bad = [&](const char* key, const char* what) { throw InputError(file, line, 1, fmt::format("summary \"{}\": expected {}", key, what)); };
+  for (const char* key : {"rules", "finished"})
+    if (sum.contains(key) && !sum[key].is_number_unsigned()) bad(key, "a count");
+  if (sum.contains("seconds") && !sum["seconds"].is_number()) bad("seconds", "a number");
+  if (sum.contains("interrupted") && !sum["interrupted"].is_boolean()) bad("interrupted", "true or false");
+  if (sum.contains("status") && !(sum["status"] == 0 || sum["status"] == 1 || sum["status"] == 3 || sum["status"] == 130))
+    bad("status", "0, 1, 3 or 130");
+  // A signal stopped the run: its summary says so, or (recombine, query, events) its status is 130.
+  if (out.summary.value("interrupted", false) || out.summary.value("status", 0) == 130) {
+    if (!incomplete) throw InputError(file, line, 1, "this shard was interrupted: run it again (its rules are not all there), or merge --incomplete");
+    out.finished = false;
+  }
+}
+
+}  // namespace
+
 ShardFile read_shard_file(const std::string& file, bool incomplete) {
   TextLines lines(read_input(file));
   ShardFile out;
@@ -146,25 +196,10 @@ ShardFile read_shard_file(const std::string& file, bool incomplete) {
     line = lines.number();
     const std::string_view text = *next;
     if (text.empty()) continue;
-    Json j;
-    try {
-      j = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-      throw InputError(file, line, static_cast<int>(std::min<std::size_t>(e.byte, text.size() + 1)),
-                       fmt::format("not a JSON line of --format jsonl: {}", e.what()));
-    } catch (const Json::exception& e) {
-      // A number out of double's range ("4.61e607", found by fuzz_shard)
-      // is nlohmann's out_of_range, not a parse_error.
-      throw InputError(file, line, 1, fmt::format("not a JSON line of --format jsonl: {}", e.what()));
-    }
+    const Json j = parse_shard_line(text, file, line);
     const std::string type = string_at(j, "type", file, line);
     const std::string format = string_at(j, "format", file, line);
-    // A line of another version may mean the same keys differently: refused, not guessed.
-    if (!j.contains("format_version") || j["format_version"] != reports::json_format_version)
-      throw InputError(file, line, 1,
-                       fmt::format("format_version {}: this dartcheck reads version {} (run the shard again with this version)",
-                                   j.contains("format_version") ? printable(j["format_version"].dump()) : std::string("missing"),
-                                   reports::json_format_version));
+    check_format_version(j, file, line);
     if (!header && type != "header")
       throw InputError(file, line, 1, "the first line is not a header: shards are the output of --format jsonl with this version of dartcheck");
     if (!out.summary.is_null()) throw InputError(file, line, 1, "a line after the summary");
@@ -189,25 +224,7 @@ ShardFile read_shard_file(const std::string& file, bool incomplete) {
         throw InputError(file, line, 1, "an input line without \"document\" and \"text\", or a second one");
       out.input = j["input"];
     } else if (type == "summary") {
-      if (!j.contains("summary") || !j["summary"].is_object()) throw InputError(file, line, 1, "a summary line without a \"summary\" object");
-      out.summary = j["summary"];
-      // The fields merge reads, of the types it reads them as.
-      const Json& sum = out.summary;
-      const auto bad = [&](const char* key, const char* what) {
-        throw InputError(file, line, 1, fmt::format("summary \"{}\": expected {}", key, what));
-      };
-      for (const char* key : {"rules", "finished"})
-        if (sum.contains(key) && !sum[key].is_number_unsigned()) bad(key, "a count");
-      if (sum.contains("seconds") && !sum["seconds"].is_number()) bad("seconds", "a number");
-      if (sum.contains("interrupted") && !sum["interrupted"].is_boolean()) bad("interrupted", "true or false");
-      if (sum.contains("status") && !(sum["status"] == 0 || sum["status"] == 1 || sum["status"] == 3 || sum["status"] == 130))
-        bad("status", "0, 1, 3 or 130");
-      // A signal stopped the run: its summary says so, or (recombine, query, events) its status is 130.
-      if (out.summary.value("interrupted", false) || out.summary.value("status", 0) == 130) {
-        if (!incomplete)
-          throw InputError(file, line, 1, "this shard was interrupted: run it again (its rules are not all there), or merge --incomplete");
-        out.finished = false;
-      }
+      read_summary(j, file, line, incomplete, out);
     } else {
       throw InputError(file, line, 1, fmt::format("unknown line type '{}'", printable(type)));
     }
