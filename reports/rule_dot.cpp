@@ -74,106 +74,158 @@ struct SidePins {
   double bottom = 0, top = 0;
 };
 
+// One side of a rule in DOT: its nodes and arcs, those a witness names
+// lit.
+class SideDrawing {
+ public:
+  SideDrawing(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
+              const JerboaLabels* labels, const TermLines& terms, const SidePins* pins, bool merged)
+      : rule_(rule),
+        words_(words),
+        left_(left),
+        g_(left ? rule.left() : rule.right()),
+        ws_(left ? words.left : words.right),
+        rw_(rule.model()),
+        side_(left ? "L" : "R"),
+        prefix_(prefix),
+        labels_(labels),
+        terms_(terms),
+        pins_(pins),
+        merged_(merged),
+        dx_(left || !pins ? 0 : pins->dx) {
+    for (const auto& w : witnesses)
+      if (w.side == side_[0]) {
+        lit_nodes_.insert(lit_nodes_.end(), w.nodes.begin(), w.nodes.end());
+        for (const auto& text : w.arcs)
+          for (auto& s : steps(text)) {
+            lit_nodes_.push_back(s.source);
+            lit_nodes_.push_back(s.target);
+            lit_arcs_.push_back(std::move(s));
+          }
+      }
+  }
+
+  std::string text() const {
+    std::string out = opening();
+    for (NodeId v = 0; v < g_.node_count(); ++v) out += node(v);
+    out += arcs();
+    return merged_ || pins_ ? out : out + "    }\n";
+  }
+
+ private:
+  bool lit_arc(ArcId e) const {
+    const auto& a = g_.arc(e);
+    const std::string full = label_text(a.label, arc_word(ws_, e), words_.scheme), bare = std::to_string(a.label);
+    return std::any_of(lit_arcs_.begin(), lit_arcs_.end(), [&](const Step& s) {
+      return s.source == g_.name(a.source) && s.target == g_.name(a.target) && (s.label == full || (arc_word(ws_, e).empty() && s.label == bare));
+    });
+  }
+  // A node's name in the union layout, and in the picture.
+  std::string union_name(NodeId v) const {
+    const NodeId in_left = left_ ? v : rule_.to_left(v);
+    return in_left != no_node ? prefix_ + "L:" + rule_.left().name(in_left) : prefix_ + "R:" + g_.name(v);
+  }
+  std::string key(NodeId v) const { return quote(merged_ ? union_name(v) : prefix_ + side_ + ":" + g_.name(v)); }
+
+  // The frame is a node pinned under the side's nodes, not a cluster:
+  // neato orders clusters by address (its SVG changes from run to run)
+  // and draws them just around their nodes, the label over them. Room for
+  // the label and for loops (with their labels, about 0.4 inch past their
+  // node); both frames have the union's height.
+  std::string opening() const {
+    if (pins_) {
+      constexpr double loop_room = 0.4, label_room = 0.5;
+      const double x0 = pins_->lo[!left_] - loop_room + dx_, x1 = pins_->hi[!left_] + loop_room + dx_;
+      const double y0 = pins_->bottom - loop_room, y1 = pins_->top + loop_room + label_room;
+      return fmt::format(
+          "    {} [shape=box, color=\"#bdbdbd\", fontsize=14, label={}, labelloc=t, fixedsize=true, width={:.4f}, height={:.4f}, "
+          "pos=\"{:.4f},{:.4f}!\"];\n",
+          quote(prefix_ + side_ + ":#frame"), quote(side_), x1 - x0, y1 - y0, (x0 + x1) / 2, (y0 + y1) / 2);
+    }
+    if (!merged_) return fmt::format("    subgraph {} {{\n      label={}; color=\"#bdbdbd\";\n", quote("cluster_" + prefix_ + side_), quote(side_));
+    return "";
+  }
+
+  std::string node(NodeId v) const {
+    const bool kept = left_ ? rule_.to_right(v) != no_node : rule_.to_left(v) != no_node;
+    if (merged_ && !left_ && kept) return "";  // declared with L's nodes
+    const NodeId in_left = left_ ? v : rule_.to_left(v);
+    const bool hook = in_left != no_node && std::find(rule_.hooks().begin(), rule_.hooks().end(), in_left) != rule_.hooks().end();
+    const bool lit = contains(lit_nodes_, g_.name(v));
+    const auto* types = labels_ ? (left_ ? &labels_->left : &labels_->right) : nullptr;
+    const std::string type = types && v < types->size() ? orbit_type_str((*types)[v]) : "";
+    const std::string label = node_label(g_.name(v), type, terms_, left_, lit);
+    const bool boxed = label.find("shape=box") != std::string::npos;
+    std::string style(change_style(kept, left_));
+    if (boxed) style = "rounded," + style;
+    if (lit) style += ",filled";
+    std::string pin;
+    if (pins_)
+      if (const auto at = pins_->at.find(union_name(v)); at != pins_->at.end())
+        pin = fmt::format(", pos=\"{:.4f},{:.4f}!\"", at->second[0] + dx_, at->second[1]);
+    return fmt::format("      {} [{}, style=\"{}\"{}{}{}];\n", key(v), label, style, hook ? ", peripheries=2" : "",
+                       lit ? fmt::format(", fillcolor=\"{}\", witness=\"true\"", highlight_fill) : "", pin);
+  }
+
+  // The arcs; a non-oriented arc and its reverse (conjugate word, same
+  // change) as one undirected edge.
+  std::string arcs() const {
+    std::string out;
+    std::vector<bool> drawn(g_.arc_count(), false);
+    std::vector<std::size_t> loops(g_.node_count(), 0);  // drawn so far per node: each takes the next side
+    for (ArcId e = 0; e < g_.arc_count(); ++e) {
+      if (drawn[e]) continue;
+      drawn[e] = true;
+      const auto& a = g_.arc(e);
+      const bool kept = left_ ? rule_.preserved_left_arc(e) : rule_.preserved_right_arc(e);
+      const ConjWord& w = arc_word(ws_, e);
+      bool pair = false;
+      ArcId partner = e;
+      if (!rule_.model().is_oriented(a.label)) {
+        if (a.source == a.target && rw_.conjugate(w) == w) pair = true;
+        for (ArcId f = e + 1; f < g_.arc_count() && !pair; ++f) {
+          const auto& b = g_.arc(f);
+          const bool f_kept = left_ ? rule_.preserved_left_arc(f) : rule_.preserved_right_arc(f);
+          if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source && f_kept == kept &&
+              arc_word(ws_, f) == rw_.conjugate(w))
+            drawn[f] = pair = true, partner = f;
+        }
+      }
+      const auto color = dimension_color(a.label);
+      const bool lit = lit_arc(e) || lit_arc(partner);
+      // A Jerboa node's orbit type already says what its implicit loops say.
+      if (labels_ && a.source == a.target && !w.empty() && !lit) continue;
+      const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++, true)) : "";
+      out += fmt::format("      {}{} -> {}{} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", key(a.source), port, key(a.target), port,
+                         quote(labels_ && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words_.scheme)),
+                         lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, change_style(kept, left_),
+                         pair ? ", dir=none" : "", lit ? ", witness=\"true\"" : "");
+    }
+    return out;
+  }
+
+  const Rule& rule_;
+  const ArcWords& words_;
+  bool left_;
+  const TopoGraph& g_;
+  const std::vector<ConjWord>& ws_;
+  const ConjugateRewriting rw_;
+  std::string side_;
+  const std::string& prefix_;
+  const JerboaLabels* labels_;
+  const TermLines& terms_;
+  const SidePins* pins_;
+  bool merged_;
+  double dx_;
+  std::vector<std::string> lit_nodes_;
+  std::vector<Step> lit_arcs_;
+};
+
 // One side as a cluster, or (`merged`, for the union layout) as bare
 // statements with R's preserved nodes named as in L and not declared again.
 std::string side_cluster(const Rule& rule, const ArcWords& words, bool left, const std::vector<RuleWitness>& witnesses, const std::string& prefix,
                          const JerboaLabels* labels, const TermLines& terms, const SidePins* pins, bool merged = false) {
-  const TopoGraph& g = left ? rule.left() : rule.right();
-  const std::vector<ConjWord>& ws = left ? words.left : words.right;
-  const Model& model = rule.model();
-  const ConjugateRewriting rw(model);
-  const std::string side = left ? "L" : "R";
-  std::vector<std::string> lit_nodes;
-  std::vector<Step> lit_arcs;
-  for (const auto& w : witnesses)
-    if (w.side == side[0]) {
-      lit_nodes.insert(lit_nodes.end(), w.nodes.begin(), w.nodes.end());
-      for (const auto& text : w.arcs)
-        for (auto& s : steps(text)) {
-          lit_nodes.push_back(s.source);
-          lit_nodes.push_back(s.target);
-          lit_arcs.push_back(std::move(s));
-        }
-    }
-  auto lit_arc = [&](ArcId e) {
-    const auto& a = g.arc(e);
-    const std::string full = label_text(a.label, arc_word(ws, e), words.scheme), bare = std::to_string(a.label);
-    return std::any_of(lit_arcs.begin(), lit_arcs.end(), [&](const Step& s) {
-      return s.source == g.name(a.source) && s.target == g.name(a.target) && (s.label == full || (arc_word(ws, e).empty() && s.label == bare));
-    });
-  };
-  // A node's name in the union layout, and in the picture.
-  auto union_name = [&](NodeId v) {
-    const NodeId in_left = left ? v : rule.to_left(v);
-    return in_left != no_node ? prefix + "L:" + rule.left().name(in_left) : prefix + "R:" + g.name(v);
-  };
-  auto key = [&](NodeId v) { return quote(merged ? union_name(v) : prefix + side + ":" + g.name(v)); };
-  std::string out;
-  const double dx = left || !pins ? 0 : pins->dx;
-  if (pins) {
-    // The frame is a node pinned under the side's nodes, not a cluster:
-    // neato orders clusters by address (its SVG changes from run to run)
-    // and draws them just around their nodes, the label over them. Room
-    // for the label and for loops (with their labels, about 0.4 inch past
-    // their node); both frames have the union's height.
-    constexpr double loop_room = 0.4, label_room = 0.5;
-    const double x0 = pins->lo[!left] - loop_room + dx, x1 = pins->hi[!left] + loop_room + dx;
-    const double y0 = pins->bottom - loop_room, y1 = pins->top + loop_room + label_room;
-    out = fmt::format(
-        "    {} [shape=box, color=\"#bdbdbd\", fontsize=14, label={}, labelloc=t, fixedsize=true, width={:.4f}, height={:.4f}, pos=\"{:.4f},{:.4f}!\"];\n",
-        quote(prefix + side + ":#frame"), quote(side), x1 - x0, y1 - y0, (x0 + x1) / 2, (y0 + y1) / 2);
-  } else if (!merged) {
-    out = fmt::format("    subgraph {} {{\n      label={}; color=\"#bdbdbd\";\n", quote("cluster_" + prefix + side), quote(side));
-  }
-  for (NodeId v = 0; v < g.node_count(); ++v) {
-    const bool kept = left ? rule.to_right(v) != no_node : rule.to_left(v) != no_node;
-    if (merged && !left && kept) continue;  // declared with L's nodes
-    const NodeId in_left = left ? v : rule.to_left(v);
-    const bool hook = in_left != no_node && std::find(rule.hooks().begin(), rule.hooks().end(), in_left) != rule.hooks().end();
-    const bool lit = contains(lit_nodes, g.name(v));
-    const auto* types = labels ? (left ? &labels->left : &labels->right) : nullptr;
-    const std::string type = types && v < types->size() ? orbit_type_str((*types)[v]) : "";
-    const std::string label = node_label(g.name(v), type, terms, left, lit);
-    const bool boxed = label.find("shape=box") != std::string::npos;
-    std::string style(change_style(kept, left));
-    if (boxed) style = "rounded," + style;
-    if (lit) style += ",filled";
-    std::string pin;
-    if (pins)
-      if (const auto at = pins->at.find(union_name(v)); at != pins->at.end()) pin = fmt::format(", pos=\"{:.4f},{:.4f}!\"", at->second[0] + dx, at->second[1]);
-    out += fmt::format("      {} [{}, style=\"{}\"{}{}{}];\n", key(v), label, style, hook ? ", peripheries=2" : "",
-                       lit ? fmt::format(", fillcolor=\"{}\", witness=\"true\"", highlight_fill) : "", pin);
-  }
-  std::vector<bool> drawn(g.arc_count(), false);
-  std::vector<std::size_t> loops(g.node_count(), 0);  // drawn so far per node: each takes the next side
-  for (ArcId e = 0; e < g.arc_count(); ++e) {
-    if (drawn[e]) continue;
-    drawn[e] = true;
-    const auto& a = g.arc(e);
-    const bool kept = left ? rule.preserved_left_arc(e) : rule.preserved_right_arc(e);
-    const ConjWord& w = arc_word(ws, e);
-    bool pair = false;
-    ArcId partner = e;
-    if (!model.is_oriented(a.label)) {
-      if (a.source == a.target && rw.conjugate(w) == w) pair = true;
-      for (ArcId f = e + 1; f < g.arc_count() && !pair; ++f) {
-        const auto& b = g.arc(f);
-        const bool f_kept = left ? rule.preserved_left_arc(f) : rule.preserved_right_arc(f);
-        if (!drawn[f] && b.label == a.label && b.source == a.target && b.target == a.source && f_kept == kept && arc_word(ws, f) == rw.conjugate(w))
-          drawn[f] = pair = true, partner = f;
-      }
-    }
-    const auto color = dimension_color(a.label);
-    const bool lit = lit_arc(e) || lit_arc(partner);
-    // A Jerboa node's orbit type already says what its implicit loops say.
-    if (labels && a.source == a.target && !w.empty() && !lit) continue;
-    const std::string port = a.source == a.target ? fmt::format(":{}", loop_port(loops[a.source]++, true)) : "";
-    out += fmt::format("      {}{} -> {}{} [label={}, color=\"{}\", fontcolor=\"{}\", style={}{}{}];\n", key(a.source), port, key(a.target), port,
-                       quote(labels && w.empty() ? std::to_string(a.label) : label_text(a.label, w, words.scheme)),
-                       lit ? fmt::format("{}:{}:{}", color, highlight_line, color) : std::string(color), color, change_style(kept, left),
-                       pair ? ", dir=none" : "", lit ? ", witness=\"true\"" : "");
-  }
-  return merged || pins ? out : out + "    }\n";
+  return SideDrawing(rule, words, left, witnesses, prefix, labels, terms, pins, merged).text();
 }
 
 // The node attributes of the union layout: those of rule_dot's picture.
