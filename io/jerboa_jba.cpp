@@ -79,23 +79,9 @@ std::vector<Dim> orbit_of(const Lines& lines, const std::string& text, int dimen
   return out;
 }
 
-}  // namespace
-
-JbaFile read_jba(const std::string& file) {
-  Lines lines(file);
-  if (lines.next("the header") != "Jerboa JBA Generic Format")
-    lines.fail("not a Jerboa G-map file: the first line must be 'Jerboa JBA Generic Format'");
-  keyed(lines, "version");
-  std::string name = keyed(lines, "name");
-  const long long dimension = number(lines, keyed(lines, "dimension"), "dimension");
-  if (dimension < 0 || dimension > max_dimension) lines.fail(fmt::format("dimension {} is out of range (0 to {})", dimension, max_dimension));
-  const int n = static_cast<int>(dimension);
-  const long long count = number(lines, keyed(lines, "nbebd"), "nbebd");
-  if (count < 0) lines.fail("nbebd: expected a count");
-
-  JbaFile out{std::move(name), Map(Model::gmap(n)), {}, {}};
+// The header's embeddings: "ebdid <index> <name> <orbit, may hold spaces> <type>".
+void read_embedding_ids(Lines& lines, long long count, int n, JbaFile& out) {
   for (long long k = 0; k < count; ++k) {
-    // ebdid <index> <name> <orbit, may hold spaces> <type>
     const std::string line = keyed(lines, "ebdid");
     const auto open = line.find('<'), close = line.find('>');
     if (open == std::string::npos || close == std::string::npos || close < open) lines.fail(fmt::format("ebdid: no orbit <...> in '{}'", line));
@@ -104,7 +90,11 @@ JbaFile read_jba(const std::string& file) {
     MapEmbedding e{head[1], tail[0], orbit_of(lines, line.substr(open, close - open + 1), n), {}, {}};
     out.embeddings.push_back(std::move(e));
   }
+}
 
+// The dart lines: "<id> <alpha_0> ... <alpha_n>", ids resolved once all
+// are read; returns the dart of each id.
+std::unordered_map<std::string, Dart> read_darts(Lines& lines, const std::string& file, int n, JbaFile& out) {
   const auto sizes = words(lines.next("the dart count"));
   if (sizes.empty()) lines.fail("expected the dart count");
   const long long darts = number(lines, sizes[0], "dart count");
@@ -112,7 +102,6 @@ JbaFile read_jba(const std::string& file) {
   if (static_cast<unsigned long long>(darts) > limits().darts)
     lines.fail(over_limit("dart count", static_cast<std::size_t>(darts), limits().darts, "--limit-darts"));
   Map& map = out.map;
-  // Dart lines: "<id> <alpha_0> ... <alpha_n>", ids resolved once all are read.
   std::unordered_map<std::string, Dart> index;
   std::vector<std::pair<int, std::vector<std::string>>> rows;
   for (long long d = 0; d < darts; ++d) {
@@ -134,8 +123,13 @@ JbaFile read_jba(const std::string& file) {
         throw InputError(file, line, 1, fmt::format("dart {}: alpha_{} names dart {}, which the file does not declare", w[0], i, w[i + 1]));
       map.set_link(static_cast<Dim>(i), index.at(w[0]), it->second);
     }
+  return index;
+}
 
-  for (auto& e : out.embeddings) e.values.assign(map.size(), std::nullopt);
+// The embedding sections: "<name> <record count>", then per record the
+// line of its darts' ids and the line of its value.
+void read_values(Lines& lines, const std::string& file, int n, long long darts, const std::unordered_map<std::string, Dart>& index, JbaFile& out) {
+  for (auto& e : out.embeddings) e.values.assign(out.map.size(), std::nullopt);
   while (!lines.done()) {
     const auto head = words(lines.next("an embedding section"));
     if (head.empty()) continue;
@@ -165,6 +159,26 @@ JbaFile read_jba(const std::string& file) {
       }
     }
   }
+}
+
+}  // namespace
+
+JbaFile read_jba(const std::string& file) {
+  Lines lines(file);
+  if (lines.next("the header") != "Jerboa JBA Generic Format")
+    lines.fail("not a Jerboa G-map file: the first line must be 'Jerboa JBA Generic Format'");
+  keyed(lines, "version");
+  std::string name = keyed(lines, "name");
+  const long long dimension = number(lines, keyed(lines, "dimension"), "dimension");
+  if (dimension < 0 || dimension > max_dimension) lines.fail(fmt::format("dimension {} is out of range (0 to {})", dimension, max_dimension));
+  const int n = static_cast<int>(dimension);
+  const long long count = number(lines, keyed(lines, "nbebd"), "nbebd");
+  if (count < 0) lines.fail("nbebd: expected a count");
+
+  JbaFile out{std::move(name), Map(Model::gmap(n)), {}, {}};
+  read_embedding_ids(lines, count, n, out);
+  const auto index = read_darts(lines, file, n, out);
+  read_values(lines, file, n, static_cast<long long>(out.map.size()), index, out);
   return out;
 }
 
