@@ -32,6 +32,38 @@ struct Orbits {
   }
 };
 
+// Splits, by G orbit (`pairs`, the (G orbit, H orbit) pairs of the
+// correspondence, are sorted by G orbit): a G orbit whose darts go to two
+// H orbits or more.
+void add_splits(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, const Orbits& go, const Orbits& ho,
+                std::vector<LoggedEvent>& out) {
+  for (std::size_t i = 0; i < pairs.size();) {
+    std::size_t j = i;
+    while (j < pairs.size() && pairs[j].first == pairs[i].first) ++j;
+    if (j - i >= 2) {
+      LoggedEvent e{Event::split, {go.rep[pairs[i].first]}, {}};
+      for (std::size_t q = i; q < j; ++q) e.after.push_back(ho.rep[pairs[q].second]);
+      std::sort(e.after.begin(), e.after.end());
+      out.push_back(std::move(e));
+    }
+    i = j;
+  }
+}
+
+// Whether every generator of the orbit kind links the images of `darts` in
+// H as it links them in G (a non-modification, 004 Def. 3.4.2).
+template <class Darts, class ToH>
+bool links_kept(const Map& g, const Map& h, const OrbitKind& kind, const Darts& darts, ToH to_h) {
+  for (Dart d : darts) {
+    const Dart e = to_h(d);
+    for (const OrbitWord& w : kind.generators) {
+      const Dart dg = follow(g, d, w), dh = follow(h, e, w);
+      if ((dg == no_dart) != (dh == no_dart) || (dg != no_dart && to_h(dg) != dh)) return false;
+    }
+  }
+  return true;
+}
+
 // The events between G's orbits and H's orbits (004 Def. 3.1.1-3.4.2 on
 // transformations). to_h / to_g: the correspondence; h_orbit / g_orbit:
 // the orbit index of a dart of the other side's images.
@@ -66,18 +98,7 @@ std::vector<LoggedEvent> derive(const Map& g, const Map& h, const OrbitKind& kin
     only_b[a] = b;
   }
   std::vector<LoggedEvent> out;
-  // Splits, by G orbit (pairs are sorted by a).
-  for (std::size_t i = 0; i < pairs.size();) {
-    std::size_t j = i;
-    while (j < pairs.size() && pairs[j].first == pairs[i].first) ++j;
-    if (j - i >= 2) {
-      LoggedEvent e{Event::split, {go.rep[pairs[i].first]}, {}};
-      for (std::size_t q = i; q < j; ++q) e.after.push_back(ho.rep[pairs[q].second]);
-      std::sort(e.after.begin(), e.after.end());
-      out.push_back(std::move(e));
-    }
-    i = j;
-  }
+  add_splits(pairs, go, ho, out);
   // Merges, by H orbit.
   std::vector<std::vector<Dart>> before(ho.size());
   for (auto [a, b] : pairs)
@@ -96,18 +117,7 @@ std::vector<LoggedEvent> derive(const Map& g, const Map& h, const OrbitKind& kin
     }
     if (nb[a] != 1 || na[only_b[a]] != 1) continue;
     const std::uint32_t b = only_b[a];
-    bool same = !deleted[a] && !created[b] && go.of(a).size() == ho.of(b).size();
-    for (Dart d : go.of(a)) {
-      if (!same) break;
-      const Dart e = to_h(d);
-      for (const OrbitWord& w : kind.generators) {
-        const Dart dg = follow(g, d, w), dh = follow(h, e, w);
-        if ((dg == no_dart) != (dh == no_dart) || (dg != no_dart && to_h(dg) != dh)) {
-          same = false;
-          break;
-        }
-      }
-    }
+    const bool same = !deleted[a] && !created[b] && go.of(a).size() == ho.of(b).size() && links_kept(g, h, kind, go.of(a), to_h);
     if (same && skip_unmatched_unchanged) {
       const auto darts = go.of(a);
       if (std::none_of(darts.begin(), darts.end(), matched)) continue;

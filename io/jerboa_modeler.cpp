@@ -332,6 +332,32 @@ void read_expressions(const Catalog& c, const Positions& p, const std::string& r
       }
 }
 
+// Every node labeled '_' in every position (<_>, <_,_>...): the orbits
+// hold no link, each node is one dart, and the rule is the plain DPO rule
+// on darts of orbit type <> (real modelers write single-dart rules so).
+void clear_removed_labels(JmeSide& left, JmeSide& right) {
+  const auto all_removed = [](const JmeSide& s) {
+    return std::all_of(s.nodes.begin(), s.nodes.end(),
+                       [](const JmeNode& n) { return std::all_of(n.label.begin(), n.label.end(), [](const auto& x) { return !x.has_value(); }); });
+  };
+  if (all_removed(left) && all_removed(right))
+    for (auto* side : {&left, &right})
+      for (auto& n : side->nodes) n.label.clear();
+}
+
+// Why the parameter orbit type (the first hook's label) cannot be read,
+// or "": a '_' in it, or a node with another number of positions.
+std::string parameter_problem(const OrbitType& parameter, const std::vector<std::string>& hooks, const JmeSide& left, const JmeSide& right) {
+  if (std::find(parameter.begin(), parameter.end(), std::nullopt) != parameter.end())
+    return fmt::format("the hook '{}' is labeled {}, with '_': a hook's label is the parameter orbit type", hooks.front(), orbit_type_str(parameter));
+  for (const auto* side : {&left, &right})
+    for (const auto& n : side->nodes)
+      if (n.label.size() != parameter.size())
+        return fmt::format("node '{}' is labeled {} ({} positions) but the parameter orbit type {} has {}", n.name, orbit_type_str(n.label),
+                           n.label.size(), orbit_type_str(parameter), parameter.size());
+  return "";
+}
+
 void read_rule(Catalog& c, const Positions& p, const std::string& raw, const ModelerScope& ms, const pugi::xml_node& r, const Model& model,
                int dimension) {
   const std::string name = r.attribute("name").value();
@@ -342,16 +368,7 @@ void read_rule(Catalog& c, const Positions& p, const std::string& raw, const Mod
   // Structural errors (orbits, arcs, dimensions) fail the file; what
   // dartcheck cannot represent skips the rule.
   JmeSide left = read_side(p, r.child("left"), dimension), right = read_side(p, r.child("right"), dimension);
-  // Every node labeled '_' in every position (<_>, <_,_>...): the orbits
-  // hold no link, each node is one dart, and the rule is the plain DPO rule
-  // on darts of orbit type <> (real modelers write single-dart rules so).
-  const auto all_removed = [](const JmeSide& s) {
-    return std::all_of(s.nodes.begin(), s.nodes.end(),
-                       [](const JmeNode& n) { return std::all_of(n.label.begin(), n.label.end(), [](const auto& x) { return !x.has_value(); }); });
-  };
-  if (all_removed(left) && all_removed(right))
-    for (auto* side : {&left, &right})
-      for (auto& n : side->nodes) n.label.clear();
+  clear_removed_labels(left, right);
   auto skip = [&](std::string why) { c.skipped.push_back({name, std::move(why), at}); };
   if (auto why = unrepresentable(r); !why.empty()) return skip(why);
 
@@ -360,19 +377,12 @@ void read_rule(Catalog& c, const Positions& p, const std::string& raw, const Mod
 
   // The parameter orbit type is the first hook's label (000 Sec. 4.3.2).
   const OrbitType parameter = hooks.empty() ? OrbitType{} : left.find(hooks.front())->label;
-  if (std::find(parameter.begin(), parameter.end(), std::nullopt) != parameter.end())
-    return skip(
-        fmt::format("the hook '{}' is labeled {}, with '_': a hook's label is the parameter orbit type", hooks.front(), orbit_type_str(parameter)));
+  if (auto why = parameter_problem(parameter, hooks, left, right); !why.empty()) return skip(why);
   std::vector<std::string> caveats = caveats_of(r);
   for (std::size_t k = 1; k < hooks.size(); ++k)
     if (left.find(hooks[k])->label != parameter)
       caveats.push_back(fmt::format("hook '{}' is labeled {}, not the parameter {}: read relative to the first hook's orbit type", hooks[k],
                                     orbit_type_str(left.find(hooks[k])->label), orbit_type_str(parameter)));
-  for (const auto* side : {&left, &right})
-    for (const auto& n : side->nodes)
-      if (n.label.size() != parameter.size())
-        return skip(fmt::format("node '{}' is labeled {} ({} positions) but the parameter orbit type {} has {}", n.name, orbit_type_str(n.label),
-                                n.label.size(), orbit_type_str(parameter), parameter.size()));
 
   ArcWords words;
   JerboaLabels labels{parameter, {}, {}};
