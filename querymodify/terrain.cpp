@@ -193,18 +193,11 @@ HouseRule house_rule() {
   return r;
 }
 
-Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
-  Experiment x;
-  const std::uint32_t n = 1U << k;
-  // (1) the voxel grid.
-  auto t0 = Clock::now();
-  x.mesh = voxel_grid(n, diamond_square(k, seed, 1.0, 12.0));
-  x.grid.modify_seconds = since(t0);
-  x.grid.volumes = std::size_t{n} * n;
-  x.grid.darts = x.mesh.map.size();
-  // (2) flat spots: query, choose vertex-disjoint matches, apply.
+// (2) flat spots on the n x n grid: query, choose vertex-disjoint
+// matches, apply.
+void flatten_spots(Experiment& x, std::uint32_t n, std::size_t spots, std::uint64_t seed) {
   const SpotQuery spot = spot_query();
-  t0 = Clock::now();
+  auto t0 = Clock::now();
   QueryTrie trie;
   trie.add(query_word(spot.mesh.map, 0), 0);
   auto found = all_matches(x.mesh.map, trie, nullptr, 1);
@@ -240,10 +233,13 @@ Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
   x.flattened.applied = chosen.size();
   x.flattened.volumes = volumes(x.mesh.map);
   x.flattened.darts = x.mesh.map.size();
-  // (3) houses: every distinct match of the flattened spot, its upper face
-  // required 3-free (ε) to receive the house.
+}
+
+// (3) houses: every distinct match of the flattened spot, its upper face
+// required 3-free (ε) to receive the house.
+void build_houses(Experiment& x) {
   const HouseRule house = house_rule();
-  t0 = Clock::now();
+  auto t0 = Clock::now();
   std::vector<BoundaryOverride> upper;
   for (Dart d : house.upper) upper.push_back({d, 3, BoundaryCondition::boundary});
   QueryTrie spot_trie;
@@ -278,6 +274,19 @@ Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
   x.housed.applied = sites.distinct.size();
   x.housed.volumes = volumes(x.mesh.map);
   x.housed.darts = x.mesh.map.size();
+}
+
+Experiment run_experiment(unsigned k, std::size_t spots, std::uint64_t seed) {
+  Experiment x;
+  const std::uint32_t n = 1U << k;
+  // (1) the voxel grid.
+  auto t0 = Clock::now();
+  x.mesh = voxel_grid(n, diamond_square(k, seed, 1.0, 12.0));
+  x.grid.modify_seconds = since(t0);
+  x.grid.volumes = std::size_t{n} * n;
+  x.grid.darts = x.mesh.map.size();
+  flatten_spots(x, n, spots, seed);
+  build_houses(x);
   return x;
 }
 
