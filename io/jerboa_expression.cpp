@@ -26,6 +26,46 @@ struct Token {
 
 bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
 
+// A decimal number from `start`: digits and '_', a fraction, an exponent,
+// a type suffix; returns where it ends.
+std::size_t decimal_end(const std::string& s, std::size_t start) {
+  std::size_t k = start;
+  while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '_')) ++k;
+  // "2.5", "2.f" and "2." are numbers; "n0@2.pos" is a neighbour's
+  // embedding (Jerboa's '@' is read before Java's lexer).
+  if (k < s.size() && s[k] == '.') {
+    const char n = k + 1 < s.size() ? s[k + 1] : ' ';
+    const bool suffix = (n == 'f' || n == 'F' || n == 'd' || n == 'D') && !(k + 2 < s.size() && ident_char(s[k + 2]));
+    if (std::isdigit(static_cast<unsigned char>(n)) || suffix || !std::isalpha(static_cast<unsigned char>(n))) {
+      ++k;
+      while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+    }
+  }
+  if (k < s.size() && (s[k] == 'e' || s[k] == 'E')) {
+    ++k;
+    if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+    while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+  }
+  if (k < s.size() && std::string_view("fFdDlL").find(s[k]) != std::string_view::npos) ++k;
+  if (k < s.size() && ident_char(s[k])) throw JerboaCodeError(start, fmt::format("not Java: '{}' is not a number", s.substr(start, k + 1 - start)));
+  return k;
+}
+
+// Brackets must balance, as in any Java.
+void check_brackets(const std::vector<Token>& tokens) {
+  std::vector<const Token*> open;
+  for (const Token& t : tokens) {
+    if (t.kind != Token::punct) continue;
+    if (t.s == "(" || t.s == "[" || t.s == "{") open.push_back(&t);
+    if (t.s == ")" || t.s == "]" || t.s == "}") {
+      const char want = t.s == ")" ? '(' : t.s == "]" ? '[' : '{';
+      if (open.empty() || open.back()->s[0] != want) throw JerboaCodeError(t.offset, fmt::format("not Java: '{}' closes nothing", t.s));
+      open.pop_back();
+    }
+  }
+  if (!open.empty()) throw JerboaCodeError(open.back()->offset, fmt::format("not Java: '{}' is never closed", open.back()->s));
+}
+
 // Java's tokens, comments dropped; what cannot be Java at all (an
 // unterminated literal or comment, a byte Java has no use for) throws.
 std::vector<Token> tokens(const std::string& s) {
@@ -62,24 +102,7 @@ std::vector<Token> tokens(const std::string& s) {
       continue;
     }
     if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && k + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[k + 1])))) {
-      while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '_')) ++k;
-      // "2.5", "2.f" and "2." are numbers; "n0@2.pos" is a neighbour's
-      // embedding (Jerboa's '@' is read before Java's lexer).
-      if (k < s.size() && s[k] == '.') {
-        const char n = k + 1 < s.size() ? s[k + 1] : ' ';
-        const bool suffix = (n == 'f' || n == 'F' || n == 'd' || n == 'D') && !(k + 2 < s.size() && ident_char(s[k + 2]));
-        if (std::isdigit(static_cast<unsigned char>(n)) || suffix || !std::isalpha(static_cast<unsigned char>(n))) {
-          ++k;
-          while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
-        }
-      }
-      if (k < s.size() && (s[k] == 'e' || s[k] == 'E')) {
-        ++k;
-        if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
-        while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
-      }
-      if (k < s.size() && std::string_view("fFdDlL").find(s[k]) != std::string_view::npos) ++k;
-      if (k < s.size() && ident_char(s[k])) throw JerboaCodeError(start, fmt::format("not Java: '{}' is not a number", s.substr(start, k + 1 - start)));
+      k = decimal_end(s, start);
       out.push_back({Token::number, s.substr(start, k - start), start});
       continue;
     }
@@ -105,18 +128,7 @@ std::vector<Token> tokens(const std::string& s) {
     out.push_back({Token::punct, std::string(1, c), start});
     ++k;
   }
-  // Brackets must balance, as in any Java.
-  std::vector<const Token*> open;
-  for (const Token& t : out) {
-    if (t.kind != Token::punct) continue;
-    if (t.s == "(" || t.s == "[" || t.s == "{") open.push_back(&t);
-    if (t.s == ")" || t.s == "]" || t.s == "}") {
-      const char want = t.s == ")" ? '(' : t.s == "]" ? '[' : '{';
-      if (open.empty() || open.back()->s[0] != want) throw JerboaCodeError(t.offset, fmt::format("not Java: '{}' closes nothing", t.s));
-      open.pop_back();
-    }
-  }
-  if (!open.empty()) throw JerboaCodeError(open.back()->offset, fmt::format("not Java: '{}' is never closed", open.back()->s));
+  check_brackets(out);
   out.push_back({Token::end, "", s.size()});
   return out;
 }
