@@ -453,6 +453,78 @@ Sort expect_node(Term& arg, const TermScope& scope, const Term& op, const char* 
   return s;
 }
 
+// each(x in <o>(y): t): a bag of the body's values, x a new dart variable.
+Sort check_each(Term& t, const TermScope& scope) {
+  for (const auto* o : {&t.orbit, &t.sub_orbit})
+    for (Dim d : *o)
+      if (scope.model && !scope.model->contains(d))
+        throw TermError(t.offset, fmt::format("each: {} is not a dimension of the model {}", d, scope.model->name));
+  expect_node(t.args[0], scope, t, "each");
+  if (std::find(scope.variables.begin(), scope.variables.end(), t.name) != scope.variables.end() || scope.parameters.count(t.name))
+    throw TermError(t.offset, fmt::format("each: the dart variable '{}' hides a node or parameter of that name", t.name));
+  TermScope inner = scope;
+  inner.variables.push_back(t.name);
+  const Sort body = check_term(t.args[1], inner);
+  if (body.kind != Sort::value)
+    throw TermError(t.args[1].offset, fmt::format("each's body must be a value, '{}' is a {}", t.args[1].str(), body.str()));
+  return t.sort = Sort::bag(body.type);
+}
+
+// [a, b, ...]: a bag of values of one type.
+Sort check_list(Term& t, const TermScope& scope) {
+  std::optional<ValueType> type;
+  for (Term& a : t.args) {
+    const Sort s = check_term(a, scope);
+    if (s.kind == Sort::node) throw TermError(a.offset, fmt::format("a list holds values, '{}' is a node", a.str()));
+    if (type && s.type != *type)
+      throw TermError(a.offset,
+                      fmt::format("a list holds values of one type: '{}' is a {}, the list's first element a {}", a.str(), s.str(), name_of(*type)));
+    type = s.type;
+  }
+  if (!type) throw TermError(t.offset, "an empty list has no type");
+  return t.sort = Sort::bag(*type);
+}
+
+// A function call: the overload of the arguments' sorts, an integer
+// argument promoted to real where that finds one.
+Sort check_call(Term& t, const TermScope& scope) {
+  std::vector<Sort> sorts;
+  for (Term& a : t.args) sorts.push_back(check_term(a, scope));
+  const FunctionRegistry& reg = scope.functions ? *scope.functions : FunctionRegistry::builtin();
+  const Function* f = reg.find(t.name, sorts);
+  if (!f) {
+    // An integer argument may stand for a real one (2 * v, point2(0, 1)).
+    std::vector<Sort> promoted = sorts;
+    for (Sort& s : promoted)
+      if (s == Sort::of(ValueType::integer)) s = Sort::of(ValueType::real);
+    if (promoted != sorts && (f = reg.find(t.name, promoted))) {
+      for (std::size_t k = 0; k < t.args.size(); ++k)
+        if (sorts[k] != promoted[k]) {
+          Term conv;
+          conv.kind = Term::Kind::call;
+          conv.name = "real";
+          conv.implicit = true;
+          conv.offset = t.args[k].offset;
+          conv.function = reg.find("real", {Sort::of(ValueType::integer)});
+          conv.sort = Sort::of(ValueType::real);
+          conv.args.push_back(std::move(t.args[k]));
+          t.args[k] = std::move(conv);
+        }
+    }
+  }
+  if (!f) {
+    std::string args;
+    for (std::size_t k = 0; k < sorts.size(); ++k) args += (k ? " x " : "") + sorts[k].str();
+    const auto over = reg.overloads(t.name);
+    if (over.empty()) throw TermError(t.offset, fmt::format("unknown function '{}'", t.name));
+    std::string known;
+    for (const Function* o : over) known += fmt::format("\n  {}", o->profile());
+    throw TermError(t.offset, fmt::format("no '{}' takes ({}); known profiles:{}", t.name, args, known));
+  }
+  t.function = f;
+  return t.sort = f->result;
+}
+
 }  // namespace
 
 Sort check_term(Term& t, const TermScope& scope) {
@@ -493,71 +565,14 @@ Sort check_term(Term& t, const TermScope& scope) {
       expect_node(t.args[0], scope, t, fmt::format("the collect operator '{}'", t.name).c_str());
       return t.sort = Sort::bag(e->type);
     }
-    case Term::Kind::each: {
-      for (const auto* o : {&t.orbit, &t.sub_orbit})
-        for (Dim d : *o)
-          if (scope.model && !scope.model->contains(d))
-            throw TermError(t.offset, fmt::format("each: {} is not a dimension of the model {}", d, scope.model->name));
-      expect_node(t.args[0], scope, t, "each");
-      if (std::find(scope.variables.begin(), scope.variables.end(), t.name) != scope.variables.end() || scope.parameters.count(t.name))
-        throw TermError(t.offset, fmt::format("each: the dart variable '{}' hides a node or parameter of that name", t.name));
-      TermScope inner = scope;
-      inner.variables.push_back(t.name);
-      const Sort body = check_term(t.args[1], inner);
-      if (body.kind != Sort::value) throw TermError(t.args[1].offset, fmt::format("each's body must be a value, '{}' is a {}", t.args[1].str(), body.str()));
-      return t.sort = Sort::bag(body.type);
-    }
-    case Term::Kind::list: {
-      std::optional<ValueType> type;
-      for (Term& a : t.args) {
-        const Sort s = check_term(a, scope);
-        if (s.kind == Sort::node) throw TermError(a.offset, fmt::format("a list holds values, '{}' is a node", a.str()));
-        if (type && s.type != *type)
-          throw TermError(a.offset, fmt::format("a list holds values of one type: '{}' is a {}, the list's first element a {}", a.str(), s.str(),
-                                                name_of(*type)));
-        type = s.type;
-      }
-      if (!type) throw TermError(t.offset, "an empty list has no type");
-      return t.sort = Sort::bag(*type);
-    }
+    case Term::Kind::each:
+      return check_each(t, scope);
+    case Term::Kind::list:
+      return check_list(t, scope);
     case Term::Kind::call:
       break;
   }
-  std::vector<Sort> sorts;
-  for (Term& a : t.args) sorts.push_back(check_term(a, scope));
-  const FunctionRegistry& reg = scope.functions ? *scope.functions : FunctionRegistry::builtin();
-  const Function* f = reg.find(t.name, sorts);
-  if (!f) {
-    // An integer argument may stand for a real one (2 * v, point2(0, 1)).
-    std::vector<Sort> promoted = sorts;
-    for (Sort& s : promoted)
-      if (s == Sort::of(ValueType::integer)) s = Sort::of(ValueType::real);
-    if (promoted != sorts && (f = reg.find(t.name, promoted))) {
-      for (std::size_t k = 0; k < t.args.size(); ++k)
-        if (sorts[k] != promoted[k]) {
-          Term conv;
-          conv.kind = Term::Kind::call;
-          conv.name = "real";
-          conv.implicit = true;
-          conv.offset = t.args[k].offset;
-          conv.function = reg.find("real", {Sort::of(ValueType::integer)});
-          conv.sort = Sort::of(ValueType::real);
-          conv.args.push_back(std::move(t.args[k]));
-          t.args[k] = std::move(conv);
-        }
-    }
-  }
-  if (!f) {
-    std::string args;
-    for (std::size_t k = 0; k < sorts.size(); ++k) args += (k ? " x " : "") + sorts[k].str();
-    const auto over = reg.overloads(t.name);
-    if (over.empty()) throw TermError(t.offset, fmt::format("unknown function '{}'", t.name));
-    std::string known;
-    for (const Function* o : over) known += fmt::format("\n  {}", o->profile());
-    throw TermError(t.offset, fmt::format("no '{}' takes ({}); known profiles:{}", t.name, args, known));
-  }
-  t.function = f;
-  return t.sort = f->result;
+  return check_call(t, scope);
 }
 
 }  // namespace dartcheck
