@@ -139,6 +139,58 @@ std::vector<std::vector<Dart>> sub_orbits(const Map& g, const std::vector<Dart>&
 
 }  // namespace
 
+SymbolicEvaluator::Result SymbolicEvaluator::eval_each(const Term& t) {
+  Result r;
+  const std::vector<Dart> orbit = orbit_darts(g_, eval(t.args[0]).dart, t.orbit);
+  r.is_bag = true;
+  auto body = [&](Dart d) {
+    scope_.emplace_back(t.name, d);
+    Result x = eval(t.args[1]);
+    scope_.pop_back();
+    return x;
+  };
+  auto add = [&](const Result& x) {
+    if (x.is_bag)
+      r.bag.insert(r.bag.end(), x.bag.begin(), x.bag.end());
+    else
+      r.bag.push_back(x.value);
+  };
+  if (!t.per_sub) {
+    for (Dart d : orbit) add(body(d));
+    return r;
+  }
+  for (const auto& sub : sub_orbits(g_, orbit, meet(t.sub_orbit, t.orbit))) {
+    const Result first = body(sub.front());
+    for (std::size_t k = 1; k < sub.size(); ++k) {
+      const Result other = body(sub[k]);
+      if (other.is_bag != first.is_bag || other.value != first.value || other.bag != first.bag)
+        throw NotEncoded(fmt::format("{}: the body is not one expression on a <{}>-orbit", t.str(), fmt::join(t.sub_orbit, ",")));
+    }
+    add(first);
+  }
+  return r;
+}
+
+SymbolicEvaluator::Result SymbolicEvaluator::eval_call(const Term& t) {
+  Result r;
+  if (!t.function) throw NotEncoded(fmt::format("{}: not type-checked", t.str()));
+  std::vector<std::uint32_t> args;
+  std::vector<std::vector<std::uint32_t>> bags;
+  std::vector<bool> is_bag;
+  for (const Term& a : t.args) {
+    Result x = eval(a);
+    args.push_back(x.value);
+    is_bag.push_back(x.is_bag);
+    bags.push_back(std::move(x.bag));
+  }
+  // The library's averages refuse an empty multiset, whatever the values.
+  for (std::size_t k = 0; k < args.size(); ++k)
+    if (is_bag[k] && bags[k].empty() && t.function->name != "count" && t.function->name != "sum")
+      throw NoValue(fmt::format("{} of an empty multiset", t.function->name));
+  r.value = pool_.call(t.function, std::move(args), std::move(bags), std::move(is_bag));
+  return r;
+}
+
 SymbolicEvaluator::Result SymbolicEvaluator::eval(const Term& t) {
   Result r;
   switch (t.kind) {
@@ -182,54 +234,10 @@ SymbolicEvaluator::Result SymbolicEvaluator::eval(const Term& t) {
           r.bag.push_back(x.value);
       }
       return r;
-    case Term::Kind::each: {
-      const std::vector<Dart> orbit = orbit_darts(g_, eval(t.args[0]).dart, t.orbit);
-      r.is_bag = true;
-      auto body = [&](Dart d) {
-        scope_.emplace_back(t.name, d);
-        Result x = eval(t.args[1]);
-        scope_.pop_back();
-        return x;
-      };
-      auto add = [&](const Result& x) {
-        if (x.is_bag)
-          r.bag.insert(r.bag.end(), x.bag.begin(), x.bag.end());
-        else
-          r.bag.push_back(x.value);
-      };
-      if (!t.per_sub) {
-        for (Dart d : orbit) add(body(d));
-        return r;
-      }
-      for (const auto& sub : sub_orbits(g_, orbit, meet(t.sub_orbit, t.orbit))) {
-        const Result first = body(sub.front());
-        for (std::size_t k = 1; k < sub.size(); ++k) {
-          const Result other = body(sub[k]);
-          if (other.is_bag != first.is_bag || other.value != first.value || other.bag != first.bag)
-            throw NotEncoded(fmt::format("{}: the body is not one expression on a <{}>-orbit", t.str(), fmt::join(t.sub_orbit, ",")));
-        }
-        add(first);
-      }
-      return r;
-    }
-    case Term::Kind::call: {
-      if (!t.function) throw NotEncoded(fmt::format("{}: not type-checked", t.str()));
-      std::vector<std::uint32_t> args;
-      std::vector<std::vector<std::uint32_t>> bags;
-      std::vector<bool> is_bag;
-      for (const Term& a : t.args) {
-        Result x = eval(a);
-        args.push_back(x.value);
-        is_bag.push_back(x.is_bag);
-        bags.push_back(std::move(x.bag));
-      }
-      // The library's averages refuse an empty multiset, whatever the values.
-      for (std::size_t k = 0; k < args.size(); ++k)
-        if (is_bag[k] && bags[k].empty() && t.function->name != "count" && t.function->name != "sum")
-          throw NoValue(fmt::format("{} of an empty multiset", t.function->name));
-      r.value = pool_.call(t.function, std::move(args), std::move(bags), std::move(is_bag));
-      return r;
-    }
+    case Term::Kind::each:
+      return eval_each(t);
+    case Term::Kind::call:
+      return eval_call(t);
   }
   throw NotEncoded(fmt::format("{}: unknown term kind", t.str()));
 }

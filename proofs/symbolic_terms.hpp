@@ -105,6 +105,8 @@ class SymbolicEvaluator {
     std::vector<std::uint32_t> bag;
   };
   Result eval(const Term& t);
+  Result eval_each(const Term& t);  // each(x in <o>(y): t), per dart or per sub-orbit
+  Result eval_call(const Term& t);  // a function of the pool on the arguments' expressions
   const EmbeddingSignature& signature(const std::string& embedding) const;
 
   const Map& g_;
