@@ -454,13 +454,10 @@ void TermCode::lookups(Out out) const {
       if (p.kept_at[u][g] != no_node) fmt::format_to(out, "  bool kept{}_{} = false;  // the kept-label shortcut taken\n", u, g);
 }
 
-void TermCode::before_rewrite(Out out, bool everywhere) const {
+// L's terms as the labels the match must carry (003 Def. 10).
+void TermCode::left_labels(Out out) const {
   const Plan& p = *plan_;
-  const Rule& r = p.op.rule;
-  const TopoGraph& L = r.left();
-  fmt::format_to(out, "  // Terms (003 Def. 10): L's labels, then one source per class of R.\n  tw.prepare({}, {});\n", p.used.size(),
-                 p.sites.size());
-  fmt::format_to(out, "  {{\n  {}\n  try {{\n", match_declaration(r, everywhere));
+  const TopoGraph& L = p.op.rule.left();
   for (std::size_t k = 0; k < p.terms.left.size(); ++k) {
     const NodeTerm& t = p.terms.left[k];
     const NodeId x = p.left_node[k];
@@ -484,10 +481,12 @@ void TermCode::before_rewrite(Out out, bool everywhere) const {
     }
     fmt::format_to(out, "  }}\n");
   }
-  fmt::format_to(out,
-                 "  }} catch (const EvaluationError& x) {{\n    return ws.refuse(Refusal::no_value, std::string(\"a term of L has no value: \") + "
-                 "x.what());\n  }}\n");
-  // Lemma 3, where L's darts are not closed under the orbit.
+}
+
+// Lemma 3, where L's darts are not closed under the orbit.
+void TermCode::overlap_checks(Out out) const {
+  const Plan& p = *plan_;
+  const TopoGraph& L = p.op.rule.left();
   if (p.extended())
     for (std::size_t u = 0; u < p.used.size(); ++u) {
       if (p.left_closed[u]) continue;
@@ -503,64 +502,82 @@ void TermCode::before_rewrite(Out out, bool everywhere) const {
           "      return ws.refuse(Refusal::overlap, std::move(why));\n  }}\n",
           L.node_count(), cpp_literal(e.name));
     }
+}
+
+// The classes of R for the u-th embedding used and their sources: a
+// value kept from G or one evaluation per class (003 Thm 4).
+void TermCode::right_sources(Out out, std::size_t u, bool everywhere) const {
+  const Plan& p = *plan_;
+  const EmbeddingSignature& sig = *p.used[u];
+  const std::size_t e = p.index_of(sig.name);
+  fmt::format_to(out, "  {{  // {} <{}>\n", comment_text(sig.name), fmt::join(sig.orbit, ","));
+  if (p.extended()) {
+    fmt::format_to(out, "    std::vector<std::uint32_t>& cls = tw.class_of[{}];\n", u);
+    p.right_classes(out, u, everywhere);
+    fmt::format_to(out,
+                   "    std::vector<Source>& src = tw.sources[{0}];\n    src.assign(tw.class_count[{0}], Source{{}});\n"
+                   "    reserve_more(tw.evaluated, tw.class_count[{0}]);  // at most a value per class\n",
+                   u);
+  } else {
+    fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign({} * np, Source{{}});\n", u, p.terms.right.size());
+  }
+  for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
+    const NodeTerm& t = p.terms.right[k];
+    if (t.embedding != sig.name) continue;
+    const NodeId y = p.right_node[k];
+    if (p.extended() && p.right_groups[u].grouped && p.kept_at[u][p.right_groups[u].group_of[y]] != no_node)
+      fmt::format_to(out, "    if (!kept{}_{})  // else its values are G's, in cls\n", u, p.right_groups[u].group_of[y]);
+    fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) {{  // R: {} labeled {} = {}\n      Source& here = src[{}];\n",
+                   comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()),
+                   p.extended() ? p.class_of(u, y) : fmt::format("{} * np + p", k));
+    fmt::format_to(out, "      if (here.index != Embedding::none) continue;  // its class has one\n");
+    if (const NodeId at = p.stored_at[k]; at != no_node) {
+      fmt::format_to(out,
+                     "      const Dart d = match[{} * np + p];  // kept from G: no evaluation\n"
+                     "      if (d >= e{}->slot.size() || e{}->slot[d] == Embedding::none)\n"
+                     "        throw EvaluationError(std::string({}) + \": dart \" + std::to_string(d) + \" has no \" {} \" value\");\n"
+                     "      here = {{e{}->slot[d], true}};\n",
+                     at, e, e, cpp_literal(t.term.str()), cpp_literal(t.embedding), e);
+    } else {
+      std::string code;
+      int next = 0;
+      const Plan::Along along{u, p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0};
+      std::map<std::string, std::string> seen;
+      const std::string v = p.value(t.term, code, next, everywhere && p.extended() && p.right_groups[u].grouped ? &along : nullptr, &seen);
+      indent(code);  // one more level
+      out = std::copy(code.begin(), code.end(), out);
+      fmt::format_to(out, "      here = {{static_cast<std::uint32_t>(tw.evaluated.size()), false}};\n      tw.evaluated.push_back({});\n", v);
+    }
+    fmt::format_to(out, "    }}\n");
+  }
+  fmt::format_to(out, "  }}\n");
+}
+
+void TermCode::before_rewrite(Out out, bool everywhere) const {
+  const Plan& p = *plan_;
+  const Rule& r = p.op.rule;
+  fmt::format_to(out, "  // Terms (003 Def. 10): L's labels, then one source per class of R.\n  tw.prepare({}, {});\n", p.used.size(),
+                 p.sites.size());
+  fmt::format_to(out, "  {{\n  {}\n  try {{\n", match_declaration(r, everywhere));
+  left_labels(out);
+  fmt::format_to(out,
+                 "  }} catch (const EvaluationError& x) {{\n    return ws.refuse(Refusal::no_value, std::string(\"a term of L has no value: \") + "
+                 "x.what());\n  }}\n");
+  overlap_checks(out);
   // Classes of R and their sources (one evaluation per class: Thm 4).
   fmt::format_to(out, "  try {{\n");
-  for (std::size_t u = 0; u < p.used.size(); ++u) {
-    const EmbeddingSignature& sig = *p.used[u];
-    const std::size_t e = p.index_of(sig.name);
-    fmt::format_to(out, "  {{  // {} <{}>\n", comment_text(sig.name), fmt::join(sig.orbit, ","));
-    if (p.extended()) {
-      fmt::format_to(out, "    std::vector<std::uint32_t>& cls = tw.class_of[{}];\n", u);
-      p.right_classes(out, u, everywhere);
-      fmt::format_to(out,
-                     "    std::vector<Source>& src = tw.sources[{0}];\n    src.assign(tw.class_count[{0}], Source{{}});\n"
-                     "    reserve_more(tw.evaluated, tw.class_count[{0}]);  // at most a value per class\n",
-                     u);
-    } else {
-      fmt::format_to(out, "    std::vector<Source>& src = tw.sources[{}];\n    src.assign({} * np, Source{{}});\n", u, p.terms.right.size());
-    }
-    for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
-      const NodeTerm& t = p.terms.right[k];
-      if (t.embedding != sig.name) continue;
-      const NodeId y = p.right_node[k];
-      if (p.extended() && p.right_groups[u].grouped && p.kept_at[u][p.right_groups[u].group_of[y]] != no_node)
-        fmt::format_to(out, "    if (!kept{}_{})  // else its values are G's, in cls\n", u, p.right_groups[u].group_of[y]);
-      fmt::format_to(out, "    for (std::size_t p = 0; p < np; ++p) {{  // R: {} labeled {} = {}\n      Source& here = src[{}];\n",
-                     comment_text(t.node), comment_text(t.embedding), comment_text(t.term.str()),
-                     p.extended() ? p.class_of(u, y) : fmt::format("{} * np + p", k));
-      fmt::format_to(out, "      if (here.index != Embedding::none) continue;  // its class has one\n");
-      if (const NodeId at = p.stored_at[k]; at != no_node) {
-        fmt::format_to(out,
-                       "      const Dart d = match[{} * np + p];  // kept from G: no evaluation\n"
-                       "      if (d >= e{}->slot.size() || e{}->slot[d] == Embedding::none)\n"
-                       "        throw EvaluationError(std::string({}) + \": dart \" + std::to_string(d) + \" has no \" {} \" value\");\n"
-                       "      here = {{e{}->slot[d], true}};\n",
-                       at, e, e, cpp_literal(t.term.str()), cpp_literal(t.embedding), e);
-      } else {
-        std::string code;
-        int next = 0;
-        const Plan::Along along{u, p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0};
-        std::map<std::string, std::string> seen;
-        const std::string v = p.value(t.term, code, next, everywhere && p.extended() && p.right_groups[u].grouped ? &along : nullptr, &seen);
-        indent(code);  // one more level
-        out = std::copy(code.begin(), code.end(), out);
-        fmt::format_to(out, "      here = {{static_cast<std::uint32_t>(tw.evaluated.size()), false}};\n      tw.evaluated.push_back({});\n", v);
-      }
-      fmt::format_to(out, "    }}\n");
-    }
-    fmt::format_to(out, "  }}\n");
-  }
+  for (std::size_t u = 0; u < p.used.size(); ++u) right_sources(out, u, everywhere);
   fmt::format_to(out,
                  "  }} catch (const EvaluationError& x) {{\n    return ws.refuse(Refusal::no_value, std::string(\"a term of R has no value: \") + "
                  "x.what());\n  }}\n  }}\n");
 }
 
-void TermCode::after_rewrite(Out out, bool everywhere) const {
+// Added darts start unlabeled.
+void TermCode::unlabel_added(Out out, bool everywhere) const {
   const Plan& p = *plan_;
   const Rule& r = p.op.rule;
   const TopoGraph& R = r.right();
   const auto cm = [&](NodeId y) { return comatch_dart(r, y, "p", everywhere); };  // y's dart at position p
-  fmt::format_to(out, "  // Labels (003 Def. 12).\n  em.follow(ws.moved);\n  {{\n");
   std::vector<NodeId> added;
   for (NodeId y = 0; y < R.node_count(); ++y)
     if (r.to_left(y) == no_node) added.push_back(y);
@@ -580,6 +597,83 @@ void TermCode::after_rewrite(Out out, bool everywhere) const {
                      cm(y));
     fmt::format_to(out, "  }}\n");
   }
+}
+
+// The u-th embedding's values written on H: a closed class without a
+// walk, an extended class along its orbit, a direct label on its dart.
+void TermCode::write_values(Out out, std::size_t u, bool everywhere) const {
+  const Plan& p = *plan_;
+  const Rule& r = p.op.rule;
+  const TopoGraph& R = r.right();
+  const auto cm = [&](NodeId y) { return comatch_dart(r, y, "p", everywhere); };  // y's dart at position p
+  const EmbeddingSignature& sig = *p.used[u];
+  const std::size_t e = p.index_of(sig.name);
+  fmt::format_to(out, "  {{  // {} <{}>\n    Embedding& e = *e{};\n    const std::vector<Source>& src = tw.sources[{}];\n", comment_text(sig.name),
+                 fmt::join(sig.orbit, ","), e, u);
+  if (p.extended() && p.closed[u]) {
+    // Every node of R has one arc of each dimension of <o>: a class is a
+    // whole orbit of H, written without a walk.
+    fmt::format_to(out,
+                   "    [[maybe_unused]] const std::vector<std::uint32_t>& cls = tw.class_of[{0}];  // unused when R is empty\n"
+                   "    std::vector<std::uint32_t>& pool = tw.pool_of;\n"
+                   "    pool.assign(tw.class_count[{0}], Embedding::none);\n"
+                   "    reserve_more(e.pool, tw.class_count[{0}]);\n"
+                   "    for (std::size_t c = 0; c < pool.size(); ++c)\n"
+                   "      if (const Source f = src[c]; f.index != Embedding::none) pool[c] = f.stored ? f.index : e.store(tw.evaluated[f.index]);\n"
+                   "    // R closes <{1}>: a class is a whole orbit of H. (em.follow made the slots as many as the darts.)\n",
+                   u, fmt::join(sig.orbit, ","));
+    for (NodeId y = 0; y < R.node_count(); ++y) {
+      const std::size_t g = p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0;
+      const NodeId at = p.right_groups[u].grouped ? p.kept_at[u][g] : no_node;
+      if (at != no_node && r.to_left(y) == at)
+        // The shortcut stored, at each copy, the pool index of this very
+        // dart (no dart is renumbered: kept_groups): nothing to write.
+        fmt::format_to(out, "    if (!kept{}_{})  // else {} keeps its own value from G\n", u, g, comment_text(R.name(y)));
+      else if (at != no_node)
+        fmt::format_to(out,
+                       "    if (kept{0}_{1})\n"
+                       "      for (std::size_t p = 0; p < np; ++p) e.slot[{2}] = cls[{1} * np + p];  // {3}: G's value\n"
+                       "    else\n",
+                       u, g, cm(y), comment_text(R.name(y)));
+      fmt::format_to(out,
+                     "    for (std::size_t p = 0; p < np; ++p)  // {}\n"
+                     "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.slot[{}] = v;\n",
+                     comment_text(R.name(y)), p.class_of(u, y), cm(y));
+    }
+  } else if (p.extended()) {
+    fmt::format_to(
+        out,
+        "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n    static const std::vector<OrbitWord> gens = dims_generators({{{}}});\n", u,
+        fmt::join(sig.orbit, ", "));
+    for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
+      if (p.terms.right[k].embedding != sig.name) continue;
+      const NodeId y = p.right_node[k];
+      fmt::format_to(out,
+                     "    for (std::size_t p = 0; p < np; ++p)  // {}: its orbit of H\n      write_orbit(tw, g, e, gens, {}, "
+                     "src[{}]);\n",
+                     comment_text(p.terms.right[k].node), cm(y), p.class_of(u, y));
+    }
+    fmt::format_to(out, "    end_writes(tw);\n");
+  } else {
+    for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
+      if (p.terms.right[k].embedding != sig.name) continue;
+      const NodeId y = p.right_node[k];
+      fmt::format_to(out,
+                     "    for (std::size_t p = 0; p < np; ++p) {{  // {}: its own dart (direct)\n"
+                     "      const Source f = src[{} * np + p];\n      e.set_index({}, f.stored ? f.index : "
+                     "e.store(tw.evaluated[f.index]));\n    }}\n",
+                     comment_text(p.terms.right[k].node), k, cm(y));
+    }
+  }
+  fmt::format_to(out, "  }}\n");
+}
+
+void TermCode::after_rewrite(Out out, bool everywhere) const {
+  const Plan& p = *plan_;
+  const Rule& r = p.op.rule;
+  const auto cm = [&](NodeId y) { return comatch_dart(r, y, "p", everywhere); };  // y's dart at position p
+  fmt::format_to(out, "  // Labels (003 Def. 12).\n  em.follow(ws.moved);\n  {{\n");
+  unlabel_added(out, everywhere);
   for (std::size_t k = 0; k < p.terms.left.size(); ++k) {
     const NodeTerm& t = p.terms.left[k];
     const NodeId y = r.to_right(p.left_node[k]);
@@ -591,68 +685,7 @@ void TermCode::after_rewrite(Out out, bool everywhere) const {
                    "    for (std::size_t p = 0; p < np; ++p) unlabel(tw, g, *e{}, gens, {}, {});\n  }}\n",
                    comment_text(t.node), comment_text(t.embedding), e, e, cm(y), p.extended());
   }
-  for (std::size_t u = 0; u < p.used.size(); ++u) {
-    const EmbeddingSignature& sig = *p.used[u];
-    const std::size_t e = p.index_of(sig.name);
-    fmt::format_to(out, "  {{  // {} <{}>\n    Embedding& e = *e{};\n    const std::vector<Source>& src = tw.sources[{}];\n", comment_text(sig.name),
-                   fmt::join(sig.orbit, ","), e, u);
-    if (p.extended() && p.closed[u]) {
-      // Every node of R has one arc of each dimension of <o>: a class is a
-      // whole orbit of H, written without a walk.
-      fmt::format_to(out,
-                     "    [[maybe_unused]] const std::vector<std::uint32_t>& cls = tw.class_of[{0}];  // unused when R is empty\n"
-                     "    std::vector<std::uint32_t>& pool = tw.pool_of;\n"
-                     "    pool.assign(tw.class_count[{0}], Embedding::none);\n"
-                     "    reserve_more(e.pool, tw.class_count[{0}]);\n"
-                     "    for (std::size_t c = 0; c < pool.size(); ++c)\n"
-                     "      if (const Source f = src[c]; f.index != Embedding::none) pool[c] = f.stored ? f.index : e.store(tw.evaluated[f.index]);\n"
-                     "    // R closes <{1}>: a class is a whole orbit of H. (em.follow made the slots as many as the darts.)\n",
-                     u, fmt::join(sig.orbit, ","));
-      for (NodeId y = 0; y < R.node_count(); ++y) {
-        const std::size_t g = p.right_groups[u].grouped ? p.right_groups[u].group_of[y] : 0;
-        const NodeId at = p.right_groups[u].grouped ? p.kept_at[u][g] : no_node;
-        if (at != no_node && r.to_left(y) == at)
-          // The shortcut stored, at each copy, the pool index of this very
-          // dart (no dart is renumbered: kept_groups): nothing to write.
-          fmt::format_to(out, "    if (!kept{}_{})  // else {} keeps its own value from G\n", u, g, comment_text(R.name(y)));
-        else if (at != no_node)
-          fmt::format_to(out,
-                         "    if (kept{0}_{1})\n"
-                         "      for (std::size_t p = 0; p < np; ++p) e.slot[{2}] = cls[{1} * np + p];  // {3}: G's value\n"
-                         "    else\n",
-                         u, g, cm(y), comment_text(R.name(y)));
-        fmt::format_to(out,
-                       "    for (std::size_t p = 0; p < np; ++p)  // {}\n"
-                       "      if (const std::uint32_t v = pool[{}]; v != Embedding::none) e.slot[{}] = v;\n",
-                       comment_text(R.name(y)), p.class_of(u, y), cm(y));
-      }
-    } else if (p.extended()) {
-      fmt::format_to(
-          out,
-          "    const std::vector<std::uint32_t>& cls = tw.class_of[{}];\n    static const std::vector<OrbitWord> gens = dims_generators({{{}}});\n",
-          u, fmt::join(sig.orbit, ", "));
-      for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
-        if (p.terms.right[k].embedding != sig.name) continue;
-        const NodeId y = p.right_node[k];
-        fmt::format_to(out,
-                       "    for (std::size_t p = 0; p < np; ++p)  // {}: its orbit of H\n      write_orbit(tw, g, e, gens, {}, "
-                       "src[{}]);\n",
-                       comment_text(p.terms.right[k].node), cm(y), p.class_of(u, y));
-      }
-      fmt::format_to(out, "    end_writes(tw);\n");
-    } else {
-      for (std::size_t k = 0; k < p.terms.right.size(); ++k) {
-        if (p.terms.right[k].embedding != sig.name) continue;
-        const NodeId y = p.right_node[k];
-        fmt::format_to(out,
-                       "    for (std::size_t p = 0; p < np; ++p) {{  // {}: its own dart (direct)\n"
-                       "      const Source f = src[{} * np + p];\n      e.set_index({}, f.stored ? f.index : "
-                       "e.store(tw.evaluated[f.index]));\n    }}\n",
-                       comment_text(p.terms.right[k].node), k, cm(y));
-      }
-    }
-    fmt::format_to(out, "  }}\n");
-  }
+  for (std::size_t u = 0; u < p.used.size(); ++u) write_values(out, u, everywhere);
   fmt::format_to(out, "  }}\n");
 }
 

@@ -56,6 +56,13 @@ class TermCode {
   void after_rewrite(Out out, bool everywhere) const;
 
  private:
+  // The pieces of before_rewrite and after_rewrite.
+  void left_labels(Out out) const;
+  void overlap_checks(Out out) const;
+  void right_sources(Out out, std::size_t u, bool everywhere) const;
+  void unlabel_added(Out out, bool everywhere) const;
+  void write_values(Out out, std::size_t u, bool everywhere) const;
+
   struct Plan;
   std::unique_ptr<Plan> plan_;
 };
