@@ -124,6 +124,15 @@ struct SchemeRewriter::State {
   State(const Rule& r, const ArcWords& w);
   Outcome<SchemeMatch> match(const Map& g, std::span<const Dart> hook_darts);
   SchemeDerivation rewrite(Map& g, const SchemeMatch& match);
+
+  // match's steps, each a refusal or nothing.
+  struct Refused {
+    Refusal refusal;
+    std::string why;
+  };
+  std::optional<Refused> propagate(const Map& g, std::span<const Dart> hook_darts, const PatternGraphs& pg, std::vector<std::vector<Dart>>& m);
+  std::optional<Refused> check_injective(const Map& g, const std::vector<Dart>& pattern, const std::vector<std::vector<Dart>>& m);
+  std::optional<Refused> check_applicable(const Map& g, std::size_t np, const std::vector<std::vector<Dart>>& m) const;
 };
 
 SchemeRewriter::State::State(const Rule& r, const ArcWords& w) : core(r), words(w), gens(scheme_generators(r.model(), w)), letter(letters_of(gens)) {
@@ -213,8 +222,105 @@ SchemeFacts scheme_facts(const Rule& core, const ArcWords& words) {
   return f;
 }
 
-Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const Dart> hook_darts) {
+// The match: m[x][p] is the image of product node (p, x), propagated from
+// (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
+std::optional<SchemeRewriter::State::Refused> SchemeRewriter::State::propagate(const Map& g, std::span<const Dart> hook_darts,
+                                                                               const PatternGraphs& pg, std::vector<std::vector<Dart>>& m) {
+  const TopoGraph& L = core.left();
+  const auto& shift = pg.shift;
+  const std::vector<Dart>& pattern = pg.darts[0];
+  auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
+  for (auto& column : m) column.assign(pattern.size(), no_dart);
+  queue.clear();
+  for (std::size_t h = 0; h < hook_darts.size(); ++h) {
+    const NodeId hook = core.hooks()[h];
+    if (m[hook][0] != no_dart) return Refused{Refusal::bad_hooks, "two hooks name one node of L"};
+    m[hook][0] = hook_darts[h];
+    queue.emplace_back(0, hook);
+  }
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const auto [p, x] = queue[k];
+    const Dart here = m[x][p];
+    for (const Step& s : steps[x]) {
+      const std::uint32_t q = step(p, s.generator);
+      const Dart there = s.forward ? g.link(s.label, here) : g.inverse_link(s.label, here);
+      if (there == no_dart) {
+        const auto& a = L.arc(s.arc);
+        return Refused{Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source), a.label,
+                                                      L.name(a.target), pattern[p], here, a.label)};
+      }
+      Dart& slot = m[s.other][q];
+      if (slot == no_dart) {
+        slot = there;
+        queue.emplace_back(q, s.other);
+      } else if (slot != there) {
+        return Refused{Refusal::no_match, fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q],
+                                                      L.name(s.other), slot, there)};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// Injectivity on nodes; every product node matched (ι(L, P_v) connected).
+// The marks are cleared through the matched darts met.
+std::optional<SchemeRewriter::State::Refused> SchemeRewriter::State::check_injective(const Map& g, const std::vector<Dart>& pattern,
+                                                                                     const std::vector<std::vector<Dart>>& m) {
+  const TopoGraph& L = core.left();
+  const std::size_t np = pattern.size();
+  constexpr std::uint32_t none = DartTable::none;
+  std::size_t marked = 0;
+  auto unmark = [&] {
+    for (NodeId x = 0; x < L.node_count() && marked > 0; ++x)
+      for (std::size_t p = 0; p < np && marked > 0; ++p, --marked) position[m[x][p]] = none;
+  };
+  if (position.size() < g.size()) position.resize(g.size(), none);
+  for (NodeId x = 0; x < L.node_count(); ++x)
+    for (std::size_t p = 0; p < np; ++p) {
+      const Dart d = m[x][p];
+      if (d == no_dart) {
+        unmark();
+        return Refused{Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) is not "
+                                                          "connected, so the hooks do not fix the match (002 Sec. 6.3)",
+                                                          pattern[p], L.name(x))};
+      }
+      if (position[d] != none) {
+        unmark();
+        return Refused{Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d)};
+      }
+      position[d] = 0;
+      ++marked;
+    }
+  unmark();
+  return std::nullopt;
+}
+
+// The rule's own refusals on a match: arc injectivity (two arcs of L out
+// of one node with one label share their images), dangling (a deleted
+// node needs an L arc in and out for every dimension its darts carry),
+// representability per scheme arc (the same for every pattern node).
+std::optional<SchemeRewriter::State::Refused> SchemeRewriter::State::check_applicable(const Map& g, std::size_t np,
+                                                                                      const std::vector<std::vector<Dart>>& m) const {
   const TopoGraph &L = core.left(), &R = core.right();
+  if (!two_arcs_in_l.empty()) return Refused{Refusal::not_injective, two_arcs_in_l};
+  for (const SchemeFacts::Dangling& c : dangling)
+    for (std::size_t p = 0; p < np; ++p)
+      if ((!c.out && g.link(c.i, m[c.x][p]) != no_dart) || (!c.in && g.inverse_link(c.i, m[c.x][p]) != no_dart))
+        return Refused{Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[c.x][p], L.name(c.x), c.i)};
+  for (ArcId e = 0, k = 0; e < R.arc_count(); ++e) {
+    if (core.preserved_right_arc(e)) continue;
+    const SchemeFacts::Added& a = added[k++];
+    if (!a.always.empty()) return Refused{Refusal::not_representable, a.always};
+    if (a.x == no_node) continue;
+    for (std::size_t p = 0; p < np && !a.freed; ++p)
+      if (a.kept || g.link(a.label, m[a.x][p]) != no_dart)
+        return Refused{Refusal::not_representable,
+                       fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label, R.name(R.arc(e).source), m[a.x][p], a.label)};
+  }
+  return std::nullopt;
+}
+
+Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const Dart> hook_darts) {
   if (hook_darts.size() != core.hooks().size())
     return refuse<SchemeMatch>(Refusal::bad_hooks, fmt::format("the scheme needs {} hook dart{}, one per component of L", core.hooks().size(),
                                                                core.hooks().size() == 1 ? "" : "s"));
@@ -232,99 +338,19 @@ Outcome<SchemeMatch> SchemeRewriter::State::match(const Map& g, std::span<const 
       return refuse<SchemeMatch>(refusal, std::move(why));
     }
   }
-  const auto& shift = pg.shift;
   const std::vector<Dart>& pattern = pg.darts[0];
-  const std::size_t np = pattern.size();
-  auto step = [&](std::size_t p, int k) { return k < 0 ? static_cast<std::uint32_t>(p) : shift[static_cast<std::size_t>(k)][p]; };
-  // Every refusal below hands the tables back first.
-  auto no = [&](Refusal r, std::string why) {
+  auto& m = found.node;
+  m.resize(core.left().node_count());
+  std::optional<Refused> refused;
+  if (identity_match)
+    m[0].assign(pattern.begin(), pattern.end());
+  else if (!(refused = propagate(g, hook_darts, pg, m)))
+    refused = check_injective(g, pattern, m);
+  if (!refused) refused = check_applicable(g, pattern.size(), m);
+  if (refused) {  // the tables are handed back for the next match
     spare_pattern = std::move(found.pattern);
     spare_match = std::move(found.node);
-    return refuse<SchemeMatch>(r, std::move(why));
-  };
-
-  // The match: m[x][p] is the image of product node (p, x), propagated from
-  // (v, hook) -> v along the instantiated arcs (p, x) -(d)-> (p·w, y).
-  auto& m = found.node;
-  m.resize(L.node_count());
-  if (identity_match) {
-    m[0].assign(pattern.begin(), pattern.end());
-  } else {
-    for (auto& column : m) column.assign(np, no_dart);
-    queue.clear();
-    for (std::size_t h = 0; h < hook_darts.size(); ++h) {
-      const NodeId hook = core.hooks()[h];
-      if (m[hook][0] != no_dart) return no(Refusal::bad_hooks, "two hooks name one node of L");
-      m[hook][0] = hook_darts[h];
-      queue.emplace_back(0, hook);
-    }
-    for (std::size_t k = 0; k < queue.size(); ++k) {
-      const auto [p, x] = queue[k];
-      const Dart here = m[x][p];
-      for (const Step& s : steps[x]) {
-        const std::uint32_t q = step(p, s.generator);
-        const Dart there = s.forward ? g.link(s.label, here) : g.inverse_link(s.label, here);
-        if (there == no_dart) {
-          const auto& a = L.arc(s.arc);
-          return no(Refusal::no_match, fmt::format("arc {} -{}-> {} of L at pattern dart {}: dart {} has no {}-arc", L.name(a.source), a.label,
-                                                   L.name(a.target), pattern[p], here, a.label));
-        }
-        Dart& slot = m[s.other][q];
-        if (slot == no_dart) {
-          slot = there;
-          queue.emplace_back(q, s.other);
-        } else if (slot != there) {
-          return no(Refusal::no_match,
-                    fmt::format("node ({}, {}) of the instantiated L would be both dart {} and dart {}", pattern[q], L.name(s.other), slot, there));
-        }
-      }
-    }
-    // Injectivity on nodes; every product node matched (ι(L, P_v)
-    // connected). The marks are cleared through the matched darts met.
-    constexpr std::uint32_t none = DartTable::none;
-    std::size_t marked = 0;
-    auto unmark = [&] {
-      for (NodeId x = 0; x < L.node_count() && marked > 0; ++x)
-        for (std::size_t p = 0; p < np && marked > 0; ++p, --marked) position[m[x][p]] = none;
-    };
-    if (position.size() < g.size()) position.resize(g.size(), none);
-    for (NodeId x = 0; x < L.node_count(); ++x)
-      for (std::size_t p = 0; p < np; ++p) {
-        const Dart d = m[x][p];
-        if (d == no_dart) {
-          unmark();
-          return no(Refusal::disconnected, fmt::format("node ({}, {}) of the instantiated L is unreachable from the hooks: ι(L, P_v) is not "
-                                                       "connected, so the hooks do not fix the match (002 Sec. 6.3)",
-                                                       pattern[p], L.name(x)));
-        }
-        if (position[d] != none) {
-          unmark();
-          return no(Refusal::not_injective, fmt::format("two nodes of the instantiated L match dart {}", d));
-        }
-        position[d] = 0;
-        ++marked;
-      }
-    unmark();
-  }
-  // Arc injectivity: two arcs of L out of one node with one label share
-  // their images.
-  if (!two_arcs_in_l.empty()) return no(Refusal::not_injective, two_arcs_in_l);
-  // Dangling: a deleted node needs an L arc in and out for every dimension
-  // its darts carry.
-  for (const SchemeFacts::Dangling& c : dangling)
-    for (std::size_t p = 0; p < np; ++p)
-      if ((!c.out && g.link(c.i, m[c.x][p]) != no_dart) || (!c.in && g.inverse_link(c.i, m[c.x][p]) != no_dart))
-        return no(Refusal::dangling, fmt::format("deleted dart {} (node {}) keeps a {}-arc outside the match", m[c.x][p], L.name(c.x), c.i));
-  // Representability, per scheme arc (the same for every pattern node).
-  for (ArcId e = 0, k = 0; e < R.arc_count(); ++e) {
-    if (core.preserved_right_arc(e)) continue;
-    const SchemeFacts::Added& a = added[k++];
-    if (!a.always.empty()) return no(Refusal::not_representable, a.always);
-    if (a.x == no_node) continue;
-    for (std::size_t p = 0; p < np && !a.freed; ++p)
-      if (a.kept || g.link(a.label, m[a.x][p]) != no_dart)
-        return no(Refusal::not_representable,
-                  fmt::format("R adds a {}-arc out of {} whose dart {} keeps its {}-arc", a.label, R.name(R.arc(e).source), m[a.x][p], a.label));
+    return refuse<SchemeMatch>(refused->refusal, std::move(refused->why));
   }
   return {std::move(found), Refusal::none, {}};
 }
