@@ -163,12 +163,13 @@ void classify(FuzzReport& out, bool static_holds, std::size_t small_count) {
     return;
   }
   out.verdict = FuzzClass::unconfirmed;
-  out.reason = out.applications == 0
-                   ? fmt::format("never applied{}", refusals)
-                   : fmt::format("no failure in {} on {} of up to {} darts: the static conditions are sufficient, not necessary{}",
-                                 counted(out.applications, "application"),
-                                 counted(out.hosts, "embedded map") + fmt::format(" ({} enumerated maps of up to 6 darts, then random ones)", small_count),
-                                 out.largest_host, refusals);
+  out.reason =
+      out.applications == 0
+          ? fmt::format("never applied{}", refusals)
+          : fmt::format("no failure in {} on {} of up to {} darts: the static conditions are sufficient, not necessary{}",
+                        counted(out.applications, "application"),
+                        counted(out.hosts, "embedded map") + fmt::format(" ({} enumerated maps of up to 6 darts, then random ones)", small_count),
+                        out.largest_host, refusals);
   if (out.out_of_time) out.reason += " (stopped by --time)";
 }
 
@@ -218,7 +219,8 @@ FuzzReport fuzz_embedded_rule(const Operation& entry, const std::vector<Map>& se
       }
       ++out.applications;
       if (auto cx = broken(planted, h, *d.value, hooks)) {
-        cx->origin = fmt::format("{} {}-dart {} with random values (host {} of the run)", hosts.kind(), planted.map.size(), entry.rule.model().name, out.hosts);
+        cx->origin = fmt::format("{} {}-dart {} with random values (host {} of the run)", hosts.kind(), planted.map.size(), entry.rule.model().name,
+                                 out.hosts);
         add_match(entry, planted, hooks, *cx);
         out.counterexample = std::move(cx);
         break;

@@ -31,11 +31,8 @@ ConjWord parse_conj_word(std::string_view text, const Model& model) {
   if (text.empty() || text == "ε" || text == "e") return w;
   bool pending_bar = false;
   std::size_t k = 0;
-  auto fail = [&](std::size_t at, const std::string& what) {
-    throw ValueError(fmt::format("word '{}', character {}: {}", text, at + 1, what));
-  };
-  if (text.size() > limits().word_length)
-    throw ValueError(over_limit("a word's length", text.size(), limits().word_length, "--limit-word-length"));
+  auto fail = [&](std::size_t at, const std::string& what) { throw ValueError(fmt::format("word '{}', character {}: {}", text, at + 1, what)); };
+  if (text.size() > limits().word_length) throw ValueError(over_limit("a word's length", text.size(), limits().word_length, "--limit-word-length"));
   while (k < text.size()) {
     const char c = text[k];
     if (c == '~') {

@@ -22,8 +22,7 @@ namespace dartcheck {
 
 namespace fs = std::filesystem;
 
-OutputError::OutputError(std::string file, const std::string& reason)
-    : Error(file + ": cannot write: " + reason), file_(std::move(file)) {}
+OutputError::OutputError(std::string file, const std::string& reason) : Error(file + ": cannot write: " + reason), file_(std::move(file)) {}
 
 namespace {
 

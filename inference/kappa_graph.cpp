@@ -28,8 +28,7 @@ void associate(std::vector<Dart>& kappa, std::vector<Dart>& inverse, Dart x, Dar
   if (y >= inverse.size()) throw ValueError(fmt::format("kappa: dart {} is not a dart of the after map ({} darts)", y, inverse.size()));
   if (kappa[x] == y) return;
   if (kappa[x] != no_dart) throw ValueError(fmt::format("kappa maps before dart {} to both {} and {}", x, kappa[x], y));
-  if (inverse[y] != no_dart)
-    throw ValueError(fmt::format("kappa is not injective: before darts {} and {} both map to {}", inverse[y], x, y));
+  if (inverse[y] != no_dart) throw ValueError(fmt::format("kappa is not injective: before darts {} and {} both map to {}", inverse[y], x, y));
   kappa[x] = y;
   inverse[y] = x;
 }
@@ -53,9 +52,8 @@ void associate_orbits(const Map& g, const Map& h, const KappaSpec::OrbitPair& p,
       if (nx == no_dart || ny == no_dart) throw ValueError(fmt::format("kappa: dart {} or {} has no {}-link", x, y, d));
       const bool new_x = seen_g[nx] == no_dart, new_y = seen_h[ny] == no_dart;
       if (new_x != new_y || (!new_x && (seen_g[nx] != ny || seen_h[ny] != nx)))
-        throw ValueError(
-            fmt::format("kappa: the orbits of before dart {} and after dart {} differ in shape: their {}-links from {} and {} disagree", p.before,
-                        p.after, d, x, y));
+        throw ValueError(fmt::format("kappa: the orbits of before dart {} and after dart {} differ in shape: their {}-links from {} and {} disagree",
+                                     p.before, p.after, d, x, y));
       if (new_x) {
         seen_g[nx] = ny;
         seen_h[ny] = nx;

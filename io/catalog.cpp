@@ -468,7 +468,8 @@ class EntryReader {
         const auto vname = name + "/" + yaml::as_string(file_, yaml::require(file_, v, "name"), "variant name");
         const auto* base_rule = c_.find_rule(name);
         const std::optional<RuleTerms> base_terms = base_rule->terms;
-        add_rule(c_, file_, v, vname, model, edit_side(file_, left, v, "left"), edit_side(file_, right, v, "right"), n, base_terms ? &*base_terms : nullptr);
+        add_rule(c_, file_, v, vname, model, edit_side(file_, left, v, "left"), edit_side(file_, right, v, "right"), n,
+                 base_terms ? &*base_terms : nullptr);
       }
     }
   }

@@ -230,8 +230,7 @@ class Reader {
 // (time step 0, 1 component, the number of values).
 void element_data(std::ostream& out, const std::vector<CellField>& fields, std::size_t elements) {
   for (const CellField& f : fields) {
-    if (f.values.size() != elements)
-      throw InternalError(fmt::format("cell field {} has {} values for {} cells", f.name, f.values.size(), elements));
+    if (f.values.size() != elements) throw InternalError(fmt::format("cell field {} has {} values for {} cells", f.name, f.values.size(), elements));
     out << fmt::format("$ElementData\n1\n\"{}\"\n1\n0\n3\n0\n1\n{}\n", f.name, elements);
     for (std::size_t k = 0; k < elements; ++k)
       out << k + 1 << ' ' << (f.integer ? fmt::format("{}", static_cast<long long>(f.values[k])) : fmt::format("{}", f.values[k])) << '\n';

@@ -316,8 +316,8 @@ NodeExpression read_expression(const Positions& p, const std::string& raw, const
 
 // Every <expr> of the rule's nodes: the right side's read, the left
 // side's a caveat (Jerboa reads embeddings on the left).
-void read_expressions(const Catalog& c, const Positions& p, const std::string& raw, const ModelerScope& ms, const JerboaScope& scope, const JmeSide& left,
-                      const JmeSide& right, CatalogRule& cr) {
+void read_expressions(const Catalog& c, const Positions& p, const std::string& raw, const ModelerScope& ms, const JerboaScope& scope,
+                      const JmeSide& left, const JmeSide& right, CatalogRule& cr) {
   for (const auto* side : {&left, &right})
     for (const auto& n : side->nodes)
       for (const auto& e : n.xml.children("expr")) {
@@ -326,7 +326,8 @@ void read_expressions(const Catalog& c, const Positions& p, const std::string& r
         if (decl == c.embeddings.end())
           p.fail(e, fmt::format("node '{}': <expr ebd=\"{}\">, but the modeler declares no embedding '{}'", n.name, ebd, ebd));
         if (side == &left)
-          cr.caveats.push_back(fmt::format("expression for {} on node '{}' of the left side ignored (Jerboa reads embeddings on the left)", ebd, n.name));
+          cr.caveats.push_back(
+              fmt::format("expression for {} on node '{}' of the left side ignored (Jerboa reads embeddings on the left)", ebd, n.name));
         else
           cr.expressions.push_back(read_expression(p, raw, ms, scope, cr.rule.name(), n, e, *decl));
       }

@@ -67,7 +67,7 @@ void write_side(pugi::xml_node parent, const char* tag, const TopoGraph& g, cons
     }
     if (!paired)
       throw ValueError(fmt::format("the arc {} -{}-> {} of <{}> has no reverse: Jerboa's arcs are non-oriented", g.name(a.source), a.label,
-                                              g.name(a.target), tag));
+                                   g.name(a.target), tag));
     auto x = arcs.append_child("arc");
     x.append_attribute("dim") = a.label;
     x.append_attribute("a") = g.name(a.source).c_str();

@@ -256,7 +256,9 @@ class HostQueries {
     params_.set("ctrl_c", false);
   }
 
-  bool all_settled() const { return std::all_of(searches_.begin(), searches_.end(), [](const Search& s) { return s.settled; }); }
+  bool all_settled() const {
+    return std::all_of(searches_.begin(), searches_.end(), [](const Search& s) { return s.settled; });
+  }
   bool stopped() const { return watch_.fired() || (o_.stop && o_.stop()); }
 
   // One application: every unsettled embedding and reading asked.
@@ -330,7 +332,8 @@ class HostQueries {
     cache_[key] = r;
     for (const auto& f : enc.uninterpreted()) uninterpreted_.insert(f);
     if (r == z3::unknown) {
-      s.unknown = stopped() ? "interrupted (SIGINT or SIGTERM)" : fmt::format("Z3's rlimit of {} per query reached on a {}-dart host", o_.rlimit, g.size());
+      s.unknown =
+          stopped() ? "interrupted (SIGINT or SIGTERM)" : fmt::format("Z3's rlimit of {} per query reached on a {}-dart host", o_.rlimit, g.size());
       return;
     }
     if (r == z3::sat) settle(s, g, hooks, d, q, enc, solver);
@@ -338,7 +341,8 @@ class HostQueries {
 
   // A counterexample: its host with values (doubles preferred exact),
   // what breaks in the solver's model, and the library's own replay.
-  void settle(Search& s, const Map& g, std::span<const Dart> hooks, const Derived& d, const OrbitQuestion& q, ValueEncoding& enc, z3::solver& solver) {
+  void settle(Search& s, const Map& g, std::span<const Dart> hooks, const Derived& d, const OrbitQuestion& q, ValueEncoding& enc,
+              z3::solver& solver) {
     EmbeddingAnswer& a = s.answer;
     s.settled = true;
     a.status = EmbeddingAnswer::Status::counterexample;
@@ -363,7 +367,8 @@ class HostQueries {
       for (std::size_t k = 0; k < q.orbits.size() && a.why.empty(); ++k)
         for (std::size_t j = 1; j < q.orbits[k].size() && a.why.empty(); ++j)
           if (m.eval(!enc.equal(q.orbits[k][0], q.orbits[k][j]), true).is_true())
-            a.why = fmt::format("the {}-orbit of dart {} of H gets {} and {}", a.embedding, q.at[k], d.pool.str(q.orbits[k][0]), d.pool.str(q.orbits[k][j]));
+            a.why = fmt::format("the {}-orbit of dart {} of H gets {} and {}", a.embedding, q.at[k], d.pool.str(q.orbits[k][0]),
+                                d.pool.str(q.orbits[k][j]));
     }
     if (a.reading == Reading::arithmetic && a.host) replay(s);
   }

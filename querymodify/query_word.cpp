@@ -55,8 +55,7 @@ const char* boundary_symbol(BoundaryCondition c) {
 QueryWord query_word(const Map& query, Dart start, BoundaryCondition free_links, const std::vector<BoundaryOverride>& overrides) {
   const Labeling l = bfs_labeling(query, start);
   if (l.darts.size() != query.size())
-    throw ValueError(
-        fmt::format("the query is not connected: {} of its {} darts are reached from dart {}", l.darts.size(), query.size(), start));
+    throw ValueError(fmt::format("the query is not connected: {} of its {} darts are reached from dart {}", l.darts.size(), query.size(), start));
   QueryWord w;
   w.dims = query.model().dims;
   w.darts = l.darts.size();

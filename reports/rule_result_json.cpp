@@ -186,14 +186,18 @@ Json proof_json(const RuleResult& r, JsonDetail level) {
   const proofs::RuleProof& p = *r.proof;
   Json constraints = Json::array();
   for (std::size_t i = 0; i < p.constraints.size(); ++i)
-    constraints.push_back(constraint_proof_json(p.constraints[i], entry(r.proof_replays, i), i < r.proof_maps.size() ? &r.proof_maps[i] : nullptr, level));
+    constraints.push_back(
+        constraint_proof_json(p.constraints[i], entry(r.proof_replays, i), i < r.proof_maps.size() ? &r.proof_maps[i] : nullptr, level));
   Json embedding = Json::array();
   if (p.embedding)
     for (std::size_t i = 0; i < p.embedding->answers.size(); ++i)
       embedding.push_back(embedding_answer_json(p.embedding->answers[i], entry(r.embedding_replays, i), level));
   Json search = nullptr;
   if (p.embedding) {
-    search = Json{{"hosts", p.embedding->hosts}, {"applications", p.embedding->applications}, {"queries", p.embedding->queries}, {"cached", p.embedding->cached}};
+    search = Json{{"hosts", p.embedding->hosts},
+                  {"applications", p.embedding->applications},
+                  {"queries", p.embedding->queries},
+                  {"cached", p.embedding->cached}};
     if (with_record(level)) {
       search["out_of_scope"] = p.embedding->out_of_scope;
       search["interrupted"] = p.embedding->interrupted;

@@ -430,8 +430,9 @@ std::string check_summary(const Catalog& catalog, const std::vector<RuleResult>&
     for (const auto& x : r.expressions) ++(x.read() ? read : opaque);
   if (t.embedded) {
     out += '\n';
-    out += row_note(0, fmt::format("embeddings: {}{}", sufficiency_note,
-                                   opaque ? "; a rule with an opaque expression gets Jerboa's presence checks, its expressions compared as text" : ""));
+    out +=
+        row_note(0, fmt::format("embeddings: {}{}", sufficiency_note,
+                                opaque ? "; a rule with an opaque expression gets Jerboa's presence checks, its expressions compared as text" : ""));
   }
   if (read + opaque)
     out += fmt::format("\n{}: {} expressions read, {} opaque\n", catalog.modeler.empty() ? catalog.file : catalog.modeler, read, opaque);

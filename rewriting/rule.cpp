@@ -16,7 +16,7 @@ void check_side(const TopoGraph& g, const Model& model, const char* side) {
   for (const auto& a : g.arcs())
     if (!model.contains(a.label))
       throw ValueError(fmt::format("{} has an arc {} -{}-> {} whose label is not a dimension of {}", side, g.name(a.source), a.label,
-                                              g.name(a.target), model.name));
+                                   g.name(a.target), model.name));
 }
 
 // Marks which arcs of `a` have a partner in `b` with the same endpoints (by
@@ -81,7 +81,7 @@ Rule::Rule(std::string name, Model model, TopoGraph left, TopoGraph right, std::
     if (!v) throw ValueError(fmt::format("hook '{}' is not a node of L", h));
     if (hooked[comp[*v]] >= 0)
       throw ValueError(fmt::format("hooks '{}' and '{}' are in the same connected component of L (one hook per component)",
-                                              left_.name(static_cast<NodeId>(hooked[comp[*v]])), h));
+                                   left_.name(static_cast<NodeId>(hooked[comp[*v]])), h));
     hooked[comp[*v]] = static_cast<int>(*v);
     hooks_.push_back(*v);
   }

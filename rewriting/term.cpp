@@ -283,7 +283,8 @@ class Parser {
       const auto r = std::from_chars(e.text.data(), e.text.data() + e.text.size(), dim);
       if (r.ec != std::errc{} || dim > max_dimension)
         throw TermError(offset, fmt::format("'{}' in the orbit type of {} is not a dimension (0 to {})", e.text, what, max_dimension));
-      if (std::find(out.begin(), out.end(), dim) != out.end()) throw TermError(offset, fmt::format("dimension {} appears twice in the orbit type of {}", dim, what));
+      if (std::find(out.begin(), out.end(), dim) != out.end())
+        throw TermError(offset, fmt::format("dimension {} appears twice in the orbit type of {}", dim, what));
       out.push_back(dim);
     };
     try {
