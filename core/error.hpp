@@ -11,9 +11,11 @@
 //   └── InternalError      a broken invariant: a defect of dartcheck (exit 3)
 //
 // (InputError and UsageError: core/input_error.hpp; OutputError:
-// core/output_file.hpp.)
+// core/output_file.hpp. AtOffset<Base> adds a byte offset in a text read
+// inside a longer one: TermError, JerboaCodeError, OrbitNotationError.)
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +44,20 @@ class ValueError : public Error {
 class InternalError : public Error {
  public:
   using Error::Error;
+};
+
+/// An error at a byte of a text that was read inside a longer one (a term
+/// in a catalog, Java code in a .jme, an orbit type in a term): `offset`
+/// is 0-based in that text, and the caller that knows where the text
+/// starts turns it into a position.
+template <class Base>
+class AtOffset : public Base {
+ public:
+  AtOffset(std::size_t offset, const std::string& message) : Base(message), offset_(offset) {}
+  std::size_t offset() const { return offset_; }
+
+ private:
+  std::size_t offset_;
 };
 
 }  // namespace dartcheck

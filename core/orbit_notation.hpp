@@ -27,13 +27,9 @@ struct OrbitEntry {
 /// The notation's own error (not the caller's): what() names the text and
 /// the 1-based byte; offset() is that byte, 0-based, for a caller that
 /// reads the orbit type inside a longer text.
-class OrbitNotationError : public ValueError {
+class OrbitNotationError : public AtOffset<ValueError> {
  public:
-  OrbitNotationError(std::size_t offset, const std::string& message) : ValueError(message), offset_(offset) {}
-  std::size_t offset() const { return offset_; }
-
- private:
-  std::size_t offset_;
+  using AtOffset::AtOffset;
 };
 
 /// Calls `entry` with each entry of `text` as it is read, so that the

@@ -54,13 +54,9 @@ struct ReadExpression {
 
 /// Java that the modeler could not have been built with; `offset` is a
 /// 0-based position in the code.
-class JerboaCodeError : public Error {
+class JerboaCodeError : public AtOffset<Error> {
  public:
-  JerboaCodeError(std::size_t offset, const std::string& message) : Error(message), offset_(offset) {}
-  std::size_t offset() const { return offset_; }
-
- private:
-  std::size_t offset_;
+  using AtOffset::AtOffset;
 };
 
 /// Reads the code of an <expr> for an embedding of type `result`. Throws

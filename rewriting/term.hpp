@@ -78,13 +78,9 @@ struct Term {
 };
 
 /// A parse or type error at a 0-based offset of the term's text.
-class TermError : public Error {
+class TermError : public AtOffset<Error> {
  public:
-  TermError(std::size_t offset, const std::string& message) : Error(message), offset_(offset) {}
-  std::size_t offset() const { return offset_; }
-
- private:
-  std::size_t offset_;
+  using AtOffset::AtOffset;
 };
 
 /// Parses a term; throws TermError naming the offending token.
